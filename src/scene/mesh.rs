@@ -1,0 +1,30 @@
+use glam::Vec3;
+
+/// Geometry ready to draw: indexed triangles, lines and points over one
+/// vertex array. Readers unweld vertices where normals or colours differ per
+/// face, so every attribute here is per vertex.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    pub name: String,
+    pub positions: Vec<Vec3>,
+    /// Per-vertex unit normals; same length as `positions` (may be empty for
+    /// meshes that only hold lines/points).
+    pub normals: Vec<Vec3>,
+    /// Per-vertex colours (replace the material's diffuse), empty if none.
+    pub colors: Vec<Vec3>,
+    /// Counter-clockwise triangles (front faces CCW seen from outside).
+    pub triangles: Vec<[u32; 3]>,
+    pub lines: Vec<[u32; 2]>,
+    pub points: Vec<u32>,
+    /// Solid shapes are back-face culled; others are lit on both sides.
+    pub solid: bool,
+}
+
+impl Mesh {
+    /// Axis-aligned bounds of the positions, or `None` when empty.
+    pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
+        let mut it = self.positions.iter();
+        let first = *it.next()?;
+        Some(it.fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))))
+    }
+}

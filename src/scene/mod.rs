@@ -1,0 +1,152 @@
+//! The scene model: the single source of truth that readers fill, the
+//! animation evaluates, the renderer draws and writers save.
+//!
+//! Nodes live in an arena (`Scene::nodes`) addressed by [`NodeId`]; a node's
+//! place in the tree is `parent` + `children`. Meshes and materials are shared
+//! by id so that DEF/USE in the files maps onto sharing here.
+
+mod light;
+mod material;
+mod mesh;
+mod node;
+mod transform;
+
+pub use light::{Camera, CameraKind, Light, LightKind};
+pub use material::Material;
+pub use mesh::Mesh;
+pub use node::{Node, NodeKind, RenderStyle, Shape};
+pub use transform::Transform;
+
+use crate::anim::Animation;
+use glam::Vec3;
+
+/// Index of a node in [`Scene::nodes`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct NodeId(pub u32);
+
+/// Index of a mesh in [`Scene::meshes`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct MeshId(pub u32);
+
+/// Index of a material in [`Scene::materials`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct MaterialId(pub u32);
+
+/// Scene-wide settings: timing and what the background looks like.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// Frames per second; key times are in frames.
+    pub fps: f32,
+    /// Length of the animation in frames (playback loops over 0..=duration).
+    pub duration: f32,
+    /// Background colour, linear 0..1 RGB.
+    pub background: Vec3,
+    /// `None` = the format's default (VRML97: NavigationInfo.headlight, default on;
+    /// Inventor/VRML1/OBJ: on, as examiner viewers do).
+    pub headlight: Option<bool>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            fps: 24.0,
+            duration: 96.0,
+            background: Vec3::ZERO,
+            headlight: None,
+        }
+    }
+}
+
+/// Which file format a scene came from (decides defaults such as the headlight).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum SourceFormat {
+    #[default]
+    Native,
+    Inventor,
+    Vrml1,
+    Vrml97,
+    Obj,
+}
+
+/// A whole scene: node tree, shared resources, settings and animation.
+#[derive(Clone, Debug, Default)]
+pub struct Scene {
+    pub nodes: Vec<Node>,
+    pub roots: Vec<NodeId>,
+    pub meshes: Vec<Mesh>,
+    pub materials: Vec<Material>,
+    pub settings: Settings,
+    pub animation: Animation,
+    pub format: SourceFormat,
+    /// Free text from WorldInfo/Info nodes that is not animed's own key note.
+    pub info: Vec<String>,
+}
+
+impl Scene {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Adds a node under `parent` (or as a root) and returns its id.
+    pub fn add_node(&mut self, parent: Option<NodeId>, mut node: Node) -> NodeId {
+        let id = NodeId(self.nodes.len() as u32);
+        node.parent = parent;
+        node.children.clear();
+        self.nodes.push(node);
+        match parent {
+            Some(p) => self.nodes[p.0 as usize].children.push(id),
+            None => self.roots.push(id),
+        }
+        id
+    }
+
+    pub fn add_mesh(&mut self, mesh: Mesh) -> MeshId {
+        self.meshes.push(mesh);
+        MeshId(self.meshes.len() as u32 - 1)
+    }
+
+    pub fn add_material(&mut self, material: Material) -> MaterialId {
+        self.materials.push(material);
+        MaterialId(self.materials.len() as u32 - 1)
+    }
+
+    pub fn node(&self, id: NodeId) -> &Node {
+        &self.nodes[id.0 as usize]
+    }
+
+    pub fn node_mut(&mut self, id: NodeId) -> &mut Node {
+        &mut self.nodes[id.0 as usize]
+    }
+
+    /// Finds a node by name (first match in arena order).
+    pub fn find_node(&self, name: &str) -> Option<NodeId> {
+        self.nodes
+            .iter()
+            .position(|n| n.name == name)
+            .map(|i| NodeId(i as u32))
+    }
+
+    /// Finds a material by name.
+    pub fn find_material(&self, name: &str) -> Option<MaterialId> {
+        self.materials
+            .iter()
+            .position(|m| m.name == name)
+            .map(|i| MaterialId(i as u32))
+    }
+
+    /// Node ids in depth-first pre-order (parents before children).
+    pub fn walk(&self) -> Vec<NodeId> {
+        let mut out = Vec::with_capacity(self.nodes.len());
+        let mut stack: Vec<NodeId> = self.roots.iter().rev().copied().collect();
+        while let Some(id) = stack.pop() {
+            out.push(id);
+            stack.extend(self.node(id).children.iter().rev().copied());
+        }
+        out
+    }
+
+    /// Duration of the animation in seconds.
+    pub fn duration_seconds(&self) -> f32 {
+        self.settings.duration / self.settings.fps.max(1e-6)
+    }
+}

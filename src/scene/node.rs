@@ -1,0 +1,76 @@
+use super::{Camera, Light, MaterialId, MeshId, NodeId, Transform};
+
+/// How an object is drawn (per object; the viewport may override globally).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RenderStyle {
+    #[default]
+    Filled,
+    Lines,
+    Points,
+    Hidden,
+}
+
+/// A shape: shared mesh + material.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shape {
+    pub mesh: MeshId,
+    pub material: MaterialId,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum NodeKind {
+    /// A grouping/transform node.
+    Group,
+    Shape(Shape),
+    Light(Light),
+    Camera(Camera),
+}
+
+/// One node of the tree: a transform, and what hangs on it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Node {
+    pub name: String,
+    pub parent: Option<NodeId>,
+    pub children: Vec<NodeId>,
+    pub transform: Transform,
+    pub visible: bool,
+    pub style: RenderStyle,
+    pub kind: NodeKind,
+}
+
+impl Node {
+    pub fn new(name: impl Into<String>, kind: NodeKind) -> Self {
+        Node {
+            name: name.into(),
+            parent: None,
+            children: Vec::new(),
+            transform: Transform::default(),
+            visible: true,
+            style: RenderStyle::Filled,
+            kind,
+        }
+    }
+
+    pub fn group(name: impl Into<String>) -> Self {
+        Node::new(name, NodeKind::Group)
+    }
+
+    pub fn with_transform(mut self, t: Transform) -> Self {
+        self.transform = t;
+        self
+    }
+
+    pub fn light(&self) -> Option<&Light> {
+        match &self.kind {
+            NodeKind::Light(l) => Some(l),
+            _ => None,
+        }
+    }
+
+    pub fn camera(&self) -> Option<&Camera> {
+        match &self.kind {
+            NodeKind::Camera(c) => Some(c),
+            _ => None,
+        }
+    }
+}

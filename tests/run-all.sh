@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Runs every check animed has: formatting, lints, and all tests.
+# Installs the Debian packages the window smoke test needs when it can
+# (root + apt-get); without them that one test says so loudly and fails in CI.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+need_pkgs=()
+command -v Xvfb >/dev/null 2>&1 || need_pkgs+=(xvfb)
+command -v xdotool >/dev/null 2>&1 || need_pkgs+=(xdotool)
+command -v import >/dev/null 2>&1 || need_pkgs+=(imagemagick)
+[ -e /usr/lib/x86_64-linux-gnu/libXcursor.so.1 ] || need_pkgs+=(libxcursor1)
+if [ ${#need_pkgs[@]} -gt 0 ]; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "run-all: installing ${need_pkgs[*]} for the window smoke test"
+    apt-get update -qq >/dev/null 2>&1 || true
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+      "${need_pkgs[@]}" >/dev/null 2>&1 || echo "run-all: could not install ${need_pkgs[*]}"
+  else
+    echo "run-all: missing ${need_pkgs[*]} (not root, cannot install)"
+  fi
+fi
+
+cargo fmt --check
+cargo clippy --all-targets -- -D warnings
+cargo test --release
