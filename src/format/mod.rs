@@ -16,7 +16,22 @@ pub struct Loaded {
     pub warnings: Vec<String>,
 }
 
-/// Loads any supported file, detecting the format by content.
+/// Loads any supported file from disk, detecting the format by content.
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
+    let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
+    load_bytes(&bytes, path)
+}
+
+/// Loads a file's contents; `path` names it in messages and resolves
+/// relative references (Inline, File, mtllib).
+pub fn load_bytes(_bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
     Err(LoadError::new(path, 0, 0, "no reader for this file yet"))
+}
+
+/// The demo scene bundled in the binary (`assets/demo.wrl`).
+pub fn demo() -> Result<Loaded, LoadError> {
+    load_bytes(
+        include_bytes!("../../assets/demo.wrl"),
+        Path::new("assets/demo.wrl"),
+    )
 }
