@@ -41,11 +41,15 @@ pub fn load_into(
 ) {
     let at = |m: String| format!("{}:{}:{}: {m}", base.display(), pos.line, pos.column);
     if depth + 1 > MAX_DEPTH {
-        warnings.push(at(format!("inline files nested deeper than {MAX_DEPTH}; skipped")));
+        warnings.push(at(format!(
+            "inline files nested deeper than {MAX_DEPTH}; skipped"
+        )));
         return;
     }
     let Some(file) = resolve(base, urls) else {
-        warnings.push(at(format!("no local file among inline URLs {urls:?}; skipped")));
+        warnings.push(at(format!(
+            "no local file among inline URLs {urls:?}; skipped"
+        )));
         return;
     };
     match crate::format::load_nested(&file, depth + 1) {

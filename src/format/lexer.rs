@@ -475,7 +475,9 @@ mod tests {
             Header::Inventor1
         );
         let e = read_header(b"#Inventor V2.1 binary\n").unwrap_err();
-        assert!(e.message.contains("binary Inventor is not supported, convert with ivcat"));
+        assert!(e
+            .message
+            .contains("binary Inventor is not supported, convert with ivcat"));
         assert!(read_header(b"hello").is_err());
     }
 }

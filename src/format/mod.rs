@@ -50,7 +50,12 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
         .map_err(|e| LoadError::new(path, e.pos.line, e.pos.column, e.message))?;
     match header {
         lexer::Header::Vrml97 => vrml97::read_nested(bytes, path, depth),
-        _ => Err(LoadError::new(path, 1, 1, "Inventor / VRML 1.0 reader not built yet")),
+        _ => Err(LoadError::new(
+            path,
+            1,
+            1,
+            "Inventor / VRML 1.0 reader not built yet",
+        )),
     }
 }
 

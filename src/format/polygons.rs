@@ -51,7 +51,10 @@ pub fn build(
     if dropped > 0 {
         msgs.push((
             pos,
-            format!("{dropped} faces index past the {} coordinates; skipped", positions.len()),
+            format!(
+                "{dropped} faces index past the {} coordinates; skipped",
+                positions.len()
+            ),
         ));
     }
     for _ in 0..3 {

@@ -175,7 +175,7 @@ impl AstNode {
 pub fn axis_angle(x: f64, y: f64, z: f64, angle: f64) -> glam::Quat {
     let axis = glam::DVec3::new(x, y, z);
     let len = axis.length();
-    if !(len > 1e-12) || !angle.is_finite() {
+    if len.is_nan() || len <= 1e-12 || !angle.is_finite() {
         return glam::Quat::IDENTITY;
     }
     let q = glam::DQuat::from_axis_angle(axis / len, angle);

@@ -239,7 +239,10 @@ impl Parser<'_> {
             (t, p) => {
                 return Err((
                     p,
-                    format!("expected '{{' after node type '{kind}', found {}", t.describe()),
+                    format!(
+                        "expected '{{' after node type '{kind}', found {}",
+                        t.describe()
+                    ),
                 ))
             }
         }
@@ -386,7 +389,10 @@ impl Parser<'_> {
                         (Tok::Punct(b'|'), _) => {}
                         (Tok::Ident(w), _) => words.push(w),
                         (t, p) => {
-                            return Err((p, format!("expected a flag name, found {}", t.describe())))
+                            return Err((
+                                p,
+                                format!("expected a flag name, found {}", t.describe()),
+                            ))
                         }
                     }
                 }
@@ -417,11 +423,17 @@ impl Parser<'_> {
             }
             Tok::Eof => {
                 let pos = self.lx.pos();
-                Err((pos, "unexpected end of file where a field value was expected".into()))
+                Err((
+                    pos,
+                    "unexpected end of file where a field value was expected".into(),
+                ))
             }
             t => {
                 let pos = self.lx.pos();
-                Err((pos, format!("expected a field value, found {}", t.describe())))
+                Err((
+                    pos,
+                    format!("expected a field value, found {}", t.describe()),
+                ))
             }
         }
     }
@@ -454,18 +466,13 @@ impl Parser<'_> {
             }
             Tok::Num(_) => {
                 let mut v = Vec::new();
-                loop {
-                    self.numbers(&mut v)?;
-                    match self.next()? {
-                        (Tok::RBracket, _) => return Ok(Value::Nums(v)),
-                        // Inventor writes `~` or stray words rarely; be strict.
-                        (t, p) => {
-                            return Err((
-                                p,
-                                format!("expected a number or ']', found {}", t.describe()),
-                            ))
-                        }
-                    }
+                self.numbers(&mut v)?;
+                match self.next()? {
+                    (Tok::RBracket, _) => Ok(Value::Nums(v)),
+                    (t, p) => Err((
+                        p,
+                        format!("expected a number or ']', found {}", t.describe()),
+                    )),
                 }
             }
             Tok::Str(_) => {
@@ -543,7 +550,10 @@ impl Parser<'_> {
             }),
             (f, _) => {
                 let missing = if f.is_none() { fnode } else { tnode };
-                self.warn(pos, format!("ROUTE names undefined node '{missing}', ignored"));
+                self.warn(
+                    pos,
+                    format!("ROUTE names undefined node '{missing}', ignored"),
+                );
             }
         }
         Ok(())
@@ -567,7 +577,10 @@ impl Parser<'_> {
                 t => {
                     return Err((
                         p,
-                        format!("expected a PROTO interface declaration, found {}", t.describe()),
+                        format!(
+                            "expected a PROTO interface declaration, found {}",
+                            t.describe()
+                        ),
                     ))
                 }
             };

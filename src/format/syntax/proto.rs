@@ -97,21 +97,18 @@ impl Binder<'_> {
             match &f.value {
                 Value::Is(iface) => {
                     bound.push((iface.clone(), f.name.clone()));
-                    match self.values.get(iface.as_str()) {
-                        Some(Some((v, from_instance))) => {
-                            let v = if *from_instance {
-                                (*v).clone()
-                            } else {
-                                self.copy_value(v)
-                            };
-                            fields.push(Field {
-                                name: f.name.clone(),
-                                value: v,
-                                pos: f.pos,
-                            });
-                        }
-                        // An event, or an unknown interface name: no value.
-                        _ => {}
+                    // An event, or an unknown interface name, has no value.
+                    if let Some(Some((v, from_instance))) = self.values.get(iface.as_str()) {
+                        let v = if *from_instance {
+                            (*v).clone()
+                        } else {
+                            self.copy_value(v)
+                        };
+                        fields.push(Field {
+                            name: f.name.clone(),
+                            value: v,
+                            pos: f.pos,
+                        });
                     }
                 }
                 v => {

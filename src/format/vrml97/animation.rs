@@ -174,11 +174,17 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
         };
         let c = clock(&ts);
         if !ts.bool("enabled", true) {
-            b.warn(ts.pos, "TimeSensor is disabled (enabled FALSE); its animation is not imported");
+            b.warn(
+                ts.pos,
+                "TimeSensor is disabled (enabled FALSE); its animation is not imported",
+            );
             continue;
         }
         if !(c.cycle > 0.0 && c.cycle.is_finite()) {
-            b.warn(ts.pos, "TimeSensor cycleInterval must be > 0; its animation is not imported");
+            b.warn(
+                ts.pos,
+                "TimeSensor cycleInterval must be > 0; its animation is not imported",
+            );
             continue;
         }
         if matches!(
@@ -198,16 +204,19 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             let t = t.effective();
             match dest(&t.kind, &f) {
                 Some(Dest::Node(property)) => {
-                    let ids = b.instances.get(&Rc::as_ptr(&t)).cloned().unwrap_or_default();
+                    let ids = b
+                        .instances
+                        .get(&Rc::as_ptr(&t))
+                        .cloned()
+                        .unwrap_or_default();
                     for id in ids {
                         // A light/camera property only applies to that kind of node.
-                        let ok = match (&b.scene.node(id).kind, property.owner()) {
-                            (NodeKind::Light(_), "light") | (NodeKind::Camera(_), "camera") => {
-                                true
-                            }
-                            (_, "node") => true,
-                            _ => false,
-                        };
+                        let ok = matches!(
+                            (&b.scene.node(id).kind, property.owner()),
+                            (NodeKind::Light(_), "light")
+                                | (NodeKind::Camera(_), "camera")
+                                | (_, "node")
+                        );
                         if ok {
                             pending.push(Pending {
                                 interp: interp.clone(),
@@ -375,7 +384,7 @@ fn keyed<V: Copy>(fractions: &[f64], values: &[V], frame: impl Fn(f64) -> f32) -
             // A jump: move the earlier key back a hair.
             let prev = if n >= 2 { Some(out[n - 2].frame) } else { None };
             let back = out[n - 1].frame - 1e-3;
-            if prev.map_or(true, |p| back > p) {
+            if prev.is_none_or(|p| back > p) {
                 out[n - 1].frame = back;
             } else {
                 // A third key at the same time: keep the latest value.
@@ -410,7 +419,9 @@ fn hsv_resample(fractions: &[f64], colors: &[Vec3]) -> (Vec<f64>, Vec<Vec3>) {
             let (a, b) = (rgb_to_hsv(colors[i]), rgb_to_hsv(colors[i + 1]));
             let rgb_path_differs = (1..HSV_STEPS).any(|s| {
                 let t = s as f32 / HSV_STEPS as f32;
-                (hsv_to_rgb(hsv_lerp(a, b, t)) - colors[i].lerp(colors[i + 1], t)).abs().max_element()
+                (hsv_to_rgb(hsv_lerp(a, b, t)) - colors[i].lerp(colors[i + 1], t))
+                    .abs()
+                    .max_element()
                     > 1e-3
             });
             if rgb_path_differs {

@@ -113,17 +113,18 @@ impl Builder {
             return None;
         }
         let id = self.scene.add_node(parent, node);
-        self.instances
-            .entry(Rc::as_ptr(ast))
-            .or_default()
-            .push(id);
+        self.instances.entry(Rc::as_ptr(ast)).or_default().push(id);
         Some(id)
     }
 
     /// Adds the scene nodes for one AST node under `parent`.
     pub(super) fn add(&mut self, n: &NodeRef, parent: Option<NodeId>) {
         if self.build_depth >= MAX_BUILD_DEPTH {
-            self.warn_once("depth", n.pos, "scene nested too deeply; deeper nodes skipped");
+            self.warn_once(
+                "depth",
+                n.pos,
+                "scene nested too deeply; deeper nodes skipped",
+            );
             return;
         }
         self.build_depth += 1;
@@ -209,7 +210,11 @@ impl Builder {
                     },
                     position: eff.vec3("position", Vec3::new(0.0, 0.0, 10.0)),
                     orientation: eff.rotation("orientation").unwrap_or(Quat::IDENTITY),
-                    description: eff.strings("description").first().cloned().unwrap_or_default(),
+                    description: eff
+                        .strings("description")
+                        .first()
+                        .cloned()
+                        .unwrap_or_default(),
                     fov_smaller_side: true,
                     focal_distance: 10.0,
                     near: None,
@@ -306,7 +311,11 @@ impl Builder {
             None if has_colors => self.default_material(),
             None => self.unlit(),
         };
-        self.push(n, parent, Node::new(name, NodeKind::Shape(Shape { mesh, material })));
+        self.push(
+            n,
+            parent,
+            Node::new(name, NodeKind::Shape(Shape { mesh, material })),
+        );
     }
 
     fn material(&mut self, m: &NodeRef) -> MaterialId {
@@ -385,16 +394,60 @@ fn light(n: &AstNode) -> Light {
 /// Standard VRML97 node names (anything else is unknown, not unsupported).
 fn is_vrml97_node(k: &str) -> bool {
     const ALL: &[&str] = &[
-        "Anchor", "Appearance", "AudioClip", "Background", "Billboard", "Box", "Collision",
-        "Color", "ColorInterpolator", "Cone", "Coordinate", "CoordinateInterpolator",
-        "Cylinder", "CylinderSensor", "DirectionalLight", "ElevationGrid", "Extrusion", "Fog",
-        "FontStyle", "Group", "ImageTexture", "IndexedFaceSet", "IndexedLineSet", "Inline",
-        "LOD", "Material", "MovieTexture", "NavigationInfo", "Normal", "NormalInterpolator",
-        "OrientationInterpolator", "PixelTexture", "PlaneSensor", "PointLight", "PointSet",
-        "PositionInterpolator", "ProximitySensor", "ScalarInterpolator", "Script", "Shape",
-        "Sound", "Sphere", "SphereSensor", "SpotLight", "Switch", "Text", "TextureCoordinate",
-        "TextureTransform", "TimeSensor", "TouchSensor", "Transform", "Viewpoint",
-        "VisibilitySensor", "WorldInfo",
+        "Anchor",
+        "Appearance",
+        "AudioClip",
+        "Background",
+        "Billboard",
+        "Box",
+        "Collision",
+        "Color",
+        "ColorInterpolator",
+        "Cone",
+        "Coordinate",
+        "CoordinateInterpolator",
+        "Cylinder",
+        "CylinderSensor",
+        "DirectionalLight",
+        "ElevationGrid",
+        "Extrusion",
+        "Fog",
+        "FontStyle",
+        "Group",
+        "ImageTexture",
+        "IndexedFaceSet",
+        "IndexedLineSet",
+        "Inline",
+        "LOD",
+        "Material",
+        "MovieTexture",
+        "NavigationInfo",
+        "Normal",
+        "NormalInterpolator",
+        "OrientationInterpolator",
+        "PixelTexture",
+        "PlaneSensor",
+        "PointLight",
+        "PointSet",
+        "PositionInterpolator",
+        "ProximitySensor",
+        "ScalarInterpolator",
+        "Script",
+        "Shape",
+        "Sound",
+        "Sphere",
+        "SphereSensor",
+        "SpotLight",
+        "Switch",
+        "Text",
+        "TextureCoordinate",
+        "TextureTransform",
+        "TimeSensor",
+        "TouchSensor",
+        "Transform",
+        "Viewpoint",
+        "VisibilitySensor",
+        "WorldInfo",
     ];
     ALL.contains(&k)
 }

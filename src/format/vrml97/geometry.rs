@@ -5,8 +5,8 @@
 //! triangulates concave polygons and applies ccw/solid/creaseAngle.
 
 use crate::format::lexer::Pos;
-use crate::format::syntax::AstNode;
 use crate::format::polygons::{self, split_index};
+use crate::format::syntax::AstNode;
 use crate::scene::normals::{mesh_from_points, mesh_from_polylines, Binding, PolyOptions};
 use crate::scene::Mesh;
 use glam::{Quat, Vec2, Vec3};
@@ -28,7 +28,10 @@ pub fn mesh(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
             None
         }
         k => {
-            msgs.push((g.pos, format!("geometry node '{k}' is not supported; skipped")));
+            msgs.push((
+                g.pos,
+                format!("geometry node '{k}' is not supported; skipped"),
+            ));
             None
         }
     }?;
@@ -82,7 +85,13 @@ fn binding(values: Option<Vec<Vec3>>, index: &[i64], per_vertex: bool) -> Bindin
             index: if index.is_empty() {
                 None
             } else {
-                Some(index.iter().filter(|&&i| i >= 0).map(|&i| i as u32).collect())
+                Some(
+                    index
+                        .iter()
+                        .filter(|&&i| i >= 0)
+                        .map(|&i| i as u32)
+                        .collect(),
+                )
             },
         }
     }
@@ -121,7 +130,10 @@ fn indexed_line_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
     match mesh_from_polylines(&positions, &lines, &colors) {
         Ok(m) => Some(m),
         Err(_) if colors != Binding::None => {
-            msgs.push((g.pos, "bad colour indices in IndexedLineSet; colours ignored".into()));
+            msgs.push((
+                g.pos,
+                "bad colour indices in IndexedLineSet; colours ignored".into(),
+            ));
             mesh_from_polylines(&positions, &lines, &Binding::None).ok()
         }
         Err(e) => {
@@ -194,23 +206,23 @@ fn elevation_grid(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
 /// Extrusion (VRML97 §6.18): cross-sections scaled, oriented and placed
 /// along the spine in each spine point's SCP frame.
 fn extrusion(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
-    let cross = g
-        .nums("crossSection")
-        .map(vec2s)
-        .unwrap_or_else(|| {
-            vec![
-                Vec2::new(1.0, 1.0),
-                Vec2::new(1.0, -1.0),
-                Vec2::new(-1.0, -1.0),
-                Vec2::new(-1.0, 1.0),
-                Vec2::new(1.0, 1.0),
-            ]
-        });
+    let cross = g.nums("crossSection").map(vec2s).unwrap_or_else(|| {
+        vec![
+            Vec2::new(1.0, 1.0),
+            Vec2::new(1.0, -1.0),
+            Vec2::new(-1.0, -1.0),
+            Vec2::new(-1.0, 1.0),
+            Vec2::new(1.0, 1.0),
+        ]
+    });
     let spine = g
         .nums("spine")
         .map(vec3s)
         .unwrap_or_else(|| vec![Vec3::ZERO, Vec3::Y]);
-    let scales = g.nums("scale").map(vec2s).unwrap_or_else(|| vec![Vec2::ONE]);
+    let scales = g
+        .nums("scale")
+        .map(vec2s)
+        .unwrap_or_else(|| vec![Vec2::ONE]);
     let orients: Vec<Quat> = g
         .nums("orientation")
         .map(|v| {
@@ -221,14 +233,25 @@ fn extrusion(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
         .unwrap_or_else(|| vec![Quat::IDENTITY]);
     let (n, m) = (spine.len(), cross.len());
     if n < 2 || m < 2 || n.saturating_mul(m) > 10_000_000 {
-        msgs.push((g.pos, "Extrusion needs ≥ 2 spine and cross-section points; skipped".into()));
+        msgs.push((
+            g.pos,
+            "Extrusion needs ≥ 2 spine and cross-section points; skipped".into(),
+        ));
         return None;
     }
     let frames = scp_frames(&spine);
     let mut positions = Vec::with_capacity(n * m);
     for (i, (p, (x, y, z))) in spine.iter().zip(&frames).enumerate() {
-        let s = scales.get(i).or(scales.last()).copied().unwrap_or(Vec2::ONE);
-        let o = orients.get(i).or(orients.last()).copied().unwrap_or(Quat::IDENTITY);
+        let s = scales
+            .get(i)
+            .or(scales.last())
+            .copied()
+            .unwrap_or(Vec2::ONE);
+        let o = orients
+            .get(i)
+            .or(orients.last())
+            .copied()
+            .unwrap_or(Quat::IDENTITY);
         for c in &cross {
             let local = o * Vec3::new(c.x * s.x, 0.0, c.y * s.y);
             positions.push(*p + *x * local.x + *y * local.y + *z * local.z);
@@ -285,8 +308,7 @@ fn scp_frames(spine: &[Vec3]) -> Vec<(Vec3, Vec3, Vec3)> {
     };
     let mut ys = Vec::with_capacity(n);
     let mut zs: Vec<Option<Vec3>> = Vec::with_capacity(n);
-    for i in 0..n {
-        let p = spine[i];
+    for (i, &p) in spine.iter().enumerate() {
         let y = match (prev(i), next(i)) {
             (Some(a), Some(b)) => b - a,
             (None, Some(b)) => b - p,
@@ -301,16 +323,18 @@ fn scp_frames(spine: &[Vec3]) -> Vec<(Vec3, Vec3, Vec3)> {
         zs.push(if z == Vec3::ZERO { None } else { Some(z) });
     }
     // Open ends take their neighbour's Z; collinear points the previous one's.
-    if !closed {
-        if n > 1 {
-            zs[0] = zs[1];
-            zs[n - 1] = zs[n - 2];
-        }
+    if !closed && n > 1 {
+        zs[0] = zs[1];
+        zs[n - 1] = zs[n - 2];
     }
     let mut out = Vec::with_capacity(n);
     let mut last_z: Option<Vec3> = None;
     // Fill missing Y from neighbours (repeated spine points).
-    let mut last_y = ys.iter().copied().find(|y| *y != Vec3::ZERO).unwrap_or(Vec3::Y);
+    let mut last_y = ys
+        .iter()
+        .copied()
+        .find(|y| *y != Vec3::ZERO)
+        .unwrap_or(Vec3::Y);
     for i in 0..n {
         let y = if ys[i] == Vec3::ZERO { last_y } else { ys[i] };
         last_y = y;

@@ -12,9 +12,6 @@ use super::{LoadError, Loaded};
 use crate::scene::SourceFormat;
 use std::path::Path;
 
-/// Limits on Inline nesting (a file inlining itself must not loop).
-const MAX_INLINE_DEPTH: usize = 8;
-
 /// Reads a VRML97 file's bytes (already decompressed).
 pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
     read_nested(bytes, path, 0)
@@ -27,7 +24,11 @@ pub(crate) fn read_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loa
         if parsed.roots.is_empty() {
             return Err(LoadError::new(path, pos.line, pos.column, msg.clone()));
         }
-        warnings.push(fmt_warning(path, *pos, &format!("{msg} (the rest of the file is skipped)")));
+        warnings.push(fmt_warning(
+            path,
+            *pos,
+            &format!("{msg} (the rest of the file is skipped)"),
+        ));
     }
     for (pos, msg) in &parsed.warnings {
         warnings.push(fmt_warning(path, *pos, msg));
