@@ -4,6 +4,17 @@
 mod error;
 pub use error::LoadError;
 
+pub mod keynote;
+pub mod sampling;
+pub mod save;
+mod write_anim;
+mod write_iv;
+pub mod write_plan;
+mod write_text;
+mod write_vrml97;
+
+pub use save::{save, InventorVersion, OutputFormat, SaveError, WriteOptions, WriteReport};
+
 use crate::scene::Scene;
 use std::path::Path;
 
@@ -24,7 +35,14 @@ pub fn load(path: &Path) -> Result<Loaded, LoadError> {
 
 /// Loads a file's contents; `path` names it in messages and resolves
 /// relative references (Inline, File, mtllib).
-pub fn load_bytes(_bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
+pub fn load_bytes(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
+    let mut loaded = read_any(bytes, path)?;
+    keynote::apply_to_loaded(&mut loaded, path);
+    Ok(loaded)
+}
+
+/// Picks the reader by content.
+fn read_any(_bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
     Err(LoadError::new(path, 0, 0, "no reader for this file yet"))
 }
 
