@@ -517,7 +517,7 @@ mod tests {
         });
         s.settings.fps = 30.0;
         s.settings.duration = 61.5;
-        s.node_mut(l).visible = false;
+        s.node_mut(a).visible = false;
         let mut k = Key::new(0.0, Vec3::new(0.1, -2.5, 1e-7)).with_tcb(0.5, -0.25, 1.0);
         k.ease_in = 0.3;
         s.animation.tracks = vec![
@@ -572,17 +572,17 @@ mod tests {
         let plan = WritePlan::new(&s);
         let text = write(&s, &plan);
         assert!(text.starts_with("animed-keys 1\nfps 30\nduration 61.5\nbackground 0 0 0\n"));
-        assert!(text.contains("hidden Lamp\n"), "{text}");
+        assert!(text.contains("hidden Box\n"), "{text}");
         assert!(text.contains("track material Red diffuseColor constant\n"));
         let note = parse(&text).unwrap();
         let mut t = s.clone();
         t.animation.tracks.clear();
         t.settings = Default::default();
-        t.node_mut(crate::scene::NodeId(1)).visible = true;
+        t.node_mut(crate::scene::NodeId(0)).visible = true;
         apply(&note, &mut t).unwrap();
         assert_eq!(t.animation, s.animation);
         assert_eq!(t.settings, s.settings);
-        assert!(!t.nodes[1].visible);
+        assert!(!t.nodes[0].visible);
         assert_eq!(write(&t, &WritePlan::new(&t)), text);
     }
 

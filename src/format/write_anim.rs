@@ -126,8 +126,7 @@ pub fn channels(scene: &Scene, tol: &Tolerances) -> Vec<Channel> {
             }
         };
         let main = find(of, property);
-        let (eval, breaks, authored): (Eval, Vec<f32>, usize) = match property
-        {
+        let (eval, breaks, authored): (Eval, Vec<f32>, usize) = match property {
             Property::Scale => {
                 let Some(node) = node else { continue };
                 let vis = find(of, Property::Visibility);

@@ -9,12 +9,15 @@ mod light;
 mod material;
 mod mesh;
 mod node;
+pub mod normals;
+pub mod primitives;
 mod transform;
 
 pub use light::{Camera, CameraKind, Light, LightKind};
 pub use material::Material;
 pub use mesh::Mesh;
 pub use node::{Node, NodeKind, RenderStyle, Shape};
+pub use normals::{mesh_from_polygons, Binding, MeshError, PolyOptions};
 pub use transform::Transform;
 
 use crate::anim::Animation;
