@@ -2,6 +2,7 @@
 //! `path:line:column: message` and never panics.
 
 mod error;
+pub mod obj;
 pub use error::LoadError;
 
 use crate::scene::Scene;
@@ -25,6 +26,10 @@ pub fn load(path: &Path) -> Result<Loaded, LoadError> {
 /// Loads a file's contents; `path` names it in messages and resolves
 /// relative references (Inline, File, mtllib).
 pub fn load_bytes(_bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
+    // OBJ has no header line to detect it by: go by the name.
+    if obj::is_obj_path(path) {
+        return obj::read(_bytes, path);
+    }
     Err(LoadError::new(path, 0, 0, "no reader for this file yet"))
 }
 
