@@ -2,7 +2,14 @@
 //! `path:line:column: message` and never panics.
 
 mod error;
+pub mod gzip;
+pub mod inline;
+pub mod lexer;
 pub mod obj;
+pub mod polygons;
+pub mod syntax;
+pub mod vrml97;
+
 pub use error::LoadError;
 
 use crate::scene::Scene;
@@ -19,18 +26,42 @@ pub struct Loaded {
 
 /// Loads any supported file from disk, detecting the format by content.
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
+    load_nested(path, 0)
+}
+
+/// Loads a file included `depth` levels deep (Inline / File / WWWInline).
+pub(crate) fn load_nested(path: &Path, depth: usize) -> Result<Loaded, LoadError> {
     let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
-    load_bytes(&bytes, path)
+    load_bytes_nested(&bytes, path, depth)
 }
 
 /// Loads a file's contents; `path` names it in messages and resolves
 /// relative references (Inline, File, mtllib).
-pub fn load_bytes(_bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
+pub fn load_bytes(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
+    load_bytes_nested(bytes, path, 0)
+}
+
+fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
+    if gzip::is_gzip(bytes) {
+        let plain = gzip::decompress(bytes, gzip::MAX_DECOMPRESSED)
+            .map_err(|m| LoadError::new(path, 0, 0, m))?;
+        return load_bytes_nested(&plain, path, depth);
+    }
     // OBJ has no header line to detect it by: go by the name.
     if obj::is_obj_path(path) {
-        return obj::read(_bytes, path);
+        return obj::read(bytes, path);
     }
-    Err(LoadError::new(path, 0, 0, "no reader for this file yet"))
+    let header = lexer::read_header(bytes)
+        .map_err(|e| LoadError::new(path, e.pos.line, e.pos.column, e.message))?;
+    match header {
+        lexer::Header::Vrml97 => vrml97::read_nested(bytes, path, depth),
+        _ => Err(LoadError::new(
+            path,
+            1,
+            1,
+            "Inventor / VRML 1.0 reader not built yet",
+        )),
+    }
 }
 
 /// The demo scene bundled in the binary (`assets/demo.wrl`).

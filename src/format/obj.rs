@@ -46,16 +46,14 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
         triangulate: false,
         ignore_points: false,
         ignore_lines: false,
-        ..Default::default()
     };
     let loaded = tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| {
         let full = dir.join(mtl);
         match std::fs::read(&full) {
-            Ok(data) => tobj::load_mtl_buf(&mut std::io::Cursor::new(data)).map_err(|e| {
+            Ok(data) => tobj::load_mtl_buf(&mut std::io::Cursor::new(data)).inspect_err(|e| {
                 warnings
                     .borrow_mut()
                     .push(format!("{}:0:0: material library: {e}", full.display()));
-                e
             }),
             Err(e) => {
                 warnings.borrow_mut().push(format!(

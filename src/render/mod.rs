@@ -13,6 +13,7 @@
 //! Every pixel belongs to exactly one tile and every tile draws its
 //! primitives in scene order, so the bytes never depend on the thread count.
 
+pub mod bench_scenes;
 mod clip;
 mod frame;
 pub mod job;
@@ -151,7 +152,8 @@ fn draw(p: &prepare::Prepared, opts: &RenderOptions, eye: Vec3, frame: &mut Fram
 /// editor renders every frame; building a pool each time costs more than a
 /// small frame).
 fn thread_pool(threads: usize) -> Arc<rayon::ThreadPool> {
-    static POOLS: OnceLock<Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>>> = OnceLock::new();
+    type Pools = Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>>;
+    static POOLS: OnceLock<Pools> = OnceLock::new();
     let pools = POOLS.get_or_init(|| Mutex::new(Vec::new()));
     // A poisoned lock only means another render panicked; the pools are fine.
     let mut pools = pools.lock().unwrap_or_else(|e| e.into_inner());

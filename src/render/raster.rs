@@ -6,7 +6,7 @@
 
 use super::clip::ATTRS;
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
-use super::shade::shade;
+use super::shade::{shade, shade_batch, Batch, LANES};
 use glam::Vec3;
 
 /// Tile edge in pixels.
@@ -94,12 +94,12 @@ pub fn for_each_pixel(t: &Tri, rect: Rect, mut f: impl FnMut(i32, i32, f32, f32)
             if (e[0] | e[1] | e[2]) >= 0 {
                 f(x, y, e[1] as f32 * ed.inv_area, e[2] as f32 * ed.inv_area);
             }
-            for k in 0..3 {
-                e[k] += ed.step_x[k];
+            for (e, s) in e.iter_mut().zip(ed.step_x) {
+                *e += s;
             }
         }
-        for k in 0..3 {
-            ed.row[k] += ed.step_y[k];
+        for (r, s) in ed.row.iter_mut().zip(ed.step_y) {
+            *r += s;
         }
     }
 }
@@ -163,7 +163,21 @@ pub fn draw_tile(p: &Prepared, bin: &Bin, rect: Rect, background: Vec3, eye: Vec
             }
         });
     }
-    // 2. Shade each visible pixel once.
+    // 2. Shade each visible pixel once, in batches of pixels of one item.
+    let mut batch = Batch::default();
+    let mut batch_item = NONE;
+    let mut shaded = [Vec3::ZERO; LANES];
+    let mut flush = |batch: &mut Batch, item: u32, color: &mut [Vec3]| {
+        if batch.len == 0 {
+            return;
+        }
+        let it = &p.items[item as usize];
+        shade_batch(&it.material, &it.lights, eye, batch, &mut shaded);
+        for k in 0..batch.len {
+            color[batch.dest[k] as usize] = shaded[k];
+        }
+        batch.len = 0;
+    };
     for i in 0..n {
         let ti = winner[i];
         if ti == NONE {
@@ -171,10 +185,24 @@ pub fn draw_tile(p: &Prepared, bin: &Bin, rect: Rect, background: Vec3, eye: Vec
         }
         let t = &p.opaque[ti as usize];
         let item = &p.items[t.item as usize];
-        let a = attrs_at(t, bary[i][0], bary[i][1]);
-        color[i] = shade_attrs(item, &a, t.back, eye);
         ids[i] = item.id;
+        let a = attrs_at(t, bary[i][0], bary[i][1]);
+        let c = Vec3::new(a[6], a[7], a[8]);
+        if item.unlit {
+            color[i] = c;
+            continue;
+        }
+        if t.item != batch_item || batch.len == LANES {
+            flush(&mut batch, batch_item, &mut color);
+            batch_item = t.item;
+        }
+        let mut nrm = Vec3::new(a[3], a[4], a[5]).normalize_or_zero();
+        if t.back {
+            nrm = -nrm;
+        }
+        batch.push(i as u32, Vec3::new(a[0], a[1], a[2]), nrm, c);
     }
+    flush(&mut batch, batch_item, &mut color);
     // 3. Lines and points, depth-tested and shaded as they come.
     for &li in &bin.lines {
         let l = &p.lines[li as usize];

@@ -42,6 +42,8 @@ pub enum WorldLightKind {
         /// Unit direction the spot points along.
         axis: Vec3,
         cos_cut_off: f32,
+        /// cos(beamWidth): inside it the spot term is 1.
+        cos_beam: f32,
         cut_off: f32,
         beam_width: f32,
         /// 128·dropOffRate; 0 = use the VRML ramp.
@@ -73,6 +75,7 @@ impl WorldLight {
                 radius,
                 axis: dir,
                 cos_cut_off: libm::cosf(cut_off_angle),
+                cos_beam: libm::cosf(beam_width),
                 cut_off: cut_off_angle,
                 beam_width,
                 exponent: 128.0 * drop_off_rate.clamp(0.0, 1.0),
@@ -124,10 +127,60 @@ impl ShadeMaterial {
     }
 }
 
+/// Pixels shaded together: the lighting loops below run over fixed-size
+/// lane arrays so the compiler turns them into SIMD instructions (each lane
+/// does exactly the arithmetic a lone pixel would, so results do not depend
+/// on how pixels are grouped).
+pub const LANES: usize = 8;
+type Lanes = [f32; LANES];
+
+/// Inputs of up to [`LANES`] pixels of one item (same material and lights),
+/// structure-of-arrays. Unused lanes hold harmless values.
+#[derive(Clone, Debug)]
+pub struct Batch {
+    pub len: usize,
+    /// World position, unit normal (facing the viewer), diffuse colour.
+    pub p: [Lanes; 3],
+    pub n: [Lanes; 3],
+    pub c: [Lanes; 3],
+    /// Where each lane's result goes (pixel index in the tile).
+    pub dest: [u32; LANES],
+}
+
+impl Default for Batch {
+    fn default() -> Self {
+        Batch {
+            len: 0,
+            p: [[0.0; LANES]; 3],
+            n: [[0.0; LANES], [0.0; LANES], [1.0; LANES]],
+            c: [[0.0; LANES]; 3],
+            dest: [0; LANES],
+        }
+    }
+}
+
+impl Batch {
+    /// Adds a pixel; the caller flushes when `len == LANES`.
+    #[inline]
+    pub fn push(&mut self, dest: u32, p: Vec3, n: Vec3, c: Vec3) {
+        let k = self.len;
+        self.p[0][k] = p.x;
+        self.p[1][k] = p.y;
+        self.p[2][k] = p.z;
+        self.n[0][k] = n.x;
+        self.n[1][k] = n.y;
+        self.n[2][k] = n.z;
+        self.c[0][k] = c.x;
+        self.c[1][k] = c.y;
+        self.c[2][k] = c.z;
+        self.dest[k] = dest;
+        self.len += 1;
+    }
+}
+
 /// The VRML97 colour of a surface point `p` with unit normal `n` (already
 /// facing the viewer for two-sided surfaces), seen from `eye`. `diffuse` is
 /// the material's diffuse colour or the per-vertex colour that replaces it.
-#[inline]
 pub fn shade(
     m: &ShadeMaterial,
     diffuse: Vec3,
@@ -136,94 +189,178 @@ pub fn shade(
     n: Vec3,
     eye: Vec3,
 ) -> Vec3 {
-    let v = (eye - p).normalize_or_zero();
-    let mut sum = m.emissive;
-    for l in lights {
-        let (to_light, factor) = match l.kind {
-            WorldLightKind::Directional { to_light } => (to_light, 1.0),
-            WorldLightKind::Point { location, radius } => {
-                let d = location - p;
-                let dist = d.length();
-                if dist > radius || dist == 0.0 {
-                    continue;
-                }
-                (d / dist, attenuation(l.attenuation, dist))
-            }
-            WorldLightKind::Spot {
-                location,
-                radius,
-                axis,
-                cos_cut_off,
-                cut_off,
-                beam_width,
-                exponent,
-            } => {
-                let d = location - p;
-                let dist = d.length();
-                if dist > radius || dist == 0.0 {
-                    continue;
-                }
-                let to_light = d / dist;
-                let cos_angle = -to_light.dot(axis);
-                if cos_angle <= cos_cut_off {
-                    continue;
-                }
-                let spot = if exponent > 0.0 {
-                    libm::powf(cos_angle, exponent)
-                } else {
-                    let angle = libm::acosf(cos_angle.clamp(-1.0, 1.0));
-                    if angle <= beam_width {
-                        1.0
-                    } else {
-                        ((angle - cut_off) / (beam_width - cut_off)).clamp(0.0, 1.0)
-                    }
-                };
-                (to_light, attenuation(l.attenuation, dist) * spot)
-            }
-        };
-        if !(factor > 0.0) {
-            continue;
-        }
-        let mut c = l.ambient * diffuse * m.ambient_intensity;
-        let ndl = n.dot(to_light);
-        if ndl > 0.0 {
-            c += l.color * diffuse * ndl;
-            if m.exponent > 0 && m.specular != Vec3::ZERO {
-                let h = (to_light + v).normalize_or_zero();
-                let ndh = n.dot(h);
-                if ndh > 0.0 {
-                    c += l.color * m.specular * pow_int(ndh, m.exponent as u32);
-                }
-            } else if m.exponent == 0 {
-                // x^0 = 1: a fully matte-shiny (shininess 0) surface still gets
-                // its specular colour wherever it is lit.
-                c += l.color * m.specular;
-            }
-        }
-        sum += c * factor;
-    }
-    sum
+    let mut b = Batch::default();
+    b.push(0, p, n, diffuse);
+    let mut out = [Vec3::ZERO; LANES];
+    shade_batch(m, lights, eye, &b, &mut out);
+    out[0]
 }
 
-/// `x^e` by repeated squaring: exact same bits on every machine and build
-/// (the design rules out platform `powf` for specular powers).
+/// Shades every lane of `b` (see [`shade`]) into `out`.
+pub fn shade_batch(
+    m: &ShadeMaterial,
+    lights: &[WorldLight],
+    eye: Vec3,
+    b: &Batch,
+    out: &mut [Vec3; LANES],
+) {
+    const L: usize = LANES;
+    let [px, py, pz] = &b.p;
+    let [nx, ny, nz] = &b.n;
+    let [cr, cg, cb] = &b.c;
+    // Unit vector to the eye.
+    let (mut vx, mut vy, mut vz) = ([0.0; L], [0.0; L], [0.0; L]);
+    for k in 0..L {
+        let (x, y, z) = (eye.x - px[k], eye.y - py[k], eye.z - pz[k]);
+        let len = (x * x + y * y + z * z).sqrt();
+        let inv = if len > 0.0 { 1.0 / len } else { 0.0 };
+        vx[k] = x * inv;
+        vy[k] = y * inv;
+        vz[k] = z * inv;
+    }
+    let (mut sr, mut sg, mut sb) = ([m.emissive.x; L], [m.emissive.y; L], [m.emissive.z; L]);
+    let use_specular = m.specular != Vec3::ZERO;
+    for l in lights {
+        // Per lane: unit vector to the light and attenuation × spot factor
+        // (0 where the light does not reach).
+        let (mut lx, mut ly, mut lz, mut factor) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
+        match l.kind {
+            WorldLightKind::Directional { to_light } => {
+                lx = [to_light.x; L];
+                ly = [to_light.y; L];
+                lz = [to_light.z; L];
+                factor = [1.0; L];
+            }
+            WorldLightKind::Point { location, radius }
+            | WorldLightKind::Spot {
+                location, radius, ..
+            } => {
+                let a = l.attenuation;
+                for k in 0..L {
+                    let (x, y, z) = (location.x - px[k], location.y - py[k], location.z - pz[k]);
+                    let d2 = x * x + y * y + z * z;
+                    let dist = d2.sqrt();
+                    let reach = dist <= radius && dist > 0.0;
+                    let inv = if reach { 1.0 / dist } else { 0.0 };
+                    lx[k] = x * inv;
+                    ly[k] = y * inv;
+                    lz[k] = z * inv;
+                    let att = 1.0 / (a.x + a.y * dist + a.z * d2).max(1.0);
+                    factor[k] = if reach { att } else { 0.0 };
+                }
+                if let WorldLightKind::Spot {
+                    axis,
+                    cos_cut_off,
+                    cos_beam,
+                    cut_off,
+                    beam_width,
+                    exponent,
+                    ..
+                } = l.kind
+                {
+                    spot_factor(
+                        &mut factor,
+                        [&lx, &ly, &lz],
+                        axis,
+                        cos_cut_off,
+                        cos_beam,
+                        cut_off,
+                        beam_width,
+                        exponent,
+                    );
+                }
+            }
+        }
+        let amb = l.ambient * m.ambient_intensity;
+        let mut ndl = [0.0; L];
+        for k in 0..L {
+            ndl[k] = (nx[k] * lx[k] + ny[k] * ly[k] + nz[k] * lz[k]).max(0.0);
+        }
+        let mut spec = [0.0; L];
+        if use_specular {
+            let mut ndh = [0.0; L];
+            for k in 0..L {
+                let (hx, hy, hz) = (lx[k] + vx[k], ly[k] + vy[k], lz[k] + vz[k]);
+                let hl = (hx * hx + hy * hy + hz * hz).sqrt();
+                let d = nx[k] * hx + ny[k] * hy + nz[k] * hz;
+                ndh[k] = if hl > 0.0 { (d / hl).max(0.0) } else { 0.0 };
+            }
+            let p = pow_lanes(ndh, m.exponent as u32);
+            for k in 0..L {
+                spec[k] = if ndl[k] > 0.0 { p[k] } else { 0.0 };
+            }
+        }
+        for k in 0..L {
+            let f = factor[k];
+            let d = ndl[k];
+            sr[k] +=
+                f * (amb.x * cr[k] + l.color.x * cr[k] * d + l.color.x * m.specular.x * spec[k]);
+            sg[k] +=
+                f * (amb.y * cg[k] + l.color.y * cg[k] * d + l.color.y * m.specular.y * spec[k]);
+            sb[k] +=
+                f * (amb.z * cb[k] + l.color.z * cb[k] * d + l.color.z * m.specular.z * spec[k]);
+        }
+    }
+    for k in 0..b.len.min(L) {
+        out[k] = Vec3::new(sr[k], sg[k], sb[k]);
+    }
+}
+
+/// Multiplies `factor` by the spot term: 0 outside the cut-off cone; inside,
+/// `cos^exponent` (Inventor dropOffRate) or the VRML97 ramp — 1 within the
+/// beam width, linear in the angle down to 0 at the cut-off.
+#[allow(clippy::too_many_arguments)]
 #[inline]
-pub fn pow_int(mut x: f32, mut e: u32) -> f32 {
-    let mut r = 1.0;
+fn spot_factor(
+    factor: &mut Lanes,
+    l: [&Lanes; 3],
+    axis: Vec3,
+    cos_cut_off: f32,
+    cos_beam: f32,
+    cut_off: f32,
+    beam_width: f32,
+    exponent: f32,
+) {
+    let mut cos = [0.0; LANES];
+    for k in 0..LANES {
+        cos[k] = -(l[0][k] * axis.x + l[1][k] * axis.y + l[2][k] * axis.z);
+        if cos[k] <= cos_cut_off {
+            factor[k] = 0.0;
+        }
+    }
+    for k in 0..LANES {
+        if factor[k] == 0.0 {
+            continue;
+        }
+        let spot = if exponent > 0.0 {
+            libm::powf(cos[k], exponent)
+        } else if cos[k] >= cos_beam {
+            1.0
+        } else {
+            let angle = libm::acosf(cos[k].clamp(-1.0, 1.0));
+            ((angle - cut_off) / (beam_width - cut_off)).clamp(0.0, 1.0)
+        };
+        factor[k] *= spot;
+    }
+}
+
+/// `x^e` on every lane by repeated squaring (the exponent is the same for
+/// all): exact same bits on every machine and build, unlike platform `powf`.
+#[inline]
+fn pow_lanes(mut x: Lanes, mut e: u32) -> Lanes {
+    let mut r = [1.0; LANES];
     while e > 0 {
         if e & 1 == 1 {
-            r *= x;
+            for k in 0..LANES {
+                r[k] *= x[k];
+            }
         }
-        x *= x;
+        for v in &mut x {
+            *v *= *v;
+        }
         e >>= 1;
     }
     r
-}
-
-/// VRML97 attenuation `1 / max(c1 + c2·d + c3·d², 1)`.
-#[inline]
-fn attenuation(a: Vec3, d: f32) -> f32 {
-    1.0 / (a.x + a.y * d + a.z * d * d).max(1.0)
 }
 
 #[cfg(test)]
@@ -257,7 +394,7 @@ mod tests {
         let c = shade(
             &mat(),
             Vec3::ONE,
-            &[l.clone()],
+            std::slice::from_ref(&l),
             Vec3::ZERO,
             Vec3::Z,
             Vec3::Z,
@@ -280,7 +417,15 @@ mod tests {
         let l = WorldLight::new(&light, Mat4::IDENTITY).unwrap();
         let at = |angle: f32| {
             let p = Vec3::new(angle.tan(), 0.0, 0.0);
-            shade(&mat(), Vec3::ONE, &[l.clone()], p, Vec3::Z, Vec3::Z).x / angle.cos()
+            shade(
+                &mat(),
+                Vec3::ONE,
+                std::slice::from_ref(&l),
+                p,
+                Vec3::Z,
+                Vec3::Z,
+            )
+            .x / angle.cos()
         };
         assert!((at(0.1) - 1.0).abs() < 1e-4);
         assert!((at(0.3) - 0.5).abs() < 1e-3, "{}", at(0.3));
@@ -317,7 +462,7 @@ mod tests {
         let c = shade(
             &m,
             Vec3::ZERO,
-            &[l.clone()],
+            std::slice::from_ref(&l),
             Vec3::ZERO,
             Vec3::Z,
             Vec3::Z * 3.0,
@@ -326,7 +471,7 @@ mod tests {
         let tilted = Vec3::new(0.2, 0.0, 1.0).normalize();
         let c = shade(&m, Vec3::ZERO, &[l], Vec3::ZERO, tilted, Vec3::Z * 3.0);
         assert!((c.x - tilted.z.powi(64)).abs() < 1e-6);
-        assert_eq!(pow_int(0.5, 10), 1.0 / 1024.0);
+        assert_eq!(pow_lanes([0.5; LANES], 10), [1.0 / 1024.0; LANES]);
     }
 
     #[test]

@@ -1,0 +1,107 @@
+//! Inline (VRML97), WWWInline (VRML 1.0) and File (Inventor): loading a
+//! local file named relative to the including one and grafting its scene
+//! under a node. Remote URLs are not fetched.
+
+use crate::anim::{Keys, TargetRef};
+use crate::format::lexer::Pos;
+use crate::scene::{MaterialId, MeshId, NodeId, NodeKind, Scene};
+use std::path::{Path, PathBuf};
+
+/// Deepest chain of files including files.
+pub const MAX_DEPTH: usize = 8;
+
+/// Resolves the first usable local URL of `urls` against `base`.
+pub fn resolve(base: &Path, urls: &[String]) -> Option<PathBuf> {
+    urls.iter().find_map(|u| {
+        let u = u.trim();
+        let u = u.strip_prefix("file://").unwrap_or(u);
+        if u.is_empty() || u.contains("://") {
+            return None;
+        }
+        let u = u.split('#').next().unwrap_or(u);
+        let p = Path::new(u);
+        Some(if p.is_absolute() {
+            p.to_path_buf()
+        } else {
+            base.parent().unwrap_or(Path::new("")).join(p)
+        })
+    })
+}
+
+/// Loads the file named by `urls` and adds its scene under `parent`;
+/// problems become warnings (`path:line:column: message`).
+pub fn load_into(
+    scene: &mut Scene,
+    warnings: &mut Vec<String>,
+    base: &Path,
+    pos: Pos,
+    urls: &[String],
+    parent: NodeId,
+    depth: usize,
+) {
+    let at = |m: String| format!("{}:{}:{}: {m}", base.display(), pos.line, pos.column);
+    if depth + 1 > MAX_DEPTH {
+        warnings.push(at(format!(
+            "inline files nested deeper than {MAX_DEPTH}; skipped"
+        )));
+        return;
+    }
+    let Some(file) = resolve(base, urls) else {
+        warnings.push(at(format!(
+            "no local file among inline URLs {urls:?}; skipped"
+        )));
+        return;
+    };
+    match crate::format::load_nested(&file, depth + 1) {
+        Ok(mut loaded) => {
+            graft(scene, &loaded.scene, parent);
+            warnings.append(&mut loaded.warnings);
+        }
+        Err(e) => warnings.push(at(format!("inline file not loaded: {e}"))),
+    }
+}
+
+/// Copies `src`'s nodes, meshes, materials and tracks under `parent`.
+pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) {
+    let mesh_base = dst.meshes.len() as u32;
+    let mat_base = dst.materials.len() as u32;
+    dst.meshes.extend(src.meshes.iter().cloned());
+    dst.materials.extend(src.materials.iter().cloned());
+    let mut map = vec![None; src.nodes.len()];
+    for id in src.walk() {
+        let n = src.node(id);
+        let p = n.parent.and_then(|p| map[p.0 as usize]).unwrap_or(parent);
+        let mut copy = n.clone();
+        if let NodeKind::Shape(s) = &mut copy.kind {
+            s.mesh = MeshId(s.mesh.0 + mesh_base);
+            s.material = MaterialId(s.material.0 + mat_base);
+        }
+        map[id.0 as usize] = Some(dst.add_node(Some(p), copy));
+    }
+    let scale = dst.settings.fps / src.settings.fps.max(1e-6);
+    for t in &src.animation.tracks {
+        let mut t = t.clone();
+        t.target.of = match t.target.of {
+            TargetRef::Node(n) => match map.get(n.0 as usize).copied().flatten() {
+                Some(m) => TargetRef::Node(m),
+                None => continue,
+            },
+            TargetRef::Material(m) => TargetRef::Material(MaterialId(m.0 + mat_base)),
+        };
+        if scale != 1.0 {
+            match &mut t.keys {
+                Keys::Scalar(k) => k.iter_mut().for_each(|k| k.frame *= scale),
+                Keys::Vec3(k) => k.iter_mut().for_each(|k| k.frame *= scale),
+                Keys::Rotation(k) => k.iter_mut().for_each(|k| k.frame *= scale),
+                Keys::Bool(k) => k.iter_mut().for_each(|k| k.frame *= scale),
+            }
+        }
+        dst.animation.tracks.push(t);
+    }
+    if !src.animation.tracks.is_empty() {
+        let d = src.settings.duration * scale;
+        if dst.animation.tracks.len() == src.animation.tracks.len() || d > dst.settings.duration {
+            dst.settings.duration = d;
+        }
+    }
+}

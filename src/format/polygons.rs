@@ -1,0 +1,98 @@
+//! Helpers shared by the Inventor and VRML97 readers for polygon input:
+//! splitting `-1`-separated index lists and calling the shared mesh builder
+//! so that one bad index costs one face (or the colours), not the shape.
+
+use crate::format::lexer::Pos;
+use crate::scene::normals::{mesh_from_polygons, Binding, PolyOptions};
+use crate::scene::Mesh;
+use glam::Vec3;
+
+/// Splits an index list at negative entries (VRML's `-1` separators); a
+/// trailing list without a separator counts too.
+pub fn split_index(idx: &[i64]) -> Vec<Vec<u32>> {
+    let mut out = Vec::new();
+    let mut cur = Vec::new();
+    for &i in idx {
+        if i < 0 {
+            out.push(std::mem::take(&mut cur));
+        } else {
+            cur.push(i.min(u32::MAX as i64) as u32);
+        }
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    out
+}
+
+/// Empties faces that index past `len` (kept as empty faces so per-face
+/// bindings stay aligned).
+pub fn drop_bad(mut faces: Vec<Vec<u32>>, len: usize) -> Vec<Vec<u32>> {
+    for f in &mut faces {
+        if f.iter().any(|&i| i as usize >= len) {
+            f.clear();
+        }
+    }
+    faces
+}
+
+/// Builds a polygon mesh; bad coordinate indices drop their faces, bad
+/// normal/colour bindings are dropped with a message.
+pub fn build(
+    positions: &[Vec3],
+    faces: Vec<Vec<u32>>,
+    mut opts: PolyOptions,
+    pos: Pos,
+    msgs: &mut Vec<(Pos, String)>,
+) -> Option<Mesh> {
+    let n_before = faces.iter().filter(|f| !f.is_empty()).count();
+    let faces = drop_bad(faces, positions.len());
+    let dropped = n_before - faces.iter().filter(|f| !f.is_empty()).count();
+    if dropped > 0 {
+        msgs.push((
+            pos,
+            format!(
+                "{dropped} faces index past the {} coordinates; skipped",
+                positions.len()
+            ),
+        ));
+    }
+    for _ in 0..3 {
+        match mesh_from_polygons(positions, &faces, &opts) {
+            Ok(m) => return Some(m),
+            Err(e) => {
+                if opts.colors != Binding::None {
+                    msgs.push((pos, format!("colours ignored: {e}")));
+                    opts.colors = Binding::None;
+                } else if opts.normals != Binding::None {
+                    msgs.push((pos, format!("normals ignored (recomputed): {e}")));
+                    opts.normals = Binding::None;
+                } else {
+                    msgs.push((pos, format!("geometry skipped: {e}")));
+                    return None;
+                }
+            }
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn split_handles_missing_trailing_separator() {
+        assert_eq!(
+            split_index(&[0, 1, 2, -1, 2, 3, 0]),
+            vec![vec![0, 1, 2], vec![2, 3, 0]]
+        );
+        assert_eq!(split_index(&[0, 1, 2, -1]), vec![vec![0, 1, 2]]);
+    }
+
+    #[test]
+    fn bad_faces_are_emptied_not_removed() {
+        let f = drop_bad(vec![vec![0, 1, 2], vec![0, 9, 1], vec![2, 1, 0]], 3);
+        assert_eq!(f, vec![vec![0, 1, 2], vec![], vec![2, 1, 0]]);
+    }
+}

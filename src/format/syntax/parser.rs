@@ -1,0 +1,657 @@
+//! The generic classic-syntax parser: nodes, DEF/USE, untyped field values,
+//! and (VRML97) PROTO, EXTERNPROTO and ROUTE statements.
+//!
+//! Hostile input is bounded: nesting depth, numbers per field and the total
+//! number of nodes (PROTO expansion included) have limits. A syntax error
+//! stops parsing but keeps every node read so far (see [`Parsed::error`]).
+
+use super::proto::{instantiate, ProtoDef};
+use super::{AstNode, Field, NodeRef, Parsed, Route, Value};
+use crate::format::lexer::{LexError, Lexer, Pos, Tok};
+use std::collections::HashMap;
+use std::rc::Rc;
+
+/// Dialect switches and limits.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// VRML97: PROTO/EXTERNPROTO/ROUTE statements and interface declarations.
+    pub vrml97: bool,
+    pub max_depth: usize,
+    pub max_numbers_per_field: usize,
+    pub max_nodes: usize,
+}
+
+impl Options {
+    pub fn new(vrml97: bool) -> Self {
+        Options {
+            vrml97,
+            max_depth: 256,
+            max_numbers_per_field: 10_000_000,
+            max_nodes: 2_000_000,
+        }
+    }
+}
+
+type PResult<T> = Result<T, (Pos, String)>;
+
+fn lex_err(e: LexError) -> (Pos, String) {
+    (e.pos, e.message)
+}
+
+struct Scope {
+    defs: HashMap<String, NodeRef>,
+    protos: HashMap<String, Rc<ProtoDef>>,
+    routes: Vec<Route>,
+}
+
+impl Scope {
+    fn new() -> Self {
+        Scope {
+            defs: HashMap::new(),
+            protos: HashMap::new(),
+            routes: Vec::new(),
+        }
+    }
+}
+
+pub(super) struct Parser<'a> {
+    lx: Lexer<'a>,
+    opts: Options,
+    depth: usize,
+    pub(super) nodes: usize,
+    scopes: Vec<Scope>,
+    warnings: Vec<(Pos, String)>,
+}
+
+/// Parses a whole file body (the header line is a comment to the lexer).
+pub fn parse(src: &[u8], opts: Options) -> Parsed {
+    let mut p = Parser {
+        lx: Lexer::new(src),
+        opts,
+        depth: 0,
+        nodes: 0,
+        scopes: vec![Scope::new()],
+        warnings: Vec::new(),
+    };
+    let mut roots = Vec::new();
+    let error = p.statements(&mut roots, true).err();
+    let scope = p.scopes.pop().unwrap_or_else(Scope::new);
+    Parsed {
+        roots,
+        routes: scope.routes,
+        warnings: p.warnings,
+        error,
+    }
+}
+
+impl Parser<'_> {
+    fn peek(&mut self) -> PResult<Tok> {
+        self.lx.peek().map(|t| t.tok.clone()).map_err(lex_err)
+    }
+
+    fn peek_is_ident(&mut self, word: &str) -> bool {
+        matches!(self.lx.peek(), Ok(t) if matches!(&t.tok, Tok::Ident(s) if s == word))
+    }
+
+    fn next(&mut self) -> PResult<(Tok, Pos)> {
+        self.lx
+            .next_token()
+            .map(|t| (t.tok, t.pos))
+            .map_err(lex_err)
+    }
+
+    fn expect(&mut self, want: Tok, what: &str) -> PResult<Pos> {
+        let (t, pos) = self.next()?;
+        if t == want {
+            Ok(pos)
+        } else {
+            Err((pos, format!("expected {what}, found {}", t.describe())))
+        }
+    }
+
+    fn ident(&mut self, what: &str) -> PResult<(String, Pos)> {
+        match self.next()? {
+            (Tok::Ident(s), p) => Ok((s, p)),
+            (t, p) => Err((p, format!("expected {what}, found {}", t.describe()))),
+        }
+    }
+
+    fn warn(&mut self, pos: Pos, msg: impl Into<String>) {
+        if self.warnings.len() < 1000 {
+            self.warnings.push((pos, msg.into()));
+        }
+    }
+
+    fn scope(&mut self) -> &mut Scope {
+        // The parser always holds at least the file scope.
+        self.scopes.last_mut().expect("scope stack is never empty")
+    }
+
+    /// Statements until EOF (`top`) or a closing `}` / `]` (left unread).
+    fn statements(&mut self, out: &mut Vec<NodeRef>, top: bool) -> PResult<()> {
+        loop {
+            match self.peek()? {
+                Tok::Eof if top => return Ok(()),
+                Tok::Eof => {
+                    let pos = self.lx.pos();
+                    return Err((pos, "unexpected end of file (missing '}' or ']')".into()));
+                }
+                Tok::RBrace | Tok::RBracket if !top => return Ok(()),
+                Tok::RBrace | Tok::RBracket => {
+                    let (t, pos) = self.next()?;
+                    self.warn(pos, format!("stray {} ignored", t.describe()));
+                }
+                _ => {
+                    if let Some(n) = self.statement()? {
+                        out.push(n);
+                    }
+                }
+            }
+        }
+    }
+
+    /// One statement: a node, PROTO, EXTERNPROTO or ROUTE.
+    fn statement(&mut self) -> PResult<Option<NodeRef>> {
+        if self.opts.vrml97 {
+            if self.peek_is_ident("PROTO") {
+                self.proto()?;
+                return Ok(None);
+            }
+            if self.peek_is_ident("EXTERNPROTO") {
+                self.externproto()?;
+                return Ok(None);
+            }
+        }
+        if self.peek_is_ident("ROUTE") {
+            self.route()?;
+            return Ok(None);
+        }
+        self.node_statement()
+    }
+
+    /// `DEF name Node`, `USE name`, `NULL` or `Node`.
+    fn node_statement(&mut self) -> PResult<Option<NodeRef>> {
+        let (t, pos) = self.next()?;
+        match t {
+            Tok::Ident(w) if w == "DEF" => {
+                let (name, _) = self.lx.next_name().map_err(lex_err)?;
+                let (kind, kpos) = self.ident("a node type after DEF")?;
+                let n = self.node_body(kind, Some(name.clone()), kpos)?;
+                self.scope().defs.insert(name, n.clone());
+                Ok(Some(n))
+            }
+            Tok::Ident(w) if w == "USE" => {
+                let (name, npos) = self.lx.next_name().map_err(lex_err)?;
+                match self.lookup(&name) {
+                    Some(n) => Ok(Some(n)),
+                    None => {
+                        self.warn(npos, format!("USE of undefined name '{name}' ignored"));
+                        Ok(None)
+                    }
+                }
+            }
+            Tok::Ident(w) if w == "NULL" => Ok(None),
+            Tok::Ident(kind) => self.node_body(kind, None, pos).map(Some),
+            other => Err((pos, format!("expected a node, found {}", other.describe()))),
+        }
+    }
+
+    fn lookup(&self, name: &str) -> Option<NodeRef> {
+        self.scopes.last()?.defs.get(name).cloned()
+    }
+
+    /// `{ fields }` after a node type name.
+    fn node_body(&mut self, kind: String, def: Option<String>, pos: Pos) -> PResult<NodeRef> {
+        self.nodes += 1;
+        if self.nodes > self.opts.max_nodes {
+            return Err((pos, format!("more than {} nodes", self.opts.max_nodes)));
+        }
+        self.depth += 1;
+        if self.depth > self.opts.max_depth {
+            return Err((pos, format!("nesting deeper than {}", self.opts.max_depth)));
+        }
+        let r = self.node_fields(&kind, pos);
+        self.depth -= 1;
+        let fields = r?;
+        let proto = self
+            .scopes
+            .iter()
+            .rev()
+            .find_map(|s| s.protos.get(&kind).cloned());
+        let mut node = AstNode {
+            kind,
+            def,
+            fields,
+            pos,
+            proto: None,
+        };
+        if let Some(def) = proto {
+            let (inst, routes) = instantiate(&def, &node, self)?;
+            node.proto = Some(inst);
+            self.scope().routes.extend(routes);
+        }
+        Ok(Rc::new(node))
+    }
+
+    fn node_fields(&mut self, kind: &str, pos: Pos) -> PResult<Vec<Field>> {
+        match self.next()? {
+            (Tok::LBrace, _) => {}
+            (t, p) => {
+                return Err((
+                    p,
+                    format!(
+                        "expected '{{' after node type '{kind}', found {}",
+                        t.describe()
+                    ),
+                ))
+            }
+        }
+        let _ = pos;
+        let mut fields = Vec::new();
+        loop {
+            let (t, fpos) = self.next()?;
+            let name = match t {
+                Tok::RBrace => return Ok(fields),
+                Tok::Ident(s) => s,
+                Tok::Eof => {
+                    return Err((
+                        fpos,
+                        format!("unexpected end of file inside '{kind}' (missing '}}')"),
+                    ))
+                }
+                other => {
+                    return Err((
+                        fpos,
+                        format!(
+                            "expected a field name or '}}' in '{kind}', found {}",
+                            other.describe()
+                        ),
+                    ))
+                }
+            };
+            match name.as_str() {
+                "ROUTE" => {
+                    self.route_after_keyword(fpos)?;
+                    continue;
+                }
+                "PROTO" if self.opts.vrml97 => {
+                    self.proto_after_keyword()?;
+                    continue;
+                }
+                "EXTERNPROTO" if self.opts.vrml97 => {
+                    self.externproto_after_keyword(fpos)?;
+                    continue;
+                }
+                "eventIn" | "eventOut" | "inputOnly" | "outputOnly" => {
+                    // Script interface: `eventIn SFType name [IS other]`.
+                    self.ident("a field type")?;
+                    let (n, npos) = self.ident("a field name")?;
+                    if self.peek_is_ident("IS") {
+                        self.next()?;
+                        let (other, _) = self.ident("an interface name after IS")?;
+                        fields.push(Field {
+                            name: n,
+                            value: Value::Is(other),
+                            pos: npos,
+                        });
+                    }
+                    continue;
+                }
+                "field" | "exposedField" | "initializeOnly" | "inputOutput" => {
+                    self.ident("a field type")?;
+                    let (n, npos) = self.ident("a field name")?;
+                    let value = self.value()?;
+                    fields.push(Field {
+                        name: n,
+                        value,
+                        pos: npos,
+                    });
+                    continue;
+                }
+                _ => {}
+            }
+            let value = self.value()?;
+            fields.push(Field {
+                name,
+                value,
+                pos: fpos,
+            });
+        }
+    }
+
+    /// One untyped field value, plus Inventor's trailing `~` (ignore flag)
+    /// and `= Engine.output` connections (read and dropped).
+    fn value(&mut self) -> PResult<Value> {
+        let v = self.raw_value()?;
+        loop {
+            match self.peek()? {
+                Tok::Punct(b'~') => {
+                    self.next()?;
+                }
+                Tok::Punct(b'=') => {
+                    let (_, pos) = self.next()?;
+                    self.warn(pos, "field connections (engines) are not evaluated");
+                    if let Tok::Ident(_) = self.peek()? {
+                        let is_node = self.is_node_start()?;
+                        if is_node {
+                            self.node_statement()?;
+                            // `.output` follows the node's closing brace.
+                            if let Tok::Ident(s) = self.peek()? {
+                                if s.starts_with('.') {
+                                    self.next()?;
+                                }
+                            }
+                        } else {
+                            self.next()?;
+                        }
+                    }
+                }
+                _ => return Ok(v),
+            }
+        }
+    }
+
+    /// True if the next tokens start a node (`DEF`, `USE`, `Type {`).
+    fn is_node_start(&mut self) -> PResult<bool> {
+        let t0 = self.peek()?;
+        if let Tok::Ident(w) = &t0 {
+            if w == "DEF" || w == "USE" {
+                return Ok(true);
+            }
+            let t1 = self.lx.peek_nth(1).map_err(lex_err)?.tok.clone();
+            return Ok(t1 == Tok::LBrace);
+        }
+        Ok(false)
+    }
+
+    fn raw_value(&mut self) -> PResult<Value> {
+        match self.peek()? {
+            Tok::Num(_) => {
+                let mut v = Vec::new();
+                self.numbers(&mut v)?;
+                Ok(Value::Nums(v))
+            }
+            Tok::Str(_) => {
+                let (t, _) = self.next()?;
+                let Tok::Str(s) = t else { unreachable!() };
+                Ok(Value::Strs(vec![s]))
+            }
+            Tok::LBracket => {
+                self.next()?;
+                self.list()
+            }
+            Tok::Punct(b'(') => {
+                self.next()?;
+                let mut words = Vec::new();
+                loop {
+                    match self.next()? {
+                        (Tok::Punct(b')'), _) => break,
+                        (Tok::Punct(b'|'), _) => {}
+                        (Tok::Ident(w), _) => words.push(w),
+                        (t, p) => {
+                            return Err((
+                                p,
+                                format!("expected a flag name, found {}", t.describe()),
+                            ))
+                        }
+                    }
+                }
+                Ok(Value::Words(words))
+            }
+            Tok::Ident(w) => {
+                if w == "IS" {
+                    self.next()?;
+                    let (name, _) = self.ident("an interface name after IS")?;
+                    return Ok(Value::Is(name));
+                }
+                if w == "NULL" {
+                    self.next()?;
+                    return Ok(Value::Nodes(Vec::new()));
+                }
+                if self.is_node_start()? {
+                    return Ok(Value::Nodes(self.node_statement()?.into_iter().collect()));
+                }
+                self.next()?;
+                let mut words = vec![w];
+                // Bit masks written without parentheses: `SIDES | TOP`.
+                while self.peek()? == Tok::Punct(b'|') {
+                    self.next()?;
+                    let (w, _) = self.ident("a flag name after '|'")?;
+                    words.push(w);
+                }
+                Ok(Value::Words(words))
+            }
+            Tok::Eof => {
+                let pos = self.lx.pos();
+                Err((
+                    pos,
+                    "unexpected end of file where a field value was expected".into(),
+                ))
+            }
+            t => {
+                let pos = self.lx.pos();
+                Err((
+                    pos,
+                    format!("expected a field value, found {}", t.describe()),
+                ))
+            }
+        }
+    }
+
+    fn numbers(&mut self, v: &mut Vec<f64>) -> PResult<()> {
+        while let Ok(t) = self.lx.peek() {
+            let Tok::Num(n) = t.tok else { break };
+            if v.len() >= self.opts.max_numbers_per_field {
+                let pos = t.pos;
+                return Err((
+                    pos,
+                    format!(
+                        "more than {} numbers in one field",
+                        self.opts.max_numbers_per_field
+                    ),
+                ));
+            }
+            v.push(n);
+            self.lx.next_token().map_err(lex_err)?;
+        }
+        Ok(())
+    }
+
+    /// The inside of `[ ... ]` (the `[` is read).
+    fn list(&mut self) -> PResult<Value> {
+        match self.peek()? {
+            Tok::RBracket => {
+                self.next()?;
+                Ok(Value::Empty)
+            }
+            Tok::Num(_) => {
+                let mut v = Vec::new();
+                self.numbers(&mut v)?;
+                match self.next()? {
+                    (Tok::RBracket, _) => Ok(Value::Nums(v)),
+                    (t, p) => Err((
+                        p,
+                        format!("expected a number or ']', found {}", t.describe()),
+                    )),
+                }
+            }
+            Tok::Str(_) => {
+                let mut v = Vec::new();
+                loop {
+                    match self.next()? {
+                        (Tok::Str(s), _) => v.push(s),
+                        (Tok::RBracket, _) => return Ok(Value::Strs(v)),
+                        (t, p) => {
+                            return Err((
+                                p,
+                                format!("expected a string or ']', found {}", t.describe()),
+                            ))
+                        }
+                    }
+                    if v.len() > self.opts.max_numbers_per_field {
+                        return Err((self.lx.pos(), "too many strings in one field".into()));
+                    }
+                }
+            }
+            _ => {
+                if self.is_node_start()? || self.peek_is_ident("ROUTE") {
+                    let mut nodes = Vec::new();
+                    self.statements(&mut nodes, false)?;
+                    self.expect(Tok::RBracket, "']'")?;
+                    return Ok(Value::Nodes(nodes));
+                }
+                // Words (MFEnum, field declarations, TRUE/FALSE lists).
+                let mut words = Vec::new();
+                loop {
+                    match self.next()? {
+                        (Tok::RBracket, _) => return Ok(Value::Words(words)),
+                        (Tok::Ident(w), _) => words.push(w),
+                        (Tok::Num(n), _) => words.push(format!("{n}")),
+                        (Tok::Punct(_), _) => {}
+                        (t, p) => {
+                            return Err((p, format!("unexpected {} in a list", t.describe())))
+                        }
+                    }
+                    if words.len() > self.opts.max_numbers_per_field {
+                        return Err((self.lx.pos(), "too many words in one field".into()));
+                    }
+                }
+            }
+        }
+    }
+
+    fn route(&mut self) -> PResult<()> {
+        let (_, pos) = self.next()?;
+        self.route_after_keyword(pos)
+    }
+
+    /// `from.field TO to.field` (the ROUTE keyword is read).
+    fn route_after_keyword(&mut self, pos: Pos) -> PResult<()> {
+        let (from, _) = self.ident("'Node.eventOut' after ROUTE")?;
+        let (to_kw, tpos) = self.ident("TO")?;
+        if to_kw != "TO" {
+            return Err((tpos, format!("expected TO in ROUTE, found '{to_kw}'")));
+        }
+        let (to, _) = self.ident("'Node.eventIn' after TO")?;
+        let split = |s: &str| {
+            s.rsplit_once('.')
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+        };
+        let (Some((fnode, ffield)), Some((tnode, tfield))) = (split(&from), split(&to)) else {
+            return Err((pos, "ROUTE needs Node.field on both sides".into()));
+        };
+        match (self.lookup(&fnode), self.lookup(&tnode)) {
+            (Some(f), Some(t)) => self.scope().routes.push(Route {
+                from: f,
+                from_field: ffield,
+                to: t,
+                to_field: tfield,
+                pos,
+            }),
+            (f, _) => {
+                let missing = if f.is_none() { fnode } else { tnode };
+                self.warn(
+                    pos,
+                    format!("ROUTE names undefined node '{missing}', ignored"),
+                );
+            }
+        }
+        Ok(())
+    }
+
+    fn proto(&mut self) -> PResult<()> {
+        self.next()?;
+        self.proto_after_keyword()
+    }
+
+    /// `Name [ interface ] { body }` (the PROTO keyword is read).
+    fn proto_after_keyword(&mut self) -> PResult<()> {
+        let (name, pos) = self.ident("a PROTO name")?;
+        self.expect(Tok::LBracket, "'[' after the PROTO name")?;
+        let mut fields = Vec::new();
+        loop {
+            let (t, p) = self.next()?;
+            let kw = match t {
+                Tok::RBracket => break,
+                Tok::Ident(s) => s,
+                t => {
+                    return Err((
+                        p,
+                        format!(
+                            "expected a PROTO interface declaration, found {}",
+                            t.describe()
+                        ),
+                    ))
+                }
+            };
+            self.ident("a field type")?;
+            let (fname, _) = self.ident("a field name")?;
+            match kw.as_str() {
+                "field" | "exposedField" | "initializeOnly" | "inputOutput" => {
+                    let v = self.value()?;
+                    fields.push((fname, Some(v)));
+                }
+                "eventIn" | "eventOut" | "inputOnly" | "outputOnly" => fields.push((fname, None)),
+                other => {
+                    return Err((
+                        p,
+                        format!("expected field/exposedField/eventIn/eventOut, found '{other}'"),
+                    ))
+                }
+            }
+        }
+        self.expect(Tok::LBrace, "'{' to open the PROTO body")?;
+        self.depth += 1;
+        if self.depth > self.opts.max_depth {
+            return Err((pos, format!("nesting deeper than {}", self.opts.max_depth)));
+        }
+        // The body is its own DEF scope; PROTOs declared outside stay visible.
+        self.scopes.push(Scope::new());
+        let mut body = Vec::new();
+        let r = self.statements(&mut body, false);
+        let scope = self.scopes.pop().unwrap_or_else(Scope::new);
+        self.depth -= 1;
+        r?;
+        self.expect(Tok::RBrace, "'}' to close the PROTO body")?;
+        if body.is_empty() {
+            self.warn(pos, format!("PROTO {name} has an empty body"));
+        }
+        let def = ProtoDef {
+            fields,
+            body,
+            routes: scope.routes,
+        };
+        self.scope().protos.insert(name, Rc::new(def));
+        Ok(())
+    }
+
+    fn externproto(&mut self) -> PResult<()> {
+        let (_, pos) = self.next()?;
+        self.externproto_after_keyword(pos)
+    }
+
+    /// `Name [ interface ] url` — skipped with a warning; instances of it
+    /// then parse as unknown nodes.
+    fn externproto_after_keyword(&mut self, pos: Pos) -> PResult<()> {
+        let (name, _) = self.ident("an EXTERNPROTO name")?;
+        self.expect(Tok::LBracket, "'[' after the EXTERNPROTO name")?;
+        loop {
+            match self.next()? {
+                (Tok::RBracket, _) => break,
+                (Tok::Ident(_), _) => {}
+                (t, p) => {
+                    return Err((
+                        p,
+                        format!("unexpected {} in EXTERNPROTO interface", t.describe()),
+                    ))
+                }
+            }
+        }
+        self.value()?; // the URL(s)
+        self.warn(
+            pos,
+            format!("EXTERNPROTO {name} is not supported; its instances are skipped"),
+        );
+        Ok(())
+    }
+}

@@ -1,0 +1,495 @@
+//! TimeSensor → interpolator → ROUTE chains as animation tracks.
+//!
+//! An interpolator's key `k` (a fraction of the cycle) becomes a key at
+//! `(startTime + k · cycleInterval) · fps` frames with linear interpolation
+//! (slerp for rotations). Keys are padded to the whole cycle so that a
+//! looping track repeats exactly one cycle. ColorInterpolator blends in HSV
+//! (VRML97 §6.10), so each colour segment is subdivided with HSV-blended keys.
+
+use super::build::Builder;
+use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
+use crate::format::syntax::{AstNode, NodeRef, Route};
+use crate::scene::{NodeKind, Settings};
+use glam::{Quat, Vec3};
+use std::collections::HashMap;
+use std::rc::Rc;
+
+/// Frame rates tried, in order, for one that puts every key on a whole frame.
+const FPS_CHOICES: &[f32] = &[24.0, 25.0, 30.0, 60.0, 50.0, 48.0, 100.0, 120.0];
+/// Keys added inside each HSV colour segment.
+const HSV_STEPS: usize = 8;
+
+/// A TimeSensor's timing.
+#[derive(Clone, Copy, Debug)]
+struct Clock {
+    start: f64,
+    cycle: f64,
+    looping: bool,
+}
+
+fn clock(ts: &AstNode) -> Clock {
+    Clock {
+        start: ts.num("startTime").unwrap_or(0.0).max(0.0),
+        cycle: ts.num("cycleInterval").unwrap_or(1.0),
+        looping: ts.bool("loop", false),
+    }
+}
+
+/// Strips `set_` and `_changed` from an event name.
+fn field_name(s: &str) -> &str {
+    let s = s.strip_prefix("set_").unwrap_or(s);
+    s.strip_suffix("_changed").unwrap_or(s)
+}
+
+/// Follows PROTO interface bindings to the real (node, field) pairs.
+fn resolve(node: &NodeRef, field: &str, out: &mut Vec<(NodeRef, String)>, depth: usize) {
+    if depth > 64 {
+        return;
+    }
+    match &node.proto {
+        Some(p) => {
+            let bound = p
+                .is_map
+                .get(field)
+                .or_else(|| p.is_map.get(field_name(field)))
+                .or_else(|| p.is_map.get(&format!("set_{}", field_name(field))))
+                .or_else(|| p.is_map.get(&format!("{}_changed", field_name(field))));
+            if let Some(list) = bound {
+                for (n, f) in list {
+                    resolve(n, f, out, depth + 1);
+                }
+            }
+        }
+        None => out.push((node.clone(), field.to_string())),
+    }
+}
+
+/// One interpolator's keys as seconds-in-cycle fractions and values.
+enum Values {
+    Scalar(Vec<f32>),
+    Vec3(Vec<Vec3>),
+    Rotation(Vec<Quat>),
+    Color(Vec<Vec3>),
+}
+
+fn interpolator_values(n: &AstNode) -> Option<(Vec<f64>, Values)> {
+    let keys: Vec<f64> = n.nums("key")?.to_vec();
+    let kv = n.nums("keyValue").unwrap_or(&[]);
+    let v3 = |kv: &[f64]| -> Vec<Vec3> {
+        kv.chunks_exact(3)
+            .map(|c| Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32))
+            .collect()
+    };
+    let values = match n.kind.as_str() {
+        "ScalarInterpolator" => Values::Scalar(kv.iter().map(|v| *v as f32).collect()),
+        "PositionInterpolator" => Values::Vec3(v3(kv)),
+        "ColorInterpolator" => Values::Color(v3(kv)),
+        "OrientationInterpolator" => Values::Rotation(
+            kv.chunks_exact(4)
+                .map(|c| crate::format::syntax::axis_angle(c[0], c[1], c[2], c[3]))
+                .collect(),
+        ),
+        _ => return None,
+    };
+    Some((keys, values))
+}
+
+/// Which property a routed field is, given what the target node is.
+enum Dest {
+    Node(Property),
+    Material(Property),
+}
+
+fn dest(target_kind: &str, field: &str) -> Option<Dest> {
+    use Property as P;
+    let f = field_name(field);
+    let p = match (target_kind, f) {
+        ("Transform", "translation") => Dest::Node(P::Translation),
+        ("Transform", "rotation") => Dest::Node(P::Rotation),
+        ("Transform", "scale") => Dest::Node(P::Scale),
+        ("DirectionalLight" | "PointLight" | "SpotLight", f) => Dest::Node(match f {
+            "color" => P::LightColor,
+            "intensity" => P::LightIntensity,
+            "location" => P::LightLocation,
+            "direction" => P::LightDirection,
+            "cutOffAngle" => P::LightCutOff,
+            "beamWidth" => P::LightBeamWidth,
+            _ => return None,
+        }),
+        ("Viewpoint", "position") => Dest::Node(P::CameraPosition),
+        ("Viewpoint", "orientation") => Dest::Node(P::CameraOrientation),
+        ("Viewpoint", "fieldOfView") => Dest::Node(P::CameraFov),
+        ("Material", f) => Dest::Material(match f {
+            "diffuseColor" => P::Diffuse,
+            "emissiveColor" => P::Emissive,
+            "specularColor" => P::Specular,
+            "transparency" => P::Transparency,
+            "shininess" => P::Shininess,
+            _ => return None,
+        }),
+        _ => return None,
+    };
+    Some(p)
+}
+
+/// Imports every interpolator chain of the file as tracks.
+pub fn import(b: &mut Builder, routes: &[Route]) {
+    // Interpolator → the TimeSensor that drives its fraction.
+    let mut driver: HashMap<*const AstNode, NodeRef> = HashMap::new();
+    for r in routes {
+        let from = r.from.effective();
+        if from.kind == "TimeSensor" && field_name(&r.from_field) == "fraction" {
+            let mut targets = Vec::new();
+            resolve(&r.to, &r.to_field, &mut targets, 0);
+            for (t, f) in targets {
+                if field_name(&f) == "fraction" {
+                    driver.insert(Rc::as_ptr(&t), from.clone());
+                }
+            }
+        }
+    }
+    struct Pending {
+        interp: NodeRef,
+        clock: Clock,
+        of: TargetRef,
+        property: Property,
+    }
+    let mut pending: Vec<Pending> = Vec::new();
+    for r in routes {
+        let mut sources = Vec::new();
+        resolve(&r.from, &r.from_field, &mut sources, 0);
+        let Some((interp, _)) = sources.into_iter().next() else {
+            continue;
+        };
+        if !interp.kind.ends_with("Interpolator") || field_name(&r.from_field) != "value" {
+            continue;
+        }
+        let Some(ts) = driver.get(&Rc::as_ptr(&interp)).cloned() else {
+            let msg = format!(
+                "{} is not driven by a TimeSensor's fraction_changed; not imported",
+                interp.kind
+            );
+            b.warn(r.pos, &msg);
+            continue;
+        };
+        let c = clock(&ts);
+        if !ts.bool("enabled", true) {
+            b.warn(
+                ts.pos,
+                "TimeSensor is disabled (enabled FALSE); its animation is not imported",
+            );
+            continue;
+        }
+        if !(c.cycle > 0.0 && c.cycle.is_finite()) {
+            b.warn(
+                ts.pos,
+                "TimeSensor cycleInterval must be > 0; its animation is not imported",
+            );
+            continue;
+        }
+        if matches!(
+            interp.kind.as_str(),
+            "CoordinateInterpolator" | "NormalInterpolator"
+        ) {
+            let msg = format!(
+                "{} (vertex morphing) is not held by the scene model; not imported",
+                interp.kind
+            );
+            b.warn_once(&interp.kind.clone(), interp.pos, &msg);
+            continue;
+        }
+        let mut targets = Vec::new();
+        resolve(&r.to, &r.to_field, &mut targets, 0);
+        for (t, f) in targets {
+            let t = t.effective();
+            match dest(&t.kind, &f) {
+                Some(Dest::Node(property)) => {
+                    let ids = b
+                        .instances
+                        .get(&Rc::as_ptr(&t))
+                        .cloned()
+                        .unwrap_or_default();
+                    for id in ids {
+                        // A light/camera property only applies to that kind of node.
+                        let ok = matches!(
+                            (&b.scene.node(id).kind, property.owner()),
+                            (NodeKind::Light(_), "light")
+                                | (NodeKind::Camera(_), "camera")
+                                | (_, "node")
+                        );
+                        if ok {
+                            pending.push(Pending {
+                                interp: interp.clone(),
+                                clock: c,
+                                of: TargetRef::Node(id),
+                                property,
+                            });
+                        }
+                    }
+                }
+                Some(Dest::Material(property)) => {
+                    if let Some(id) = b.materials.get(&Rc::as_ptr(&t)).copied() {
+                        pending.push(Pending {
+                            interp: interp.clone(),
+                            clock: c,
+                            of: TargetRef::Material(id),
+                            property,
+                        });
+                    }
+                }
+                None => {
+                    let msg = format!(
+                        "animating {}.{} is not supported; not imported",
+                        t.kind,
+                        field_name(&f)
+                    );
+                    b.warn_once(&msg.clone(), r.pos, &msg);
+                }
+            }
+        }
+    }
+    if pending.is_empty() {
+        return;
+    }
+    // One frame rate for the whole file.
+    let mut seconds = Vec::new();
+    for p in &pending {
+        if let Some(keys) = p.interp.nums("key") {
+            seconds.extend(keys.iter().map(|k| p.clock.start + k * p.clock.cycle));
+        }
+        seconds.push(p.clock.start + p.clock.cycle);
+    }
+    // Tracks grafted from Inline files already use the current frame rate.
+    let fps = if b.scene.animation.tracks.is_empty() {
+        pick_fps(&seconds)
+    } else {
+        b.scene.settings.fps
+    };
+    let mut settings = Settings {
+        fps,
+        ..b.scene.settings.clone()
+    };
+    let end = pending
+        .iter()
+        .map(|p| (p.clock.start + p.clock.cycle) * fps as f64)
+        .fold(0.0f64, f64::max);
+    settings.duration = if b.scene.animation.tracks.is_empty() {
+        end as f32
+    } else {
+        settings.duration.max(end as f32)
+    };
+    b.scene.settings = settings;
+
+    for p in pending {
+        let Some((fractions, values)) = interpolator_values(&p.interp) else {
+            continue;
+        };
+        match make_keys(&fractions, values, p.clock, fps, p.property) {
+            Ok(keys) => b.scene.animation.tracks.push(Track {
+                target: Target {
+                    of: p.of,
+                    property: p.property,
+                },
+                repeat: if p.clock.looping {
+                    Repeat::Loop
+                } else {
+                    Repeat::Constant
+                },
+                keys,
+            }),
+            Err(msg) => b.warn(p.interp.pos, &msg),
+        }
+    }
+}
+
+fn pick_fps(seconds: &[f64]) -> f32 {
+    for &fps in FPS_CHOICES {
+        let exact = seconds.iter().all(|s| {
+            let f = s * fps as f64;
+            (f - f.round()).abs() < 1e-4
+        });
+        if exact {
+            return fps;
+        }
+    }
+    24.0
+}
+
+/// Builds the keys of one track.
+fn make_keys(
+    fractions: &[f64],
+    values: Values,
+    c: Clock,
+    fps: f32,
+    property: Property,
+) -> Result<Keys, String> {
+    use crate::anim::ValueKind;
+    let n = match &values {
+        Values::Scalar(v) => v.len(),
+        Values::Vec3(v) | Values::Color(v) => v.len(),
+        Values::Rotation(v) => v.len(),
+    };
+    let count = fractions.len().min(n);
+    if count == 0 {
+        return Err("interpolator has no keys (key or keyValue empty); not imported".into());
+    }
+    if fractions.len() != n {
+        // Spec: key and keyValue must match; use the common prefix.
+    }
+    for w in fractions[..count].windows(2) {
+        if w[1] < w[0] || !w[0].is_finite() || !w[1].is_finite() {
+            return Err("interpolator keys are not in ascending order; not imported".into());
+        }
+    }
+    let frame = |k: f64| ((c.start + k * c.cycle) * fps as f64) as f32;
+    let want = property.kind();
+    let keys = match values {
+        Values::Scalar(v) if want == ValueKind::Scalar => {
+            Keys::Scalar(keyed(&fractions[..count], &v[..count], frame))
+        }
+        Values::Vec3(v) if matches!(want, ValueKind::Vec3 | ValueKind::Color) => {
+            Keys::Vec3(keyed(&fractions[..count], &v[..count], frame))
+        }
+        Values::Color(v) if matches!(want, ValueKind::Vec3 | ValueKind::Color) => {
+            let (f, v) = hsv_resample(&fractions[..count], &v[..count]);
+            Keys::Vec3(keyed(&f, &v, frame))
+        }
+        Values::Rotation(mut v) if want == ValueKind::Rotation => {
+            // Shortest path between keys (VRML97 §6.32), whichever way the
+            // animation core treats quaternion signs.
+            for i in 1..count {
+                if v[i - 1].dot(v[i]) < 0.0 {
+                    v[i] = -v[i];
+                }
+            }
+            Keys::Rotation(keyed(&fractions[..count], &v[..count], frame))
+        }
+        _ => {
+            return Err(format!(
+                "interpolator value type does not fit {}; not imported",
+                property.name()
+            ))
+        }
+    };
+    Ok(keys)
+}
+
+/// Linear keys padded to the whole cycle [0, 1]; equal key times (a jump)
+/// become two keys a thousandth of a frame apart.
+fn keyed<V: Copy>(fractions: &[f64], values: &[V], frame: impl Fn(f64) -> f32) -> Vec<Key<V>> {
+    let mut out: Vec<Key<V>> = Vec::with_capacity(values.len() + 2);
+    let mut push = |f: f32, v: V| {
+        let n = out.len();
+        if n > 0 && f <= out[n - 1].frame {
+            // A jump: move the earlier key back a hair.
+            let prev = if n >= 2 { Some(out[n - 2].frame) } else { None };
+            let back = out[n - 1].frame - 1e-3;
+            if prev.is_none_or(|p| back > p) {
+                out[n - 1].frame = back;
+            } else {
+                // A third key at the same time: keep the latest value.
+                out[n - 1].value = v;
+                return;
+            }
+        }
+        out.push(Key::new(f, v).with_interp(Interp::Linear));
+    };
+    let first = fractions[0];
+    if first > 0.0 {
+        push(frame(0.0), values[0]);
+    }
+    for (k, v) in fractions.iter().zip(values) {
+        push(frame(k.clamp(0.0, 1.0)), *v);
+    }
+    if *fractions.last().unwrap_or(&1.0) < 1.0 {
+        push(frame(1.0), values[values.len() - 1]);
+    }
+    out
+}
+
+/// Adds HSV-blended keys inside each colour segment so that linear RGB
+/// playback follows the HSV path the spec asks for.
+fn hsv_resample(fractions: &[f64], colors: &[Vec3]) -> (Vec<f64>, Vec<Vec3>) {
+    let mut f = Vec::new();
+    let mut c = Vec::new();
+    for i in 0..colors.len() {
+        f.push(fractions[i]);
+        c.push(colors[i]);
+        if i + 1 < colors.len() && fractions[i + 1] > fractions[i] {
+            let (a, b) = (rgb_to_hsv(colors[i]), rgb_to_hsv(colors[i + 1]));
+            let rgb_path_differs = (1..HSV_STEPS).any(|s| {
+                let t = s as f32 / HSV_STEPS as f32;
+                (hsv_to_rgb(hsv_lerp(a, b, t)) - colors[i].lerp(colors[i + 1], t))
+                    .abs()
+                    .max_element()
+                    > 1e-3
+            });
+            if rgb_path_differs {
+                for s in 1..HSV_STEPS {
+                    let t = s as f32 / HSV_STEPS as f32;
+                    f.push(fractions[i] + (fractions[i + 1] - fractions[i]) * t as f64);
+                    c.push(hsv_to_rgb(hsv_lerp(a, b, t)));
+                }
+            }
+        }
+    }
+    (f, c)
+}
+
+/// Hue in [0, 6), saturation, value.
+pub(crate) fn rgb_to_hsv(c: Vec3) -> Vec3 {
+    let max = c.max_element();
+    let min = c.min_element();
+    let d = max - min;
+    let h = if d <= 0.0 {
+        0.0
+    } else if max == c.x {
+        ((c.y - c.z) / d).rem_euclid(6.0)
+    } else if max == c.y {
+        (c.z - c.x) / d + 2.0
+    } else {
+        (c.x - c.y) / d + 4.0
+    };
+    let s = if max > 0.0 { d / max } else { 0.0 };
+    Vec3::new(h, s, max)
+}
+
+pub(crate) fn hsv_to_rgb(hsv: Vec3) -> Vec3 {
+    let (h, s, v) = (hsv.x.rem_euclid(6.0), hsv.y, hsv.z);
+    let i = h.floor();
+    let f = h - i;
+    let p = v * (1.0 - s);
+    let q = v * (1.0 - s * f);
+    let t = v * (1.0 - s * (1.0 - f));
+    match i as i32 {
+        0 => Vec3::new(v, t, p),
+        1 => Vec3::new(q, v, p),
+        2 => Vec3::new(p, v, t),
+        3 => Vec3::new(p, q, v),
+        4 => Vec3::new(t, p, v),
+        _ => Vec3::new(v, p, q),
+    }
+}
+
+/// Blends two HSV colours the short way round the hue circle; a grey end
+/// takes the other end's hue.
+fn hsv_lerp(a: Vec3, b: Vec3, t: f32) -> Vec3 {
+    let (mut ha, mut hb) = (a.x, b.x);
+    if a.y == 0.0 {
+        ha = hb;
+    }
+    if b.y == 0.0 {
+        hb = ha;
+    }
+    let mut dh = hb - ha;
+    if dh > 3.0 {
+        dh -= 6.0;
+    } else if dh < -3.0 {
+        dh += 6.0;
+    }
+    Vec3::new(
+        (ha + dh * t).rem_euclid(6.0),
+        a.y + (b.y - a.y) * t,
+        a.z + (b.z - a.z) * t,
+    )
+}

@@ -1,0 +1,453 @@
+//! Turns the parsed VRML97 node tree into the scene tree: grouping nodes,
+//! shapes (with shared meshes and materials), lights, viewpoints and the
+//! world settings (NavigationInfo, Background, WorldInfo).
+
+use super::{animation, fmt_warning, geometry};
+use crate::format::inline;
+use crate::format::lexer::Pos;
+use crate::format::syntax::{AstNode, NodeRef, Parsed};
+use crate::format::Loaded;
+use crate::scene::{
+    Camera, CameraKind, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId, NodeKind,
+    Scene, Shape, Transform,
+};
+use glam::{Quat, Vec3};
+use std::collections::{HashMap, HashSet};
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+/// Most scene nodes one file may expand into (USE of USE of … multiplies).
+const MAX_SCENE_NODES: usize = 1_000_000;
+/// Deepest scene tree built (the parser bounds the file's own nesting).
+const MAX_BUILD_DEPTH: usize = 512;
+
+/// Nodes that are read but do nothing in animed (warned once per type).
+const IGNORED: &[&str] = &[
+    "TouchSensor",
+    "PlaneSensor",
+    "SphereSensor",
+    "CylinderSensor",
+    "ProximitySensor",
+    "VisibilitySensor",
+    "Sound",
+    "AudioClip",
+    "Fog",
+    "FontStyle",
+    "MovieTexture",
+];
+
+pub struct Builder {
+    pub(super) path: PathBuf,
+    depth: usize,
+    pub(super) scene: Scene,
+    pub(super) warnings: Vec<String>,
+    /// Scene nodes made from each AST node (several when USEd).
+    pub(super) instances: HashMap<*const AstNode, Vec<NodeId>>,
+    pub(super) materials: HashMap<*const AstNode, MaterialId>,
+    meshes: HashMap<*const AstNode, Option<MeshId>>,
+    unlit: Option<MaterialId>,
+    default_material: Option<MaterialId>,
+    warned: HashSet<String>,
+    saw_navigation: bool,
+    saw_background: bool,
+    build_depth: usize,
+    full: bool,
+}
+
+impl Builder {
+    pub fn new(path: &Path, depth: usize) -> Self {
+        Builder {
+            path: path.to_path_buf(),
+            depth,
+            scene: Scene::new(),
+            warnings: Vec::new(),
+            instances: HashMap::new(),
+            materials: HashMap::new(),
+            meshes: HashMap::new(),
+            unlit: None,
+            default_material: None,
+            warned: HashSet::new(),
+            saw_navigation: false,
+            saw_background: false,
+            build_depth: 0,
+            full: false,
+        }
+    }
+
+    pub fn build(&mut self, parsed: &Parsed) {
+        for root in &parsed.roots {
+            self.add(root, None);
+        }
+        animation::import(self, &parsed.routes);
+    }
+
+    pub fn finish(self) -> Loaded {
+        Loaded {
+            scene: self.scene,
+            warnings: self.warnings,
+        }
+    }
+
+    pub(super) fn warn(&mut self, pos: Pos, msg: &str) {
+        if self.warnings.len() < 10_000 {
+            self.warnings.push(fmt_warning(&self.path, pos, msg));
+        }
+    }
+
+    /// Warns once per `key` (e.g. once per unknown node type).
+    pub(super) fn warn_once(&mut self, key: &str, pos: Pos, msg: &str) {
+        if self.warned.insert(key.to_string()) {
+            self.warn(pos, msg);
+        }
+    }
+
+    fn push(&mut self, ast: &NodeRef, parent: Option<NodeId>, node: Node) -> Option<NodeId> {
+        if self.scene.nodes.len() >= MAX_SCENE_NODES {
+            if !self.full {
+                self.full = true;
+                self.warn(
+                    ast.pos,
+                    &format!("more than {MAX_SCENE_NODES} scene nodes; the rest is skipped"),
+                );
+            }
+            return None;
+        }
+        let id = self.scene.add_node(parent, node);
+        self.instances.entry(Rc::as_ptr(ast)).or_default().push(id);
+        Some(id)
+    }
+
+    /// Adds the scene nodes for one AST node under `parent`.
+    pub(super) fn add(&mut self, n: &NodeRef, parent: Option<NodeId>) {
+        if self.build_depth >= MAX_BUILD_DEPTH {
+            self.warn_once(
+                "depth",
+                n.pos,
+                "scene nested too deeply; deeper nodes skipped",
+            );
+            return;
+        }
+        self.build_depth += 1;
+        self.add_inner(n, parent);
+        self.build_depth -= 1;
+    }
+
+    fn add_inner(&mut self, n: &NodeRef, parent: Option<NodeId>) {
+        let eff = n.effective();
+        let name = n
+            .def
+            .clone()
+            .or_else(|| eff.def.clone())
+            .unwrap_or_default();
+        let ids_before = self.scene.nodes.len();
+        match eff.kind.as_str() {
+            "Transform" => {
+                let t = Transform {
+                    translation: eff.vec3("translation", Vec3::ZERO),
+                    rotation: eff.rotation("rotation").unwrap_or(Quat::IDENTITY),
+                    scale: eff.vec3("scale", Vec3::ONE),
+                    scale_orientation: eff.rotation("scaleOrientation").unwrap_or(Quat::IDENTITY),
+                    center: eff.vec3("center", Vec3::ZERO),
+                    extra: None,
+                };
+                if let Some(id) = self.push(&eff, parent, Node::group(name).with_transform(t)) {
+                    self.children(&eff, "children", id);
+                }
+            }
+            "Group" | "Collision" | "Billboard" | "Anchor" => {
+                if let Some(id) = self.push(&eff, parent, Node::group(name)) {
+                    self.children(&eff, "children", id);
+                }
+            }
+            "Switch" => {
+                if let Some(id) = self.push(&eff, parent, Node::group(name)) {
+                    let which = eff.num("whichChoice").unwrap_or(-1.0);
+                    let choices: Vec<NodeRef> = eff.nodes("choice").to_vec();
+                    for (i, c) in choices.iter().enumerate() {
+                        let first = self.scene.nodes.len();
+                        self.add(c, Some(id));
+                        if i as f64 != which {
+                            for k in first..self.scene.nodes.len() {
+                                if self.scene.nodes[k].parent == Some(id) {
+                                    self.scene.nodes[k].visible = false;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            "LOD" => {
+                if let Some(id) = self.push(&eff, parent, Node::group(name)) {
+                    let level = eff.nodes("level").first().cloned();
+                    if let Some(c) = level {
+                        self.add(&c, Some(id));
+                    }
+                }
+            }
+            "Inline" => {
+                if let Some(id) = self.push(&eff, parent, Node::group(name)) {
+                    let urls = eff.strings("url");
+                    inline::load_into(
+                        &mut self.scene,
+                        &mut self.warnings,
+                        &self.path,
+                        eff.pos,
+                        &urls,
+                        id,
+                        self.depth,
+                    );
+                }
+            }
+            "Shape" => self.shape(&eff, parent, name),
+            "DirectionalLight" | "PointLight" | "SpotLight" => {
+                let light = light(&eff);
+                self.push(&eff, parent, Node::new(name, NodeKind::Light(light)));
+            }
+            "Viewpoint" => {
+                let cam = Camera {
+                    kind: CameraKind::Perspective {
+                        height_angle: eff.f32("fieldOfView", std::f32::consts::FRAC_PI_4),
+                    },
+                    position: eff.vec3("position", Vec3::new(0.0, 0.0, 10.0)),
+                    orientation: eff.rotation("orientation").unwrap_or(Quat::IDENTITY),
+                    description: eff
+                        .strings("description")
+                        .first()
+                        .cloned()
+                        .unwrap_or_default(),
+                    fov_smaller_side: true,
+                    focal_distance: 10.0,
+                    near: None,
+                    far: None,
+                };
+                let name = if name.is_empty() {
+                    cam.description.clone()
+                } else {
+                    name
+                };
+                self.push(&eff, parent, Node::new(name, NodeKind::Camera(cam)));
+            }
+            "NavigationInfo" => {
+                if !self.saw_navigation {
+                    self.saw_navigation = true;
+                    self.scene.settings.headlight = Some(eff.bool("headlight", true));
+                }
+            }
+            "Background" => {
+                if !self.saw_background {
+                    self.saw_background = true;
+                    if let Some(c) = eff.nums("skyColor") {
+                        if c.len() >= 3 {
+                            self.scene.settings.background =
+                                Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32);
+                        }
+                    }
+                }
+            }
+            "WorldInfo" => {
+                let title = eff.strings("title");
+                for t in title.into_iter().filter(|t| !t.is_empty()) {
+                    self.scene.info.push(t);
+                }
+                for s in eff.strings("info") {
+                    self.scene.info.push(s);
+                }
+            }
+            k if k == "TimeSensor" || k.ends_with("Interpolator") => {}
+            "Script" => self.warn(eff.pos, "Script is not supported; skipped"),
+            k if IGNORED.contains(&k) => {
+                let msg = format!("{k} is not supported; skipped");
+                self.warn_once(k, eff.pos, &msg);
+            }
+            k => {
+                let msg = if n.proto.is_none() && !is_vrml97_node(k) {
+                    format!("unknown node '{k}' skipped")
+                } else {
+                    format!("node '{k}' is not supported here; skipped")
+                };
+                self.warn_once(k, eff.pos, &msg);
+            }
+        }
+        // A PROTO instance answers to its own DEF name as well as its root's.
+        if !Rc::ptr_eq(n, &eff) && self.scene.nodes.len() > ids_before {
+            self.instances
+                .entry(Rc::as_ptr(n))
+                .or_default()
+                .push(NodeId(ids_before as u32));
+        }
+    }
+
+    fn children(&mut self, n: &NodeRef, field: &str, id: NodeId) {
+        for c in n.nodes(field).to_vec() {
+            self.add(&c, Some(id));
+        }
+    }
+
+    fn shape(&mut self, n: &NodeRef, parent: Option<NodeId>, name: String) {
+        let Some(geom) = n.node("geometry").map(|g| g.effective()) else {
+            return;
+        };
+        let mesh = match self.meshes.get(&Rc::as_ptr(&geom)) {
+            Some(m) => *m,
+            None => {
+                let mut msgs = Vec::new();
+                let m = geometry::mesh(&geom, &mut msgs).map(|m| self.scene.add_mesh(m));
+                for (pos, msg) in msgs {
+                    let key = format!("{}:{msg}", geom.kind);
+                    self.warn_once(&key, pos, &msg);
+                }
+                self.meshes.insert(Rc::as_ptr(&geom), m);
+                m
+            }
+        };
+        let Some(mesh) = mesh else { return };
+        let has_colors = !self.scene.meshes[mesh.0 as usize].colors.is_empty();
+        let material = match n
+            .node("appearance")
+            .map(|a| a.effective())
+            .and_then(|a| a.node("material").map(|m| m.effective()))
+        {
+            Some(m) => self.material(&m),
+            None if has_colors => self.default_material(),
+            None => self.unlit(),
+        };
+        self.push(
+            n,
+            parent,
+            Node::new(name, NodeKind::Shape(Shape { mesh, material })),
+        );
+    }
+
+    fn material(&mut self, m: &NodeRef) -> MaterialId {
+        if let Some(id) = self.materials.get(&Rc::as_ptr(m)) {
+            return *id;
+        }
+        let d = Material::default();
+        let mat = Material {
+            name: m.def.clone().unwrap_or_default(),
+            diffuse: m.vec3("diffuseColor", d.diffuse),
+            ambient_intensity: m.f32("ambientIntensity", d.ambient_intensity),
+            specular: m.vec3("specularColor", d.specular),
+            emissive: m.vec3("emissiveColor", d.emissive),
+            shininess: m.f32("shininess", d.shininess),
+            transparency: m.f32("transparency", d.transparency),
+        };
+        let id = self.scene.add_material(mat);
+        self.materials.insert(Rc::as_ptr(m), id);
+        id
+    }
+
+    fn default_material(&mut self) -> MaterialId {
+        if let Some(id) = self.default_material {
+            return id;
+        }
+        let id = self.scene.add_material(Material::default());
+        self.default_material = Some(id);
+        id
+    }
+
+    /// VRML97 §4.14: a Shape without Material is unlit and white.
+    fn unlit(&mut self) -> MaterialId {
+        if let Some(id) = self.unlit {
+            return id;
+        }
+        let id = self.scene.add_material(Material {
+            name: String::new(),
+            diffuse: Vec3::ZERO,
+            ambient_intensity: 0.0,
+            specular: Vec3::ZERO,
+            emissive: Vec3::ONE,
+            shininess: 0.0,
+            transparency: 0.0,
+        });
+        self.unlit = Some(id);
+        id
+    }
+}
+
+fn light(n: &AstNode) -> Light {
+    let mut l = match n.kind.as_str() {
+        "DirectionalLight" => {
+            let mut l = Light::new(LightKind::Directional);
+            // VRML97 §6.16: a DirectionalLight lights only its siblings.
+            l.scoped = true;
+            l
+        }
+        "PointLight" => Light::new(LightKind::Point),
+        _ => Light::new(LightKind::Spot {
+            beam_width: n.f32("beamWidth", std::f32::consts::FRAC_PI_2),
+            cut_off_angle: n.f32("cutOffAngle", std::f32::consts::FRAC_PI_4),
+            drop_off_rate: 0.0,
+        }),
+    };
+    l.on = n.bool("on", true);
+    l.intensity = n.f32("intensity", 1.0);
+    l.ambient_intensity = n.f32("ambientIntensity", 0.0);
+    l.color = n.vec3("color", Vec3::ONE);
+    l.location = n.vec3("location", Vec3::ZERO);
+    l.direction = n.vec3("direction", Vec3::new(0.0, 0.0, -1.0));
+    l.attenuation = n.vec3("attenuation", Vec3::new(1.0, 0.0, 0.0));
+    l.radius = n.f32("radius", 100.0);
+    l
+}
+
+/// Standard VRML97 node names (anything else is unknown, not unsupported).
+fn is_vrml97_node(k: &str) -> bool {
+    const ALL: &[&str] = &[
+        "Anchor",
+        "Appearance",
+        "AudioClip",
+        "Background",
+        "Billboard",
+        "Box",
+        "Collision",
+        "Color",
+        "ColorInterpolator",
+        "Cone",
+        "Coordinate",
+        "CoordinateInterpolator",
+        "Cylinder",
+        "CylinderSensor",
+        "DirectionalLight",
+        "ElevationGrid",
+        "Extrusion",
+        "Fog",
+        "FontStyle",
+        "Group",
+        "ImageTexture",
+        "IndexedFaceSet",
+        "IndexedLineSet",
+        "Inline",
+        "LOD",
+        "Material",
+        "MovieTexture",
+        "NavigationInfo",
+        "Normal",
+        "NormalInterpolator",
+        "OrientationInterpolator",
+        "PixelTexture",
+        "PlaneSensor",
+        "PointLight",
+        "PointSet",
+        "PositionInterpolator",
+        "ProximitySensor",
+        "ScalarInterpolator",
+        "Script",
+        "Shape",
+        "Sound",
+        "Sphere",
+        "SphereSensor",
+        "SpotLight",
+        "Switch",
+        "Text",
+        "TextureCoordinate",
+        "TextureTransform",
+        "TimeSensor",
+        "TouchSensor",
+        "Transform",
+        "Viewpoint",
+        "VisibilitySensor",
+        "WorldInfo",
+    ];
+    ALL.contains(&k)
+}

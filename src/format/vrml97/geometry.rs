@@ -1,0 +1,378 @@
+//! VRML97 geometry nodes → meshes: IndexedFaceSet, IndexedLineSet,
+//! PointSet, ElevationGrid, Extrusion, and the four primitives.
+//!
+//! Polygons go through the shared builder (`scene::normals`), which
+//! triangulates concave polygons and applies ccw/solid/creaseAngle.
+
+use crate::format::lexer::Pos;
+use crate::format::polygons::{self, split_index};
+use crate::format::syntax::AstNode;
+use crate::scene::normals::{mesh_from_points, mesh_from_polylines, Binding, PolyOptions};
+use crate::scene::Mesh;
+use glam::{Quat, Vec2, Vec3};
+
+type Msgs = Vec<(Pos, String)>;
+
+/// Builds the mesh of a geometry node, or `None` (with a message) when it
+/// is unsupported or empty.
+pub fn mesh(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+    let mut m = match g.kind.as_str() {
+        "IndexedFaceSet" => indexed_face_set(g, msgs),
+        "IndexedLineSet" => indexed_line_set(g, msgs),
+        "PointSet" => point_set(g, msgs),
+        "ElevationGrid" => elevation_grid(g, msgs),
+        "Extrusion" => extrusion(g, msgs),
+        "Box" | "Sphere" | "Cone" | "Cylinder" => primitive(g),
+        "Text" => {
+            msgs.push((g.pos, "Text is not supported; skipped".into()));
+            None
+        }
+        k => {
+            msgs.push((
+                g.pos,
+                format!("geometry node '{k}' is not supported; skipped"),
+            ));
+            None
+        }
+    }?;
+    if let Some(d) = &g.def {
+        m.name = d.clone();
+    }
+    Some(m)
+}
+
+fn vec3s(v: &[f64]) -> Vec<Vec3> {
+    v.chunks_exact(3)
+        .map(|c| Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32))
+        .collect()
+}
+
+fn vec2s(v: &[f64]) -> Vec<Vec2> {
+    v.chunks_exact(2)
+        .map(|c| Vec2::new(c[0] as f32, c[1] as f32))
+        .collect()
+}
+
+/// The values of a property node's field: `coord Coordinate { point [...] }`.
+fn sub_values(g: &AstNode, field: &str, inner: &str) -> Option<Vec<Vec3>> {
+    let n = g.node(field)?.effective();
+    Some(vec3s(n.nums(inner)?))
+}
+
+fn indices(g: &AstNode, field: &str) -> Vec<i64> {
+    g.nums(field)
+        .map(|v| v.iter().map(|x| *x as i64).collect())
+        .unwrap_or_default()
+}
+
+/// A colour or normal binding from VRML's `xxxPerVertex` + `xxxIndex` rules.
+fn binding(values: Option<Vec<Vec3>>, index: &[i64], per_vertex: bool) -> Binding {
+    let Some(values) = values else {
+        return Binding::None;
+    };
+    if per_vertex {
+        Binding::PerVertex {
+            values,
+            index: if index.is_empty() {
+                None
+            } else {
+                Some(split_index(index))
+            },
+        }
+    } else {
+        Binding::PerFace {
+            values,
+            index: if index.is_empty() {
+                None
+            } else {
+                Some(
+                    index
+                        .iter()
+                        .filter(|&&i| i >= 0)
+                        .map(|&i| i as u32)
+                        .collect(),
+                )
+            },
+        }
+    }
+}
+
+fn indexed_face_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+    let positions = sub_values(g, "coord", "point").unwrap_or_default();
+    let faces = split_index(&indices(g, "coordIndex"));
+    let opts = PolyOptions {
+        ccw: g.bool("ccw", true),
+        solid: g.bool("solid", true),
+        crease_angle: g.f32("creaseAngle", 0.0),
+        normals: binding(
+            sub_values(g, "normal", "vector"),
+            &indices(g, "normalIndex"),
+            g.bool("normalPerVertex", true),
+        ),
+        colors: binding(
+            sub_values(g, "color", "color"),
+            &indices(g, "colorIndex"),
+            g.bool("colorPerVertex", true),
+        ),
+        name: String::new(),
+    };
+    polygons::build(&positions, faces, opts, g.pos, msgs)
+}
+
+fn indexed_line_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+    let positions = sub_values(g, "coord", "point").unwrap_or_default();
+    let lines = polygons::drop_bad(split_index(&indices(g, "coordIndex")), positions.len());
+    let colors = binding(
+        sub_values(g, "color", "color"),
+        &indices(g, "colorIndex"),
+        g.bool("colorPerVertex", true),
+    );
+    match mesh_from_polylines(&positions, &lines, &colors) {
+        Ok(m) => Some(m),
+        Err(_) if colors != Binding::None => {
+            msgs.push((
+                g.pos,
+                "bad colour indices in IndexedLineSet; colours ignored".into(),
+            ));
+            mesh_from_polylines(&positions, &lines, &Binding::None).ok()
+        }
+        Err(e) => {
+            msgs.push((g.pos, format!("IndexedLineSet skipped: {e}")));
+            None
+        }
+    }
+}
+
+fn point_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+    let positions = sub_values(g, "coord", "point").unwrap_or_default();
+    let colors = sub_values(g, "color", "color");
+    match mesh_from_points(&positions, colors.as_deref()) {
+        Ok(m) => Some(m),
+        Err(e) => {
+            msgs.push((g.pos, format!("PointSet colours ignored: {e}")));
+            mesh_from_points(&positions, None).ok()
+        }
+    }
+}
+
+fn elevation_grid(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+    let nx = g.num("xDimension").unwrap_or(0.0).max(0.0) as usize;
+    let nz = g.num("zDimension").unwrap_or(0.0).max(0.0) as usize;
+    let (sx, sz) = (g.f32("xSpacing", 1.0), g.f32("zSpacing", 1.0));
+    let heights = g.nums("height").unwrap_or(&[]);
+    if nx < 2 || nz < 2 || nx.saturating_mul(nz) > heights.len() {
+        msgs.push((
+            g.pos,
+            "ElevationGrid needs xDimension, zDimension ≥ 2 and that many heights; skipped".into(),
+        ));
+        return None;
+    }
+    let mut positions = Vec::with_capacity(nx * nz);
+    for j in 0..nz {
+        for i in 0..nx {
+            positions.push(Vec3::new(
+                i as f32 * sx,
+                heights[i + j * nx] as f32,
+                j as f32 * sz,
+            ));
+        }
+    }
+    let mut faces = Vec::with_capacity((nx - 1) * (nz - 1));
+    for j in 0..nz - 1 {
+        for i in 0..nx - 1 {
+            let at = |i: usize, j: usize| (i + j * nx) as u32;
+            faces.push(vec![at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)]);
+        }
+    }
+    let opts = PolyOptions {
+        ccw: g.bool("ccw", true),
+        solid: g.bool("solid", true),
+        crease_angle: g.f32("creaseAngle", 0.0),
+        normals: binding(
+            sub_values(g, "normal", "vector"),
+            &[],
+            g.bool("normalPerVertex", true),
+        ),
+        colors: binding(
+            sub_values(g, "color", "color"),
+            &[],
+            g.bool("colorPerVertex", true),
+        ),
+        name: String::new(),
+    };
+    polygons::build(&positions, faces, opts, g.pos, msgs)
+}
+
+/// Extrusion (VRML97 §6.18): cross-sections scaled, oriented and placed
+/// along the spine in each spine point's SCP frame.
+fn extrusion(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+    let cross = g.nums("crossSection").map(vec2s).unwrap_or_else(|| {
+        vec![
+            Vec2::new(1.0, 1.0),
+            Vec2::new(1.0, -1.0),
+            Vec2::new(-1.0, -1.0),
+            Vec2::new(-1.0, 1.0),
+            Vec2::new(1.0, 1.0),
+        ]
+    });
+    let spine = g
+        .nums("spine")
+        .map(vec3s)
+        .unwrap_or_else(|| vec![Vec3::ZERO, Vec3::Y]);
+    let scales = g
+        .nums("scale")
+        .map(vec2s)
+        .unwrap_or_else(|| vec![Vec2::ONE]);
+    let orients: Vec<Quat> = g
+        .nums("orientation")
+        .map(|v| {
+            v.chunks_exact(4)
+                .map(|c| crate::format::syntax::axis_angle(c[0], c[1], c[2], c[3]))
+                .collect()
+        })
+        .unwrap_or_else(|| vec![Quat::IDENTITY]);
+    let (n, m) = (spine.len(), cross.len());
+    if n < 2 || m < 2 || n.saturating_mul(m) > 10_000_000 {
+        msgs.push((
+            g.pos,
+            "Extrusion needs ≥ 2 spine and cross-section points; skipped".into(),
+        ));
+        return None;
+    }
+    let frames = scp_frames(&spine);
+    let mut positions = Vec::with_capacity(n * m);
+    for (i, (p, (x, y, z))) in spine.iter().zip(&frames).enumerate() {
+        let s = scales
+            .get(i)
+            .or(scales.last())
+            .copied()
+            .unwrap_or(Vec2::ONE);
+        let o = orients
+            .get(i)
+            .or(orients.last())
+            .copied()
+            .unwrap_or(Quat::IDENTITY);
+        for c in &cross {
+            let local = o * Vec3::new(c.x * s.x, 0.0, c.y * s.y);
+            positions.push(*p + *x * local.x + *y * local.y + *z * local.z);
+        }
+    }
+    let at = |i: usize, j: usize| (i * m + j) as u32;
+    let mut faces = Vec::with_capacity((n - 1) * (m - 1) + 2);
+    for i in 0..n - 1 {
+        for j in 0..m - 1 {
+            faces.push(vec![at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)]);
+        }
+    }
+    let closed_cross = cross[0] == cross[m - 1];
+    let cap_len = if closed_cross { m - 1 } else { m };
+    let spine_closed = spine[0] == spine[n - 1];
+    if g.bool("beginCap", true) && !spine_closed && cap_len >= 3 {
+        faces.push((0..cap_len).rev().map(|j| at(0, j)).collect());
+    }
+    if g.bool("endCap", true) && !spine_closed && cap_len >= 3 {
+        faces.push((0..cap_len).map(|j| at(n - 1, j)).collect());
+    }
+    let opts = PolyOptions {
+        ccw: g.bool("ccw", true),
+        solid: g.bool("solid", true),
+        crease_angle: g.f32("creaseAngle", 0.0),
+        normals: Binding::None,
+        colors: Binding::None,
+        name: String::new(),
+    };
+    polygons::build(&positions, faces, opts, g.pos, msgs)
+}
+
+/// The spine-aligned cross-section planes (X, Y, Z axes per spine point).
+fn scp_frames(spine: &[Vec3]) -> Vec<(Vec3, Vec3, Vec3)> {
+    let n = spine.len();
+    let closed = spine[0] == spine[n - 1];
+    let prev = |i: usize| -> Option<Vec3> {
+        if i > 0 {
+            Some(spine[i - 1])
+        } else if closed && n > 2 {
+            Some(spine[n - 2])
+        } else {
+            None
+        }
+    };
+    let next = |i: usize| -> Option<Vec3> {
+        if i + 1 < n {
+            Some(spine[i + 1])
+        } else if closed && n > 2 {
+            Some(spine[1])
+        } else {
+            None
+        }
+    };
+    let mut ys = Vec::with_capacity(n);
+    let mut zs: Vec<Option<Vec3>> = Vec::with_capacity(n);
+    for (i, &p) in spine.iter().enumerate() {
+        let y = match (prev(i), next(i)) {
+            (Some(a), Some(b)) => b - a,
+            (None, Some(b)) => b - p,
+            (Some(a), None) => p - a,
+            (None, None) => Vec3::Y,
+        };
+        ys.push(y.normalize_or_zero());
+        let z = match (prev(i), next(i)) {
+            (Some(a), Some(b)) => (b - p).cross(a - p).normalize_or_zero(),
+            _ => Vec3::ZERO,
+        };
+        zs.push(if z == Vec3::ZERO { None } else { Some(z) });
+    }
+    // Open ends take their neighbour's Z; collinear points the previous one's.
+    if !closed && n > 1 {
+        zs[0] = zs[1];
+        zs[n - 1] = zs[n - 2];
+    }
+    let mut out = Vec::with_capacity(n);
+    let mut last_z: Option<Vec3> = None;
+    // Fill missing Y from neighbours (repeated spine points).
+    let mut last_y = ys
+        .iter()
+        .copied()
+        .find(|y| *y != Vec3::ZERO)
+        .unwrap_or(Vec3::Y);
+    for i in 0..n {
+        let y = if ys[i] == Vec3::ZERO { last_y } else { ys[i] };
+        last_y = y;
+        let mut z = zs[i].or(last_z).unwrap_or_else(|| {
+            // Entirely collinear spine: rotate (0,0,1) like (0,1,0) → Y.
+            Quat::from_rotation_arc(Vec3::Y, y) * Vec3::Z
+        });
+        if let Some(lz) = last_z {
+            if z.dot(lz) < 0.0 {
+                z = -z;
+            }
+        }
+        last_z = Some(z);
+        let x = y.cross(z).normalize_or_zero();
+        out.push((x, y, z));
+    }
+    out
+}
+
+/// Box, Sphere, Cone, Cylinder through the shared primitive builders.
+fn primitive(g: &AstNode) -> Option<Mesh> {
+    use crate::scene::primitives as p;
+    let m = match g.kind.as_str() {
+        "Box" => p::box_mesh(g.vec3("size", Vec3::splat(2.0))),
+        "Sphere" => p::sphere(g.f32("radius", 1.0)),
+        "Cone" => p::cone(
+            g.f32("bottomRadius", 1.0),
+            g.f32("height", 2.0),
+            g.bool("side", true),
+            g.bool("bottom", true),
+        ),
+        _ => p::cylinder(
+            g.f32("radius", 1.0),
+            g.f32("height", 2.0),
+            g.bool("side", true),
+            g.bool("top", true),
+            g.bool("bottom", true),
+        ),
+    };
+    Some(m)
+}

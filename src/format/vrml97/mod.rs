@@ -1,0 +1,51 @@
+//! The VRML97 reader (ISO/IEC 14772-1): the node tree, geometry, lights,
+//! viewpoints, PROTO expansion, and TimeSensor → interpolator → ROUTE chains
+//! imported as animation tracks.
+
+mod animation;
+mod build;
+mod geometry;
+
+use super::lexer::Pos;
+use super::syntax::{self, Options};
+use super::{LoadError, Loaded};
+use crate::scene::SourceFormat;
+use std::path::Path;
+
+/// Reads a VRML97 file's bytes (already decompressed).
+pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
+    read_nested(bytes, path, 0)
+}
+
+pub(crate) fn read_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
+    let parsed = syntax::parse(bytes, Options::new(true));
+    let mut warnings: Vec<String> = Vec::new();
+    if let Some((pos, msg)) = &parsed.error {
+        if parsed.roots.is_empty() {
+            return Err(LoadError::new(path, pos.line, pos.column, msg.clone()));
+        }
+        warnings.push(fmt_warning(
+            path,
+            *pos,
+            &format!("{msg} (the rest of the file is skipped)"),
+        ));
+    }
+    for (pos, msg) in &parsed.warnings {
+        warnings.push(fmt_warning(path, *pos, msg));
+    }
+    let mut b = build::Builder::new(path, depth);
+    b.build(&parsed);
+    let mut loaded = b.finish();
+    loaded.scene.format = SourceFormat::Vrml97;
+    warnings.append(&mut loaded.warnings);
+    loaded.warnings = warnings;
+    Ok(loaded)
+}
+
+/// `path:line:column: message`.
+pub(crate) fn fmt_warning(path: &Path, pos: Pos, msg: &str) -> String {
+    format!("{}:{}:{}: {}", path.display(), pos.line, pos.column, msg)
+}
+
+#[cfg(test)]
+mod tests;

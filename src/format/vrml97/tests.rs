@@ -1,0 +1,233 @@
+//! Unit tests of the VRML97 reader on small hand-written scenes.
+
+use super::read;
+use crate::anim::{Keys, Property, Repeat, TargetRef};
+use crate::scene::{LightKind, NodeKind};
+use glam::{Quat, Vec3};
+use std::path::Path;
+
+fn load(src: &str) -> crate::format::Loaded {
+    read(src.as_bytes(), Path::new("t.wrl")).unwrap()
+}
+
+#[test]
+fn demo_scene_has_its_parts() {
+    let l = crate::format::demo().unwrap();
+    let s = &l.scene;
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    for name in [
+        "Ball", "Spinner", "SpotLamp", "Lamp", "Sun", "Main", "Ground", "Pyramid",
+    ] {
+        assert!(s.find_node(name).is_some(), "{name} missing");
+    }
+    assert_eq!(s.settings.headlight, Some(false));
+    assert!((s.settings.background - Vec3::new(0.16, 0.2, 0.3)).length() < 1e-6);
+    assert_eq!(s.settings.fps, 24.0);
+    assert_eq!(s.settings.duration, 96.0);
+    assert_eq!(s.animation.tracks.len(), 4);
+    let cam = s.node(s.find_node("Main").unwrap()).camera().unwrap();
+    assert_eq!(cam.description, "Main");
+    assert!(cam.fov_smaller_side);
+    assert!(s.meshes.iter().all(|m| !m.triangles.is_empty()));
+    assert_eq!(
+        s.info,
+        vec![
+            "animed demo",
+            "A hand-written VRML97 scene bundled with animed."
+        ]
+    );
+}
+
+#[test]
+fn transform_fields_and_scoped_directional_light() {
+    let l = load(
+        "#VRML V2.0 utf8\nDEF T Transform { translation 1 2 3 rotation 0 1 0 0.5 scale 2 2 2\n children [ DirectionalLight { direction 0 -1 0 } Shape { geometry Box {} } ] }",
+    );
+    let s = &l.scene;
+    let t = s.node(s.find_node("T").unwrap());
+    assert_eq!(t.transform.translation, Vec3::new(1.0, 2.0, 3.0));
+    assert!(
+        t.transform
+            .rotation
+            .angle_between(Quat::from_rotation_y(0.5))
+            < 1e-5
+    );
+    assert_eq!(t.children.len(), 2);
+    let light = s.node(t.children[0]).light().unwrap();
+    assert!(light.scoped);
+    assert_eq!(light.kind, LightKind::Directional);
+    assert_eq!(light.direction, Vec3::new(0.0, -1.0, 0.0));
+    assert!(matches!(s.node(t.children[1]).kind, NodeKind::Shape(_)));
+}
+
+#[test]
+fn use_shares_mesh_and_material() {
+    let l = load(
+        "#VRML V2.0 utf8\nDEF S Shape { appearance Appearance { material DEF M Material { diffuseColor 1 0 0 } } geometry Sphere {} }\nTransform { translation 3 0 0 children USE S }",
+    );
+    let s = &l.scene;
+    assert_eq!(s.meshes.len(), 1);
+    assert_eq!(s.materials.len(), 1);
+    assert_eq!(s.materials[0].name, "M");
+    assert_eq!(s.materials[0].diffuse, Vec3::X);
+    let shapes = s
+        .nodes
+        .iter()
+        .filter(|n| matches!(n.kind, NodeKind::Shape(_)))
+        .count();
+    assert_eq!(shapes, 2);
+}
+
+#[test]
+fn proto_with_is_and_defaults_and_routes_inside() {
+    let l = load(
+        r#"#VRML V2.0 utf8
+PROTO Ball [ field SFColor col 0 1 0 field SFVec3f at 0 0 0 eventIn SFVec3f set_at ]
+{ Transform { translation IS at set_translation IS set_at
+    children Shape { appearance Appearance { material Material { diffuseColor IS col } } geometry Sphere {} } } }
+DEF A Ball { at 1 0 0 }
+DEF B Ball { col 1 0 0 }
+DEF C TimeSensor { cycleInterval 2 loop TRUE }
+DEF P PositionInterpolator { key [0 1] keyValue [0 0 0, 0 4 0] }
+ROUTE C.fraction_changed TO P.set_fraction
+ROUTE P.value_changed TO B.set_at
+"#,
+    );
+    let s = &l.scene;
+    let a = s.node(s.find_node("A").unwrap());
+    assert_eq!(a.transform.translation, Vec3::X);
+    let b_id = s.find_node("B").unwrap();
+    assert_eq!(s.node(b_id).transform.translation, Vec3::ZERO);
+    let greens = s.materials.iter().filter(|m| m.diffuse == Vec3::Y).count();
+    let reds = s.materials.iter().filter(|m| m.diffuse == Vec3::X).count();
+    assert_eq!((greens, reds), (1, 1));
+    assert_eq!(s.animation.tracks.len(), 1);
+    let t = &s.animation.tracks[0];
+    assert_eq!(t.target.of, TargetRef::Node(b_id));
+    assert_eq!(t.target.property, Property::Translation);
+    assert_eq!(t.repeat, Repeat::Loop);
+    let Keys::Vec3(k) = &t.keys else {
+        panic!("vec3 keys")
+    };
+    assert_eq!(k.len(), 2);
+    assert_eq!((k[0].frame, k[1].frame), (0.0, 48.0));
+    assert_eq!(k[1].value, Vec3::new(0.0, 4.0, 0.0));
+}
+
+#[test]
+fn keys_are_padded_to_the_cycle_and_jumps_kept() {
+    let l = load(
+        r#"#VRML V2.0 utf8
+DEF T Transform {}
+DEF C TimeSensor { cycleInterval 1 }
+DEF S ScalarInterpolator { key [0.25 0.5 0.5 0.75] keyValue [1 2 3 4] }
+DEF L PointLight {}
+ROUTE C.fraction_changed TO S.set_fraction
+ROUTE S.value_changed TO L.set_intensity
+"#,
+    );
+    let t = &l.scene.animation.tracks[0];
+    assert_eq!(t.repeat, Repeat::Constant);
+    assert_eq!(t.target.property, Property::LightIntensity);
+    let Keys::Scalar(k) = &t.keys else {
+        panic!("scalar keys")
+    };
+    let frames: Vec<f32> = k.iter().map(|k| k.frame).collect();
+    let values: Vec<f32> = k.iter().map(|k| k.value).collect();
+    assert_eq!(values, vec![1.0, 1.0, 2.0, 3.0, 4.0, 4.0]);
+    assert_eq!(frames[0], 0.0);
+    assert_eq!(frames[1], 6.0);
+    assert!(frames[2] < 12.0 && frames[2] > 11.99);
+    assert_eq!(frames[3], 12.0);
+    assert_eq!(frames[5], 24.0);
+}
+
+#[test]
+fn color_interpolator_blends_in_hsv() {
+    let l = load(
+        r#"#VRML V2.0 utf8
+DEF M Material {}
+Shape { appearance Appearance { material USE M } geometry Box {} }
+DEF C TimeSensor { cycleInterval 1 loop TRUE }
+DEF I ColorInterpolator { key [0 1] keyValue [1 0 0, 0 0 1] }
+ROUTE C.fraction_changed TO I.set_fraction
+ROUTE I.value_changed TO M.set_diffuseColor
+"#,
+    );
+    let t = &l.scene.animation.tracks[0];
+    assert_eq!(
+        t.target.of,
+        TargetRef::Material(crate::scene::MaterialId(0))
+    );
+    let Keys::Vec3(k) = &t.keys else {
+        panic!("vec3 keys")
+    };
+    // Red → blue the short way round the hue circle goes through magenta:
+    // the middle key is (1, 0, 1), not RGB's (0.5, 0, 0.5).
+    let mid = k.iter().find(|k| (k.frame - 12.0).abs() < 1e-4).unwrap();
+    assert!(
+        (mid.value - Vec3::new(1.0, 0.0, 1.0)).length() < 1e-5,
+        "{:?}",
+        mid.value
+    );
+}
+
+#[test]
+fn syntax_error_has_position_and_message() {
+    let e = read(
+        b"#VRML V2.0 utf8\nTransform { translation 1 2 3 ]",
+        Path::new("x.wrl"),
+    )
+    .unwrap_err();
+    assert_eq!((e.line, e.column), (2, 31));
+    assert!(e.to_string().starts_with("x.wrl:2:31: "), "{e}");
+}
+
+#[test]
+fn error_after_good_nodes_keeps_them_with_a_warning() {
+    let l = load("#VRML V2.0 utf8\nDEF A Transform {}\nTransform { children [ Box { ] }");
+    assert!(l.scene.find_node("A").is_some());
+    assert!(
+        l.warnings.iter().any(|w| w.starts_with("t.wrl:3:")),
+        "{:?}",
+        l.warnings
+    );
+}
+
+#[test]
+fn unknown_nodes_script_and_externproto_are_warned() {
+    let l = load(
+        r#"#VRML V2.0 utf8
+EXTERNPROTO Foo [ field SFFloat x ] "foo.wrl#Foo"
+Foo { x 1 }
+Script { url "javascript: function f() {}" eventIn SFBool go field SFNode n NULL }
+Frobnicate { a 1 b [ 2 3 ] c Box {} }
+Shape { geometry Box {} }
+"#,
+    );
+    let w = l.warnings.join("\n");
+    assert!(w.contains("EXTERNPROTO Foo"), "{w}");
+    assert!(w.contains("Script"), "{w}");
+    assert!(w.contains("unknown node 'Frobnicate'"), "{w}");
+    assert_eq!(l.scene.meshes.len(), 1);
+}
+
+#[test]
+fn deep_nesting_is_an_error_not_a_crash() {
+    let mut s = String::from("#VRML V2.0 utf8\n");
+    for _ in 0..5000 {
+        s.push_str("Group { children [ ");
+    }
+    let e = read(s.as_bytes(), Path::new("d.wrl")).unwrap_err();
+    assert!(e.message.contains("nesting deeper than"), "{e}");
+}
+
+#[test]
+fn switch_shows_only_the_chosen_child() {
+    let l = load(
+        "#VRML V2.0 utf8\nDEF S Switch { whichChoice 1 choice [ DEF A Group {} DEF B Group {} ] }",
+    );
+    let s = &l.scene;
+    assert!(!s.node(s.find_node("A").unwrap()).visible);
+    assert!(s.node(s.find_node("B").unwrap()).visible);
+}
