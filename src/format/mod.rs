@@ -12,6 +12,17 @@ pub mod vrml97;
 
 pub use error::LoadError;
 
+pub mod keynote;
+pub mod sampling;
+pub mod save;
+mod write_anim;
+mod write_iv;
+pub mod write_plan;
+mod write_text;
+mod write_vrml97;
+
+pub use save::{save, InventorVersion, OutputFormat, SaveError, WriteOptions, WriteReport};
+
 use crate::scene::Scene;
 use std::path::Path;
 
@@ -38,7 +49,10 @@ pub(crate) fn load_nested(path: &Path, depth: usize) -> Result<Loaded, LoadError
 /// Loads a file's contents; `path` names it in messages and resolves
 /// relative references (Inline, File, mtllib).
 pub fn load_bytes(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
-    load_bytes_nested(bytes, path, 0)
+    let mut loaded = load_bytes_nested(bytes, path, 0)?;
+    // animed's own key note, if the file has one, replaces the sampled tracks.
+    keynote::apply_to_loaded(&mut loaded, path);
+    Ok(loaded)
 }
 
 fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
