@@ -6,6 +6,7 @@ pub mod gzip;
 pub mod inline;
 pub mod iv;
 pub mod lexer;
+pub mod obj;
 pub mod polygons;
 pub mod syntax;
 pub mod vrml97;
@@ -63,6 +64,10 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
         let plain = gzip::decompress(bytes, gzip::MAX_DECOMPRESSED)
             .map_err(|m| LoadError::new(path, 0, 0, m))?;
         return load_bytes_nested(&plain, path, depth);
+    }
+    // OBJ has no header line to detect it by: go by the name.
+    if obj::is_obj_path(path) {
+        return obj::read(bytes, path);
     }
     let header = lexer::read_header(bytes)
         .map_err(|e| LoadError::new(path, e.pos.line, e.pos.column, e.message))?;
