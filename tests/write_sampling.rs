@@ -42,7 +42,10 @@ fn scene_with(track: Track, duration: f32) -> Scene {
     s
 }
 
-fn key_strategy() -> impl Strategy<Value = (f32, u8, [f32; 3], [f32; 2], [f32; 4])> {
+/// Gap to the next key, interpolation, TCB, ease, value numbers.
+type RawKey = (f32, u8, [f32; 3], [f32; 2], [f32; 4]);
+
+fn key_strategy() -> impl Strategy<Value = RawKey> {
     (
         0.5f32..20.0,
         0u8..3,
@@ -52,10 +55,7 @@ fn key_strategy() -> impl Strategy<Value = (f32, u8, [f32; 3], [f32; 2], [f32; 4
     )
 }
 
-fn build<V>(
-    raw: &[(f32, u8, [f32; 3], [f32; 2], [f32; 4])],
-    v: impl Fn(&[f32; 4]) -> V,
-) -> Vec<Key<V>> {
+fn build<V>(raw: &[RawKey], v: impl Fn(&[f32; 4]) -> V) -> Vec<Key<V>> {
     let mut frame = 0.0;
     raw.iter()
         .map(|(dt, interp, tcb, ease, val)| {
