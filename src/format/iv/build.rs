@@ -285,7 +285,8 @@ impl Builder {
     }
 
     fn transform(&mut self, n: &NodeRef, name: String, t: Transform, cur: &mut Cursor) {
-        if name.is_empty() {
+        let animated = super::animated::is_animated(&n.kind);
+        if name.is_empty() && !animated {
             cur.pending *= t.matrix();
             return;
         }
@@ -293,6 +294,11 @@ impl Builder {
             cur.world *= self.scene.node(id).transform.matrix();
             cur.parent = Some(id);
             cur.pending = Mat4::IDENTITY;
+            if animated {
+                if let Err(e) = super::animated::add_track(&mut self.scene, n, id) {
+                    self.warn(n.pos, &format!("{} not animated: {e}", n.kind));
+                }
+            }
         }
     }
 

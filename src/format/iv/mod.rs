@@ -2,6 +2,7 @@
 //! traversal state (property nodes affect later siblings, Separators save
 //! and restore) turned into the scene tree.
 
+mod animated;
 mod build;
 mod shapes;
 mod state;

@@ -131,3 +131,23 @@ fn vrml1_header_and_strips() {
     }
     assert_eq!(l.scene.format, crate::scene::SourceFormat::Vrml1);
 }
+
+#[test]
+fn rotor_spins_once_per_period_and_loops() {
+    let l =
+        load("#Inventor V2.1 ascii\nSeparator { Rotor { rotation 0 1 0 0 speed 0.5 } Cube {} }");
+    let s = &l.scene;
+    assert_eq!(s.animation.tracks.len(), 1);
+    let t = &s.animation.tracks[0];
+    assert_eq!(t.repeat, crate::anim::Repeat::Loop);
+    let frames = t.keys.frames();
+    // 0.5 turns per second: one turn in 2 s = 48 frames at 24 fps.
+    assert_eq!(frames.first(), Some(&0.0));
+    assert_eq!(frames.last(), Some(&48.0));
+    assert_eq!(s.settings.duration, 48.0);
+    let crate::anim::Keys::Rotation(k) = &t.keys else {
+        panic!()
+    };
+    let quarter = k.iter().find(|k| k.frame == 12.0).unwrap().value;
+    assert!(quarter.angle_between(glam::Quat::from_rotation_y(std::f32::consts::FRAC_PI_2)) < 1e-5);
+}

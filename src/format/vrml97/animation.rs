@@ -285,18 +285,24 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             continue;
         };
         match make_keys(&fractions, values, p.clock, fps, p.property) {
-            Ok(keys) => b.scene.animation.tracks.push(Track {
-                target: Target {
+            Ok(keys) => {
+                let target = Target {
                     of: p.of,
                     property: p.property,
-                },
-                repeat: if p.clock.looping {
+                };
+                let repeat = if p.clock.looping {
                     Repeat::Loop
                 } else {
                     Repeat::Constant
-                },
-                keys,
-            }),
+                };
+                match Track::new(target, repeat, keys) {
+                    Ok(t) => b.scene.animation.tracks.push(t),
+                    Err(e) => {
+                        let msg = format!("{} not imported: {e}", p.interp.kind);
+                        b.warn(p.interp.pos, &msg);
+                    }
+                }
+            }
             Err(msg) => b.warn(p.interp.pos, &msg),
         }
     }
