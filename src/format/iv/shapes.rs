@@ -200,11 +200,25 @@ fn consecutive(faces: &[Vec<u32>]) -> Vec<Vec<u32>> {
 pub fn mesh(n: &NodeRef, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Mesh> {
     let kind = n.kind.as_str();
     match kind {
-        "Cube" => Some(primitives::box_mesh(Vec3::new(
-            n.f32("width", 2.0),
-            n.f32("height", 2.0),
-            n.f32("depth", 2.0),
-        ))),
+        "Cube" => {
+            let mut m = primitives::box_mesh(Vec3::new(
+                n.f32("width", 2.0),
+                n.f32("height", 2.0),
+                n.f32("depth", 2.0),
+            ));
+            let per_part = matches!(
+                inp.material_binding,
+                Bind::PerPart | Bind::PerPartIndexed | Bind::PerFace | Bind::PerFaceIndexed
+            );
+            if per_part && inp.colors.len() > 1 && m.normals.len() == m.positions.len() {
+                m.colors = m
+                    .normals
+                    .iter()
+                    .map(|nm| cube_part_color(*nm, &inp.colors))
+                    .collect();
+            }
+            Some(m)
+        }
         "Sphere" => Some(primitives::sphere(n.f32("radius", 1.0))),
         "Cone" => {
             let (all, parts) = parts(n);
@@ -419,4 +433,22 @@ fn quad_mesh(n: &AstNode, start: usize) -> (Vec<Vec<u32>>, Vec<u32>) {
         }
     }
     (faces, parts)
+}
+
+/// SoCube's parts in material order: front, back, left, right, top, bottom.
+fn cube_part_color(normal: Vec3, colors: &[Vec3]) -> Vec3 {
+    let part = if normal.z > 0.5 {
+        0
+    } else if normal.z < -0.5 {
+        1
+    } else if normal.x < -0.5 {
+        2
+    } else if normal.x > 0.5 {
+        3
+    } else if normal.y > 0.5 {
+        4
+    } else {
+        5
+    };
+    colors[part % colors.len()]
 }

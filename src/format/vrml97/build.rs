@@ -52,6 +52,9 @@ pub struct Builder {
     saw_background: bool,
     build_depth: usize,
     full: bool,
+    /// > 0 while adding a Switch choice that is not shown: its shapes are
+    /// kept (hidden) but its lights, viewpoints and bindable nodes are not.
+    hidden: usize,
 }
 
 impl Builder {
@@ -71,6 +74,7 @@ impl Builder {
             saw_background: false,
             build_depth: 0,
             full: false,
+            hidden: 0,
         }
     }
 
@@ -165,8 +169,15 @@ impl Builder {
                     let choices: Vec<NodeRef> = eff.nodes("choice").to_vec();
                     for (i, c) in choices.iter().enumerate() {
                         let first = self.scene.nodes.len();
+                        let shown = i as f64 == which;
+                        if !shown {
+                            self.hidden += 1;
+                        }
                         self.add(c, Some(id));
-                        if i as f64 != which {
+                        if !shown {
+                            self.hidden -= 1;
+                        }
+                        if !shown {
                             for k in first..self.scene.nodes.len() {
                                 if self.scene.nodes[k].parent == Some(id) {
                                     self.scene.nodes[k].visible = false;
@@ -199,6 +210,9 @@ impl Builder {
                 }
             }
             "Shape" => self.shape(&eff, parent, name),
+            "DirectionalLight" | "PointLight" | "SpotLight" | "Viewpoint" | "NavigationInfo"
+            | "Background"
+                if self.hidden > 0 => {}
             "DirectionalLight" | "PointLight" | "SpotLight" => {
                 let light = light(&eff);
                 self.push(&eff, parent, Node::new(name, NodeKind::Light(light)));

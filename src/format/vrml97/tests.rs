@@ -231,3 +231,16 @@ fn switch_shows_only_the_chosen_child() {
     assert!(!s.node(s.find_node("A").unwrap()).visible);
     assert!(s.node(s.find_node("B").unwrap()).visible);
 }
+
+#[test]
+fn bindables_and_lights_in_hidden_switch_choices_are_skipped() {
+    let l = load(
+        "#VRML V2.0 utf8\nSwitch { whichChoice 1 choice [ Group { children [ Background { skyColor 1 0 0 } PointLight {} Viewpoint { description \"No\" } ] } Background { skyColor 0 1 0 } ] }",
+    );
+    let s = &l.scene;
+    assert_eq!(s.settings.background, Vec3::Y);
+    assert!(s
+        .nodes
+        .iter()
+        .all(|n| n.light().is_none() && n.camera().is_none()));
+}
