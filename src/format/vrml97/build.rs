@@ -52,7 +52,7 @@ pub struct Builder {
     saw_background: bool,
     build_depth: usize,
     full: bool,
-    /// > 0 while adding a Switch choice that is not shown: its shapes are
+    /// Non-zero while adding a Switch choice that is not shown: its shapes are
     /// kept (hidden) but its lights, viewpoints and bindable nodes are not.
     hidden: usize,
 }
