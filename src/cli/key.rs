@@ -2,7 +2,8 @@
 //! editor does to keys, for scripts.
 //!
 //! ```text
-//! animed key new OUT [--node NAME]… [--box NAME]… [--light NAME]… [--fps F] [--duration N]
+//! animed key new OUT [--node NAME]… [--box NAME]… [--light NAME]… [--camera NAME]…
+//!                [--fps F] [--duration N]
 //! animed key set FILE --target NAME.property (--frame N | --time S) --value V
 //!                [--interp step|linear|tcb|slerp|squad] [--tcb T,C,B] [--ease IN,OUT]
 //!                [--repeat constant|loop] [--fps F] [--duration N] [-o OUT]
@@ -14,8 +15,8 @@
 //! `r,g,b`, rotations axis-angle `x,y,z,angle` (radians), booleans
 //! `true`/`false`. `-o` defaults to FILE itself; saving is atomic.
 //! `key new` starts a scene from nothing: empty named Transforms (`--node`),
-//! unit cubes (`--box`) and point lights (`--light`), so there is something
-//! to key.
+//! unit cubes (`--box`), point lights (`--light`) and cameras (`--camera`),
+//! so there is something to key.
 //!
 //! `NAME` is a node or material name. For light, camera and material
 //! properties a group node's direct child of the right kind (or a shape's
@@ -64,6 +65,9 @@ pub struct NewArgs {
     /// A point light with this name (repeatable).
     #[arg(long = "light")]
     pub lights: Vec<String>,
+    /// A camera (VRML97 default viewpoint: at 0,0,10 looking down -z) with this name (repeatable).
+    #[arg(long = "camera")]
+    pub cameras: Vec<String>,
     #[command(flatten)]
     pub timing: Timing,
 }
@@ -213,7 +217,13 @@ fn new(a: NewArgs) -> Result<(), String> {
     let mut scene = Scene::new();
     apply_timing(&mut scene, &a.timing)?;
     let mut names = std::collections::HashSet::new();
-    for n in a.nodes.iter().chain(&a.boxes).chain(&a.lights) {
+    for n in a
+        .nodes
+        .iter()
+        .chain(&a.boxes)
+        .chain(&a.lights)
+        .chain(&a.cameras)
+    {
         if n.is_empty() || !names.insert(n.clone()) {
             return Err(format!("node name `{n}` is empty or given twice"));
         }
@@ -222,6 +232,13 @@ fn new(a: NewArgs) -> Result<(), String> {
                 "node name `{n}` must be letters, digits and `_`, not starting with a digit"
             ));
         }
+    }
+    for n in &a.cameras {
+        let camera = crate::scene::Camera {
+            description: n.clone(),
+            ..Default::default()
+        };
+        scene.add_node(None, Node::new(n.clone(), NodeKind::Camera(camera)));
     }
     for n in &a.nodes {
         scene.add_node(None, Node::group(n.clone()));
