@@ -16,7 +16,7 @@ pub use error::LoadError;
 pub mod keynote;
 pub mod sampling;
 pub mod save;
-mod write_anim;
+pub mod write_anim;
 mod write_iv;
 pub mod write_plan;
 mod write_text;
