@@ -199,26 +199,33 @@ fn consecutive(faces: &[Vec<u32>]) -> Vec<Vec<u32>> {
 /// Builds the mesh for shape `n` (its kind is one `is_shape` accepts).
 pub fn mesh(n: &NodeRef, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Mesh> {
     let kind = n.kind.as_str();
+    let mut m = mesh_of(n, kind, st, inp, msgs)?;
+    // Per-part materials of the primitives (VRML 1.0 / Inventor part order).
+    let per_part = matches!(
+        inp.material_binding,
+        Bind::PerPart | Bind::PerPartIndexed | Bind::PerFace | Bind::PerFaceIndexed
+    );
+    if per_part
+        && inp.colors.len() > 1
+        && matches!(kind, "Cube" | "Cylinder" | "Cone")
+        && m.normals.len() == m.positions.len()
+    {
+        m.colors = m
+            .normals
+            .iter()
+            .map(|nm| part_color(kind, *nm, &inp.colors))
+            .collect();
+    }
+    Some(m)
+}
+
+fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Mesh> {
     match kind {
-        "Cube" => {
-            let mut m = primitives::box_mesh(Vec3::new(
-                n.f32("width", 2.0),
-                n.f32("height", 2.0),
-                n.f32("depth", 2.0),
-            ));
-            let per_part = matches!(
-                inp.material_binding,
-                Bind::PerPart | Bind::PerPartIndexed | Bind::PerFace | Bind::PerFaceIndexed
-            );
-            if per_part && inp.colors.len() > 1 && m.normals.len() == m.positions.len() {
-                m.colors = m
-                    .normals
-                    .iter()
-                    .map(|nm| cube_part_color(*nm, &inp.colors))
-                    .collect();
-            }
-            Some(m)
-        }
+        "Cube" => Some(primitives::box_mesh(Vec3::new(
+            n.f32("width", 2.0),
+            n.f32("height", 2.0),
+            n.f32("depth", 2.0),
+        ))),
         "Sphere" => Some(primitives::sphere(n.f32("radius", 1.0))),
         "Cone" => {
             let (all, parts) = parts(n);
@@ -435,20 +442,30 @@ fn quad_mesh(n: &AstNode, start: usize) -> (Vec<Vec<u32>>, Vec<u32>) {
     (faces, parts)
 }
 
-/// SoCube's parts in material order: front, back, left, right, top, bottom.
-fn cube_part_color(normal: Vec3, colors: &[Vec3]) -> Vec3 {
-    let part = if normal.z > 0.5 {
-        0
-    } else if normal.z < -0.5 {
-        1
-    } else if normal.x < -0.5 {
-        2
-    } else if normal.x > 0.5 {
-        3
-    } else if normal.y > 0.5 {
-        4
-    } else {
-        5
+/// The material index of a primitive's part, told apart by the normal:
+/// Cube front, back, left, right, top, bottom; Cylinder sides, top, bottom;
+/// Cone sides, bottom.
+fn part_color(kind: &str, normal: Vec3, colors: &[Vec3]) -> Vec3 {
+    let part = match kind {
+        "Cube" => {
+            if normal.z > 0.5 {
+                0
+            } else if normal.z < -0.5 {
+                1
+            } else if normal.x < -0.5 {
+                2
+            } else if normal.x > 0.5 {
+                3
+            } else if normal.y > 0.5 {
+                4
+            } else {
+                5
+            }
+        }
+        "Cylinder" if normal.y > 0.99 => 1,
+        "Cylinder" if normal.y < -0.99 => 2,
+        "Cone" if normal.y < -0.99 => 1,
+        _ => 0,
     };
     colors[part % colors.len()]
 }
