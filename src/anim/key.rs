@@ -78,3 +78,65 @@ impl<V> Key<V> {
         self
     }
 }
+
+/// Everything about a key except its time and value: what the editor's key
+/// panel and `animed key` edit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KeyParams {
+    pub interp: Interp,
+    pub tension: f32,
+    pub continuity: f32,
+    pub bias: f32,
+    pub ease_in: f32,
+    pub ease_out: f32,
+}
+
+impl Default for KeyParams {
+    fn default() -> Self {
+        let k = Key::new(0.0, ());
+        k.params()
+    }
+}
+
+impl<V> Key<V> {
+    pub fn params(&self) -> KeyParams {
+        KeyParams {
+            interp: self.interp,
+            tension: self.tension,
+            continuity: self.continuity,
+            bias: self.bias,
+            ease_in: self.ease_in,
+            ease_out: self.ease_out,
+        }
+    }
+
+    pub fn with_params(mut self, p: KeyParams) -> Self {
+        self.interp = p.interp;
+        self.tension = p.tension;
+        self.continuity = p.continuity;
+        self.bias = p.bias;
+        self.ease_in = p.ease_in;
+        self.ease_out = p.ease_out;
+        self
+    }
+
+    pub fn with_ease(mut self, ease_in: f32, ease_out: f32) -> Self {
+        self.ease_in = ease_in;
+        self.ease_out = ease_out;
+        self
+    }
+
+    /// The same key with its value converted.
+    pub fn map<W>(self, f: impl FnOnce(V) -> W) -> Key<W> {
+        Key {
+            frame: self.frame,
+            value: f(self.value),
+            interp: self.interp,
+            tension: self.tension,
+            continuity: self.continuity,
+            bias: self.bias,
+            ease_in: self.ease_in,
+            ease_out: self.ease_out,
+        }
+    }
+}

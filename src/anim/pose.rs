@@ -21,82 +21,135 @@ pub struct Pose {
 }
 
 impl Pose {
+    /// The animated light of node `id` (lights are kept in node order).
     pub fn light(&self, id: NodeId) -> Option<&Light> {
-        self.lights.iter().find(|(n, _)| *n == id).map(|(_, l)| l)
+        find(&self.lights, id)
     }
+    /// The animated camera of node `id`.
     pub fn camera(&self, id: NodeId) -> Option<&Camera> {
-        self.cameras.iter().find(|(n, _)| *n == id).map(|(_, c)| c)
+        find(&self.cameras, id)
     }
 }
 
-/// Evaluates every track of `scene` at `time` seconds.
+/// Binary search (evaluate keeps node order), then a linear scan for poses
+/// built by hand in another order.
+fn find<T>(items: &[(NodeId, T)], id: NodeId) -> Option<&T> {
+    match items.binary_search_by_key(&id, |(n, _)| *n) {
+        Ok(j) => Some(&items[j].1),
+        Err(_) => items.iter().find(|(n, _)| *n == id).map(|(_, v)| v),
+    }
+}
+
+/// Evaluates every track of `scene` at `time` seconds (key frame =
+/// `time · fps`), leaving the scene untouched.
 pub fn evaluate(scene: &Scene, time: f32) -> Pose {
+    let mut pose = Pose::default();
+    evaluate_into(scene, time, &mut pose);
+    pose
+}
+
+/// [`evaluate`] into an existing pose, reusing its buffers: after the first
+/// call with a scene of the same shape it allocates nothing. Tracks apply in
+/// order, so the last track on a property wins; a track whose property does
+/// not fit its target (a light property on a group, say) is ignored.
+pub fn evaluate_into(scene: &Scene, time: f32, pose: &mut Pose) {
     let frame = time * scene.settings.fps;
-    let n = scene.nodes.len();
-    let mut transforms: Vec<Transform> = scene.nodes.iter().map(|n| n.transform).collect();
-    let mut own_visible: Vec<bool> = scene.nodes.iter().map(|n| n.visible).collect();
-    let mut lights: Vec<Option<Light>> = scene.nodes.iter().map(|n| n.light().cloned()).collect();
-    let mut cameras: Vec<Option<Camera>> =
-        scene.nodes.iter().map(|n| n.camera().cloned()).collect();
-    let mut materials = scene.materials.clone();
+    let nodes = &scene.nodes;
+    let n = nodes.len();
+
+    pose.transforms.clear();
+    pose.transforms.extend(nodes.iter().map(|n| n.transform));
+    // Own visibility first; the tree walk below folds in the ancestors'.
+    pose.visible.clear();
+    pose.visible.extend(nodes.iter().map(|n| n.visible));
+    sync(&mut pose.lights, nodes.iter().map(|n| n.light()));
+    sync(&mut pose.cameras, nodes.iter().map(|n| n.camera()));
+    pose.materials.clone_from(&scene.materials);
 
     for track in &scene.animation.tracks {
-        let v = track.sample(frame);
+        let p = track.target.property;
         match track.target.of {
             TargetRef::Node(id) => {
                 let i = id.0 as usize;
                 if i >= n {
                     continue;
                 }
-                apply_node(
-                    track.target.property,
-                    v,
-                    &mut transforms[i],
-                    &mut own_visible[i],
-                );
-                if let Some(l) = lights[i].as_mut() {
-                    apply_light(track.target.property, v, l);
-                }
-                if let Some(c) = cameras[i].as_mut() {
-                    apply_camera(track.target.property, v, c);
+                match p.owner() {
+                    "light" => {
+                        if let Ok(j) = pose.lights.binary_search_by_key(&id, |(n, _)| *n) {
+                            apply_light(p, track.sample(frame), &mut pose.lights[j].1);
+                        }
+                    }
+                    "camera" => {
+                        if let Ok(j) = pose.cameras.binary_search_by_key(&id, |(n, _)| *n) {
+                            apply_camera(p, track.sample(frame), &mut pose.cameras[j].1);
+                        }
+                    }
+                    _ => apply_node(
+                        p,
+                        track.sample(frame),
+                        &mut pose.transforms[i],
+                        &mut pose.visible[i],
+                    ),
                 }
             }
             TargetRef::Material(id) => {
-                if let Some(m) = materials.get_mut(id.0 as usize) {
-                    apply_material(track.target.property, v, m);
+                if let Some(m) = pose.materials.get_mut(id.0 as usize) {
+                    apply_material(p, track.sample(frame), m);
                 }
             }
         }
     }
 
-    let mut world = vec![Mat4::IDENTITY; n];
-    let mut visible = vec![true; n];
-    for id in scene.walk() {
-        let i = id.0 as usize;
-        let (pw, pv) = match scene.nodes[i].parent {
-            Some(p) => (world[p.0 as usize], visible[p.0 as usize]),
-            None => (Mat4::IDENTITY, true),
-        };
-        world[i] = pw * transforms[i].matrix();
-        visible[i] = pv && own_visible[i];
+    pose.world.clear();
+    pose.world
+        .extend(pose.transforms.iter().map(|t| t.matrix()));
+    // Readers add parents before children, so arena order visits parents
+    // first; otherwise fall back to the explicit pre-order walk.
+    let ordered = nodes
+        .iter()
+        .enumerate()
+        .all(|(i, nd)| nd.parent.is_none_or(|p| (p.0 as usize) < i));
+    if ordered {
+        for i in 0..n {
+            combine(nodes, pose, i);
+        }
+    } else {
+        for id in scene.walk() {
+            combine(nodes, pose, id.0 as usize);
+        }
     }
+}
 
-    Pose {
-        transforms,
-        world,
-        visible,
-        lights: lights
-            .into_iter()
-            .enumerate()
-            .filter_map(|(i, l)| l.map(|l| (NodeId(i as u32), l)))
-            .collect(),
-        cameras: cameras
-            .into_iter()
-            .enumerate()
-            .filter_map(|(i, c)| c.map(|c| (NodeId(i as u32), c)))
-            .collect(),
-        materials,
+/// Folds the parent's world matrix and visibility into node `i`.
+#[inline]
+fn combine(nodes: &[crate::scene::Node], pose: &mut Pose, i: usize) {
+    if let Some(p) = nodes[i].parent {
+        let p = p.0 as usize;
+        if p < nodes.len() && p != i {
+            pose.world[i] = pose.world[p] * pose.world[i];
+            pose.visible[i] = pose.visible[p] && pose.visible[i];
+        }
     }
+}
+
+/// Makes `out` hold `(id, value)` for every node that has one, in node order,
+/// reusing its elements (and their strings) where it can.
+fn sync<'a, T: Clone + 'a>(out: &mut Vec<(NodeId, T)>, items: impl Iterator<Item = Option<&'a T>>) {
+    let mut j = 0;
+    for (i, item) in items.enumerate() {
+        if let Some(v) = item {
+            let id = NodeId(i as u32);
+            if j < out.len() {
+                out[j].0 = id;
+                out[j].1.clone_from(v);
+            } else {
+                out.push((id, v.clone()));
+            }
+            j += 1;
+        }
+    }
+    out.truncate(j);
 }
 
 fn apply_node(p: Property, v: Value, t: &mut Transform, visible: &mut bool) {

@@ -1,1 +1,173 @@
-//! See README.md (Architecture).
+//! The only module that touches the window system (minifb): it turns window
+//! input into editor [`Event`]s, shows the frames the editor draws, and
+//! sleeps between polls when nothing happens so an idle editor costs close
+//! to no CPU.
+
+mod keymap;
+
+use crate::editor::{Editor, Event, Mods, MouseButton};
+use crate::render::Frame;
+use minifb::{KeyRepeat, MouseMode, Window, WindowOptions};
+use std::cell::RefCell;
+use std::rc::Rc;
+use std::time::{Duration, Instant};
+
+/// Poll interval while something moves (playback, drags) and when idle.
+const ACTIVE_POLL: Duration = Duration::from_millis(8);
+const IDLE_POLL: Duration = Duration::from_millis(33);
+/// How long after the last input the loop stays in the fast poll.
+const ACTIVE_FOR: Duration = Duration::from_millis(500);
+
+/// Collects typed characters from minifb's input callback.
+struct TextSink(Rc<RefCell<String>>);
+
+impl minifb::InputCallback for TextSink {
+    fn add_char(&mut self, c: u32) {
+        if let Some(ch) = char::from_u32(c) {
+            if !ch.is_control() {
+                self.0.borrow_mut().push(ch);
+            }
+        }
+    }
+}
+
+/// Opens the window and runs the editor until it quits or the window closes.
+pub fn run(mut ed: Editor) -> Result<(), String> {
+    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
+        return Err(no_display("DISPLAY is not set"));
+    }
+    let (w, h) = ed.size();
+    let opts = WindowOptions {
+        resize: true,
+        ..WindowOptions::default()
+    };
+    // minifb reports a missing X server or libraries as an error; guard
+    // against a panic in its C glue as well.
+    let window = std::panic::catch_unwind(|| Window::new("animed", w as usize, h as usize, opts));
+    let mut window = match window {
+        Ok(Ok(win)) => win,
+        Ok(Err(e)) => return Err(no_display(&e.to_string())),
+        Err(_) => return Err(no_display("the window system failed")),
+    };
+    // We pace the loop ourselves.
+    window.set_target_fps(0);
+    let typed = Rc::new(RefCell::new(String::new()));
+    window.set_input_callback(Box::new(TextSink(typed.clone())));
+
+    let start = Instant::now();
+    let mut frame = Frame::new(w, h, glam::Vec3::ZERO);
+    let mut size = (w as usize, h as usize);
+    let mut mouse = (-1.0f32, -1.0f32);
+    let mut buttons = [false; 3];
+    let mut last_input = Instant::now();
+    let mut dirty = true;
+
+    while window.is_open() && !ed.wants_quit() {
+        let mut events = Vec::new();
+        let mods = Mods {
+            ctrl: window.is_key_down(minifb::Key::LeftCtrl)
+                || window.is_key_down(minifb::Key::RightCtrl),
+            shift: window.is_key_down(minifb::Key::LeftShift)
+                || window.is_key_down(minifb::Key::RightShift),
+            alt: window.is_key_down(minifb::Key::LeftAlt)
+                || window.is_key_down(minifb::Key::RightAlt),
+        };
+        let now_size = window.get_size();
+        if now_size != size && now_size.0 > 0 && now_size.1 > 0 {
+            size = now_size;
+            events.push(Event::Resize {
+                width: size.0 as u32,
+                height: size.1 as u32,
+            });
+        }
+        if let Some((x, y)) = window.get_mouse_pos(MouseMode::Pass) {
+            if (x, y) != mouse {
+                mouse = (x, y);
+                events.push(Event::MouseMove { x, y, mods });
+            }
+        }
+        for (i, (mb, b)) in [
+            (minifb::MouseButton::Left, MouseButton::Left),
+            (minifb::MouseButton::Middle, MouseButton::Middle),
+            (minifb::MouseButton::Right, MouseButton::Right),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let down = window.get_mouse_down(mb);
+            if down != buttons[i] {
+                buttons[i] = down;
+                let (x, y) = mouse;
+                events.push(if down {
+                    Event::MouseDown {
+                        button: b,
+                        x,
+                        y,
+                        mods,
+                    }
+                } else {
+                    Event::MouseUp {
+                        button: b,
+                        x,
+                        y,
+                        mods,
+                    }
+                });
+            }
+        }
+        if let Some((_, dy)) = window.get_scroll_wheel() {
+            if dy != 0.0 {
+                events.push(Event::Wheel {
+                    delta: dy.signum() * (dy.abs() / 3.0).clamp(1.0, 5.0),
+                    x: mouse.0,
+                    y: mouse.1,
+                    mods,
+                });
+            }
+        }
+        for k in window.get_keys_pressed(KeyRepeat::Yes) {
+            if let Some(key) = keymap::key(k) {
+                events.push(Event::KeyDown { key, mods });
+            }
+        }
+        let text = std::mem::take(&mut *typed.borrow_mut());
+        if !text.is_empty() && !mods.ctrl && !mods.alt {
+            events.push(Event::Text(text));
+        }
+        if !events.is_empty() {
+            last_input = Instant::now();
+        }
+        for ev in events {
+            dirty |= ed.handle(ev);
+        }
+        if ed.wants_ticks() {
+            dirty |= ed.handle(Event::Tick {
+                time: start.elapsed().as_secs_f64(),
+            });
+        }
+        if dirty {
+            ed.draw(&mut frame);
+            window
+                .update_with_buffer(&frame.color, frame.width as usize, frame.height as usize)
+                .map_err(|e| format!("cannot show the frame: {e}"))?;
+            dirty = false;
+        } else {
+            // Pump window events only.
+            window.update();
+        }
+        let busy = ed.wants_ticks() || last_input.elapsed() < ACTIVE_FOR;
+        std::thread::sleep(if busy { ACTIVE_POLL } else { IDLE_POLL });
+    }
+    if ed.is_dirty() && !ed.wants_quit() {
+        eprintln!("animed: window closed with unsaved changes");
+    }
+    Ok(())
+}
+
+fn no_display(why: &str) -> String {
+    format!(
+        "cannot open a window ({why}). The editor needs an X display; \
+         without one use `animed render` to draw a scene to PNG, or \
+         `animed edit --script FILE --screenshot OUT.png` for a headless session"
+    )
+}

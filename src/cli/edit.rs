@@ -1,16 +1,114 @@
-//! `animed edit`: open the editor (the default with no subcommand).
+//! `animed edit`: open the editor (the default with no subcommand), or run
+//! a headless session script and write a screenshot.
+
+use crate::editor::{script, Editor};
+use std::path::PathBuf;
 
 /// Open the editor (the default with no subcommand).
 #[derive(clap::Args, Debug)]
-pub struct Args {}
+pub struct Args {
+    /// Scene file to open (.iv, .wrl, .wrl.gz, .obj); default: the demo scene.
+    pub file: Option<PathBuf>,
+    /// Run this session script without a window (see README, "Editor").
+    #[arg(long)]
+    pub script: Option<PathBuf>,
+    /// Write the final frame (scene + overlay) to this PNG; runs without a window.
+    #[arg(long)]
+    pub screenshot: Option<PathBuf>,
+    /// Window / screenshot size, WxH.
+    #[arg(long, default_value = "1024x640", value_parser = parse_size)]
+    pub size: (u32, u32),
+}
 
-pub fn run(_args: Args) -> i32 {
-    eprintln!("animed edit: not built yet");
-    2
+/// Parses `WxH` (each 16..=8192).
+pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("'{s}' is not WxH"))?;
+    let p = |v: &str| -> Result<u32, String> {
+        v.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|n| (16..=8192).contains(n))
+            .ok_or_else(|| format!("'{v}' is not a size from 16 to 8192"))
+    };
+    Ok((p(w)?, p(h)?))
+}
+
+fn make_editor(file: Option<&PathBuf>, (w, h): (u32, u32)) -> Result<Editor, String> {
+    match file {
+        None => Ok(Editor::with_demo(w, h)),
+        Some(path) => {
+            let loaded = crate::format::load(path).map_err(|e| e.to_string())?;
+            for warning in &loaded.warnings {
+                eprintln!("warning: {warning}");
+            }
+            Ok(Editor::new(loaded.scene, Some(path.clone()), w, h))
+        }
+    }
+}
+
+pub fn run(args: Args) -> i32 {
+    let mut ed = match make_editor(args.file.as_ref(), args.size) {
+        Ok(e) => e,
+        Err(msg) => {
+            eprintln!("animed edit: {msg}");
+            return 1;
+        }
+    };
+    if args.script.is_none() && args.screenshot.is_none() {
+        return window(ed);
+    }
+    if let Some(path) = &args.script {
+        let text = match std::fs::read_to_string(path) {
+            Ok(t) => t,
+            Err(e) => {
+                eprintln!("animed edit: {}: {e}", path.display());
+                return 1;
+            }
+        };
+        if let Err(e) = script::run(&mut ed, &text, path) {
+            eprintln!("animed edit: {e}");
+            return 1;
+        }
+    }
+    if ed.status().error {
+        eprintln!("animed edit: status: {}", ed.status().text);
+    }
+    if let Some(out) = &args.screenshot {
+        let frame = ed.render_frame();
+        if let Err(e) = frame.save_png(out) {
+            eprintln!("animed edit: {}: {e}", out.display());
+            return 1;
+        }
+    }
+    0
+}
+
+fn window(ed: Editor) -> i32 {
+    match crate::app::run(ed) {
+        Ok(()) => 0,
+        Err(msg) => {
+            eprintln!("animed: {msg}");
+            2
+        }
+    }
 }
 
 /// `animed` with no arguments: the editor on the bundled demo scene.
 pub fn run_default() -> i32 {
-    eprintln!("animed: the editor is not built yet; `animed render` renders the demo scene");
-    2
+    window(Editor::with_demo(1024, 640))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes() {
+        assert_eq!(parse_size("320x240"), Ok((320, 240)));
+        assert!(parse_size("320").is_err());
+        assert!(parse_size("0x10").is_err());
+        assert!(parse_size("99999x10").is_err());
+    }
 }

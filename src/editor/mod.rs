@@ -1,1 +1,439 @@
-//! See README.md (Architecture).
+//! The editor as a pure state machine: [`Editor::handle`] takes an input
+//! [`Event`] and says whether the picture changed; [`Editor::draw`] paints
+//! the current state (scene + overlay) into a [`Frame`]. No window code
+//! here: `app/` feeds it from minifb and `script.rs` from a text file, so
+//! tests and `animed edit --script` drive exactly what users see.
+//!
+//! Every change to the scene goes through [`command::History`] so it can be
+//! undone; a drag previews live and records one command at release.
+
+pub mod browser;
+pub mod camera;
+pub mod command;
+mod draw;
+pub mod event;
+pub mod fields;
+pub mod gizmo;
+mod input;
+pub mod ops;
+pub mod panel;
+pub mod script;
+mod viewport;
+
+pub use event::{Event, Key, Mods, MouseButton};
+
+use crate::anim::{evaluate, Pose};
+use crate::render::Frame;
+use crate::scene::{NodeId, RenderStyle, Scene};
+use crate::ui::{Layout, Painter};
+use browser::{Browser, Purpose};
+use camera::OrbitCamera;
+use command::{Command, History};
+use fields::FieldId;
+use std::path::{Path, PathBuf};
+
+/// Left mouse in the viewport: select things (default) or turn the camera.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    Select,
+    View,
+}
+
+/// What to do once unsaved changes are dealt with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum After {
+    Quit,
+    New,
+    Open,
+}
+
+/// A modal question.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Dialog {
+    pub message: String,
+    pub then: After,
+}
+
+/// The line of feedback at the bottom.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Status {
+    pub text: String,
+    pub error: bool,
+}
+
+/// A field being typed into.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextEdit {
+    pub field: FieldId,
+    pub text: String,
+    /// The first typed character replaces the whole text (it starts out
+    /// selected, as in Blender).
+    pub fresh: bool,
+}
+
+/// Playback clock: frame = start_frame + (now - start_time) · fps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Playback {
+    start_time: Option<f64>,
+    start_frame: f32,
+}
+
+/// The rendered scene (plus grid) for the viewport, kept until something
+/// that affects it changes.
+struct SceneLayer {
+    key: Option<LayerKey>,
+    frame: Frame,
+    painter: Painter,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct LayerKey {
+    rev: u64,
+    frame: f32,
+    camera: OrbitCamera,
+    w: u32,
+    h: u32,
+    grid: bool,
+    style: Option<RenderStyle>,
+}
+
+/// The whole editor state.
+pub struct Editor {
+    scene: Scene,
+    path: Option<PathBuf>,
+    history: History,
+    saved_revision: u64,
+    /// Bumped on every change to `scene` (commands and live previews).
+    scene_rev: u64,
+    camera: OrbitCamera,
+    selection: Option<NodeId>,
+    mode: Mode,
+    frame: f32,
+    playback: Option<Playback>,
+    record: bool,
+    show_grid: bool,
+    view_style: Option<RenderStyle>,
+    width: u32,
+    height: u32,
+    mouse: (f32, f32),
+    drag: input::Drag,
+    edit: Option<TextEdit>,
+    browser: Option<Browser>,
+    /// What a save-as browser should continue with.
+    browser_then: Option<After>,
+    dialog: Option<Dialog>,
+    status: Status,
+    quit: bool,
+    /// First visible row of the objects and lights lists.
+    scroll: [usize; 2],
+    /// Folder the file browser starts in when no file is open.
+    start_dir: PathBuf,
+    pose: Option<(u64, f32, Pose)>,
+    layer: SceneLayer,
+    painter: Painter,
+}
+
+impl Editor {
+    /// An editor on `scene` (loaded from `path`, if any) for a `width`×`height` window.
+    pub fn new(scene: Scene, path: Option<PathBuf>, width: u32, height: u32) -> Editor {
+        let mut e = Editor {
+            scene,
+            path,
+            history: History::default(),
+            saved_revision: 0,
+            scene_rev: 1,
+            camera: OrbitCamera::default(),
+            selection: None,
+            mode: Mode::Select,
+            frame: 0.0,
+            playback: None,
+            record: false,
+            show_grid: true,
+            view_style: None,
+            width: width.max(1),
+            height: height.max(1),
+            mouse: (-1.0, -1.0),
+            drag: input::Drag::None,
+            edit: None,
+            browser: None,
+            browser_then: None,
+            dialog: None,
+            status: Status::default(),
+            quit: false,
+            scroll: [0, 0],
+            start_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
+            pose: None,
+            layer: SceneLayer {
+                key: None,
+                frame: Frame::new(1, 1, glam::Vec3::ZERO),
+                painter: Painter::new(),
+            },
+            painter: Painter::new(),
+        };
+        e.frame_all();
+        e
+    }
+
+    /// The editor on the bundled demo scene; if it cannot be loaded, an
+    /// empty scene and the reason in the status line.
+    pub fn with_demo(width: u32, height: u32) -> Editor {
+        match crate::format::demo() {
+            Ok(l) => {
+                let mut e = Editor::new(l.scene, None, width, height);
+                e.set_status("Demo scene: Ctrl+O opens a file, Ctrl+S saves", false);
+                e
+            }
+            Err(err) => {
+                let mut e = Editor::new(Scene::new(), None, width, height);
+                e.set_status(&format!("demo scene unavailable: {err}"), true);
+                e
+            }
+        }
+    }
+
+    // ----- read access (tests, the app, issue 7's tools) -----
+
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+    pub fn path(&self) -> Option<&Path> {
+        self.path.as_deref()
+    }
+    pub fn selection(&self) -> Option<NodeId> {
+        self.selection
+    }
+    pub fn mode(&self) -> Mode {
+        self.mode
+    }
+    pub fn current_frame(&self) -> f32 {
+        self.frame
+    }
+    pub fn is_playing(&self) -> bool {
+        self.playback.is_some()
+    }
+    pub fn is_recording(&self) -> bool {
+        self.record
+    }
+    pub fn grid_shown(&self) -> bool {
+        self.show_grid
+    }
+    pub fn view_style(&self) -> Option<RenderStyle> {
+        self.view_style
+    }
+    pub fn camera(&self) -> &OrbitCamera {
+        &self.camera
+    }
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+    pub fn status(&self) -> &Status {
+        &self.status
+    }
+    pub fn browser(&self) -> Option<&Browser> {
+        self.browser.as_ref()
+    }
+    pub fn dialog(&self) -> Option<&Dialog> {
+        self.dialog.as_ref()
+    }
+    pub fn text_edit(&self) -> Option<&TextEdit> {
+        self.edit.as_ref()
+    }
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+    /// Unsaved changes?
+    pub fn is_dirty(&self) -> bool {
+        self.history.revision() != self.saved_revision
+    }
+    /// The user asked to quit and nothing is left unsaved (or they chose to
+    /// discard it).
+    pub fn wants_quit(&self) -> bool {
+        self.quit
+    }
+    /// Whether the app should keep sending `Tick`s (playback runs).
+    pub fn wants_ticks(&self) -> bool {
+        self.playback.is_some()
+    }
+    /// Layout of the current window.
+    pub fn layout(&self) -> Layout {
+        Layout::new(self.width as i32, self.height as i32, 0)
+    }
+
+    /// Where the file browser starts when no file is open (default: the
+    /// working directory).
+    pub fn set_start_dir(&mut self, dir: &Path) {
+        self.start_dir = dir.to_path_buf();
+    }
+
+    pub fn select(&mut self, id: Option<NodeId>) {
+        self.selection = id.filter(|i| (i.0 as usize) < self.scene.nodes.len());
+    }
+
+    // ----- state changes -----
+
+    fn set_status(&mut self, text: &str, error: bool) {
+        self.status = Status {
+            text: text.to_string(),
+            error,
+        };
+    }
+
+    /// The pose at the current frame (cached per scene revision and frame).
+    pub fn pose(&mut self) -> &Pose {
+        let fresh =
+            matches!(&self.pose, Some((r, f, _)) if *r == self.scene_rev && *f == self.frame);
+        if !fresh {
+            let t = self.frame / self.scene.settings.fps.max(1e-6);
+            self.pose = Some((self.scene_rev, self.frame, evaluate(&self.scene, t)));
+        }
+        // Just filled above.
+        &self.pose.as_ref().expect("pose cached").2
+    }
+
+    /// Applies and records a command.
+    pub fn execute(&mut self, label: &str, c: Command) {
+        self.history.execute(&mut self.scene, label, c);
+        self.touched();
+    }
+
+    /// Records a command already applied by live previews.
+    fn push_applied(&mut self, label: &str, c: Command) {
+        self.history.push_applied(label, c);
+        self.touched();
+    }
+
+    /// Applies a command as a preview (not recorded).
+    fn preview(&mut self, c: &Command) {
+        c.apply(&mut self.scene);
+        self.scene_rev += 1;
+    }
+
+    /// After any change: new revision, selection still valid.
+    fn touched(&mut self) {
+        self.scene_rev += 1;
+        self.select(self.selection);
+        let n = self.scene.nodes.len();
+        if self.selection.is_some_and(|s| s.0 as usize >= n) {
+            self.selection = None;
+        }
+    }
+
+    pub fn undo(&mut self) {
+        match self.history.undo(&mut self.scene) {
+            Some(l) => self.set_status(&format!("Undo: {l}"), false),
+            None => self.set_status("Nothing to undo", false),
+        }
+        self.touched();
+    }
+
+    pub fn redo(&mut self) {
+        match self.history.redo(&mut self.scene) {
+            Some(l) => self.set_status(&format!("Redo: {l}"), false),
+            None => self.set_status("Nothing to redo", false),
+        }
+        self.touched();
+    }
+
+    /// Replaces the scene (new/open): history restarts, camera frames it.
+    fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
+        self.scene = scene;
+        self.path = path;
+        self.history = History::default();
+        self.saved_revision = self.history.revision();
+        self.selection = None;
+        self.frame = 0.0;
+        self.playback = None;
+        self.edit = None;
+        self.scroll = [0, 0];
+        self.scene_rev += 1;
+        self.frame_all();
+    }
+
+    pub fn new_scene(&mut self) {
+        self.replace_scene(Scene::new(), None);
+        self.set_status("New scene", false);
+    }
+
+    /// Opens a scene file, replacing the current scene.
+    pub fn open_file(&mut self, path: &Path) -> Result<(), String> {
+        let loaded = crate::format::load(path).map_err(|e| e.to_string())?;
+        let n = loaded.warnings.len();
+        self.replace_scene(loaded.scene, Some(path.to_path_buf()));
+        let msg = match n {
+            0 => format!("Opened {}", path.display()),
+            _ => format!("Opened {} ({n} warnings)", path.display()),
+        };
+        self.set_status(&msg, false);
+        Ok(())
+    }
+
+    /// Adds a model file's content as a new object (undoable).
+    pub fn import_file(&mut self, path: &Path) -> Result<(), String> {
+        let loaded = crate::format::load(path).map_err(|e| e.to_string())?;
+        let before = Box::new(self.scene.clone());
+        let mut after = self.scene.clone();
+        let stem = path
+            .file_name()
+            .map(|s| s.to_string_lossy().to_string())
+            .unwrap_or_default();
+        let stem = fields::sanitize_name(stem.split('.').next().unwrap_or("Import"));
+        let g = ops::graft(&mut after, &loaded.scene, &stem);
+        let name = after.node(g).name.clone();
+        self.execute(
+            &format!("Import {name}"),
+            Command::ReplaceScene {
+                before,
+                after: Box::new(after),
+            },
+        );
+        self.selection = Some(g);
+        self.set_status(&format!("Imported {} as {name}", path.display()), false);
+        Ok(())
+    }
+
+    /// Saves to `path` through the writers (format from the extension).
+    pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
+        ops::save_scene(&self.scene, path)?;
+        self.path = Some(path.to_path_buf());
+        self.saved_revision = self.history.revision();
+        self.set_status(&format!("Saved {}", path.display()), false);
+        Ok(())
+    }
+
+    /// Looks at everything.
+    pub fn frame_all(&mut self) {
+        let b = {
+            let pose = self.pose().clone();
+            ops::scene_bounds(&self.scene, &pose)
+        };
+        let (c, r) = ops::sphere(b);
+        self.camera.frame_sphere(c, r);
+    }
+
+    /// Looks at the selection (nothing happens without one).
+    pub fn frame_selection(&mut self) {
+        let Some(sel) = self.selection else {
+            self.set_status("Nothing selected to frame (Home frames all)", false);
+            return;
+        };
+        let nodes = ops::subtree(&self.scene, sel);
+        let pose = self.pose().clone();
+        if let Some(b) = ops::bounds_of(&self.scene, &pose, &nodes) {
+            let (c, r) = ops::sphere(Some(b));
+            self.camera.frame_sphere(c, r);
+        }
+    }
+
+    fn browse(&mut self, purpose: Purpose, then: Option<After>) {
+        let dir = self
+            .path
+            .as_ref()
+            .and_then(|p| p.parent())
+            .filter(|p| !p.as_os_str().is_empty())
+            .map(Path::to_path_buf)
+            .unwrap_or_else(|| self.start_dir.clone());
+        self.browser = Some(Browser::new(purpose, &dir));
+        self.browser_then = then;
+        self.edit = None;
+    }
+}

@@ -4,6 +4,7 @@
 mod error;
 pub mod gzip;
 pub mod inline;
+pub mod iv;
 pub mod lexer;
 pub mod polygons;
 pub mod syntax;
@@ -50,12 +51,10 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
         .map_err(|e| LoadError::new(path, e.pos.line, e.pos.column, e.message))?;
     match header {
         lexer::Header::Vrml97 => vrml97::read_nested(bytes, path, depth),
-        _ => Err(LoadError::new(
-            path,
-            1,
-            1,
-            "Inventor / VRML 1.0 reader not built yet",
-        )),
+        lexer::Header::Vrml1 => iv::read_nested(bytes, path, depth, true),
+        lexer::Header::Inventor2 | lexer::Header::Inventor1 => {
+            iv::read_nested(bytes, path, depth, false)
+        }
     }
 }
 

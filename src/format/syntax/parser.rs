@@ -248,10 +248,29 @@ impl Parser<'_> {
         }
         let _ = pos;
         let mut fields = Vec::new();
+        // Inventor / VRML 1.0 write child nodes straight into the body.
+        let mut children: Vec<NodeRef> = Vec::new();
+        let mut children_pos = None;
         loop {
+            if self.is_node_start()? {
+                children_pos.get_or_insert(self.lx.pos());
+                if let Some(c) = self.node_statement()? {
+                    children.push(c);
+                }
+                continue;
+            }
             let (t, fpos) = self.next()?;
             let name = match t {
-                Tok::RBrace => return Ok(fields),
+                Tok::RBrace => {
+                    if let Some(pos) = children_pos {
+                        fields.push(Field {
+                            name: "children".into(),
+                            value: Value::Nodes(children),
+                            pos,
+                        });
+                    }
+                    return Ok(fields);
+                }
                 Tok::Ident(s) => s,
                 Tok::Eof => {
                     return Err((

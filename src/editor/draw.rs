@@ -1,0 +1,267 @@
+//! Painting the whole window: viewport layer, overlay, panels, timeline,
+//! and the modal browser or dialog on top.
+
+use super::fields::FieldValue;
+use super::input::Drag;
+use super::ops;
+use super::panel::{List, Widget, WidgetKind};
+use super::{Editor, Mode};
+use crate::render::Frame;
+use crate::ui::layout::ROW;
+use crate::ui::text::{self, CHAR_W};
+use crate::ui::{theme, widgets, Layout, Painter, Rect};
+use glam::Vec3;
+
+impl Editor {
+    /// Draws the editor into `frame`, resizing it to the editor's size.
+    pub fn draw(&mut self, frame: &mut Frame) {
+        if frame.width != self.width || frame.height != self.height {
+            *frame = Frame::new(self.width, self.height, Vec3::ZERO);
+        }
+        let l = self.layout();
+        self.update_layer();
+        self.blit_viewport(frame, l.viewport);
+        // The painter is moved out so `self` can be borrowed while drawing.
+        let mut p = std::mem::take(&mut self.painter);
+        p.begin(frame);
+        self.draw_viewport_overlay(&mut p);
+        self.draw_viewport_labels(&mut p, &l);
+        self.draw_timeline(&mut p, &l);
+        self.draw_panels(&mut p, &l);
+        self.draw_modal(&mut p);
+        p.end(frame);
+        self.painter = p;
+    }
+
+    /// Draws into a new frame of the editor's size.
+    pub fn render_frame(&mut self) -> Frame {
+        let mut f = Frame::new(self.width, self.height, Vec3::ZERO);
+        self.draw(&mut f);
+        f
+    }
+
+    fn draw_viewport_labels(&self, p: &mut Painter, l: &Layout) {
+        let vp = l.viewport;
+        let mode = match self.mode {
+            Mode::Select => "Select",
+            Mode::View => "View (Esc: select)",
+        };
+        p.set_clip(Some(vp));
+        p.text(vp.x + 4, vp.y + 2, mode, theme::TEXT_DIM);
+        if self.record {
+            let x = vp.right() - text::width("REC") - 6;
+            p.fill_circle((x as f32 - 6.0, vp.y as f32 + 10.0), 4.0, theme::RECORD);
+            p.text(x, vp.y + 2, "REC", theme::RECORD);
+            p.stroke_rect(vp, theme::RECORD);
+        }
+        p.set_clip(None);
+    }
+
+    fn hot(&self, w: &Widget) -> bool {
+        matches!(self.drag, Drag::None) && w.rect.contains(self.mouse.0, self.mouse.1)
+    }
+
+    fn draw_panels(&self, p: &mut Painter, l: &Layout) {
+        p.fill_rect(l.toolbar, theme::TOOLBAR);
+        p.fill_rect(
+            Rect::new(l.toolbar.x, l.toolbar.bottom() - 1, l.toolbar.w, 1),
+            theme::BORDER,
+        );
+        p.fill_rect(l.side, theme::PANEL);
+        p.fill_rect(Rect::new(l.side.x, l.side.y, 1, l.side.h), theme::BORDER);
+        // File name and unsaved mark at the toolbar's right end.
+        let name = match &self.path {
+            Some(p) => p
+                .file_name()
+                .map(|s| s.to_string_lossy().to_string())
+                .unwrap_or_default(),
+            None => "untitled".into(),
+        };
+        let title = format!("{name}{}", if self.is_dirty() { " *" } else { "" });
+        let widgets = self.widgets();
+        let tb_end = widgets
+            .iter()
+            .filter(|w| l.toolbar.contains(w.rect.x as f32, w.rect.y as f32))
+            .map(|w| w.rect.right())
+            .max()
+            .unwrap_or(0);
+        let tw = text::width(&title);
+        let x = (l.toolbar.right() - tw - 6).max(tb_end + 8);
+        p.text_clipped(
+            x,
+            l.toolbar.y + 3,
+            &title,
+            theme::TEXT_DIM,
+            l.toolbar.right() - x - 2,
+        );
+        for w in &widgets {
+            self.draw_widget(p, w);
+        }
+    }
+
+    fn draw_widget(&self, p: &mut Painter, w: &Widget) {
+        let hot = self.hot(w);
+        match &w.kind {
+            WidgetKind::Button { label, on, action } => {
+                let color = if *action == super::panel::Action::Record {
+                    theme::RECORD
+                } else {
+                    theme::BUTTON_ON
+                };
+                widgets::button(p, w.rect, label, hot, *on, color)
+            }
+            WidgetKind::Check { on, .. } => widgets::checkbox(p, w.rect, *on, hot),
+            WidgetKind::Header(t) => widgets::header(p, w.rect, t),
+            WidgetKind::Label { text, dim } => widgets::label(
+                p,
+                w.rect,
+                text,
+                if *dim {
+                    theme::TEXT_DIM
+                } else if self.status.error && text == &self.status.text {
+                    theme::ERROR
+                } else {
+                    theme::TEXT
+                },
+            ),
+            WidgetKind::Field(id) => {
+                let editing = self.edit.as_ref().filter(|e| e.field == *id);
+                let text = match editing {
+                    Some(e) => e.text.clone(),
+                    None => self.field_text(*id),
+                };
+                widgets::field(p, w.rect, &text, hot, editing.is_some());
+            }
+            WidgetKind::Row { node, depth, list } => {
+                let label = ops::display_name(&self.scene, *node);
+                let selected = self.selection == Some(*node);
+                widgets::list_row(p, w.rect, &label, *depth, selected, hot);
+                if *list == List::Lights {
+                    if let Some(l) = self.scene.node(*node).light() {
+                        // A colour swatch before the checkbox.
+                        let s = Rect::new(w.rect.right() - 10, w.rect.y + 4, 8, 8);
+                        p.fill_rect(s, theme::rgb(l.color));
+                    }
+                }
+            }
+            WidgetKind::Entry(_) | WidgetKind::PathInput => {}
+        }
+    }
+
+    fn field_text(&self, id: super::fields::FieldId) -> String {
+        use super::fields::FieldId;
+        let v = if id == FieldId::Frame {
+            Some(FieldValue::Number(self.frame))
+        } else if id.is_setting() {
+            id.read_settings(&self.scene.settings)
+        } else {
+            self.selection
+                .and_then(|s| id.read_node(self.scene.node(s)))
+        };
+        v.map(|v| v.display()).unwrap_or_default()
+    }
+
+    fn draw_timeline(&self, p: &mut Painter, l: &Layout) {
+        p.fill_rect(l.timeline, theme::PANEL_DARK);
+        p.fill_rect(
+            Rect::new(l.timeline.x, l.timeline.y, l.timeline.w, 1),
+            theme::BORDER,
+        );
+        let r = l.ruler;
+        let dur = self.scene.settings.duration.max(1.0);
+        let px_per_frame = (l.frame_to_x(dur, dur) - l.frame_to_x(0.0, dur)) / dur;
+        // Minor ticks at least 4 px apart, labels at least 40 px apart.
+        let nice = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000];
+        let minor = nice
+            .iter()
+            .copied()
+            .find(|&s| s as f32 * px_per_frame >= 4.0)
+            .unwrap_or(10000);
+        let major = nice
+            .iter()
+            .copied()
+            .find(|&s| s as f32 * px_per_frame >= 40.0 && s % minor == 0)
+            .unwrap_or(10000);
+        let base = r.bottom() - 2;
+        let mut f = 0;
+        while f as f32 <= dur {
+            let x = l.frame_to_x(f as f32, dur) as i32;
+            let is_major = f % major == 0;
+            let th = if is_major { 7 } else { 3 };
+            p.fill_rect(Rect::new(x, base - th, 1, th), theme::TEXT_DIM);
+            if is_major {
+                let s = f.to_string();
+                let tx = (x - text::width(&s) / 2).clamp(r.x, r.right() - text::width(&s));
+                p.text(tx, r.y - 1, &s, theme::TEXT_DIM);
+            }
+            f += minor;
+        }
+        p.fill_rect(Rect::new(r.x, base, r.w, 1), theme::BORDER);
+        // Current frame cursor with its number.
+        let cx = l.frame_to_x(self.frame.clamp(0.0, dur), dur) as i32;
+        p.fill_rect(
+            Rect::new(cx, r.y, 1, l.ruler.h + l.key_rows.h),
+            theme::CURSOR,
+        );
+        p.fill_polygon(
+            &[
+                (cx as f32 - 4.0, r.y as f32),
+                (cx as f32 + 5.0, r.y as f32),
+                (cx as f32 + 0.5, r.y as f32 + 5.0),
+            ],
+            theme::CURSOR,
+            255,
+        );
+    }
+
+    fn draw_modal(&self, p: &mut Painter) {
+        let win = self.layout().window;
+        if let Some(b) = &self.browser {
+            p.fill_rect_alpha(win, 0x000000, 110);
+            let r = self.browser_rect();
+            p.fill_rect(r, theme::DIALOG);
+            p.stroke_rect(r, theme::BORDER);
+            for w in self.browser_widgets(b) {
+                let hot = self.hot(&w);
+                match &w.kind {
+                    WidgetKind::PathInput => {
+                        widgets::field(p, w.rect, &b.input, false, true);
+                    }
+                    WidgetKind::Entry(i) => {
+                        let e = &b.entries[*i];
+                        let label = if e.is_dir {
+                            format!("{}/", e.name)
+                        } else {
+                            e.name.clone()
+                        };
+                        let selected = b.highlight == Some(*i);
+                        widgets::list_row(p, w.rect, &label, 0, selected, hot);
+                        if e.is_dir {
+                            let x = w.rect.right() - 4 * CHAR_W;
+                            p.text(x, w.rect.y, "dir", theme::TEXT_DIM);
+                        }
+                    }
+                    _ => self.draw_widget(p, &w),
+                }
+            }
+            if b.entries.is_empty() {
+                let r = self.browser_rect();
+                p.text(
+                    r.x + 8,
+                    r.y + 3 * ROW + 4,
+                    "(empty folder)",
+                    theme::TEXT_DIM,
+                );
+            }
+        }
+        if let Some(d) = &self.dialog {
+            p.fill_rect_alpha(win, 0x000000, 110);
+            let r = self.dialog_rect();
+            p.fill_rect(r, theme::DIALOG);
+            p.stroke_rect(r, theme::ACCENT);
+            for w in self.dialog_widgets(&d.message) {
+                self.draw_widget(p, &w);
+            }
+        }
+    }
+}

@@ -1,0 +1,823 @@
+//! Turning events into state changes: mouse drags (camera, fields, seek),
+//! clicks on widgets, shortcuts, text editing, the modal browser/dialog.
+
+use super::browser::Purpose;
+use super::command::Command;
+use super::event::{Event, Key, Mods, MouseButton};
+use super::fields::{parse_number, FieldId, FieldValue};
+use super::ops;
+use super::panel::{Action, WidgetKind};
+use super::{After, Dialog, Editor, Mode, Playback, TextEdit};
+use crate::scene::{Node, NodeId, RenderStyle, Settings};
+
+/// State kept between mouse down and up.
+#[derive(Clone, Debug, Default)]
+pub(super) enum Drag {
+    #[default]
+    None,
+    Orbit {
+        last: (f32, f32),
+    },
+    Pan {
+        last: (f32, f32),
+    },
+    /// Pressed on a field: a click starts typing, a drag changes the value.
+    Field {
+        id: FieldId,
+        start_x: f32,
+        moved: bool,
+        base: Base,
+    },
+    /// Dragging the current-frame cursor on the ruler.
+    Seek,
+    /// Pressed in the viewport in select mode; selects on release.
+    Pick {
+        at: (f32, f32),
+    },
+}
+
+/// What a field drag started from (to compute values and the command).
+#[derive(Clone, Debug)]
+pub(super) enum Base {
+    Node(NodeId, Box<Node>),
+    Settings(Settings),
+    Frame(f32),
+}
+
+/// Pixels the mouse may move before a press counts as a drag.
+const DRAG_SLOP: f32 = 3.0;
+
+impl Editor {
+    /// Feeds one event; returns true when the picture needs redrawing.
+    pub fn handle(&mut self, ev: Event) -> bool {
+        match ev {
+            Event::Resize { width, height } => {
+                let changed = (width.max(1), height.max(1)) != (self.width, self.height);
+                self.width = width.max(1);
+                self.height = height.max(1);
+                changed
+            }
+            Event::Tick { time } => self.tick(time),
+            Event::MouseMove { x, y, mods } => self.mouse_move(x, y, mods),
+            Event::MouseDown { button, x, y, mods } => {
+                self.mouse = (x, y);
+                self.mouse_down(button, x, y, mods);
+                true
+            }
+            Event::MouseUp { button, x, y, mods } => {
+                self.mouse = (x, y);
+                self.mouse_up(button, x, y, mods);
+                true
+            }
+            Event::Wheel { delta, x, y, mods } => self.wheel(delta, x, y, mods),
+            Event::KeyDown { key, mods } => {
+                self.key_down(key, mods);
+                true
+            }
+            Event::KeyUp { .. } => false,
+            Event::Text(s) => self.text(&s),
+        }
+    }
+
+    fn tick(&mut self, time: f64) -> bool {
+        let Some(pb) = &mut self.playback else {
+            return false;
+        };
+        let start = *pb.start_time.get_or_insert(time);
+        let fps = self.scene.settings.fps.max(1e-6) as f64;
+        let dur = self.scene.settings.duration.max(1.0) as f64;
+        let f = pb.start_frame as f64 + (time - start) * fps;
+        // Real time: frames are dropped rather than slowed down; loops.
+        let f = (f + 1e-6).rem_euclid(dur + 1.0).floor() as f32;
+        let changed = f != self.frame;
+        self.frame = f;
+        changed
+    }
+
+    fn toggle_play(&mut self) {
+        self.playback = match self.playback {
+            Some(_) => None,
+            None => Some(Playback {
+                start_time: None,
+                start_frame: self.frame,
+            }),
+        };
+    }
+
+    fn stop_playback(&mut self) {
+        self.playback = None;
+    }
+
+    // ----- mouse -----
+
+    fn mouse_move(&mut self, x: f32, y: f32, _mods: Mods) -> bool {
+        let (lx, ly) = self.mouse;
+        self.mouse = (x, y);
+        match self.drag.clone() {
+            Drag::None => {
+                // Hover highlight only changes the picture when the widget
+                // under the mouse changes.
+                let before = self.widget_at(lx, ly);
+                let after = self.widget_at(x, y);
+                before != after
+            }
+            Drag::Orbit { last } => {
+                self.camera.orbit(x - last.0, y - last.1);
+                self.drag = Drag::Orbit { last: (x, y) };
+                true
+            }
+            Drag::Pan { last } => {
+                let h = self.layout().viewport.h as f32;
+                self.camera.pan(x - last.0, y - last.1, h);
+                self.drag = Drag::Pan { last: (x, y) };
+                true
+            }
+            Drag::Field {
+                id,
+                start_x,
+                moved,
+                base,
+            } => {
+                let dx = x - start_x;
+                if !moved && dx.abs() < DRAG_SLOP {
+                    return false;
+                }
+                self.drag = Drag::Field {
+                    id,
+                    start_x,
+                    moved: true,
+                    base: base.clone(),
+                };
+                self.drag_field(id, &base, dx);
+                true
+            }
+            Drag::Seek => {
+                self.seek_to_x(x);
+                true
+            }
+            Drag::Pick { .. } => false,
+        }
+    }
+
+    fn seek_to_x(&mut self, x: f32) {
+        let l = self.layout();
+        self.stop_playback();
+        self.frame = l.x_to_frame(x, self.scene.settings.duration).round();
+    }
+
+    fn mouse_down(&mut self, button: MouseButton, x: f32, y: f32, mods: Mods) {
+        if self.dialog.is_some() || self.browser.is_some() {
+            if button == MouseButton::Left {
+                self.click_modal(x, y);
+            }
+            return;
+        }
+        let l = self.layout();
+        if l.viewport.contains(x, y) {
+            self.commit_edit();
+            self.drag = match (button, self.mode) {
+                (MouseButton::Middle, _) if mods.shift => Drag::Pan { last: (x, y) },
+                (MouseButton::Middle, _) => Drag::Orbit { last: (x, y) },
+                (MouseButton::Left, _) if mods.alt => Drag::Orbit { last: (x, y) },
+                (MouseButton::Left, Mode::View) if mods.shift => Drag::Pan { last: (x, y) },
+                (MouseButton::Left, Mode::View) => Drag::Orbit { last: (x, y) },
+                (MouseButton::Left, Mode::Select) => Drag::Pick { at: (x, y) },
+                (MouseButton::Right, _) => Drag::Pan { last: (x, y) },
+            };
+            return;
+        }
+        if button != MouseButton::Left {
+            return;
+        }
+        if l.ruler.contains(x, y) || l.key_rows.contains(x, y) {
+            self.commit_edit();
+            self.drag = Drag::Seek;
+            self.seek_to_x(x);
+            return;
+        }
+        let Some(widget) = self.widget_at(x, y) else {
+            self.commit_edit();
+            return;
+        };
+        match widget.kind {
+            WidgetKind::Field(id) => {
+                if self.edit.as_ref().is_some_and(|e| e.field == id) {
+                    return;
+                }
+                self.commit_edit();
+                if let Some(base) = self.field_base(id) {
+                    self.drag = Drag::Field {
+                        id,
+                        start_x: x,
+                        moved: false,
+                        base,
+                    };
+                }
+            }
+            WidgetKind::Button { action, .. } | WidgetKind::Check { action, .. } => {
+                self.commit_edit();
+                self.run_action(action);
+            }
+            WidgetKind::Row { node, .. } => {
+                self.commit_edit();
+                self.selection = Some(node);
+            }
+            _ => self.commit_edit(),
+        }
+    }
+
+    fn mouse_up(&mut self, _button: MouseButton, x: f32, y: f32, _mods: Mods) {
+        match std::mem::take(&mut self.drag) {
+            Drag::Field {
+                id,
+                moved: false,
+                base,
+                ..
+            } => {
+                let text = self.field_value(id, &base).map(|v| v.display());
+                if let Some(text) = text {
+                    self.edit = Some(TextEdit {
+                        field: id,
+                        text,
+                        fresh: true,
+                    });
+                }
+            }
+            Drag::Field {
+                id,
+                moved: true,
+                base,
+                ..
+            } => self.finish_field_drag(id, base),
+            Drag::Pick { at } if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP => {
+                self.pick(x, y);
+            }
+            _ => {}
+        }
+    }
+
+    fn wheel(&mut self, delta: f32, x: f32, y: f32, _mods: Mods) -> bool {
+        if self.dialog.is_some() {
+            return false;
+        }
+        if let Some(b) = &mut self.browser {
+            let steps = (delta.abs().ceil() as usize).max(1) * 3;
+            b.scroll = if delta > 0.0 {
+                b.scroll.saturating_sub(steps)
+            } else {
+                (b.scroll + steps).min(b.entries.len().saturating_sub(1))
+            };
+            return true;
+        }
+        let l = self.layout();
+        if l.viewport.contains(x, y) {
+            self.camera.zoom(delta);
+            return true;
+        }
+        let sp = self.side_panel();
+        for (i, r) in [sp.objects, sp.lights].into_iter().enumerate() {
+            if r.contains(x, y) {
+                let n = if i == 0 {
+                    ops::objects(&self.scene).len()
+                } else {
+                    ops::lights(&self.scene).len()
+                };
+                let cap = Self::list_capacity(r);
+                let max = n.saturating_sub(cap);
+                let s = &mut self.scroll[i];
+                *s = if delta > 0.0 {
+                    s.saturating_sub(1)
+                } else {
+                    (*s + 1).min(max)
+                };
+                return true;
+            }
+        }
+        if l.timeline.contains(x, y) {
+            self.step_frame(if delta > 0.0 { 1.0 } else { -1.0 });
+            return true;
+        }
+        false
+    }
+
+    fn step_frame(&mut self, d: f32) {
+        self.stop_playback();
+        self.frame = (self.frame.round() + d).clamp(0.0, self.scene.settings.duration);
+    }
+
+    // ----- fields -----
+
+    fn field_base(&self, id: FieldId) -> Option<Base> {
+        if id == FieldId::Frame {
+            return Some(Base::Frame(self.frame));
+        }
+        if id.is_setting() {
+            return Some(Base::Settings(self.scene.settings.clone()));
+        }
+        let sel = self.selection?;
+        Some(Base::Node(sel, Box::new(self.scene.node(sel).clone())))
+    }
+
+    fn field_value(&self, id: FieldId, base: &Base) -> Option<FieldValue> {
+        match base {
+            Base::Frame(f) => Some(FieldValue::Number(*f)),
+            Base::Settings(s) => id.read_settings(s),
+            Base::Node(_, n) => id.read_node(n),
+        }
+    }
+
+    /// Shows `value` in the scene as if `id` had been set (from `base`).
+    /// Returns the command that would record it.
+    fn field_command(&self, id: FieldId, base: &Base, value: &FieldValue) -> Option<Command> {
+        match base {
+            Base::Frame(_) => None,
+            Base::Settings(s) => {
+                let mut after = s.clone();
+                id.write_settings(&mut after, value)
+                    .then(|| Command::SetSettings {
+                        before: s.clone(),
+                        after,
+                    })
+            }
+            Base::Node(nid, n) => {
+                let mut after = n.clone();
+                id.write_node(&mut after, value).then(|| Command::SetNode {
+                    id: *nid,
+                    before: n.clone(),
+                    after,
+                })
+            }
+        }
+    }
+
+    fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
+        self.stop_playback();
+        let Some(FieldValue::Number(v0)) = self.field_value(id, base) else {
+            return;
+        };
+        let v = id.clamp(v0 + dx * id.drag_step());
+        if let Base::Frame(_) = base {
+            self.frame = v.round().min(self.scene.settings.duration);
+            return;
+        }
+        if let Some(c) = self.field_command(id, base, &FieldValue::Number(v)) {
+            // Preview from the base state: the command's `after` is absolute.
+            self.preview(&c);
+        }
+    }
+
+    fn finish_field_drag(&mut self, id: FieldId, base: Base) {
+        let label = format!("Drag {id:?}");
+        match base {
+            Base::Frame(_) => {}
+            Base::Settings(before) => {
+                let after = self.scene.settings.clone();
+                self.push_applied(&label, Command::SetSettings { before, after });
+            }
+            Base::Node(nid, before) => {
+                let after = Box::new(self.scene.node(nid).clone());
+                self.push_applied(
+                    &label,
+                    Command::SetNode {
+                        id: nid,
+                        before,
+                        after,
+                    },
+                );
+            }
+        }
+    }
+
+    /// Ends typing into a field: parses and records the value.
+    fn commit_edit(&mut self) {
+        let Some(edit) = self.edit.take() else { return };
+        let value = if edit.field.is_text() {
+            FieldValue::Text(edit.text.clone())
+        } else {
+            match parse_number(&edit.text) {
+                Some(x) => FieldValue::Number(x),
+                None => {
+                    self.set_status(&format!("'{}' is not a number", edit.text), true);
+                    return;
+                }
+            }
+        };
+        if edit.field == FieldId::Frame {
+            if let FieldValue::Number(x) = value {
+                self.stop_playback();
+                self.frame = x.round().clamp(0.0, self.scene.settings.duration);
+            }
+            return;
+        }
+        let Some(base) = self.field_base(edit.field) else {
+            return;
+        };
+        match self.field_command(edit.field, &base, &value) {
+            Some(c) => {
+                self.stop_playback();
+                self.execute(&format!("Set {:?}", edit.field), c);
+            }
+            None => self.set_status("cannot set that value here", true),
+        }
+    }
+
+    fn text(&mut self, s: &str) -> bool {
+        if let Some(b) = &mut self.browser {
+            if self.dialog.is_none() {
+                b.input.extend(s.chars().filter(|c| !c.is_control()));
+                b.message = None;
+                return true;
+            }
+        }
+        if let Some(e) = &mut self.edit {
+            if e.fresh {
+                e.text.clear();
+                e.fresh = false;
+            }
+            e.text.extend(s.chars().filter(|c| !c.is_control()));
+            return true;
+        }
+        false
+    }
+
+    // ----- picking -----
+
+    fn pick(&mut self, x: f32, y: f32) {
+        let hit = self.pick_at(x, y);
+        self.selection = hit;
+        match hit {
+            Some(id) => {
+                let name = ops::display_name(&self.scene, id);
+                self.set_status(&format!("Selected {name}"), false);
+            }
+            None => self.set_status("", false),
+        }
+    }
+
+    // ----- keyboard -----
+
+    fn key_down(&mut self, key: Key, mods: Mods) {
+        if self.dialog.is_some() {
+            match key {
+                Key::Escape => self.run_action(Action::DialogCancel),
+                Key::Enter | Key::Char('s') => self.run_action(Action::DialogSave),
+                Key::Char('d') | Key::Char('n') => self.run_action(Action::DialogDiscard),
+                _ => {}
+            }
+            return;
+        }
+        if self.browser.is_some() {
+            self.browser_key(key, mods);
+            return;
+        }
+        if let Some(e) = &mut self.edit {
+            match key {
+                Key::Enter | Key::Tab => self.commit_edit(),
+                Key::Escape => self.edit = None,
+                Key::Backspace => {
+                    if e.fresh {
+                        e.text.clear();
+                        e.fresh = false;
+                    } else {
+                        e.text.pop();
+                    }
+                }
+                _ => {}
+            }
+            return;
+        }
+        if !matches!(self.drag, Drag::None) {
+            if key == Key::Escape {
+                self.cancel_drag();
+            }
+            return;
+        }
+        self.shortcut(key, mods);
+    }
+
+    /// Esc during a drag: put back what the drag changed.
+    fn cancel_drag(&mut self) {
+        if let Drag::Field { id, base, .. } = std::mem::take(&mut self.drag) {
+            match base {
+                Base::Frame(f) => self.frame = f,
+                Base::Settings(s) => {
+                    self.scene.settings = s;
+                    self.scene_rev += 1;
+                }
+                Base::Node(nid, n) => {
+                    let c = Command::SetNode {
+                        id: nid,
+                        before: n.clone(),
+                        after: n,
+                    };
+                    self.preview(&c);
+                }
+            }
+            let _ = id;
+        }
+    }
+
+    fn shortcut(&mut self, key: Key, m: Mods) {
+        match (key, m.ctrl, m.shift) {
+            (Key::Char('n'), true, _) => self.run_action(Action::New),
+            (Key::Char('o'), true, _) => self.run_action(Action::Open),
+            (Key::Char('i'), true, _) => self.run_action(Action::Import),
+            (Key::Char('s'), true, false) => self.run_action(Action::Save),
+            (Key::Char('s'), true, true) => self.run_action(Action::SaveAs),
+            (Key::Char('q'), true, _) => self.ask_unsaved(After::Quit),
+            (Key::Char('z'), true, false) => self.run_action(Action::Undo),
+            (Key::Char('z'), true, true) | (Key::Char('y'), true, _) => {
+                self.run_action(Action::Redo)
+            }
+            (Key::Char('p'), true, _) | (Key::Space, false, _) => self.run_action(Action::Play),
+            (Key::Char('g'), false, _) => self.run_action(Action::Grid),
+            (Key::Char('f'), false, _) => self.frame_selection(),
+            (Key::Home, _, _) => self.frame_all(),
+            (Key::Escape, _, _) => self.run_action(Action::Mode),
+            (Key::Delete, _, _) => self.run_action(Action::Delete),
+            (Key::Char('r'), false, _) => self.run_action(Action::Record),
+            (Key::Char('l'), false, _) => {
+                if let Some(s) = self.selection {
+                    self.run_action(Action::ToggleLight(s));
+                }
+            }
+            (Key::Left, _, _) => self.step_frame(-1.0),
+            (Key::Right, _, _) => self.step_frame(1.0),
+            (Key::End, _, _) => {
+                self.stop_playback();
+                self.frame = self.scene.settings.duration;
+            }
+            _ => {}
+        }
+    }
+
+    /// Runs `then` now, or first asks what to do with unsaved changes.
+    fn ask_unsaved(&mut self, then: After) {
+        if self.is_dirty() {
+            self.dialog = Some(Dialog {
+                message: "Save changes first?".into(),
+                then,
+            });
+        } else {
+            self.continue_with(then);
+        }
+    }
+
+    fn continue_with(&mut self, then: After) {
+        match then {
+            After::Quit => self.quit = true,
+            After::New => self.new_scene(),
+            After::Open => self.browse(Purpose::Open, None),
+        }
+    }
+
+    pub(super) fn run_action(&mut self, a: Action) {
+        match a {
+            Action::New => self.ask_unsaved(After::New),
+            Action::Open => self.ask_unsaved(After::Open),
+            Action::Import => self.browse(Purpose::Import, None),
+            Action::Save => match self.path.clone() {
+                Some(p) if is_writable_type(&p) => {
+                    if let Err(e) = self.save_to(&p) {
+                        self.set_status(&e, true);
+                    }
+                }
+                _ => self.browse(Purpose::SaveAs, None),
+            },
+            Action::SaveAs => self.browse(Purpose::SaveAs, None),
+            Action::Record => {
+                self.record = !self.record;
+                let s = if self.record { "on" } else { "off" };
+                self.set_status(&format!("Record mode {s}"), false);
+            }
+            Action::Play => self.toggle_play(),
+            Action::Grid => self.show_grid = !self.show_grid,
+            Action::ViewStyle => {
+                self.view_style = match self.view_style {
+                    None => Some(RenderStyle::Filled),
+                    Some(RenderStyle::Filled) => Some(RenderStyle::Lines),
+                    Some(RenderStyle::Lines) => Some(RenderStyle::Points),
+                    Some(_) => None,
+                }
+            }
+            Action::Mode => {
+                self.mode = match self.mode {
+                    Mode::Select => Mode::View,
+                    Mode::View => Mode::Select,
+                };
+            }
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            Action::AddLight(which) => {
+                let pose = self.pose().clone();
+                let (c, r) = ops::sphere(ops::scene_bounds(&self.scene, &pose));
+                let before = Box::new(self.scene.clone());
+                let mut after = self.scene.clone();
+                let id = ops::add_light(&mut after, which, c, r);
+                let name = after.node(id).name.clone();
+                self.execute(
+                    &format!("Add {name}"),
+                    Command::ReplaceScene {
+                        before,
+                        after: Box::new(after),
+                    },
+                );
+                self.selection = Some(id);
+                self.set_status(&format!("Added {name}"), false);
+            }
+            Action::ToggleLight(id) => {
+                let before = Box::new(self.scene.node(id).clone());
+                let mut after = before.clone();
+                if let crate::scene::NodeKind::Light(l) = &mut after.kind {
+                    l.on = !l.on;
+                    let label = if l.on { "Light on" } else { "Light off" };
+                    self.execute(label, Command::SetNode { id, before, after });
+                }
+            }
+            Action::ObjectStyle => self.cycle_object_style(),
+            Action::Delete => self.delete_selection(),
+            Action::DialogCancel => self.dialog = None,
+            Action::DialogDiscard => {
+                if let Some(d) = self.dialog.take() {
+                    // Discarding: forget the changes before continuing.
+                    self.saved_revision = self.history.revision();
+                    self.continue_with(d.then);
+                }
+            }
+            Action::DialogSave => {
+                if let Some(d) = self.dialog.take() {
+                    match self.path.clone() {
+                        Some(p) if is_writable_type(&p) => match self.save_to(&p) {
+                            Ok(()) => self.continue_with(d.then),
+                            Err(e) => self.set_status(&e, true),
+                        },
+                        _ => self.browse(Purpose::SaveAs, Some(d.then)),
+                    }
+                }
+            }
+            Action::BrowserAccept => self.browser_accept(),
+            Action::BrowserCancel => {
+                self.browser = None;
+                self.browser_then = None;
+            }
+            Action::BrowserUp => {
+                if let Some(b) = &mut self.browser {
+                    if let Some(p) = b.dir.parent().map(|p| p.to_path_buf()) {
+                        b.enter(&p);
+                    }
+                }
+            }
+        }
+    }
+
+    fn cycle_object_style(&mut self) {
+        let Some(sel) = self.selection else { return };
+        let next = match self.scene.node(sel).style {
+            RenderStyle::Filled => RenderStyle::Lines,
+            RenderStyle::Lines => RenderStyle::Points,
+            RenderStyle::Points => RenderStyle::Hidden,
+            RenderStyle::Hidden => RenderStyle::Filled,
+        };
+        // The style applies to the object and everything under it.
+        let cmds: Vec<Command> = ops::subtree(&self.scene, sel)
+            .into_iter()
+            .map(|id| {
+                let before = Box::new(self.scene.node(id).clone());
+                let mut after = before.clone();
+                after.style = next;
+                Command::SetNode { id, before, after }
+            })
+            .collect();
+        self.execute(&format!("Draw as {next:?}"), Command::Group(cmds));
+    }
+
+    fn delete_selection(&mut self) {
+        let Some(sel) = self.selection else {
+            self.set_status("Nothing selected to delete", false);
+            return;
+        };
+        let name = ops::display_name(&self.scene, sel);
+        let after = ops::remove_subtree(&self.scene, sel);
+        let before = Box::new(self.scene.clone());
+        self.selection = None;
+        self.execute(
+            &format!("Delete {name}"),
+            Command::ReplaceScene {
+                before,
+                after: Box::new(after),
+            },
+        );
+        self.set_status(&format!("Deleted {name}"), false);
+    }
+
+    // ----- modal boxes -----
+
+    fn click_modal(&mut self, x: f32, y: f32) {
+        let Some(widget) = self.widget_at(x, y) else {
+            return;
+        };
+        match widget.kind {
+            WidgetKind::Button { action, .. } => self.run_action(action),
+            WidgetKind::Entry(i) => {
+                let Some(b) = &mut self.browser else { return };
+                let Some(e) = b.entries.get(i).cloned() else {
+                    return;
+                };
+                if e.is_dir {
+                    let target = if e.name == ".." {
+                        b.dir.parent().map(|p| p.to_path_buf())
+                    } else {
+                        Some(b.dir.join(&e.name))
+                    };
+                    if let Some(t) = target {
+                        b.enter(&t);
+                    }
+                } else if b.highlight == Some(i) {
+                    // A second click on the same file accepts it.
+                    self.browser_accept();
+                } else {
+                    b.highlight = Some(i);
+                    b.input = b.entry_path_text(i);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    fn browser_key(&mut self, key: Key, _mods: Mods) {
+        let rows = {
+            let r = self.browser_rect();
+            ((r.h - 3 * 16 - 20) / 16).max(1) as usize
+        };
+        let Some(b) = &mut self.browser else { return };
+        match key {
+            Key::Escape => self.run_action(Action::BrowserCancel),
+            Key::Enter => self.browser_accept(),
+            Key::Tab => b.complete(),
+            Key::Backspace => {
+                b.input.pop();
+                b.message = None;
+            }
+            Key::Up => {
+                b.step(-1);
+                b.scroll_to_highlight(rows);
+            }
+            Key::Down => {
+                b.step(1);
+                b.scroll_to_highlight(rows);
+            }
+            _ => {}
+        }
+    }
+
+    /// Enter / the accept button: a folder is entered, a file is used.
+    fn browser_accept(&mut self) {
+        let Some(b) = &mut self.browser else { return };
+        let path = b.resolved();
+        if path.is_dir() {
+            b.enter(&path);
+            return;
+        }
+        let purpose = b.purpose;
+        if purpose != Purpose::SaveAs && !path.is_file() {
+            b.message = Some(format!("no file {}", path.display()));
+            return;
+        }
+        let result = match purpose {
+            Purpose::Open => self.open_file(&path),
+            Purpose::Import => self.import_file(&path),
+            Purpose::SaveAs => {
+                let path = if is_writable_type(&path) {
+                    path
+                } else {
+                    let mut s = path.into_os_string();
+                    s.push(".wrl");
+                    s.into()
+                };
+                self.save_to(&path)
+            }
+        };
+        match result {
+            Ok(()) => {
+                self.browser = None;
+                if let Some(then) = self.browser_then.take() {
+                    self.continue_with(then);
+                }
+            }
+            Err(e) => {
+                if let Some(b) = &mut self.browser {
+                    b.message = Some(e.clone());
+                }
+                self.set_status(&e, true);
+            }
+        }
+    }
+}
+
+/// Files the writers can produce.
+fn is_writable_type(p: &std::path::Path) -> bool {
+    let s = p.to_string_lossy().to_ascii_lowercase();
+    [".wrl", ".iv", ".wrl.gz", ".wrz"]
+        .iter()
+        .any(|e| s.ends_with(e))
+}

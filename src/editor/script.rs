@@ -1,0 +1,409 @@
+//! Headless sessions: a line-based script of input events fed to the same
+//! [`Editor`] the window uses (`animed edit --script FILE`).
+//!
+//! ```text
+//! # comment (also after a command)
+//! key ctrl+n                 key press (+ release); mods: ctrl, shift, alt
+//! type 2.5                   text typed (the rest of the line, verbatim)
+//! click X Y [BUTTON]         press + release at window pixel X Y
+//! drag X1 Y1 X2 Y2 [BUTTON]  press at 1, move in steps, release at 2
+//! move X Y                   mouse move
+//! wheel N [X Y]              N wheel notches (positive zooms in)
+//! wait-frames N              N ticks of 1/fps seconds (playback advances)
+//! resize W H                 window resized
+//! ```
+//! BUTTON is `left` (default), `middle` or `right`, optionally with
+//! modifiers: `alt+left`, `shift+middle`.
+
+use super::event::{Event, Key, Mods, MouseButton};
+use super::Editor;
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// A script error at `path:line:column`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScriptError {
+    pub path: PathBuf,
+    pub line: usize,
+    pub column: usize,
+    pub message: String,
+}
+
+impl fmt::Display for ScriptError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}:{}:{}: {}",
+            self.path.display(),
+            self.line,
+            self.column,
+            self.message
+        )
+    }
+}
+
+impl std::error::Error for ScriptError {}
+
+/// Steps of a drag between its end points.
+const DRAG_STEPS: usize = 8;
+/// Largest window a script may ask for.
+const MAX_SIDE: u32 = 8192;
+/// Largest wait, so a typo cannot hang a session.
+const MAX_WAIT: u64 = 100_000;
+
+/// One parsed line.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Step {
+    Key(Key, Mods),
+    Type(String),
+    Click(f32, f32, MouseButton, Mods),
+    Drag(f32, f32, f32, f32, MouseButton, Mods),
+    Move(f32, f32),
+    Wheel(f32, Option<(f32, f32)>),
+    WaitFrames(u64),
+    Resize(u32, u32),
+}
+
+/// Parses a whole script; `path` names it in errors.
+pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError> {
+    let mut out = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let err = |col: usize, msg: String| ScriptError {
+            path: path.to_path_buf(),
+            line,
+            column: col,
+            message: msg,
+        };
+        let indent = raw.len() - raw.trim_start().len();
+        let body = raw.trim_start();
+        let (cmd, rest) = body.split_once(char::is_whitespace).unwrap_or((body, ""));
+        if cmd.is_empty() || cmd.starts_with('#') {
+            continue;
+        }
+        // `type` keeps its text verbatim (a '#' in it is text).
+        if cmd == "type" {
+            out.push((line, Step::Type(rest.to_string())));
+            continue;
+        }
+        let rest = rest.split('#').next().unwrap_or("");
+        let args_col = indent + cmd.len() + 2;
+        let args: Vec<&str> = rest.split_whitespace().collect();
+        let col_of = |k: usize| -> usize {
+            // Column of the k-th argument (1-based columns).
+            let mut pos = 0;
+            for (j, a) in rest.split_whitespace().enumerate() {
+                let off = rest[pos..].find(a).unwrap_or(0) + pos;
+                if j == k {
+                    return indent + cmd.len() + 1 + off + 1;
+                }
+                pos = off + a.len();
+            }
+            args_col
+        };
+        let num = |k: usize| -> Result<f32, ScriptError> {
+            let a = args
+                .get(k)
+                .ok_or_else(|| err(col_of(k), format!("'{cmd}' needs more arguments")))?;
+            a.parse::<f32>()
+                .ok()
+                .filter(|x| x.is_finite() && x.abs() < 1e6)
+                .ok_or_else(|| err(col_of(k), format!("'{a}' is not a number")))
+        };
+        let count = |k: usize, max: u64| -> Result<u64, ScriptError> {
+            let a = args
+                .get(k)
+                .ok_or_else(|| err(col_of(k), format!("'{cmd}' needs more arguments")))?;
+            a.parse::<u64>()
+                .ok()
+                .filter(|&n| n <= max)
+                .ok_or_else(|| err(col_of(k), format!("'{a}' is not a count up to {max}")))
+        };
+        let want = |n: std::ops::RangeInclusive<usize>| -> Result<(), ScriptError> {
+            if n.contains(&args.len()) {
+                Ok(())
+            } else {
+                Err(err(
+                    args_col,
+                    format!(
+                        "'{cmd}' takes {} to {} arguments, got {}",
+                        n.start(),
+                        n.end(),
+                        args.len()
+                    ),
+                ))
+            }
+        };
+        let button = |k: usize| -> Result<(MouseButton, Mods), ScriptError> {
+            match args.get(k) {
+                None => Ok((MouseButton::Left, Mods::NONE)),
+                Some(a) => parse_button(a).ok_or_else(|| {
+                    err(
+                        col_of(k),
+                        format!(
+                            "unknown button '{a}' (left, middle, right, with alt+/shift+/ctrl+)"
+                        ),
+                    )
+                }),
+            }
+        };
+        let step = match cmd {
+            "key" => {
+                want(1..=1)?;
+                let (k, m) = parse_key(args[0])
+                    .ok_or_else(|| err(col_of(0), format!("unknown key '{}'", args[0])))?;
+                Step::Key(k, m)
+            }
+            "click" => {
+                want(2..=3)?;
+                let (b, m) = button(2)?;
+                Step::Click(num(0)?, num(1)?, b, m)
+            }
+            "drag" => {
+                want(4..=5)?;
+                let (b, m) = button(4)?;
+                Step::Drag(num(0)?, num(1)?, num(2)?, num(3)?, b, m)
+            }
+            "move" => {
+                want(2..=2)?;
+                Step::Move(num(0)?, num(1)?)
+            }
+            "wheel" => {
+                if args.len() != 1 && args.len() != 3 {
+                    return Err(err(args_col, "'wheel' takes N or N X Y".into()));
+                }
+                let at = if args.len() == 3 {
+                    Some((num(1)?, num(2)?))
+                } else {
+                    None
+                };
+                Step::Wheel(num(0)?, at)
+            }
+            "wait-frames" => {
+                want(1..=1)?;
+                Step::WaitFrames(count(0, MAX_WAIT)?)
+            }
+            "resize" => {
+                want(2..=2)?;
+                let w = count(0, MAX_SIDE as u64)? as u32;
+                let h = count(1, MAX_SIDE as u64)? as u32;
+                if w < 16 || h < 16 {
+                    return Err(err(args_col, "window must be at least 16x16".into()));
+                }
+                Step::Resize(w, h)
+            }
+            _ => {
+                return Err(err(
+                    indent + 1,
+                    format!(
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, resize)"
+                    ),
+                ))
+            }
+        };
+        out.push((line, step));
+    }
+    Ok(out)
+}
+
+/// `ctrl+shift+s` → (Char('s'), ctrl+shift).
+pub fn parse_key(s: &str) -> Option<(Key, Mods)> {
+    let parts: Vec<&str> = s.split('+').collect();
+    // A lone "+" key, or "ctrl++".
+    let (mods, key) = if s.ends_with("++") || s == "+" {
+        (&parts[..parts.len().saturating_sub(2)], "+")
+    } else {
+        (&parts[..parts.len() - 1], *parts.last()?)
+    };
+    let m = parse_mods(mods)?;
+    Some((Key::parse(key)?, m))
+}
+
+fn parse_mods(parts: &[&str]) -> Option<Mods> {
+    let mut m = Mods::NONE;
+    for p in parts {
+        match p.to_ascii_lowercase().as_str() {
+            "ctrl" | "control" => m.ctrl = true,
+            "shift" => m.shift = true,
+            "alt" => m.alt = true,
+            _ => return None,
+        }
+    }
+    Some(m)
+}
+
+fn parse_button(s: &str) -> Option<(MouseButton, Mods)> {
+    let parts: Vec<&str> = s.split('+').collect();
+    let m = parse_mods(&parts[..parts.len() - 1])?;
+    let b = match parts.last()?.to_ascii_lowercase().as_str() {
+        "left" => MouseButton::Left,
+        "middle" => MouseButton::Middle,
+        "right" => MouseButton::Right,
+        _ => return None,
+    };
+    Some((b, m))
+}
+
+/// Feeds parsed steps to an editor; `clock` is the session time in seconds.
+pub struct Runner {
+    pub clock: f64,
+    mouse: (f32, f32),
+}
+
+impl Default for Runner {
+    fn default() -> Self {
+        Runner {
+            clock: 0.0,
+            mouse: (0.0, 0.0),
+        }
+    }
+}
+
+impl Runner {
+    pub fn run(&mut self, ed: &mut Editor, steps: &[(usize, Step)]) {
+        for (_, s) in steps {
+            self.step(ed, s);
+        }
+    }
+
+    pub fn step(&mut self, ed: &mut Editor, s: &Step) {
+        match s {
+            Step::Key(key, mods) => {
+                ed.handle(Event::KeyDown {
+                    key: *key,
+                    mods: *mods,
+                });
+                ed.handle(Event::KeyUp {
+                    key: *key,
+                    mods: *mods,
+                });
+            }
+            Step::Type(t) => {
+                ed.handle(Event::Text(t.clone()));
+            }
+            Step::Move(x, y) => self.move_to(ed, *x, *y, Mods::NONE),
+            Step::Click(x, y, button, mods) => {
+                self.move_to(ed, *x, *y, *mods);
+                ed.handle(Event::MouseDown {
+                    button: *button,
+                    x: *x,
+                    y: *y,
+                    mods: *mods,
+                });
+                ed.handle(Event::MouseUp {
+                    button: *button,
+                    x: *x,
+                    y: *y,
+                    mods: *mods,
+                });
+            }
+            Step::Drag(x1, y1, x2, y2, button, mods) => {
+                self.move_to(ed, *x1, *y1, *mods);
+                ed.handle(Event::MouseDown {
+                    button: *button,
+                    x: *x1,
+                    y: *y1,
+                    mods: *mods,
+                });
+                for k in 1..=DRAG_STEPS {
+                    let t = k as f32 / DRAG_STEPS as f32;
+                    self.move_to(ed, x1 + (x2 - x1) * t, y1 + (y2 - y1) * t, *mods);
+                }
+                ed.handle(Event::MouseUp {
+                    button: *button,
+                    x: *x2,
+                    y: *y2,
+                    mods: *mods,
+                });
+            }
+            Step::Wheel(n, at) => {
+                let (x, y) = at.unwrap_or(self.mouse);
+                if at.is_some() {
+                    self.move_to(ed, x, y, Mods::NONE);
+                }
+                ed.handle(Event::Wheel {
+                    delta: *n,
+                    x,
+                    y,
+                    mods: Mods::NONE,
+                });
+            }
+            Step::WaitFrames(n) => {
+                let dt = 1.0 / ed.scene().settings.fps.max(1.0) as f64;
+                for _ in 0..*n {
+                    self.clock += dt;
+                    ed.handle(Event::Tick { time: self.clock });
+                }
+            }
+            Step::Resize(w, h) => {
+                ed.handle(Event::Resize {
+                    width: *w,
+                    height: *h,
+                });
+            }
+        }
+    }
+
+    fn move_to(&mut self, ed: &mut Editor, x: f32, y: f32, mods: Mods) {
+        self.mouse = (x, y);
+        ed.handle(Event::MouseMove { x, y, mods });
+    }
+}
+
+/// Parses and runs a script on `ed`.
+pub fn run(ed: &mut Editor, text: &str, path: &Path) -> Result<(), ScriptError> {
+    let steps = parse(text, path)?;
+    Runner::default().run(ed, &steps);
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_every_command() {
+        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\n";
+        let steps = parse(s, Path::new("t.txt")).unwrap();
+        let kinds: Vec<Step> = steps.into_iter().map(|(_, s)| s).collect();
+        assert_eq!(
+            kinds[0],
+            Step::Key(
+                Key::Char('s'),
+                Mods {
+                    ctrl: true,
+                    shift: true,
+                    alt: false
+                }
+            )
+        );
+        assert_eq!(kinds[1], Step::Type("a #b".into()));
+        assert_eq!(
+            kinds[2],
+            Step::Click(1.0, 2.0, MouseButton::Left, Mods::NONE)
+        );
+        assert_eq!(
+            kinds[3],
+            Step::Drag(1.0, 2.0, 3.0, 4.0, MouseButton::Left, Mods::alt())
+        );
+        assert_eq!(kinds[5], Step::Wheel(-2.0, None));
+        assert_eq!(kinds[6], Step::Wheel(1.0, Some((10.0, 20.0))));
+        assert_eq!(kinds[7], Step::WaitFrames(3));
+        assert_eq!(kinds[8], Step::Resize(320, 240));
+    }
+
+    #[test]
+    fn errors_name_line_and_column() {
+        let e = parse("key a\n  click 10 x\n", Path::new("s.txt")).unwrap_err();
+        assert_eq!(e.to_string(), "s.txt:2:12: 'x' is not a number");
+        let e = parse("jump 1\n", Path::new("s.txt")).unwrap_err();
+        assert_eq!((e.line, e.column), (1, 1));
+        assert!(e.message.contains("unknown command"));
+        let e = parse("key hyper+a\n", Path::new("s.txt")).unwrap_err();
+        assert!(e.message.contains("unknown key"));
+        let e = parse("wait-frames 99999999999\n", Path::new("s.txt")).unwrap_err();
+        assert!(e.message.contains("count up to"));
+        let e = parse("resize 100000 10\n", Path::new("s.txt")).unwrap_err();
+        assert_eq!(e.line, 1);
+    }
+}

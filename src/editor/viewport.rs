@@ -1,0 +1,256 @@
+//! The 3D viewport: renders the scene (cached until something that affects
+//! it changes), the ground grid behind it, the selection outline, light
+//! gizmos, and picking.
+
+use super::camera::Projector;
+use super::{gizmo, ops, Editor, LayerKey};
+use crate::render::{self, Frame, RenderOptions};
+use crate::scene::{NodeId, NodeKind};
+use crate::ui::{theme, Painter, Rect};
+use glam::Vec3;
+use tiny_skia::Mask;
+
+/// Gizmo size in pixels.
+const GIZMO_PX: f32 = 28.0;
+/// How close (pixels) a click must be to a light's centre to pick it.
+const LIGHT_PICK_PX: f32 = 10.0;
+
+impl Editor {
+    /// Scene radius used for depth range and grid size.
+    fn scene_radius(&mut self) -> (Vec3, f32) {
+        let pose = self.pose().clone();
+        ops::sphere(ops::scene_bounds(&self.scene, &pose))
+    }
+
+    pub(super) fn projector(&mut self) -> Projector {
+        let vp = self.layout().viewport;
+        let (_, r) = self.scene_radius();
+        let v = self.camera.view(vp.w.max(1) as u32, vp.h.max(1) as u32, r);
+        Projector::new(&v, vp.x as f32, vp.y as f32, vp.w as f32, vp.h as f32)
+    }
+
+    /// Re-renders the viewport layer when its inputs changed.
+    pub(super) fn update_layer(&mut self) {
+        let vp = self.layout().viewport;
+        let (w, h) = (vp.w.max(1) as u32, vp.h.max(1) as u32);
+        let key = LayerKey {
+            rev: self.scene_rev,
+            frame: self.frame,
+            camera: self.camera,
+            w,
+            h,
+            grid: self.show_grid,
+            style: self.view_style,
+        };
+        if self.layer.key == Some(key) {
+            return;
+        }
+        let (_, radius) = self.scene_radius();
+        let view = self.camera.view(w, h, radius);
+        let opts = RenderOptions {
+            width: w,
+            height: h,
+            threads: 0,
+            style_override: self.view_style,
+            headlight: self.scene.settings.headlight.unwrap_or(true),
+            background: self.scene.settings.background,
+        };
+        let pose = self.pose().clone();
+        let mut frame = render::render(&self.scene, &pose, &view, &opts);
+        if frame.width != w || frame.height != h {
+            // A renderer that returned another size: keep the layout sane.
+            frame = Frame::new(w, h, opts.background);
+        }
+        if self.show_grid {
+            let proj = Projector::new(&view, 0.0, 0.0, w as f32, h as f32);
+            draw_grid(&mut self.layer.painter, &mut frame, &proj, radius);
+        }
+        self.layer.frame = frame;
+        self.layer.key = Some(key);
+    }
+
+    /// Forgets the cached viewport picture (benchmarks force re-renders).
+    pub fn invalidate(&mut self) {
+        self.layer.key = None;
+    }
+
+    /// Copies the viewport layer into `frame` and outlines the selection.
+    pub(super) fn blit_viewport(&self, frame: &mut Frame, vp: Rect) {
+        let lf = &self.layer.frame;
+        let fw = frame.width as i32;
+        for y in 0..vp.h.min(lf.height as i32) {
+            let dst = ((vp.y + y) * fw + vp.x) as usize;
+            let src = (y * lf.width as i32) as usize;
+            let n = vp.w.min(lf.width as i32) as usize;
+            frame.color[dst..dst + n].copy_from_slice(&lf.color[src..src + n]);
+            frame.ids[dst..dst + n].copy_from_slice(&lf.ids[src..src + n]);
+            frame.depth[dst..dst + n].copy_from_slice(&lf.depth[src..src + n]);
+        }
+        if let Some(sel) = self.selection {
+            self.outline(frame, vp, sel);
+        }
+    }
+
+    /// Paints the border pixels of the selected subtree's silhouette.
+    fn outline(&self, frame: &mut Frame, vp: Rect, sel: NodeId) {
+        let mut mine = vec![false; self.scene.nodes.len() + 1];
+        for id in ops::subtree(&self.scene, sel) {
+            mine[id.0 as usize + 1] = true;
+        }
+        let lf = &self.layer.frame;
+        let (w, h) = (lf.width as i32, lf.height as i32);
+        let is = |x: i32, y: i32| -> bool {
+            if x < 0 || y < 0 || x >= w || y >= h {
+                return false;
+            }
+            let id = lf.ids[(y * w + x) as usize] as usize;
+            id < mine.len() && mine[id]
+        };
+        let fw = frame.width as i32;
+        for y in 0..h.min(vp.h) {
+            for x in 0..w.min(vp.w) {
+                if !is(x, y) {
+                    continue;
+                }
+                let edge = !is(x - 1, y) || !is(x + 1, y) || !is(x, y - 1) || !is(x, y + 1);
+                let i = ((vp.y + y) * fw + vp.x + x) as usize;
+                if edge {
+                    frame.color[i] = theme::SELECTED;
+                } else {
+                    // A light orange tint inside.
+                    let c = frame.color[i];
+                    let mix = |s: u32, t: u32| (s * 3 + t) / 4;
+                    let r = mix((c >> 16) & 255, 0xff);
+                    let g = mix((c >> 8) & 255, 0x9a);
+                    let b = mix(c & 255, 0x1f);
+                    frame.color[i] = (r << 16) | (g << 8) | b;
+                }
+            }
+        }
+    }
+
+    /// Light gizmos and the axis indicator, clipped to the viewport.
+    pub(super) fn draw_viewport_overlay(&mut self, p: &mut Painter) {
+        let vp = self.layout().viewport;
+        let proj = self.projector();
+        let pose = self.pose().clone();
+        p.set_clip(Some(vp));
+        for (id, light) in &pose.lights {
+            let world = pose.world[id.0 as usize];
+            let anchor = gizmo::anchor(light, &world);
+            let size = proj.world_per_px(anchor) * GIZMO_PX;
+            let selected = self.selection == Some(*id);
+            let color = if selected {
+                theme::SELECTED
+            } else if light.on {
+                theme::rgb(light.color * 0.6 + Vec3::splat(0.4))
+            } else {
+                theme::LIGHT_OFF
+            };
+            for (a, b) in gizmo::segments(light, &world, size) {
+                if let Some((pa, pb)) = proj.segment(a, b) {
+                    p.line(pa, pb, color, if selected { 2.0 } else { 1.2 });
+                }
+            }
+            if let Some(c) = proj.point(anchor) {
+                p.fill_circle(c, 2.5, color);
+            }
+        }
+        self.draw_axes(p, vp);
+        p.set_clip(None);
+    }
+
+    /// A small xyz tripod in the viewport's lower-left corner.
+    fn draw_axes(&self, p: &mut Painter, vp: Rect) {
+        let v = crate::editor::camera::look_at(self.camera.back(), Vec3::ZERO, Vec3::Y);
+        let c = (vp.x as f32 + 22.0, vp.bottom() as f32 - 22.0);
+        for (axis, color, name) in [
+            (Vec3::X, 0xe05050, "x"),
+            (Vec3::Y, 0x60c060, "y"),
+            (Vec3::Z, 0x5080e0, "z"),
+        ] {
+            let d = v.transform_vector3(axis);
+            let end = (c.0 + d.x * 15.0, c.1 - d.y * 15.0);
+            p.line(c, end, color, 1.5);
+            p.text(
+                (end.0 + d.x * 5.0 - 3.0) as i32,
+                (end.1 - d.y * 5.0 - 8.0) as i32,
+                name,
+                color,
+            );
+        }
+    }
+
+    /// The node under window pixel (x, y): a light gizmo near the point,
+    /// else the object drawn there (resolved to its named object).
+    pub fn pick_at(&mut self, x: f32, y: f32) -> Option<NodeId> {
+        let vp = self.layout().viewport;
+        if !vp.contains(x, y) {
+            return None;
+        }
+        let proj = self.projector();
+        let pose = self.pose().clone();
+        let mut best: Option<(f32, NodeId)> = None;
+        for (id, light) in &pose.lights {
+            let anchor = gizmo::anchor(light, &pose.world[id.0 as usize]);
+            if let Some(c) = proj.point(anchor) {
+                let d = ((c.0 - x).powi(2) + (c.1 - y).powi(2)).sqrt();
+                if d <= LIGHT_PICK_PX && best.is_none_or(|(bd, _)| d < bd) {
+                    best = Some((d, *id));
+                }
+            }
+        }
+        if let Some((_, id)) = best {
+            return Some(id);
+        }
+        self.update_layer();
+        let lf = &self.layer.frame;
+        let (lx, ly) = ((x as i32 - vp.x), (y as i32 - vp.y));
+        if lx < 0 || ly < 0 || lx >= lf.width as i32 || ly >= lf.height as i32 {
+            return None;
+        }
+        let id = lf.ids[(ly * lf.width as i32 + lx) as usize];
+        if id == 0 || id as usize > self.scene.nodes.len() {
+            return None;
+        }
+        let node = NodeId(id - 1);
+        if matches!(self.scene.node(node).kind, NodeKind::Light(_)) {
+            return Some(node);
+        }
+        Some(ops::pick_target(&self.scene, node))
+    }
+}
+
+/// Ground grid (y = 0) drawn only over background pixels, so objects
+/// cover it. Spacing is a power of ten suited to the scene's size.
+fn draw_grid(p: &mut Painter, frame: &mut Frame, proj: &Projector, radius: f32) {
+    let step = 10f32.powf((radius * 0.5).max(1e-3).log10().floor());
+    let n = ((radius * 2.0 / step).ceil() as i32).clamp(2, 40);
+    let ext = n as f32 * step;
+    let mut mask = match Mask::new(frame.width, frame.height) {
+        Some(m) => m,
+        None => return,
+    };
+    for (m, id) in mask.data_mut().iter_mut().zip(frame.ids.iter()) {
+        *m = if *id == 0 { 255 } else { 0 };
+    }
+    p.begin(frame);
+    p.set_path_mask(Some(mask));
+    for i in -n..=n {
+        let t = i as f32 * step;
+        let (cx, cz) = if i == 0 {
+            (theme::GRID_AXIS_X, theme::GRID_AXIS_Z)
+        } else {
+            (theme::GRID, theme::GRID)
+        };
+        // Line along x (at z = t) and along z (at x = t).
+        if let Some((a, b)) = proj.segment(Vec3::new(-ext, 0.0, t), Vec3::new(ext, 0.0, t)) {
+            p.line(a, b, cx, 1.0);
+        }
+        if let Some((a, b)) = proj.segment(Vec3::new(t, 0.0, -ext), Vec3::new(t, 0.0, ext)) {
+            p.line(a, b, cz, 1.0);
+        }
+    }
+    p.set_path_mask(None);
+    p.end(frame);
+}

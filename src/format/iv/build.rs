@@ -1,0 +1,520 @@
+//! Inventor traversal → scene tree.
+//!
+//! Separators become group nodes and save/restore the state. Unnamed
+//! transform nodes accumulate into a pending matrix that later siblings
+//! carry (as `Transform::extra`); a DEF'd transform becomes a group that
+//! holds the siblings after it, so it keeps its name for animation.
+//! Group, Switch and LOD do not separate state in Inventor, so their chosen
+//! children are traversed in place.
+
+use super::shapes;
+use super::state::State;
+use crate::format::inline;
+use crate::format::lexer::Pos;
+use crate::format::syntax::{AstNode, NodeRef, Parsed};
+use crate::format::vrml97::fmt_warning;
+use crate::format::Loaded;
+use crate::scene::{
+    Camera, CameraKind, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId, NodeKind,
+    Scene, Shape, Transform,
+};
+use glam::{Mat4, Quat, Vec3};
+use std::collections::{HashMap, HashSet};
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+const MAX_SCENE_NODES: usize = 1_000_000;
+const MAX_BUILD_DEPTH: usize = 512;
+
+/// Nodes read and deliberately ignored (no effect on geometry here).
+const IGNORED: &[&str] = &[
+    "Complexity",
+    "Texture2",
+    "Texture2Transform",
+    "TextureCoordinate2",
+    "TextureCoordinateBinding",
+    "TextureCoordinateDefault",
+    "TextureCoordinatePlane",
+    "TextureCoordinateEnvironment",
+    "Environment",
+    "Font",
+    "FontStyle",
+    "PickStyle",
+    "Label",
+    "Callback",
+    "EventCallback",
+    "Units",
+    "Texture2Transform",
+    "TextureCoordinateFunction",
+    "NormalBinding_",
+    "ElapsedTime",
+];
+
+/// Where new nodes go.
+#[derive(Clone, Copy)]
+struct Cursor {
+    parent: Option<NodeId>,
+    /// Unnamed transforms since `parent`, applied to each node added.
+    pending: Mat4,
+    /// World matrix of `parent` (for ResetTransform).
+    world: Mat4,
+    /// Inside a Separator (lights there are scoped).
+    separated: bool,
+}
+
+#[derive(Hash, PartialEq, Eq)]
+struct MeshKey {
+    shape: usize,
+    coords: usize,
+    normals: usize,
+    material: usize,
+    base: usize,
+    bindings: (super::state::Bind, super::state::Bind),
+    hints: (Option<bool>, bool, u32),
+}
+
+pub struct Builder {
+    path: PathBuf,
+    depth: usize,
+    vrml1: bool,
+    scene: Scene,
+    warnings: Vec<String>,
+    warned: HashSet<String>,
+    materials: HashMap<(usize, usize, bool), MaterialId>,
+    meshes: HashMap<MeshKey, Option<MeshId>>,
+    coords: HashMap<usize, Rc<Vec<Vec3>>>,
+    build_depth: usize,
+    full: bool,
+}
+
+impl Builder {
+    pub fn new(path: &Path, depth: usize, vrml1: bool) -> Self {
+        Builder {
+            path: path.to_path_buf(),
+            depth,
+            vrml1,
+            scene: Scene::new(),
+            warnings: Vec::new(),
+            warned: HashSet::new(),
+            materials: HashMap::new(),
+            meshes: HashMap::new(),
+            coords: HashMap::new(),
+            build_depth: 0,
+            full: false,
+        }
+    }
+
+    pub fn build(&mut self, parsed: &Parsed) {
+        let mut st = State::new(self.vrml1);
+        let mut cur = Cursor {
+            parent: None,
+            pending: Mat4::IDENTITY,
+            world: Mat4::IDENTITY,
+            separated: false,
+        };
+        for n in &parsed.roots {
+            self.node(n, &mut st, &mut cur);
+        }
+        for r in &parsed.routes {
+            self.warn_once("route", r.pos, "ROUTE in an Inventor file ignored");
+        }
+    }
+
+    pub fn finish(self) -> Loaded {
+        Loaded {
+            scene: self.scene,
+            warnings: self.warnings,
+        }
+    }
+
+    fn warn(&mut self, pos: Pos, msg: &str) {
+        if self.warnings.len() < 10_000 {
+            self.warnings.push(fmt_warning(&self.path, pos, msg));
+        }
+    }
+
+    fn warn_once(&mut self, key: &str, pos: Pos, msg: &str) {
+        if self.warned.insert(key.to_string()) {
+            self.warn(pos, msg);
+        }
+    }
+
+    /// Adds a scene node at the cursor (carrying the pending transforms).
+    fn add(&mut self, pos: Pos, cur: &Cursor, mut node: Node) -> Option<NodeId> {
+        if self.scene.nodes.len() >= MAX_SCENE_NODES {
+            if !self.full {
+                self.full = true;
+                self.warn(
+                    pos,
+                    &format!("more than {MAX_SCENE_NODES} scene nodes; the rest is skipped"),
+                );
+            }
+            return None;
+        }
+        if cur.pending != Mat4::IDENTITY {
+            node.transform.extra = Some(match node.transform.extra {
+                Some(e) => cur.pending * e,
+                None => cur.pending,
+            });
+        }
+        Some(self.scene.add_node(cur.parent, node))
+    }
+
+    fn children(&mut self, n: &AstNode, st: &mut State, cur: &mut Cursor) {
+        for c in n.nodes("children").to_vec() {
+            self.node(&c, st, cur);
+        }
+    }
+
+    fn node(&mut self, n: &NodeRef, st: &mut State, cur: &mut Cursor) {
+        if self.build_depth >= MAX_BUILD_DEPTH || self.full {
+            self.warn_once(
+                "depth",
+                n.pos,
+                "scene nested too deeply; deeper nodes skipped",
+            );
+            return;
+        }
+        self.build_depth += 1;
+        self.node_inner(n, st, cur);
+        self.build_depth -= 1;
+    }
+
+    fn node_inner(&mut self, n: &NodeRef, st: &mut State, cur: &mut Cursor) {
+        if st.apply(n) {
+            return;
+        }
+        let name = n.def.clone().unwrap_or_default();
+        let kind = n.kind.as_str();
+        if let Some(t) = transform_of(n, cur) {
+            self.transform(n, name, t, cur);
+            return;
+        }
+        if shapes::is_shape(kind) {
+            self.shape(n, st, cur, name);
+            return;
+        }
+        match kind {
+            "Separator" | "Selection" | "Annotation" | "WWWAnchor" | "SoSeparator" => {
+                if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
+                    let mut inner = Cursor {
+                        parent: Some(id),
+                        pending: Mat4::IDENTITY,
+                        world: cur.world * cur.pending,
+                        separated: true,
+                    };
+                    let mut saved = st.clone();
+                    self.children(n, &mut saved, &mut inner);
+                }
+            }
+            "TransformSeparator" => {
+                let mut inner = *cur;
+                self.children(n, st, &mut inner);
+            }
+            "Group" => {
+                if name.is_empty() {
+                    self.children(n, st, cur);
+                } else if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
+                    cur.world *= cur.pending;
+                    cur.parent = Some(id);
+                    cur.pending = Mat4::IDENTITY;
+                    self.children(n, st, cur);
+                }
+            }
+            "Switch" | "Blinker" => {
+                let which = n.num("whichChild").unwrap_or(-1.0) as i64;
+                let kids = n.nodes("children").to_vec();
+                if which == -3 {
+                    for c in &kids {
+                        self.node(c, st, cur);
+                    }
+                } else if which >= 0 {
+                    if let Some(c) = kids.get(which as usize) {
+                        self.node(c, st, cur);
+                    }
+                }
+            }
+            "LOD" | "LevelOfDetail" => {
+                if let Some(c) = n.nodes("children").first().cloned() {
+                    self.node(&c, st, cur);
+                }
+            }
+            "File" | "WWWInline" => {
+                if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
+                    let urls = n.strings("name");
+                    inline::load_into(
+                        &mut self.scene,
+                        &mut self.warnings,
+                        &self.path,
+                        n.pos,
+                        &urls,
+                        id,
+                        self.depth,
+                    );
+                }
+            }
+            "DirectionalLight" | "PointLight" | "SpotLight" => {
+                let mut l = light(n);
+                // An Inventor light lights what follows it inside its Separator.
+                l.scoped = cur.separated;
+                self.add(n.pos, cur, Node::new(name, NodeKind::Light(l)));
+            }
+            "PerspectiveCamera" | "OrthographicCamera" => {
+                let cam = camera(n);
+                self.add(n.pos, cur, Node::new(name, NodeKind::Camera(cam)));
+            }
+            "Info" => {
+                for s in n.strings("string") {
+                    self.scene.info.push(s);
+                }
+            }
+            "AsciiText" | "Text2" | "Text3" => {
+                self.warn_once(kind, n.pos, &format!("{kind} is not supported; skipped"));
+            }
+            k if IGNORED.contains(&k) => {}
+            k => {
+                let declared = n.field("fields").is_some();
+                let msg = if declared {
+                    format!("unknown node '{k}' (declared with fields [...]) skipped")
+                } else {
+                    format!("unknown node '{k}' skipped")
+                };
+                self.warn_once(k, n.pos, &msg);
+            }
+        }
+    }
+
+    fn transform(&mut self, n: &NodeRef, name: String, t: Transform, cur: &mut Cursor) {
+        if name.is_empty() {
+            cur.pending *= t.matrix();
+            return;
+        }
+        if let Some(id) = self.add(n.pos, cur, Node::group(name).with_transform(t)) {
+            cur.world *= self.scene.node(id).transform.matrix();
+            cur.parent = Some(id);
+            cur.pending = Mat4::IDENTITY;
+        }
+    }
+
+    fn shape(&mut self, n: &NodeRef, st: &State, cur: &Cursor, name: String) {
+        let coords = match &st.coords {
+            Some(c) => {
+                let key = Rc::as_ptr(c) as usize;
+                self.coords
+                    .entry(key)
+                    .or_insert_with(|| Rc::new(super::state::colors(c, "point")))
+                    .clone()
+            }
+            None => Rc::new(Vec::new()),
+        };
+        let key = MeshKey {
+            shape: Rc::as_ptr(n) as usize,
+            coords: State::ptr(&st.coords),
+            normals: State::ptr(&st.normals),
+            material: State::ptr(&st.material),
+            base: State::ptr(&st.base_color),
+            bindings: (st.material_binding, st.normal_binding),
+            hints: (st.ccw, st.solid_type, st.crease_angle.to_bits()),
+        };
+        let mesh = match self.meshes.get(&key) {
+            Some(m) => *m,
+            None => {
+                let inp = shapes::inputs(n, st, coords);
+                let mut msgs = Vec::new();
+                let m = shapes::mesh(n, st, &inp, &mut msgs).map(|mut m| {
+                    m.name = name.clone();
+                    self.scene.add_mesh(m)
+                });
+                for (pos, msg) in msgs {
+                    let k = format!("{}:{msg}", n.kind);
+                    self.warn_once(&k, pos, &msg);
+                }
+                self.meshes.insert(key, m);
+                m
+            }
+        };
+        let Some(mesh) = mesh else { return };
+        let material = self.material(st);
+        let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
+        node.style = st.style;
+        self.add(n.pos, cur, node);
+    }
+
+    /// The scene material for the state's first material values.
+    fn material(&mut self, st: &State) -> MaterialId {
+        let key = (
+            State::ptr(&st.material),
+            State::ptr(&st.base_color),
+            st.unlit,
+        );
+        if let Some(id) = self.materials.get(&key) {
+            return *id;
+        }
+        let first = |m: &Option<NodeRef>, f: &str, d: Vec3| -> Vec3 {
+            m.as_ref()
+                .and_then(|m| super::state::colors(m, f).first().copied())
+                .unwrap_or(d)
+        };
+        let scalar = |m: &Option<NodeRef>, f: &str, d: f32| -> f32 {
+            m.as_ref().and_then(|m| m.num(f)).map_or(d, |v| v as f32)
+        };
+        let m = &st.material;
+        let mut diffuse = first(m, "diffuseColor", Vec3::splat(0.8));
+        let mut transparency = scalar(m, "transparency", 0.0);
+        if let Some(b) = &st.base_color {
+            if b.kind == "PackedColor" {
+                if let Some((c, t)) = super::state::packed(b.nums("rgba").unwrap_or(&[])).first() {
+                    diffuse = *c;
+                    transparency = *t;
+                }
+            } else if let Some(c) = super::state::colors(b, "rgb").first() {
+                diffuse = *c;
+            }
+        }
+        let ambient = first(m, "ambientColor", Vec3::splat(0.2));
+        let mut mat = Material {
+            name: m.as_ref().and_then(|m| m.def.clone()).unwrap_or_default(),
+            diffuse,
+            ambient_intensity: ((ambient.x + ambient.y + ambient.z) / 3.0).clamp(0.0, 1.0),
+            specular: first(m, "specularColor", Vec3::ZERO),
+            emissive: first(m, "emissiveColor", Vec3::ZERO),
+            shininess: scalar(m, "shininess", 0.2),
+            transparency,
+        };
+        if st.unlit {
+            mat.emissive = mat.diffuse;
+            mat.diffuse = Vec3::ZERO;
+            mat.specular = Vec3::ZERO;
+            mat.ambient_intensity = 0.0;
+        }
+        let id = self.scene.add_material(mat);
+        self.materials.insert(key, id);
+        id
+    }
+}
+
+/// The transform a transform node stands for (None if `n` is not one).
+fn transform_of(n: &AstNode, cur: &Cursor) -> Option<Transform> {
+    let kind = n.kind.as_str();
+    let rot = |f: &str| n.rotation(f).unwrap_or(Quat::IDENTITY);
+    let t = match kind {
+        "Transform" => Transform {
+            translation: n.vec3("translation", Vec3::ZERO),
+            rotation: rot("rotation"),
+            scale: n.vec3("scaleFactor", Vec3::ONE),
+            scale_orientation: rot("scaleOrientation"),
+            center: n.vec3("center", Vec3::ZERO),
+            extra: None,
+        },
+        k if k.ends_with("Manip") && k != "Manip" => Transform {
+            translation: n.vec3("translation", Vec3::ZERO),
+            rotation: rot("rotation"),
+            scale: n.vec3("scaleFactor", Vec3::ONE),
+            scale_orientation: rot("scaleOrientation"),
+            center: n.vec3("center", Vec3::ZERO),
+            extra: None,
+        },
+        "Translation" => Transform::from_translation(n.vec3("translation", Vec3::ZERO)),
+        "Rotation" | "Rotor" | "Pendulum" => Transform {
+            rotation: if kind == "Pendulum" {
+                rot("rotation0")
+            } else {
+                rot("rotation")
+            },
+            ..Default::default()
+        },
+        "Shuttle" => Transform::from_translation(n.vec3("translation0", Vec3::ZERO)),
+        "RotationXYZ" => {
+            let a = n.f32("angle", 0.0);
+            let q = match n.words("axis").first().map(|s| s.as_str()) {
+                Some("Y") => Quat::from_rotation_y(a),
+                Some("Z") => Quat::from_rotation_z(a),
+                _ => Quat::from_rotation_x(a),
+            };
+            Transform {
+                rotation: q,
+                ..Default::default()
+            }
+        }
+        "Scale" => Transform {
+            scale: n.vec3("scaleFactor", Vec3::ONE),
+            ..Default::default()
+        },
+        "MatrixTransform" => {
+            let m = n.nums("matrix").unwrap_or(&[]);
+            if m.len() < 16 {
+                return Some(Transform::default());
+            }
+            let mut a = [0f32; 16];
+            for (d, s) in a.iter_mut().zip(m) {
+                *d = *s as f32;
+            }
+            // Inventor matrices are row-vector (translation in the last
+            // row); read as columns they are the column-vector matrix.
+            Transform {
+                extra: Some(Mat4::from_cols_array(&a)),
+                ..Default::default()
+            }
+        }
+        "ResetTransform" => {
+            let what = n.words("whatToReset");
+            if what.is_empty() || what.iter().any(|w| w == "TRANSFORM") {
+                let acc = cur.world * cur.pending;
+                Transform {
+                    extra: Some(acc.inverse()),
+                    ..Default::default()
+                }
+            } else {
+                Transform::default()
+            }
+        }
+        _ => return None,
+    };
+    Some(t)
+}
+
+fn light(n: &AstNode) -> Light {
+    let mut l = match n.kind.as_str() {
+        "DirectionalLight" => Light::new(LightKind::Directional),
+        "PointLight" => Light::new(LightKind::Point),
+        _ => {
+            let cut = n.f32("cutOffAngle", std::f32::consts::FRAC_PI_4);
+            Light::new(LightKind::Spot {
+                beam_width: cut,
+                cut_off_angle: cut,
+                drop_off_rate: n.f32("dropOffRate", 0.0),
+            })
+        }
+    };
+    l.on = n.bool("on", true);
+    l.intensity = n.f32("intensity", 1.0);
+    l.color = n.vec3("color", Vec3::ONE);
+    l.location = n.vec3("location", Vec3::ZERO);
+    l.direction = n.vec3("direction", Vec3::new(0.0, 0.0, -1.0));
+    // Inventor lights have no range.
+    l.radius = f32::MAX;
+    l
+}
+
+fn camera(n: &AstNode) -> Camera {
+    let kind = if n.kind == "OrthographicCamera" {
+        CameraKind::Orthographic {
+            height: n.f32("height", 2.0),
+        }
+    } else {
+        CameraKind::Perspective {
+            height_angle: n.f32("heightAngle", std::f32::consts::FRAC_PI_4),
+        }
+    };
+    Camera {
+        kind,
+        position: n.vec3("position", Vec3::new(0.0, 0.0, 1.0)),
+        orientation: n.rotation("orientation").unwrap_or(Quat::IDENTITY),
+        description: n.def.clone().unwrap_or_default(),
+        // Inventor's heightAngle is for the window height.
+        fov_smaller_side: false,
+        focal_distance: n.f32("focalDistance", 5.0),
+        near: n.num("nearDistance").map(|v| v as f32),
+        far: n.num("farDistance").map(|v| v as f32),
+    }
+}

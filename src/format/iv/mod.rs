@@ -1,0 +1,51 @@
+//! The Open Inventor (ASCII 2.0/2.1) and VRML 1.0 reader: Inventor's
+//! traversal state (property nodes affect later siblings, Separators save
+//! and restore) turned into the scene tree.
+
+mod build;
+mod shapes;
+mod state;
+
+use super::syntax::{self, Options};
+use super::vrml97::fmt_warning;
+use super::{LoadError, Loaded};
+use crate::scene::SourceFormat;
+use std::path::Path;
+
+/// Reads an Inventor or VRML 1.0 file (`vrml1` picks the dialect's defaults).
+pub fn read_nested(
+    bytes: &[u8],
+    path: &Path,
+    depth: usize,
+    vrml1: bool,
+) -> Result<Loaded, LoadError> {
+    let parsed = syntax::parse(bytes, Options::new(false));
+    let mut warnings = Vec::new();
+    if let Some((pos, msg)) = &parsed.error {
+        if parsed.roots.is_empty() {
+            return Err(LoadError::new(path, pos.line, pos.column, msg.clone()));
+        }
+        warnings.push(fmt_warning(
+            path,
+            *pos,
+            &format!("{msg} (the rest of the file is skipped)"),
+        ));
+    }
+    for (pos, msg) in &parsed.warnings {
+        warnings.push(fmt_warning(path, *pos, msg));
+    }
+    let mut b = build::Builder::new(path, depth, vrml1);
+    b.build(&parsed);
+    let mut loaded = b.finish();
+    loaded.scene.format = if vrml1 {
+        SourceFormat::Vrml1
+    } else {
+        SourceFormat::Inventor
+    };
+    warnings.append(&mut loaded.warnings);
+    loaded.warnings = warnings;
+    Ok(loaded)
+}
+
+#[cfg(test)]
+mod tests;

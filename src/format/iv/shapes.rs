@@ -1,0 +1,422 @@
+//! Inventor / VRML 1.0 shape nodes → meshes, using the coordinates,
+//! normals, material bindings and shape hints of the traversal state.
+
+use super::state::{colors, packed, Bind, State};
+use crate::format::lexer::Pos;
+use crate::format::polygons::{self, split_index};
+use crate::format::syntax::{AstNode, NodeRef};
+use crate::scene::normals::{mesh_from_points, mesh_from_polylines, Binding, PolyOptions};
+use crate::scene::{primitives, Mesh};
+use glam::Vec3;
+use std::rc::Rc;
+
+type Msgs = Vec<(Pos, String)>;
+
+/// Shape node types this reader draws.
+pub fn is_shape(kind: &str) -> bool {
+    matches!(
+        kind,
+        "IndexedFaceSet"
+            | "FaceSet"
+            | "IndexedTriangleStripSet"
+            | "TriangleStripSet"
+            | "QuadMesh"
+            | "IndexedLineSet"
+            | "LineSet"
+            | "PointSet"
+            | "Cube"
+            | "Sphere"
+            | "Cone"
+            | "Cylinder"
+    )
+}
+
+/// What a shape needs from the state, resolved to values.
+pub struct Inputs {
+    pub coords: Rc<Vec<Vec3>>,
+    pub normals: Vec<Vec3>,
+    /// Diffuse colours for per-face / per-vertex material binding.
+    pub colors: Vec<Vec3>,
+    pub material_binding: Bind,
+    pub normal_binding: Bind,
+}
+
+/// Reads coordinates, normals and colours, letting a `vertexProperty`
+/// field (Inventor 2.1) override the state.
+pub fn inputs(n: &AstNode, st: &State, coords: Rc<Vec<Vec3>>) -> Inputs {
+    let mut i = Inputs {
+        coords,
+        normals: st
+            .normals
+            .as_ref()
+            .map(|n| colors(n, "vector"))
+            .unwrap_or_default(),
+        colors: diffuse_list(st),
+        material_binding: st.material_binding,
+        normal_binding: st.normal_binding,
+    };
+    if let Some(vp) = n.node("vertexProperty").map(|v| v.effective()) {
+        if vp.kind == "VertexProperty" {
+            let v = colors(&vp, "vertex");
+            if !v.is_empty() {
+                i.coords = Rc::new(v);
+            }
+            let nv = colors(&vp, "normal");
+            if !nv.is_empty() {
+                i.normals = nv;
+                i.normal_binding = bind_word(&vp, "normalBinding", Bind::PerVertexIndexed);
+            }
+            if let Some(rgba) = vp.nums("orderedRGBA") {
+                if !rgba.is_empty() {
+                    i.colors = packed(rgba).into_iter().map(|(c, _)| c).collect();
+                    i.material_binding = bind_word(&vp, "materialBinding", Bind::Overall);
+                }
+            }
+        }
+    }
+    i
+}
+
+fn bind_word(n: &AstNode, field: &str, default: Bind) -> Bind {
+    match n.words(field).first() {
+        Some(w) => Bind::parse(w),
+        None => default,
+    }
+}
+
+/// The diffuse colours the material binding indexes.
+pub fn diffuse_list(st: &State) -> Vec<Vec3> {
+    if let Some(b) = &st.base_color {
+        if b.kind == "PackedColor" {
+            return packed(b.nums("rgba").unwrap_or(&[]))
+                .into_iter()
+                .map(|(c, _)| c)
+                .collect();
+        }
+        return colors(b, "rgb");
+    }
+    st.material
+        .as_ref()
+        .map(|m| colors(m, "diffuseColor"))
+        .unwrap_or_default()
+}
+
+fn ints(n: &AstNode, field: &str) -> Vec<i64> {
+    n.nums(field)
+        .map(|v| v.iter().map(|x| *x as i64).collect())
+        .unwrap_or_default()
+}
+
+/// An index list that is empty or just `[-1]` means "use the default".
+fn given(idx: &[i64]) -> bool {
+    !(idx.is_empty() || idx == [-1])
+}
+
+/// Turns an Inventor binding into the mesh builder's binding.
+/// `parts[f]` is the part (strip) face `f` belongs to; `corner_ids` maps each
+/// face corner to its vertex number for PER_VERTEX.
+fn binding(
+    b: Bind,
+    values: &[Vec3],
+    index: &[i64],
+    faces: &[Vec<u32>],
+    parts: Option<&[u32]>,
+    corner_ids: &[Vec<u32>],
+) -> Binding {
+    if values.is_empty() {
+        return Binding::None;
+    }
+    let values = values.to_vec();
+    match b {
+        Bind::Default | Bind::Overall => Binding::None,
+        Bind::PerPart | Bind::PerFace => Binding::PerFace {
+            values,
+            index: match (b, parts) {
+                (Bind::PerPart, Some(p)) => Some(p.to_vec()),
+                _ => None,
+            },
+        },
+        Bind::PerPartIndexed | Bind::PerFaceIndexed => {
+            let flat: Vec<u32> = index
+                .iter()
+                .filter(|&&i| i >= 0)
+                .map(|&i| i as u32)
+                .collect();
+            let index = match (given(index), b, parts) {
+                (true, Bind::PerPartIndexed, Some(p)) => Some(
+                    p.iter()
+                        .map(|&part| flat.get(part as usize).copied().unwrap_or(u32::MAX))
+                        .collect(),
+                ),
+                (true, _, _) => Some(flat),
+                (false, _, _) => None,
+            };
+            Binding::PerFace { values, index }
+        }
+        Bind::PerVertex => Binding::PerVertex {
+            values,
+            index: Some(corner_ids.to_vec()),
+        },
+        Bind::PerVertexIndexed => Binding::PerVertex {
+            values,
+            index: if given(index) {
+                Some(split_index(index))
+            } else {
+                let _ = faces;
+                None
+            },
+        },
+    }
+}
+
+fn options(st: &State) -> PolyOptions {
+    PolyOptions {
+        ccw: st.ccw.unwrap_or(true),
+        solid: st.ccw.is_some() && st.solid_type,
+        crease_angle: st.crease_angle,
+        normals: Binding::None,
+        colors: Binding::None,
+        name: String::new(),
+    }
+}
+
+/// Consecutive vertex numbers for each corner (PER_VERTEX binding).
+fn consecutive(faces: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    let mut k = 0u32;
+    faces
+        .iter()
+        .map(|f| {
+            f.iter()
+                .map(|_| {
+                    k += 1;
+                    k - 1
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Builds the mesh for shape `n` (its kind is one `is_shape` accepts).
+pub fn mesh(n: &NodeRef, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Mesh> {
+    let kind = n.kind.as_str();
+    match kind {
+        "Cube" => Some(primitives::box_mesh(Vec3::new(
+            n.f32("width", 2.0),
+            n.f32("height", 2.0),
+            n.f32("depth", 2.0),
+        ))),
+        "Sphere" => Some(primitives::sphere(n.f32("radius", 1.0))),
+        "Cone" => {
+            let (all, parts) = parts(n);
+            Some(primitives::cone(
+                n.f32("bottomRadius", 1.0),
+                n.f32("height", 2.0),
+                all || parts.iter().any(|p| p == "SIDES"),
+                all || parts.iter().any(|p| p == "BOTTOM"),
+            ))
+        }
+        "Cylinder" => {
+            let (all, parts) = parts(n);
+            Some(primitives::cylinder(
+                n.f32("radius", 1.0),
+                n.f32("height", 2.0),
+                all || parts.iter().any(|p| p == "SIDES"),
+                all || parts.iter().any(|p| p == "TOP"),
+                all || parts.iter().any(|p| p == "BOTTOM"),
+            ))
+        }
+        "IndexedFaceSet" | "IndexedTriangleStripSet" => {
+            let strips = kind == "IndexedTriangleStripSet";
+            let raw = split_index(&ints(n, "coordIndex"));
+            let corner_ids = consecutive(&raw);
+            let (faces, parts, corner_ids) = if strips {
+                strip_triangles(&raw, &corner_ids)
+            } else {
+                let p: Vec<u32> = (0..raw.len() as u32).collect();
+                (raw, p, corner_ids)
+            };
+            let mut o = options(st);
+            o.colors = binding(
+                inp.material_binding,
+                &inp.colors,
+                &ints(n, "materialIndex"),
+                &faces,
+                Some(&parts),
+                &corner_ids,
+            );
+            let nb = if inp.normal_binding == Bind::Default {
+                Bind::PerVertexIndexed
+            } else {
+                inp.normal_binding
+            };
+            o.normals = binding(
+                nb,
+                &inp.normals,
+                &ints(n, "normalIndex"),
+                &faces,
+                Some(&parts),
+                &corner_ids,
+            );
+            polygons::build(&inp.coords, faces, o, n.pos, msgs)
+        }
+        "FaceSet" | "TriangleStripSet" | "QuadMesh" => {
+            let start = n.num("startIndex").unwrap_or(0.0).max(0.0) as usize;
+            let (faces, parts) = match kind {
+                "QuadMesh" => quad_mesh(n, start),
+                _ => {
+                    let counts = vertex_counts(n, "numVertices", inp.coords.len(), start);
+                    let mut runs = Vec::new();
+                    let mut at = start as u32;
+                    for c in counts {
+                        runs.push((at..at + c).collect::<Vec<u32>>());
+                        at += c;
+                    }
+                    if kind == "TriangleStripSet" {
+                        let ids = runs.clone();
+                        let (f, p, _) = strip_triangles(&runs, &ids);
+                        (f, p)
+                    } else {
+                        let p = (0..runs.len() as u32).collect();
+                        (runs, p)
+                    }
+                }
+            };
+            let corner_ids: Vec<Vec<u32>> = faces
+                .iter()
+                .map(|f| f.iter().map(|&i| i.saturating_sub(start as u32)).collect())
+                .collect();
+            let mut o = options(st);
+            o.colors = binding(
+                inp.material_binding,
+                &inp.colors,
+                &[],
+                &faces,
+                Some(&parts),
+                &corner_ids,
+            );
+            let nb = if inp.normal_binding == Bind::Default {
+                Bind::PerVertex
+            } else {
+                inp.normal_binding
+            };
+            o.normals = binding(nb, &inp.normals, &[], &faces, Some(&parts), &corner_ids);
+            polygons::build(&inp.coords, faces, o, n.pos, msgs)
+        }
+        "IndexedLineSet" | "LineSet" => {
+            let lines = if kind == "LineSet" {
+                let start = n.num("startIndex").unwrap_or(0.0).max(0.0) as usize;
+                let mut at = start as u32;
+                vertex_counts(n, "numVertices", inp.coords.len(), start)
+                    .into_iter()
+                    .map(|c| {
+                        let r = (at..at + c).collect::<Vec<u32>>();
+                        at += c;
+                        r
+                    })
+                    .collect()
+            } else {
+                split_index(&ints(n, "coordIndex"))
+            };
+            let lines = polygons::drop_bad(lines, inp.coords.len());
+            let corner_ids = consecutive(&lines);
+            let cb = binding(
+                inp.material_binding,
+                &inp.colors,
+                &ints(n, "materialIndex"),
+                &lines,
+                None,
+                &corner_ids,
+            );
+            mesh_from_polylines(&inp.coords, &lines, &cb)
+                .or_else(|_| mesh_from_polylines(&inp.coords, &lines, &Binding::None))
+                .map_err(|e| msgs.push((n.pos, format!("{kind} skipped: {e}"))))
+                .ok()
+        }
+        "PointSet" => {
+            let start = n.num("startIndex").unwrap_or(0.0).max(0.0) as usize;
+            let count = match n.num("numPoints") {
+                Some(c) if c >= 0.0 => c as usize,
+                _ => inp.coords.len().saturating_sub(start),
+            };
+            let end = start.saturating_add(count).min(inp.coords.len());
+            let pts = inp.coords.get(start..end).unwrap_or(&[]);
+            let cols = match inp.material_binding {
+                Bind::PerVertex | Bind::PerVertexIndexed | Bind::PerPart | Bind::PerFace
+                    if inp.colors.len() >= pts.len() =>
+                {
+                    Some(&inp.colors[..pts.len()])
+                }
+                _ => None,
+            };
+            mesh_from_points(pts, cols).ok()
+        }
+        _ => None,
+    }
+}
+
+/// `parts` bit mask of Cone/Cylinder: (ALL given or field absent, names).
+fn parts(n: &AstNode) -> (bool, Vec<String>) {
+    let w = n.words("parts");
+    (w.is_empty() || w.iter().any(|p| p == "ALL"), w.to_vec())
+}
+
+/// `numVertices` (−1 = all the rest) as counts, clamped to the coordinates.
+fn vertex_counts(n: &AstNode, field: &str, len: usize, start: usize) -> Vec<u32> {
+    let mut left = len.saturating_sub(start);
+    let mut out = Vec::new();
+    let nums = n.nums(field).unwrap_or(&[-1.0]);
+    let nums: &[f64] = if nums.is_empty() { &[-1.0] } else { nums };
+    for &c in nums {
+        let c = if c < 0.0 {
+            left
+        } else {
+            (c as usize).min(left)
+        };
+        out.push(c as u32);
+        left -= c;
+    }
+    out
+}
+
+/// Triangles of triangle strips (alternate ones flipped to keep the winding),
+/// the strip each came from, and the corner ids carried along.
+fn strip_triangles(
+    strips: &[Vec<u32>],
+    ids: &[Vec<u32>],
+) -> (Vec<Vec<u32>>, Vec<u32>, Vec<Vec<u32>>) {
+    let mut faces = Vec::new();
+    let mut parts = Vec::new();
+    let mut corner = Vec::new();
+    for (s, (strip, id)) in strips.iter().zip(ids).enumerate() {
+        for k in 2..strip.len() {
+            let (a, b, c) = if k % 2 == 0 {
+                (k - 2, k - 1, k)
+            } else {
+                (k - 1, k - 2, k)
+            };
+            faces.push(vec![strip[a], strip[b], strip[c]]);
+            corner.push(vec![id[a], id[b], id[c]]);
+            parts.push(s as u32);
+        }
+    }
+    (faces, parts, corner)
+}
+
+/// QuadMesh: `verticesPerColumn` rows of `verticesPerRow` vertices.
+fn quad_mesh(n: &AstNode, start: usize) -> (Vec<Vec<u32>>, Vec<u32>) {
+    let cols = n.num("verticesPerRow").unwrap_or(0.0).max(0.0) as usize;
+    let rows = n.num("verticesPerColumn").unwrap_or(0.0).max(0.0) as usize;
+    let mut faces = Vec::new();
+    let mut parts = Vec::new();
+    if cols < 2 || rows < 2 || cols.saturating_mul(rows) > 50_000_000 {
+        return (faces, parts);
+    }
+    let at = |r: usize, c: usize| (start + r * cols + c) as u32;
+    for r in 0..rows - 1 {
+        for c in 0..cols - 1 {
+            faces.push(vec![at(r, c), at(r + 1, c), at(r + 1, c + 1), at(r, c + 1)]);
+            parts.push(r as u32);
+        }
+    }
+    (faces, parts)
+}

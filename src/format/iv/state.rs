@@ -1,0 +1,148 @@
+//! Inventor's traversal state: what property nodes set for the shapes that
+//! follow them (until the enclosing Separator restores it).
+
+use crate::format::syntax::{AstNode, NodeRef};
+use crate::scene::RenderStyle;
+use glam::Vec3;
+use std::rc::Rc;
+
+/// MaterialBinding / NormalBinding values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Bind {
+    Default,
+    Overall,
+    PerPart,
+    PerPartIndexed,
+    PerFace,
+    PerFaceIndexed,
+    PerVertex,
+    PerVertexIndexed,
+}
+
+impl Bind {
+    pub fn parse(word: &str) -> Bind {
+        match word {
+            "OVERALL" => Bind::Overall,
+            "PER_PART" => Bind::PerPart,
+            "PER_PART_INDEXED" => Bind::PerPartIndexed,
+            "PER_FACE" => Bind::PerFace,
+            "PER_FACE_INDEXED" => Bind::PerFaceIndexed,
+            "PER_VERTEX" => Bind::PerVertex,
+            "PER_VERTEX_INDEXED" => Bind::PerVertexIndexed,
+            _ => Bind::Default,
+        }
+    }
+}
+
+/// The accumulated properties.
+#[derive(Clone, Debug)]
+pub struct State {
+    pub coords: Option<NodeRef>,
+    pub normals: Option<NodeRef>,
+    pub material: Option<NodeRef>,
+    /// BaseColor / PackedColor overriding the diffuse colours.
+    pub base_color: Option<NodeRef>,
+    pub material_binding: Bind,
+    pub normal_binding: Bind,
+    /// ShapeHints: `Some(true)` counter-clockwise, `Some(false)` clockwise.
+    pub ccw: Option<bool>,
+    pub solid_type: bool,
+    pub crease_angle: f32,
+    pub style: RenderStyle,
+    /// LightModel BASE_COLOR: shapes are unlit.
+    pub unlit: bool,
+}
+
+impl State {
+    pub fn new(vrml1: bool) -> Self {
+        State {
+            coords: None,
+            normals: None,
+            material: None,
+            base_color: None,
+            material_binding: Bind::Default,
+            normal_binding: Bind::Default,
+            ccw: None,
+            solid_type: false,
+            // VRML 1.0 §ShapeHints says 0.5; Coin's Inventor default is 0.
+            crease_angle: if vrml1 { 0.5 } else { 0.0 },
+            style: RenderStyle::Filled,
+            unlit: false,
+        }
+    }
+
+    /// Applies a property node; false if `n` is not one.
+    pub fn apply(&mut self, n: &NodeRef) -> bool {
+        match n.kind.as_str() {
+            "Coordinate3" => self.coords = Some(n.clone()),
+            "Normal" => self.normals = Some(n.clone()),
+            "Material" => {
+                self.material = Some(n.clone());
+                self.base_color = None;
+            }
+            "BaseColor" | "PackedColor" => self.base_color = Some(n.clone()),
+            "MaterialBinding" => {
+                self.material_binding = Bind::parse(first_word(n, "value"));
+            }
+            "NormalBinding" => self.normal_binding = Bind::parse(first_word(n, "value")),
+            "ShapeHints" => {
+                if n.field("vertexOrdering").is_some() {
+                    self.ccw = match first_word(n, "vertexOrdering") {
+                        "CLOCKWISE" => Some(false),
+                        "COUNTERCLOCKWISE" => Some(true),
+                        _ => None,
+                    };
+                }
+                if n.field("shapeType").is_some() {
+                    self.solid_type = first_word(n, "shapeType") == "SOLID";
+                }
+                if let Some(a) = n.num("creaseAngle") {
+                    self.crease_angle = a as f32;
+                }
+            }
+            "DrawStyle" => {
+                if n.field("style").is_some() {
+                    self.style = match first_word(n, "style") {
+                        "LINES" => RenderStyle::Lines,
+                        "POINTS" => RenderStyle::Points,
+                        "INVISIBLE" => RenderStyle::Hidden,
+                        _ => RenderStyle::Filled,
+                    };
+                }
+            }
+            "LightModel" => self.unlit = first_word(n, "model") == "BASE_COLOR",
+            _ => return false,
+        }
+        true
+    }
+
+    pub fn ptr(n: &Option<NodeRef>) -> usize {
+        n.as_ref().map_or(0, |n| Rc::as_ptr(n) as usize)
+    }
+}
+
+fn first_word<'a>(n: &'a AstNode, field: &str) -> &'a str {
+    n.words(field).first().map_or("", |s| s.as_str())
+}
+
+/// Colours of an MFColor field.
+pub fn colors(n: &AstNode, field: &str) -> Vec<Vec3> {
+    n.nums(field)
+        .map(|v| {
+            v.chunks_exact(3)
+                .map(|c| Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// Inventor packed colours `0xRRGGBBAA` as (rgb, transparency).
+pub fn packed(v: &[f64]) -> Vec<(Vec3, f32)> {
+    v.iter()
+        .map(|&x| {
+            let u = x as u32;
+            let c = |s: u32| ((u >> s) & 0xff) as f32 / 255.0;
+            (Vec3::new(c(24), c(16), c(8)), 1.0 - c(0))
+        })
+        .collect()
+}

@@ -1,0 +1,133 @@
+//! Unit tests of the Inventor / VRML 1.0 reader.
+
+use super::read_nested;
+use crate::format::Loaded;
+use crate::scene::{CameraKind, NodeKind, RenderStyle};
+use glam::{Mat4, Vec3};
+use std::path::Path;
+
+fn load(src: &str) -> Loaded {
+    read_nested(src.as_bytes(), Path::new("t.iv"), 0, false).unwrap()
+}
+
+fn world(s: &crate::scene::Scene, id: crate::scene::NodeId) -> Mat4 {
+    let mut m = Mat4::IDENTITY;
+    let mut cur = Some(id);
+    while let Some(c) = cur {
+        m = s.node(c).transform.matrix() * m;
+        cur = s.node(c).parent;
+    }
+    m
+}
+
+#[test]
+fn properties_affect_later_siblings_and_separators_restore() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n Material { diffuseColor 1 0 0 }\n Translation { translation 1 0 0 }\n Separator { Material { diffuseColor 0 1 0 } Translation { translation 0 1 0 } DEF A Cube {} }\n DEF B Sphere {}\n Translation { translation 1 0 0 }\n DEF C Cone {}\n}",
+    );
+    let s = &l.scene;
+    let find = |n: &str| s.find_node(n).unwrap();
+    let pos = |n: &str| world(s, find(n)).transform_point3(Vec3::ZERO);
+    assert_eq!(pos("A"), Vec3::new(1.0, 1.0, 0.0));
+    assert_eq!(pos("B"), Vec3::new(1.0, 0.0, 0.0));
+    assert_eq!(pos("C"), Vec3::new(2.0, 0.0, 0.0));
+    let mat = |n: &str| match &s.node(find(n)).kind {
+        NodeKind::Shape(sh) => s.materials[sh.material.0 as usize].diffuse,
+        _ => panic!("not a shape"),
+    };
+    assert_eq!(mat("A"), Vec3::Y);
+    assert_eq!(mat("B"), Vec3::X);
+    assert_eq!(mat("C"), Vec3::X);
+}
+
+#[test]
+fn named_transform_is_a_group_holding_later_siblings() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { DEF Arm Rotation { rotation 0 0 1 1.5 } Translation { translation 2 0 0 } DEF Hand Cube {} }",
+    );
+    let s = &l.scene;
+    let arm = s.find_node("Arm").unwrap();
+    let hand = s.find_node("Hand").unwrap();
+    assert_eq!(s.node(hand).parent, Some(arm));
+    let p = world(s, hand).transform_point3(Vec3::ZERO);
+    assert!((p - Vec3::new(2.0 * 1.5f32.cos(), 2.0 * 1.5f32.sin(), 0.0)).length() < 1e-5);
+}
+
+#[test]
+fn transform_separator_keeps_properties_but_not_transforms() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { TransformSeparator { Translation { translation 5 0 0 } BaseColor { rgb 0 0 1 } } DEF A Cube {} }",
+    );
+    let s = &l.scene;
+    let a = s.find_node("A").unwrap();
+    assert_eq!(world(s, a).transform_point3(Vec3::ZERO), Vec3::ZERO);
+    let NodeKind::Shape(sh) = &s.node(a).kind else {
+        panic!()
+    };
+    assert_eq!(s.materials[sh.material.0 as usize].diffuse, Vec3::Z);
+}
+
+#[test]
+fn switch_group_drawstyle_info_and_camera() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n PerspectiveCamera { position 0 0 5 heightAngle 0.5 }\n Info { string \"hello \\\"there\\\"\" }\n Switch { whichChild 1 DEF No Cube {} DEF Yes Cube {} }\n DrawStyle { style LINES }\n DEF L Sphere {}\n}",
+    );
+    let s = &l.scene;
+    assert!(s.find_node("No").is_none());
+    assert!(s.find_node("Yes").is_some());
+    assert_eq!(s.node(s.find_node("L").unwrap()).style, RenderStyle::Lines);
+    assert_eq!(s.info, vec!["hello \"there\""]);
+    let cam = s.nodes.iter().find_map(|n| n.camera()).unwrap();
+    assert!(!cam.fov_smaller_side);
+    assert_eq!(cam.kind, CameraKind::Perspective { height_angle: 0.5 });
+}
+
+#[test]
+fn indexed_face_set_with_per_face_materials_and_clockwise_hints() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n MaterialBinding { value PER_FACE }\n ShapeHints { vertexOrdering CLOCKWISE shapeType SOLID }\n Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0, 2 0 0 ] }\n IndexedFaceSet { coordIndex [ 0, 3, 2, 1, -1, 1, 2, 4, -1 ] }\n}",
+    );
+    let s = &l.scene;
+    assert_eq!(s.meshes.len(), 1);
+    let m = &s.meshes[0];
+    assert_eq!(m.triangles.len(), 3);
+    assert!(m.solid);
+    // Clockwise input, flipped to counter-clockwise: normals face +z.
+    for t in &m.triangles {
+        let [a, b, c] = t.map(|i| m.positions[i as usize]);
+        assert!((b - a).cross(c - a).z > 0.0);
+    }
+    let reds = m.colors.iter().filter(|c| **c == Vec3::X).count();
+    let greens = m.colors.iter().filter(|c| **c == Vec3::Y).count();
+    assert!(reds >= 4 && greens >= 3, "{:?}", m.colors);
+}
+
+#[test]
+fn unknown_node_with_fields_declaration_is_skipped_with_warning() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { MyNode { fields [ SFFloat size, MFNode kids ] size 2 kids [ Cube {} ] } Cube {} }",
+    );
+    assert_eq!(l.scene.meshes.len(), 1);
+    assert!(l
+        .warnings
+        .iter()
+        .any(|w| w.contains("unknown node 'MyNode' (declared with fields")));
+}
+
+#[test]
+fn vrml1_header_and_strips() {
+    let l = read_nested(
+        b"#VRML V1.0 ascii\nSeparator { Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] } TriangleStripSet { numVertices 4 } }",
+        Path::new("t.wrl"),
+        0,
+        true,
+    )
+    .unwrap();
+    let m = &l.scene.meshes[0];
+    assert_eq!(m.triangles.len(), 2);
+    for t in &m.triangles {
+        let [a, b, c] = t.map(|i| m.positions[i as usize]);
+        assert!((b - a).cross(c - a).z > 0.0, "strip winding kept");
+    }
+    assert_eq!(l.scene.format, crate::scene::SourceFormat::Vrml1);
+}

@@ -1,0 +1,132 @@
+//! Where the panels go for a given window size. Pure arithmetic, so the
+//! editor (hit testing) and the drawing code always agree.
+
+use super::Rect;
+
+/// Height of one panel row (a text line plus nothing: the font's raster is
+/// exactly this tall).
+pub const ROW: i32 = 16;
+pub const TOOLBAR_H: i32 = 22;
+/// Height of the timeline's frame ruler.
+pub const RULER_H: i32 = 18;
+/// Height of a key strip row (issue: record mode / key strip).
+pub const KEY_ROW_H: i32 = 14;
+/// Height of the timeline's control row (frame field, status).
+pub const CONTROLS_H: i32 = 18;
+
+/// The big regions of the editor window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    pub window: Rect,
+    pub toolbar: Rect,
+    pub viewport: Rect,
+    pub side: Rect,
+    /// Whole timeline strip: ruler, key rows, controls.
+    pub timeline: Rect,
+    pub ruler: Rect,
+    /// Key strip rows below the ruler (empty when there are none).
+    pub key_rows: Rect,
+    pub controls: Rect,
+}
+
+impl Layout {
+    /// Lays out a `w`×`h` window with `key_rows` key strip rows.
+    pub fn new(w: i32, h: i32, key_rows: usize) -> Layout {
+        let window = Rect::new(0, 0, w.max(1), h.max(1));
+        let (toolbar, rest) = window.take_top(TOOLBAR_H);
+        let rows_h = (key_rows as i32 * KEY_ROW_H).min((rest.h / 3).max(0));
+        let tl_h = RULER_H + rows_h + CONTROLS_H;
+        let (middle, timeline) = rest.take_top(rest.h - tl_h);
+        let side_w = (w * 32 / 100).clamp(140.min(w / 2), 280);
+        let (viewport, side) = middle.take_left(middle.w - side_w);
+        let (ruler, r) = timeline.take_top(RULER_H);
+        let (key_rows, controls) = r.take_top(rows_h);
+        Layout {
+            window,
+            toolbar,
+            viewport,
+            side,
+            timeline,
+            ruler,
+            key_rows,
+            controls,
+        }
+    }
+
+    /// X pixel of `frame` on the ruler for a timeline of `duration` frames.
+    pub fn frame_to_x(&self, frame: f32, duration: f32) -> f32 {
+        let r = self.ruler_span();
+        r.0 + (frame / duration.max(1.0)) * (r.1 - r.0)
+    }
+
+    /// Frame under the ruler pixel `x` (clamped to 0..=duration).
+    pub fn x_to_frame(&self, x: f32, duration: f32) -> f32 {
+        let r = self.ruler_span();
+        ((x - r.0) / (r.1 - r.0).max(1.0) * duration.max(1.0)).clamp(0.0, duration.max(0.0))
+    }
+
+    /// Left and right x of the ruler's usable span (a margin for labels).
+    fn ruler_span(&self) -> (f32, f32) {
+        let x0 = (self.ruler.x + 8) as f32;
+        let x1 = (self.ruler.right() - 8) as f32;
+        (x0, x1.max(x0 + 1.0))
+    }
+}
+
+/// The side panel's sections.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SidePanel {
+    pub scene: Rect,
+    pub objects: Rect,
+    pub lights: Rect,
+    pub props: Rect,
+}
+
+impl SidePanel {
+    /// Splits `side` so the selection's `prop_rows` rows fit and the two lists
+    /// share what is left (each keeps its header and at least one row).
+    pub fn new(side: Rect, prop_rows: i32) -> SidePanel {
+        let (scene, rest) = side.take_top(2 * ROW + 2);
+        let min_lists = 2 * (2 * ROW);
+        let props_h = ((prop_rows + 1) * ROW + 2).min((rest.h - min_lists).max(ROW));
+        let (lists, props) = rest.take_top(rest.h - props_h);
+        let obj_h = (lists.h * 55 / 100).max(2 * ROW.min(lists.h / 2));
+        let (objects, lights) = lists.take_top(obj_h);
+        SidePanel {
+            scene,
+            objects,
+            lights,
+            props,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn regions_tile_the_window() {
+        for (w, h) in [(320, 240), (480, 320), (1280, 720)] {
+            let l = Layout::new(w, h, 0);
+            assert_eq!(l.toolbar.h + l.viewport.h + l.timeline.h, h);
+            assert_eq!(l.viewport.w + l.side.w, w);
+            assert_eq!(l.viewport.h, l.side.h);
+            assert!(
+                l.viewport.w > l.side.w,
+                "{w}x{h}: viewport is the main area"
+            );
+            let s = SidePanel::new(l.side, 5);
+            assert_eq!(s.scene.h + s.objects.h + s.lights.h + s.props.h, l.side.h);
+        }
+    }
+
+    #[test]
+    fn ruler_maps_frames_both_ways() {
+        let l = Layout::new(480, 320, 0);
+        let x = l.frame_to_x(30.0, 96.0);
+        assert!((l.x_to_frame(x, 96.0) - 30.0).abs() < 1e-3);
+        assert_eq!(l.x_to_frame(-100.0, 96.0), 0.0);
+        assert_eq!(l.x_to_frame(10_000.0, 96.0), 96.0);
+    }
+}
