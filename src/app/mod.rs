@@ -7,27 +7,39 @@ mod keymap;
 
 use crate::editor::{Editor, Event, Mods, MouseButton};
 use crate::render::Frame;
-use minifb::{KeyRepeat, MouseMode, Window, WindowOptions};
+use minifb::{MouseMode, Window, WindowOptions};
 use std::cell::RefCell;
 use std::rc::Rc;
 use std::time::{Duration, Instant};
 
 /// Poll interval while something moves (playback, drags) and when idle.
 const ACTIVE_POLL: Duration = Duration::from_millis(8);
-const IDLE_POLL: Duration = Duration::from_millis(33);
+const IDLE_POLL: Duration = Duration::from_millis(20);
 /// How long after the last input the loop stays in the fast poll.
 const ACTIVE_FOR: Duration = Duration::from_millis(500);
 
-/// Collects typed characters from minifb's input callback.
-struct TextSink(Rc<RefCell<String>>);
+/// What minifb's input callback saw since the last poll, in order. Key
+/// edges come from here rather than from `get_keys_pressed`, which misses a
+/// press and release that both happen between two polls (xdotool does that).
+#[derive(Default)]
+struct Typed {
+    text: String,
+    keys: Vec<(minifb::Key, bool)>,
+}
 
-impl minifb::InputCallback for TextSink {
+struct Sink(Rc<RefCell<Typed>>);
+
+impl minifb::InputCallback for Sink {
     fn add_char(&mut self, c: u32) {
         if let Some(ch) = char::from_u32(c) {
             if !ch.is_control() {
-                self.0.borrow_mut().push(ch);
+                self.0.borrow_mut().text.push(ch);
             }
         }
+    }
+
+    fn set_key_state(&mut self, key: minifb::Key, down: bool) {
+        self.0.borrow_mut().keys.push((key, down));
     }
 }
 
@@ -51,8 +63,9 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
     };
     // We pace the loop ourselves.
     window.set_target_fps(0);
-    let typed = Rc::new(RefCell::new(String::new()));
-    window.set_input_callback(Box::new(TextSink(typed.clone())));
+    let typed = Rc::new(RefCell::new(Typed::default()));
+    window.set_input_callback(Box::new(Sink(typed.clone())));
+    let mut mods = Mods::NONE;
 
     let start = Instant::now();
     let mut frame = Frame::new(w, h, glam::Vec3::ZERO);
@@ -64,14 +77,10 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
 
     while window.is_open() && !ed.wants_quit() {
         let mut events = Vec::new();
-        let mods = Mods {
-            ctrl: window.is_key_down(minifb::Key::LeftCtrl)
-                || window.is_key_down(minifb::Key::RightCtrl),
-            shift: window.is_key_down(minifb::Key::LeftShift)
-                || window.is_key_down(minifb::Key::RightShift),
-            alt: window.is_key_down(minifb::Key::LeftAlt)
-                || window.is_key_down(minifb::Key::RightAlt),
-        };
+        let Typed { text, keys } = std::mem::take(&mut *typed.borrow_mut());
+        let mods_before = mods;
+        // Modifier level as of the start of this batch, for mouse events.
+        let mouse_mods = mods_before;
         let now_size = window.get_size();
         if now_size != size && now_size.0 > 0 && now_size.1 > 0 {
             size = now_size;
@@ -83,7 +92,11 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
         if let Some((x, y)) = window.get_mouse_pos(MouseMode::Pass) {
             if (x, y) != mouse {
                 mouse = (x, y);
-                events.push(Event::MouseMove { x, y, mods });
+                events.push(Event::MouseMove {
+                    x,
+                    y,
+                    mods: mouse_mods,
+                });
             }
         }
         for (i, (mb, b)) in [
@@ -103,14 +116,14 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
                         button: b,
                         x,
                         y,
-                        mods,
+                        mods: mouse_mods,
                     }
                 } else {
                     Event::MouseUp {
                         button: b,
                         x,
                         y,
-                        mods,
+                        mods: mouse_mods,
                     }
                 });
             }
@@ -121,17 +134,27 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
                     delta: dy.signum() * (dy.abs() / 3.0).clamp(1.0, 5.0),
                     x: mouse.0,
                     y: mouse.1,
-                    mods,
+                    mods: mouse_mods,
                 });
             }
         }
-        for k in window.get_keys_pressed(KeyRepeat::Yes) {
+        for (k, down) in keys {
+            use minifb::Key as K;
+            match k {
+                K::LeftCtrl | K::RightCtrl => mods.ctrl = down,
+                K::LeftShift | K::RightShift => mods.shift = down,
+                K::LeftAlt | K::RightAlt => mods.alt = down,
+                _ => {}
+            }
             if let Some(key) = keymap::key(k) {
-                events.push(Event::KeyDown { key, mods });
+                events.push(if down {
+                    Event::KeyDown { key, mods }
+                } else {
+                    Event::KeyUp { key, mods }
+                });
             }
         }
-        let text = std::mem::take(&mut *typed.borrow_mut());
-        if !text.is_empty() && !mods.ctrl && !mods.alt {
+        if !text.is_empty() && !mods.ctrl && !mods.alt && !mods_before.ctrl {
             events.push(Event::Text(text));
         }
         if !events.is_empty() {

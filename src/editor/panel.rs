@@ -320,7 +320,7 @@ impl Editor {
             NodeKind::Group => "Object",
         };
         out.push(w(h, WidgetKind::Header(kind.to_string())));
-        let lw = 4 * CHAR_W;
+        let lw = 5 * CHAR_W;
         let mut y = body.y;
         let mut row = |out: &mut Vec<Widget>, f: &dyn Fn(&mut Vec<Widget>, Rect)| {
             if y + ROW <= body.bottom() + 1 {

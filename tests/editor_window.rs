@@ -1,0 +1,50 @@
+//! Runs `tests/window_smoke.sh`: the editor in a real X window under Xvfb,
+//! driven by xdotool. Without Xvfb/xdotool/ImageMagick it fails in CI
+//! (`CI=true`) and says loudly that it skipped otherwise.
+
+use animed::editor::panel::WidgetKind;
+use animed::editor::Editor;
+use std::process::Command;
+
+#[test]
+fn window_smoke() {
+    // Same size and scene as the script's window.
+    let ed = Editor::with_demo(800, 600);
+    let l = ed.layout();
+    let row = ed
+        .widgets()
+        .into_iter()
+        .find(|w| matches!(w.kind, WidgetKind::Row { .. }))
+        .expect("the demo scene has objects");
+    let vp = l.viewport;
+    let geom = |r: animed::ui::Rect| format!("{}x{}+{}+{}", r.w, r.h, r.x, r.y);
+    let out = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("window-smoke");
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/window_smoke.sh");
+    let status = Command::new("bash")
+        .arg(script)
+        .arg(env!("CARGO_BIN_EXE_animed"))
+        .arg(&out)
+        .env("ROW_X", (row.rect.x + 20).to_string())
+        .env("ROW_Y", (row.rect.y + row.rect.h / 2).to_string())
+        .env("VIEW_X", (vp.x + vp.w / 3).to_string())
+        .env("VIEW_Y", (vp.y + vp.h / 2).to_string())
+        .env("VIEW_GEOM", geom(vp))
+        .env("SIDE_GEOM", geom(l.side))
+        .status()
+        .expect("bash runs");
+    match status.code() {
+        Some(0) => {}
+        Some(77) => {
+            let msg = "window smoke test SKIPPED: Xvfb, xdotool or ImageMagick missing \
+                       (tests/run-all.sh installs them as root)";
+            if std::env::var("CI").is_ok_and(|v| v == "true") {
+                panic!("{msg}; CI must run it");
+            }
+            eprintln!("\n*** {msg} ***\n");
+        }
+        other => panic!(
+            "window smoke test failed ({other:?}); see {}",
+            out.display()
+        ),
+    }
+}
