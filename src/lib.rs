@@ -10,3 +10,4 @@ pub mod output;
 pub mod render;
 pub mod scene;
 pub mod ui;
+pub mod viewer;
