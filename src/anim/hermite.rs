@@ -105,3 +105,47 @@ pub fn hermite<V: VectorLike>(p0: V, m0: V, p1: V, m1: V, s: f32) -> V {
     let h11 = s3 - s2;
     p0 * h00 + m0 * h10 + p1 * h01 + m1 * h11
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hermite_ends_and_end_derivatives() {
+        let (p0, m0, p1, m1) = (1.0f32, -2.0, 4.0, 3.0);
+        assert_eq!(hermite(p0, m0, p1, m1, 0.0), p0);
+        assert_eq!(hermite(p0, m0, p1, m1, 1.0), p1);
+        let h = 1e-3;
+        let d0 = (hermite(p0, m0, p1, m1, h) - p0) / h;
+        let d1 = (p1 - hermite(p0, m0, p1, m1, 1.0 - h)) / h;
+        // First-order differences: error ≈ h·|p″|/2 ≤ 0.01 here.
+        assert!(
+            (d0 - m0).abs() < 3e-2 && (d1 - m1).abs() < 3e-2,
+            "{d0} {d1}"
+        );
+    }
+
+    #[test]
+    fn tangents_by_hand() {
+        let tcb = Tcb::default();
+        // Even spacing, TCB 0: Catmull-Rom, (A + B)/2 on both sides.
+        assert_eq!(kb_out(Some((2.0f32, 5.0)), (4.0, 5.0), tcb), 3.0);
+        assert_eq!(kb_in((2.0f32, 5.0), Some((4.0, 5.0)), tcb), 3.0);
+        // Uneven (Δp = 1, Δn = 3): in × 2·1/4, out × 2·3/4.
+        assert_eq!(kb_in((2.0f32, 1.0), Some((4.0, 3.0)), tcb), 1.5);
+        assert_eq!(kb_out(Some((2.0f32, 1.0)), (4.0, 3.0), tcb), 4.5);
+        // c = 1: in = B, out = A (even spacing); open ends: (1 − t)·chord.
+        let c1 = Tcb {
+            continuity: 1.0,
+            ..tcb
+        };
+        assert_eq!(kb_in((2.0f32, 5.0), Some((4.0, 5.0)), c1), 4.0);
+        assert_eq!(kb_out(Some((2.0f32, 5.0)), (4.0, 5.0), c1), 2.0);
+        let t = Tcb {
+            tension: 0.5,
+            ..tcb
+        };
+        assert_eq!(kb_out(None, (4.0f32, 5.0), t), 2.0);
+        assert_eq!(kb_in((2.0f32, 5.0), None, t), 1.0);
+    }
+}

@@ -175,3 +175,53 @@ pub fn squad_intermediates(
     let s1 = b * qexp((chord - t1) * 0.5);
     (s0, s1, a, b)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn near(a: Quat, b: Quat, tol: f32) -> bool {
+        (a - b).length() < tol || (a + b).length() < tol
+    }
+
+    #[test]
+    fn exp_inverts_log() {
+        for (axis, angle) in [
+            (Vec3::X, 0.3),
+            (Vec3::new(1.0, 2.0, -1.0), 2.9),
+            (Vec3::Z, 1e-5),
+        ] {
+            let q = Quat::from_axis_angle(axis.normalize(), angle);
+            assert!(near(qexp(qlog(q)), q, 1e-6), "{axis} {angle}");
+            // log is the half-angle vector.
+            assert!((qlog(q).length() - angle / 2.0).abs() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn slerp_raw_hits_ends_and_middle() {
+        let a = Quat::from_rotation_y(0.2);
+        let b = Quat::from_rotation_y(1.4);
+        assert!(near(slerp_raw(a, b, 0.0), a, 1e-6));
+        assert!(near(slerp_raw(a, b, 1.0), b, 1e-6));
+        assert!(near(
+            slerp_raw(a, b, 0.25),
+            Quat::from_rotation_y(0.5),
+            1e-6
+        ));
+    }
+
+    #[test]
+    fn squad_with_end_keys_as_intermediates_is_slerp() {
+        let a = Quat::from_rotation_x(-0.4);
+        let b = Quat::from_axis_angle(Vec3::new(0.0, 1.0, 1.0).normalize(), 1.1);
+        for i in 0..=8 {
+            let h = i as f32 / 8.0;
+            assert!(near(squad(a, b, a, b, h), slerp(a, b, h), 1e-6));
+        }
+        // Two keys, no neighbours, tension 0: the intermediates are the keys.
+        let (s0, s1, _, _) =
+            squad_intermediates(None, a, Tcb::default(), b, Tcb::default(), None, 10.0);
+        assert!(near(s0, a, 1e-6) && near(s1, b, 1e-6));
+    }
+}

@@ -1,10 +1,180 @@
 //! `animed bench`: measure renderer, animation and editor speed on this machine.
+//!
+//! Each measurement is a [`Section`] in [`sections`]; to add one (e.g. the
+//! editor's frame time) append an entry there — a name, a one-line summary
+//! and a function that returns the lines to print.
+
+use crate::render::job::{render_at, FrameSpec, Headlight};
+use crate::render::{bench_scenes, render};
+use crate::scene::Scene;
+use std::time::{Duration, Instant};
 
 /// Measure renderer, animation and editor speed on this machine.
-#[derive(clap::Args, Debug)]
-pub struct Args {}
+#[derive(clap::Args, Debug, Clone)]
+pub struct Args {
+    /// Worker threads (0 = all cores).
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// Picture size, WIDTHxHEIGHT.
+    #[arg(long, default_value = "1280x720", value_parser = super::render::parse_size)]
+    pub size: (u32, u32),
+    /// Run only the sections whose name contains this.
+    #[arg(long)]
+    pub only: Option<String>,
+    /// Minimum time spent per measurement, in seconds.
+    #[arg(long, default_value_t = 1.0)]
+    pub seconds: f64,
+}
 
-pub fn run(_args: Args) -> i32 {
-    eprintln!("animed bench: not built yet");
-    2
+/// One benchmark: `run` returns the lines it prints.
+pub struct Section {
+    pub name: &'static str,
+    pub about: &'static str,
+    pub run: fn(&Args) -> Result<Vec<String>, String>,
+}
+
+/// Every benchmark `animed bench` runs, in order.
+pub fn sections() -> Vec<Section> {
+    vec![
+        Section {
+            name: "pixels",
+            about: "full-screen layers, 3-light per-pixel Blinn-Phong",
+            run: bench_pixels,
+        },
+        Section {
+            name: "triangles",
+            about: "100k small lit triangles covering the screen",
+            run: bench_triangles,
+        },
+        Section {
+            name: "demo",
+            about: "the bundled demo scene",
+            run: bench_demo,
+        },
+    ]
+}
+
+pub fn run(args: Args) -> i32 {
+    let threads = if args.threads == 0 {
+        rayon::current_num_threads()
+    } else {
+        args.threads
+    };
+    println!(
+        "animed bench: {}x{}, {threads} thread(s), release build: {}",
+        args.size.0,
+        args.size.1,
+        !cfg!(debug_assertions)
+    );
+    let mut code = 0;
+    for s in sections() {
+        if args.only.as_deref().is_some_and(|o| !s.name.contains(o)) {
+            continue;
+        }
+        println!("{} — {}", s.name, s.about);
+        match (s.run)(&args) {
+            Ok(lines) => lines.iter().for_each(|l| println!("  {l}")),
+            Err(e) => {
+                println!("  failed: {e}");
+                code = 1;
+            }
+        }
+    }
+    code
+}
+
+/// Runs `f` once to warm up, then repeatedly for at least `seconds` (and at
+/// least 3 times); returns the median time of one run.
+pub fn time_it(seconds: f64, mut f: impl FnMut()) -> Duration {
+    f();
+    let mut times = Vec::new();
+    let start = Instant::now();
+    while times.len() < 3 || start.elapsed().as_secs_f64() < seconds {
+        let t = Instant::now();
+        f();
+        times.push(t.elapsed());
+        if times.len() >= 1000 {
+            break;
+        }
+    }
+    times.sort();
+    times[times.len() / 2]
+}
+
+fn render_scene_time(scene: &Scene, args: &Args) -> Duration {
+    let (w, h) = args.size;
+    let spec = FrameSpec {
+        width: w,
+        height: h,
+        headlight: Headlight::Off,
+        threads: args.threads,
+        ..FrameSpec::default()
+    };
+    let pose = crate::anim::evaluate(scene, 0.0);
+    let aspect = w as f32 / h as f32;
+    let view = crate::render::job::view_for(
+        scene,
+        &pose,
+        crate::render::job::find_camera(scene, None).ok().flatten(),
+        aspect,
+    );
+    let opts = crate::render::job::options_for(scene, &spec);
+    time_it(args.seconds, || {
+        std::hint::black_box(render(scene, &pose, &view, &opts));
+    })
+}
+
+fn bench_pixels(args: &Args) -> Result<Vec<String>, String> {
+    let (w, h) = args.size;
+    let mpix = w as f64 * h as f64 / 1e6;
+    let aspect = w as f32 / h as f32;
+    let mut out = Vec::new();
+    for layers in [1usize, 8] {
+        let t = render_scene_time(&bench_scenes::layers(layers, aspect), args).as_secs_f64();
+        out.push(format!(
+            "{layers} layer(s): {:.2} ms/frame, {:.0} Mpix/s drawn ({:.0} Mpix/s shaded, once per visible pixel)",
+            t * 1e3,
+            layers as f64 * mpix / t,
+            mpix / t
+        ));
+    }
+    Ok(out)
+}
+
+fn bench_triangles(args: &Args) -> Result<Vec<String>, String> {
+    let aspect = args.size.0 as f32 / args.size.1 as f32;
+    let scene = bench_scenes::small_triangles(100_000, aspect);
+    let n = scene.meshes[0].triangles.len();
+    let t = render_scene_time(&scene, args).as_secs_f64();
+    Ok(vec![format!(
+        "{n} triangles: {:.2} ms/frame, {:.2} Mtri/s (whole frame incl. shading every pixel)",
+        t * 1e3,
+        n as f64 / 1e6 / t
+    )])
+}
+
+fn bench_demo(args: &Args) -> Result<Vec<String>, String> {
+    let demo = crate::format::demo().map_err(|e| e.to_string())?.scene;
+    let (w, h) = args.size;
+    let spec = FrameSpec {
+        width: w,
+        height: h,
+        threads: args.threads,
+        ..FrameSpec::default()
+    };
+    let mut err = None;
+    let t = time_it(args.seconds, || {
+        // Includes animation evaluation and camera choice, like a played frame.
+        if let Err(e) = render_at(&demo, &spec, 1.0) {
+            err = Some(e);
+        }
+    });
+    if let Some(e) = err {
+        return Err(e);
+    }
+    Ok(vec![format!(
+        "{:.2} ms/frame ({:.0} frames/s)",
+        t.as_secs_f64() * 1e3,
+        1.0 / t.as_secs_f64()
+    )])
 }

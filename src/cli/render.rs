@@ -1,10 +1,217 @@
-//! `animed render`: render a scene (or the bundled demo) to png, a png sequence or a gif.
+//! `animed render`: render a scene (or the bundled demo) to PNG.
+//!
+//! Structure for other outputs (PNG sequences, GIF, shards): [`prepare`]
+//! turns the arguments into a [`Job`] (loaded scene + [`FrameSpec`] + time);
+//! `render::job::render_at(&job.scene, &job.spec, t)` draws any frame of it;
+//! [`save_png_atomic`] writes one. `run` is just those three in a row.
 
-/// Render a scene (or the bundled demo) to PNG, a PNG sequence or a GIF.
-#[derive(clap::Args, Debug)]
-pub struct Args {}
+use crate::format::{self, LoadError, Loaded};
+use crate::render::job::{render_at, FrameSpec, Headlight};
+use crate::render::Frame;
+use crate::scene::{RenderStyle, Scene};
+use glam::Vec3;
+use std::path::{Path, PathBuf};
 
-pub fn run(_args: Args) -> i32 {
-    eprintln!("animed render: not built yet");
-    2
+/// Render a scene (or the bundled demo) to PNG.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Args {
+    /// Scene file (.wrl, .wrl.gz, .iv, .obj). Without it: the bundled demo scene.
+    pub file: Option<PathBuf>,
+    /// Output PNG.
+    #[arg(short, long, default_value = "out.png")]
+    pub output: PathBuf,
+    /// Picture size, WIDTHxHEIGHT.
+    #[arg(long, default_value = "640x480", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// Camera to look through: a viewpoint description or camera node name
+    /// (default: the first camera; with none, frame the whole scene).
+    #[arg(long)]
+    pub viewpoint: Option<String>,
+    /// Draw every object as filled, lines, points (overrides the file).
+    #[arg(long, value_parser = parse_style)]
+    pub style: Option<RenderStyle>,
+    /// Background colour r,g,b in 0..1 (default: the scene's).
+    #[arg(long, value_parser = parse_rgb)]
+    pub bg: Option<Vec3>,
+    /// Headlight: on, off or auto (VRML97: NavigationInfo.headlight; other
+    /// formats: on).
+    #[arg(long, default_value = "auto", value_parser = parse_headlight)]
+    pub headlight: Headlight,
+    /// Worker threads (0 = all cores); the picture is the same for any count.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// Time in seconds at which to evaluate the animation.
+    #[arg(long, conflicts_with = "frame")]
+    pub time: Option<f32>,
+    /// Frame number at which to evaluate the animation (uses the scene's fps).
+    #[arg(long)]
+    pub frame: Option<f32>,
+}
+
+/// A loaded scene and everything needed to draw frames of it.
+pub struct Job {
+    pub scene: Scene,
+    pub spec: FrameSpec,
+    /// Seconds (from `--time`, or `--frame` / fps; 0 by default).
+    pub time: f32,
+    pub output: PathBuf,
+    /// Name of the input for messages ("assets/demo.wrl" for the demo).
+    pub source: PathBuf,
+}
+
+/// Loads `file`, or the bundled demo when `None`.
+pub fn load_scene(file: Option<&Path>) -> Result<Loaded, LoadError> {
+    match file {
+        Some(p) => format::load(p),
+        None => format::demo(),
+    }
+}
+
+/// Loads the scene and resolves the arguments; warnings go to stderr.
+/// Errors are ready to print (`path:line:column: message` for bad files).
+pub fn prepare(args: &Args) -> Result<Job, String> {
+    let loaded = load_scene(args.file.as_deref()).map_err(|e| e.to_string())?;
+    for w in &loaded.warnings {
+        eprintln!("warning: {w}");
+    }
+    let scene = loaded.scene;
+    let (width, height) = args.size;
+    let time = match (args.time, args.frame) {
+        (Some(t), _) => t,
+        (None, Some(f)) => f / scene.settings.fps.max(1e-6),
+        (None, None) => 0.0,
+    };
+    if !time.is_finite() {
+        return Err(format!("time {time} is not a finite number"));
+    }
+    let spec = FrameSpec {
+        width,
+        height,
+        viewpoint: args.viewpoint.clone(),
+        style: args.style,
+        background: args.bg,
+        headlight: args.headlight,
+        threads: args.threads,
+    };
+    // Fail early on a bad --viewpoint, before any frame is drawn.
+    crate::render::job::find_camera(&scene, spec.viewpoint.as_deref())?;
+    Ok(Job {
+        scene,
+        spec,
+        time,
+        output: args.output.clone(),
+        source: args
+            .file
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("assets/demo.wrl")),
+    })
+}
+
+pub fn run(args: Args) -> i32 {
+    let result = prepare(&args).and_then(|job| {
+        let frame = render_at(&job.scene, &job.spec, job.time)?;
+        save_png_atomic(&frame, &job.output).map_err(|e| format!("{}: {e}", job.output.display()))
+    });
+    match result {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("animed render: {e}");
+            1
+        }
+    }
+}
+
+/// Writes `frame` as PNG next to `path`, then renames it into place, so a
+/// reader never sees a half-written file.
+pub fn save_png_atomic(frame: &Frame, path: &Path) -> Result<(), String> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".partial");
+    let tmp = PathBuf::from(tmp);
+    image::save_buffer_with_format(
+        &tmp,
+        &frame.to_rgba8(),
+        frame.width,
+        frame.height,
+        image::ExtendedColorType::Rgba8,
+        image::ImageFormat::Png,
+    )
+    .map_err(|e| e.to_string())?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        e.to_string()
+    })
+}
+
+/// Parses `WIDTHxHEIGHT` (each 1..=16384).
+pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("size {s:?} is not WIDTHxHEIGHT"))?;
+    let side = |v: &str| -> Result<u32, String> {
+        let n: u32 = v
+            .trim()
+            .parse()
+            .map_err(|_| format!("size {s:?}: {v:?} is not a whole number"))?;
+        if n == 0 || n > crate::render::MAX_SIDE {
+            return Err(format!(
+                "size {s:?}: each side must be 1..={}",
+                crate::render::MAX_SIDE
+            ));
+        }
+        Ok(n)
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+pub fn parse_style(s: &str) -> Result<RenderStyle, String> {
+    match s.to_ascii_lowercase().as_str() {
+        "filled" | "fill" => Ok(RenderStyle::Filled),
+        "lines" | "line" | "wireframe" => Ok(RenderStyle::Lines),
+        "points" | "point" => Ok(RenderStyle::Points),
+        "hidden" => Ok(RenderStyle::Hidden),
+        _ => Err(format!("style {s:?} is not filled, lines or points")),
+    }
+}
+
+/// Parses `r,g,b` with components in 0..1.
+pub fn parse_rgb(s: &str) -> Result<Vec3, String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.len() != 3 {
+        return Err(format!("colour {s:?} is not r,g,b"));
+    }
+    let mut c = [0.0f32; 3];
+    for (k, p) in parts.iter().enumerate() {
+        let v: f32 = p
+            .trim()
+            .parse()
+            .map_err(|_| format!("colour {s:?}: {p:?} is not a number"))?;
+        if !(0.0..=1.0).contains(&v) {
+            return Err(format!("colour {s:?}: components must be in 0..1"));
+        }
+        c[k] = v;
+    }
+    Ok(Vec3::from_array(c))
+}
+
+pub fn parse_headlight(s: &str) -> Result<Headlight, String> {
+    Headlight::parse(s).ok_or_else(|| format!("headlight {s:?} is not on, off or auto"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_arguments() {
+        assert_eq!(parse_size("320x240"), Ok((320, 240)));
+        assert!(parse_size("0x10").is_err());
+        assert!(parse_size("99999x10").is_err());
+        assert!(parse_size("abc").is_err());
+        assert_eq!(parse_rgb("0,0.5,1"), Ok(Vec3::new(0.0, 0.5, 1.0)));
+        assert!(parse_rgb("0,2,1").is_err());
+        assert!(parse_rgb("0,1").is_err());
+        assert_eq!(parse_style("LINES"), Ok(RenderStyle::Lines));
+        assert!(parse_style("dots").is_err());
+        assert_eq!(parse_headlight("off"), Ok(Headlight::Off));
+    }
 }

@@ -6,11 +6,23 @@ pub mod gzip;
 pub mod inline;
 pub mod iv;
 pub mod lexer;
+pub mod obj;
 pub mod polygons;
 pub mod syntax;
 pub mod vrml97;
 
 pub use error::LoadError;
+
+pub mod keynote;
+pub mod sampling;
+pub mod save;
+mod write_anim;
+mod write_iv;
+pub mod write_plan;
+mod write_text;
+mod write_vrml97;
+
+pub use save::{save, InventorVersion, OutputFormat, SaveError, WriteOptions, WriteReport};
 
 use crate::scene::Scene;
 use std::path::Path;
@@ -38,7 +50,10 @@ pub(crate) fn load_nested(path: &Path, depth: usize) -> Result<Loaded, LoadError
 /// Loads a file's contents; `path` names it in messages and resolves
 /// relative references (Inline, File, mtllib).
 pub fn load_bytes(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
-    load_bytes_nested(bytes, path, 0)
+    let mut loaded = load_bytes_nested(bytes, path, 0)?;
+    // animed's own key note, if the file has one, replaces the sampled tracks.
+    keynote::apply_to_loaded(&mut loaded, path);
+    Ok(loaded)
 }
 
 fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
@@ -46,6 +61,10 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
         let plain = gzip::decompress(bytes, gzip::MAX_DECOMPRESSED)
             .map_err(|m| LoadError::new(path, 0, 0, m))?;
         return load_bytes_nested(&plain, path, depth);
+    }
+    // OBJ has no header line to detect it by: go by the name.
+    if obj::is_obj_path(path) {
+        return obj::read(bytes, path);
     }
     let header = lexer::read_header(bytes)
         .map_err(|e| LoadError::new(path, e.pos.line, e.pos.column, e.message))?;

@@ -2,18 +2,35 @@
 //! VRML97 lighting, deterministic tiled threading.
 //!
 //! API contract used by the CLI, the editor and the viewer:
-//! `render(scene, pose, view, opts) -> Frame`. (Bodies are placeholders until
-//! the rasteriser lands.)
+//! `render(scene, pose, view, opts) -> Frame`.
+//!
+//! Pipeline (one file per stage):
+//! `prepare` (gather shapes/lights, transform, `clip`, project, cull, snap to
+//! the fixed-point grid) → binning into [`raster::TILE`]² tiles →
+//! `raster::draw_tile` per tile on the thread pool (depth pass, then one
+//! `shade` call per visible pixel, then lines/points, then transparent
+//! triangles back to front) → copy tiles into the [`Frame`].
+//! Every pixel belongs to exactly one tile and every tile draws its
+//! primitives in scene order, so the bytes never depend on the thread count.
 
+pub mod bench_scenes;
+mod clip;
 mod frame;
+pub mod job;
+mod prepare;
+mod raster;
+mod shade;
 mod view;
 
-pub use frame::Frame;
-pub use view::View;
+pub use frame::{pack_rgb, Frame};
+pub use shade::{ShadeMaterial, WorldLight};
+pub use view::{bounding_sphere, scene_bounds, View};
 
 use crate::anim::Pose;
 use crate::scene::{RenderStyle, Scene};
 use glam::Vec3;
+use rayon::prelude::*;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Everything about a render that is not the scene or the camera.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,7 +59,115 @@ impl Default for RenderOptions {
     }
 }
 
+/// Largest picture side accepted; bigger requests are clamped so a typo
+/// cannot allocate gigabytes.
+pub const MAX_SIDE: u32 = 16384;
+
 /// Draws `pose` of `scene` seen through `view`.
-pub fn render(_scene: &Scene, _pose: &Pose, _view: &View, opts: &RenderOptions) -> Frame {
-    Frame::new(opts.width, opts.height, opts.background)
+pub fn render(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) -> Frame {
+    let mut opts = opts.clone();
+    opts.width = opts.width.min(MAX_SIDE);
+    opts.height = opts.height.min(MAX_SIDE);
+    let mut frame = Frame::new(opts.width, opts.height, opts.background);
+    if opts.width == 0 || opts.height == 0 {
+        return frame;
+    }
+    let pool = thread_pool(opts.threads);
+    pool.install(|| {
+        let prepared = prepare::prepare(scene, pose, view, &opts);
+        draw(&prepared, &opts, view.eye, &mut frame);
+    });
+    frame
+}
+
+/// Bins the prepared primitives into tiles, draws the tiles in parallel and
+/// copies them into `frame`.
+fn draw(p: &prepare::Prepared, opts: &RenderOptions, eye: Vec3, frame: &mut Frame) {
+    let (w, h) = (opts.width as i32, opts.height as i32);
+    let tiles_x = (w + raster::TILE - 1) / raster::TILE;
+    let tiles_y = (h + raster::TILE - 1) / raster::TILE;
+    let mut bins = vec![raster::Bin::default(); (tiles_x * tiles_y) as usize];
+    fn bin_all(
+        bins: &mut [raster::Bin],
+        tiles_x: i32,
+        boxes: impl Iterator<Item = [i32; 4]>,
+        pick: fn(&mut raster::Bin) -> &mut Vec<u32>,
+    ) {
+        for (i, b) in boxes.enumerate() {
+            let (tx0, ty0) = (b[0] / raster::TILE, b[1] / raster::TILE);
+            let (tx1, ty1) = ((b[2] - 1) / raster::TILE, (b[3] - 1) / raster::TILE);
+            for ty in ty0..=ty1 {
+                for tx in tx0..=tx1 {
+                    pick(&mut bins[(ty * tiles_x + tx) as usize]).push(i as u32);
+                }
+            }
+        }
+    }
+    bin_all(&mut bins, tiles_x, p.opaque.iter().map(|t| t.bbox), |b| {
+        &mut b.opaque
+    });
+    bin_all(
+        &mut bins,
+        tiles_x,
+        p.transparent.iter().map(|t| t.bbox),
+        |b| &mut b.transparent,
+    );
+    bin_all(&mut bins, tiles_x, p.lines.iter().map(|l| l.bbox), |b| {
+        &mut b.lines
+    });
+    bin_all(&mut bins, tiles_x, p.points.iter().map(|q| q.bbox), |b| {
+        &mut b.points
+    });
+
+    let background = opts.background;
+    let tiles: Vec<raster::TileOut> = bins
+        .par_iter()
+        .enumerate()
+        .map(|(i, bin)| {
+            let (tx, ty) = (i as i32 % tiles_x, i as i32 / tiles_x);
+            let rect = [
+                tx * raster::TILE,
+                ty * raster::TILE,
+                ((tx + 1) * raster::TILE).min(w),
+                ((ty + 1) * raster::TILE).min(h),
+            ];
+            raster::draw_tile(p, bin, rect, background, eye)
+        })
+        .collect();
+    for t in tiles {
+        let tw = (t.rect[2] - t.rect[0]) as usize;
+        for (row, y) in (t.rect[1]..t.rect[3]).enumerate() {
+            let dst = y as usize * w as usize + t.rect[0] as usize;
+            let src = row * tw;
+            for k in 0..tw {
+                frame.color[dst + k] = pack_rgb(t.color[src + k]);
+            }
+            frame.depth[dst..dst + tw].copy_from_slice(&t.depth[src..src + tw]);
+            frame.ids[dst..dst + tw].copy_from_slice(&t.ids[src..src + tw]);
+        }
+    }
+}
+
+/// A rayon pool per requested thread count, built once and reused (the
+/// editor renders every frame; building a pool each time costs more than a
+/// small frame).
+fn thread_pool(threads: usize) -> Arc<rayon::ThreadPool> {
+    type Pools = Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>>;
+    static POOLS: OnceLock<Pools> = OnceLock::new();
+    let pools = POOLS.get_or_init(|| Mutex::new(Vec::new()));
+    // A poisoned lock only means another render panicked; the pools are fine.
+    let mut pools = pools.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
+        return p.clone();
+    }
+    let pool = Arc::new(
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            // Building a pool fails only when the OS refuses to spawn threads;
+            // nothing sensible can be drawn then.
+            .expect("cannot start render threads"),
+    );
+    pools.push((threads, pool.clone()));
+    pool
 }

@@ -300,7 +300,7 @@ fn crease_normals(n_pos: usize, faces: &[Vec<u32>], fnorm: &[Vec3], crease: f32)
         }
     }
     // Compare cosines; a small slack keeps exactly coplanar faces together at crease 0.
-    let cos_crease = crease.cos() - 1e-5;
+    let cos_crease = libm::cosf(crease) - 1e-5;
     let mut out = Vec::with_capacity(faces.iter().map(|f| f.len()).sum());
     for (f, face) in faces.iter().enumerate() {
         let nf = fnorm[f];

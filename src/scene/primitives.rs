@@ -48,7 +48,7 @@ pub fn sphere(radius: f32) -> Mesh {
     for i in 0..=STACKS {
         let phi = PI * i as f32 / STACKS as f32;
         for j in 0..=SEGMENTS {
-            let n = around(j, phi.sin(), phi.cos());
+            let n = around(j, libm::sinf(phi), libm::cosf(phi));
             m.positions.push(n * radius);
             m.normals.push(n);
         }
@@ -109,7 +109,7 @@ pub fn cone(bottom_radius: f32, height: f32, side: bool, bottom: bool) -> Mesh {
         let slant = Vec3::new(height, bottom_radius, height);
         let normal_at = |j: f32| {
             let t = TAU * j / SEGMENTS as f32;
-            (Vec3::new(t.sin(), 1.0, t.cos()) * slant).normalize_or_zero()
+            (Vec3::new(libm::sinf(t), 1.0, libm::cosf(t)) * slant).normalize_or_zero()
         };
         for j in 0..SEGMENTS {
             let base = m.positions.len() as u32;
@@ -146,7 +146,7 @@ fn named(name: &str) -> Mesh {
 /// `ring` scales x/z, `y` is the height.
 fn around(j: u32, ring: f32, y: f32) -> Vec3 {
     let t = TAU * (j % SEGMENTS) as f32 / SEGMENTS as f32;
-    Vec3::new(ring * t.sin(), y, ring * t.cos())
+    Vec3::new(ring * libm::sinf(t), y, ring * libm::cosf(t))
 }
 
 /// A flat disc at height `y` facing +y (`up`) or −y.

@@ -1,0 +1,584 @@
+//! The VRML97 writer (ISO/IEC 14772-1): the whole scene, its animation as
+//! one looping TimeSensor driving linear interpolators through ROUTEs, and
+//! the authored keys in a WorldInfo key note (see `keynote`).
+//!
+//! * Each scene node is a `Transform` (or just its content when the
+//!   transform is the identity and nothing animates it; see `write_plan`).
+//! * Shapes: `IndexedFaceSet` with per-vertex normals and colours,
+//!   `IndexedLineSet`, `PointSet`; shared meshes and materials are DEF/USE.
+//! * The clock: `TimeSensor { cycleInterval = duration / fps, loop TRUE }`;
+//!   key fractions are `frame / duration`.
+//! * Interpolators are sampled adaptively (`sampling`), visibility and light
+//!   `on` are folded into scale and intensity (`write_anim`).
+//! * Not in VRML97, so kept only in the key note: spot `dropOffRate`,
+//!   render styles, orthographic cameras (written as a Viewpoint).
+
+use super::keynote;
+use super::sampling::{per_frame_keys, Tolerances};
+use super::save::{ChannelReport, WriteOptions, WriteReport};
+use super::write_anim::{channels, scene_diagonal, Channel};
+use super::write_plan::WritePlan;
+use super::write_text::{num, quoted, rotation, rows, vec3, Out};
+use crate::anim::{Property, TargetRef, Value};
+use crate::scene::{
+    Camera, CameraKind, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene, Shape, Transform,
+};
+use glam::{Quat, Vec3};
+
+struct Writer<'a> {
+    scene: &'a Scene,
+    plan: WritePlan,
+    out: Out,
+    written_materials: Vec<bool>,
+    written_meshes: Vec<bool>,
+    report: WriteReport,
+}
+
+/// Prints `scene` as a VRML97 file.
+pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
+    let mut w = Writer {
+        scene,
+        plan: WritePlan::new(scene),
+        out: Out::default(),
+        written_materials: vec![false; scene.materials.len()],
+        written_meshes: vec![false; scene.meshes.len()],
+        report: WriteReport::default(),
+    };
+    w.out.line("#VRML V2.0 utf8");
+    w.out
+        .line("# Written by animed. The animation plays from one looping TimeSensor");
+    w.out
+        .line("# through linear interpolators sampled from the authored curves; node");
+    w.out
+        .line("# visibility is played as scale 0, light on/off as intensity 0. The");
+    w.out
+        .line("# authored keys are in the WorldInfo below (the animed key note).");
+    w.world_info();
+    if let Some(h) = scene.settings.headlight {
+        w.out.line(&format!(
+            "NavigationInfo {{ headlight {} }}",
+            if h { "TRUE" } else { "FALSE" }
+        ));
+    }
+    w.out.line(&format!(
+        "Background {{ skyColor [ {} ] }}",
+        vec3(scene.settings.background)
+    ));
+    for &root in &scene.roots {
+        w.node(root);
+    }
+    w.animation(opts);
+    (w.out.text, w.report)
+}
+
+fn def(name: &Option<String>) -> String {
+    match name {
+        Some(n) => format!("DEF {n} "),
+        None => String::new(),
+    }
+}
+
+fn bool_word(b: bool) -> &'static str {
+    if b {
+        "TRUE"
+    } else {
+        "FALSE"
+    }
+}
+
+impl Writer<'_> {
+    fn world_info(&mut self) {
+        let note = keynote::write(self.scene, &self.plan);
+        let mut strings: Vec<String> = self.scene.info.iter().map(|s| quoted(s)).collect();
+        strings.push(quoted(&note));
+        self.out.open("WorldInfo");
+        self.out.list("info", strings);
+        self.out.close("}");
+    }
+
+    fn has_track(&self, id: NodeId, p: Property) -> bool {
+        self.scene
+            .animation
+            .tracks
+            .iter()
+            .any(|t| t.target.of == TargetRef::Node(id) && t.target.property == p)
+    }
+
+    fn node(&mut self, id: NodeId) {
+        let i = id.0 as usize;
+        let node = self.scene.node(id);
+        if !self.plan.wrapped[i] {
+            self.content(id);
+            return;
+        }
+        let mut closes = 0;
+        if let Some(m) = node.transform.extra {
+            // VRML97 has no matrix node: an outer Transform with the
+            // matrix's scale, rotation and translation (shear is lost).
+            let (s, r, t) = m.to_scale_rotation_translation();
+            self.report.warnings.push(format!(
+                "node `{}`: a raw matrix was written as translation/rotation/scale (shear, if any, is lost)",
+                node.name
+            ));
+            self.out.open("Transform");
+            self.transform_fields(&Transform {
+                translation: t,
+                rotation: r,
+                scale: s,
+                ..Default::default()
+            });
+            self.out.line("children [");
+            self.out.depth += 1;
+            closes += 1;
+        }
+        let head = format!("{}Transform", def(&self.plan.wrapper[i]));
+        self.out.open(&head);
+        self.transform_fields(&node.transform);
+        let has_content = !matches!(node.kind, NodeKind::Group);
+        if has_content || !node.children.is_empty() {
+            self.out.line("children [");
+            self.out.depth += 1;
+            if has_content {
+                self.content(id);
+            }
+            for &c in &self.scene.node(id).children {
+                self.node(c);
+            }
+            self.out.close("]");
+        }
+        self.out.close("}");
+        for _ in 0..closes {
+            self.out.close("]");
+            self.out.close("}");
+        }
+    }
+
+    fn transform_fields(&mut self, t: &Transform) {
+        let d = Transform::default();
+        if t.translation != d.translation {
+            self.out
+                .line(&format!("translation {}", vec3(t.translation)));
+        }
+        if t.rotation != d.rotation {
+            self.out.line(&format!("rotation {}", rotation(t.rotation)));
+        }
+        if t.scale != d.scale {
+            self.out.line(&format!("scale {}", vec3(t.scale)));
+        }
+        if t.scale_orientation != d.scale_orientation {
+            self.out.line(&format!(
+                "scaleOrientation {}",
+                rotation(t.scale_orientation)
+            ));
+        }
+        if t.center != d.center {
+            self.out.line(&format!("center {}", vec3(t.center)));
+        }
+    }
+
+    fn content(&mut self, id: NodeId) {
+        let i = id.0 as usize;
+        let name = self.plan.content[i].clone();
+        let node = self.scene.node(id);
+        match &node.kind {
+            NodeKind::Group => {}
+            NodeKind::Shape(s) => self.shape(&name, s),
+            NodeKind::Light(l) => {
+                let force_on = self.has_track(id, Property::LightOn);
+                self.light(&name, l, force_on);
+            }
+            NodeKind::Camera(c) => self.viewpoint(&name, c, &node.name),
+        }
+    }
+
+    fn shape(&mut self, name: &Option<String>, s: &Shape) {
+        let Some(mesh) = self.scene.meshes.get(s.mesh.0 as usize) else {
+            self.report
+                .warnings
+                .push(format!("a shape refers to missing mesh {}", s.mesh.0));
+            return;
+        };
+        let parts = [
+            !mesh.triangles.is_empty(),
+            !mesh.lines.is_empty(),
+            !mesh.points.is_empty(),
+        ];
+        let many = parts.iter().filter(|p| **p).count() > 1;
+        if many {
+            self.out.open(&format!("{}Group", def(name)));
+            self.out.line("children [");
+            self.out.depth += 1;
+        }
+        let mut kinds: Vec<usize> = (0..3).filter(|&k| parts[k]).collect();
+        if kinds.is_empty() {
+            kinds.push(0);
+        }
+        for (n, k) in kinds.into_iter().enumerate() {
+            let head = if many {
+                "Shape".to_string()
+            } else {
+                format!("{}Shape", def(name))
+            };
+            self.out.open(&head);
+            self.appearance(s);
+            match k {
+                0 if !mesh.triangles.is_empty() => self.face_set(s, mesh, n == 0),
+                1 => self.line_set(mesh),
+                2 => self.point_set(mesh),
+                _ => {}
+            }
+            self.out.close("}");
+        }
+        if many {
+            self.out.close("]");
+            self.out.close("}");
+        }
+    }
+
+    fn appearance(&mut self, s: &Shape) {
+        let mi = s.material.0 as usize;
+        let Some(m) = self.scene.materials.get(mi) else {
+            return;
+        };
+        let name = self.plan.materials[mi].clone();
+        if let (Some(n), true) = (&name, self.written_materials[mi]) {
+            self.out
+                .line(&format!("appearance Appearance {{ material USE {n} }}"));
+            return;
+        }
+        self.written_materials[mi] = true;
+        self.out.open("appearance Appearance");
+        self.out.open(&format!("material {}Material", def(&name)));
+        material_fields(&mut self.out, m);
+        self.out.close("}");
+        self.out.close("}");
+    }
+
+    fn face_set(&mut self, s: &Shape, mesh: &Mesh, can_def: bool) {
+        let mi = s.mesh.0 as usize;
+        let name = if can_def {
+            self.plan.meshes[mi].clone()
+        } else {
+            None
+        };
+        if let (Some(n), true) = (&name, self.written_meshes[mi]) {
+            self.out.line(&format!("geometry USE {n}"));
+            return;
+        }
+        if can_def {
+            self.written_meshes[mi] = true;
+        }
+        self.out
+            .open(&format!("geometry {}IndexedFaceSet", def(&name)));
+        if !mesh.solid {
+            self.out.line("solid FALSE");
+        }
+        self.coords(&mesh.positions);
+        if !mesh.normals.is_empty() && mesh.normals.len() == mesh.positions.len() {
+            self.out.open("normal Normal");
+            self.out
+                .list("vector", rows(&mesh.normals, 4, |v| vec3(*v), ","));
+            self.out.close("}");
+        }
+        self.colors(mesh);
+        self.out.list(
+            "coordIndex",
+            rows(
+                &mesh.triangles,
+                4,
+                |t| format!("{}, {}, {}, -1", t[0], t[1], t[2]),
+                ",",
+            ),
+        );
+        self.out.close("}");
+    }
+
+    fn line_set(&mut self, mesh: &Mesh) {
+        self.out.open("geometry IndexedLineSet");
+        self.coords(&mesh.positions);
+        self.colors(mesh);
+        self.out.list(
+            "coordIndex",
+            rows(&mesh.lines, 6, |l| format!("{}, {}, -1", l[0], l[1]), ","),
+        );
+        self.out.close("}");
+    }
+
+    fn point_set(&mut self, mesh: &Mesh) {
+        let pick = |v: &[Vec3]| -> Vec<Vec3> {
+            mesh.points
+                .iter()
+                .filter_map(|&i| v.get(i as usize).copied())
+                .collect()
+        };
+        self.out.open("geometry PointSet");
+        self.coords(&pick(&mesh.positions));
+        if !mesh.colors.is_empty() {
+            self.out.open("color Color");
+            self.out
+                .list("color", rows(&pick(&mesh.colors), 4, |v| vec3(*v), ","));
+            self.out.close("}");
+        }
+        self.out.close("}");
+    }
+
+    fn coords(&mut self, p: &[Vec3]) {
+        self.out.open("coord Coordinate");
+        self.out.list("point", rows(p, 4, |v| vec3(*v), ","));
+        self.out.close("}");
+    }
+
+    fn colors(&mut self, mesh: &Mesh) {
+        if !mesh.colors.is_empty() && mesh.colors.len() == mesh.positions.len() {
+            self.out.open("color Color");
+            self.out
+                .list("color", rows(&mesh.colors, 4, |v| vec3(*v), ","));
+            self.out.close("}");
+        }
+    }
+
+    fn light(&mut self, name: &Option<String>, l: &Light, force_on: bool) {
+        let kind = match l.kind {
+            LightKind::Directional => "DirectionalLight",
+            LightKind::Point => "PointLight",
+            LightKind::Spot { .. } => "SpotLight",
+        };
+        self.out.open(&format!("{}{kind}", def(name)));
+        self.out
+            .line(&format!("on {}", bool_word(l.on || force_on)));
+        self.out.line(&format!("intensity {}", num(l.intensity)));
+        self.out
+            .line(&format!("ambientIntensity {}", num(l.ambient_intensity)));
+        self.out.line(&format!("color {}", vec3(l.color)));
+        if !matches!(l.kind, LightKind::Directional) {
+            self.out.line(&format!("location {}", vec3(l.location)));
+        }
+        if !matches!(l.kind, LightKind::Point) {
+            self.out.line(&format!("direction {}", vec3(l.direction)));
+        }
+        if !matches!(l.kind, LightKind::Directional) {
+            self.out
+                .line(&format!("attenuation {}", vec3(l.attenuation)));
+            self.out.line(&format!("radius {}", num(l.radius)));
+        }
+        if let LightKind::Spot {
+            beam_width,
+            cut_off_angle,
+            drop_off_rate,
+        } = l.kind
+        {
+            self.out.line(&format!("beamWidth {}", num(beam_width)));
+            self.out
+                .line(&format!("cutOffAngle {}", num(cut_off_angle)));
+            if drop_off_rate != 0.0 {
+                self.report.warnings.push(format!(
+                    "spot light {}: dropOffRate {} has no VRML97 field (other viewers use beamWidth)",
+                    name.as_deref().unwrap_or("(unnamed)"),
+                    drop_off_rate
+                ));
+            }
+        }
+        self.out.close("}");
+    }
+
+    fn viewpoint(&mut self, name: &Option<String>, c: &Camera, node_name: &str) {
+        self.out.open(&format!("{}Viewpoint", def(name)));
+        self.out.line(&format!("position {}", vec3(c.position)));
+        self.out
+            .line(&format!("orientation {}", rotation(c.orientation)));
+        match c.kind {
+            CameraKind::Perspective { height_angle } => {
+                self.out.line(&format!("fieldOfView {}", num(height_angle)));
+            }
+            CameraKind::Orthographic { .. } => self.report.warnings.push(format!(
+                "camera `{node_name}` is orthographic; VRML97 has only perspective viewpoints"
+            )),
+        }
+        if !c.description.is_empty() {
+            self.out
+                .line(&format!("description {}", quoted(&c.description)));
+        }
+        self.out.close("}");
+    }
+
+    fn animation(&mut self, opts: &WriteOptions) {
+        let scene = self.scene;
+        let duration = scene.settings.duration;
+        let fps = scene.settings.fps;
+        if scene.animation.tracks.is_empty() && !scene.nodes.iter().any(|n| !n.visible) {
+            return;
+        }
+        let tol = Tolerances::new(scene_diagonal(scene), opts.tolerance, opts.angle_tolerance);
+        let chans = channels(scene, &tol);
+        if chans.is_empty() {
+            return;
+        }
+        if !(duration > 0.0 && fps > 0.0) {
+            self.report.warnings.push(
+                "duration or fps is not positive: no interpolators written (keys are in the note)"
+                    .into(),
+            );
+            return;
+        }
+        let clock = self.plan.internal("_animed_clock");
+        self.out.line(&format!(
+            "DEF {clock} TimeSensor {{ cycleInterval {} loop TRUE }}",
+            num(duration / fps)
+        ));
+        let mut routes = Vec::new();
+        for ch in &chans {
+            let Some(field) = self.route_field(ch) else {
+                continue;
+            };
+            let Some((_, target)) = self.plan.target_name(ch.of, ch.property) else {
+                continue;
+            };
+            let target = target.to_string();
+            let (kind, values): (&str, Vec<String>) = match ch.samples[0].1 {
+                Value::Rotation(_) => (
+                    "OrientationInterpolator",
+                    ch.samples
+                        .iter()
+                        .map(|s| match s.1 {
+                            Value::Rotation(q) => rotation(q),
+                            _ => rotation(Quat::IDENTITY),
+                        })
+                        .collect(),
+                ),
+                Value::Vec3(_) => (
+                    if is_color(ch.property) {
+                        "ColorInterpolator"
+                    } else {
+                        "PositionInterpolator"
+                    },
+                    ch.samples
+                        .iter()
+                        .map(|s| match s.1 {
+                            Value::Vec3(v) => vec3(v),
+                            _ => vec3(Vec3::ZERO),
+                        })
+                        .collect(),
+                ),
+                Value::Scalar(_) => (
+                    "ScalarInterpolator",
+                    ch.samples
+                        .iter()
+                        .map(|s| match s.1 {
+                            Value::Scalar(x) => num(x),
+                            _ => num(0.0),
+                        })
+                        .collect(),
+                ),
+                Value::Bool(_) => continue,
+            };
+            let interp = self.plan.internal(&format!("{target}_{field}"));
+            self.out.open(&format!("DEF {interp} {kind}"));
+            let keys: Vec<f32> = ch.samples.iter().map(|s| s.0 / duration).collect();
+            self.out.list("key", rows(&keys, 8, |k| num(*k), ","));
+            self.out
+                .list("keyValue", rows(&values, 4, |v| v.clone(), ","));
+            self.out.close("}");
+            routes.push(format!(
+                "ROUTE {clock}.fraction_changed TO {interp}.set_fraction"
+            ));
+            routes.push(format!(
+                "ROUTE {interp}.value_changed TO {target}.set_{field}"
+            ));
+            self.report.channels.push(ChannelReport {
+                name: format!("{target}.{field}"),
+                authored_keys: ch.authored_keys,
+                written_keys: ch.samples.len(),
+                per_frame_keys: per_frame_keys(duration),
+            });
+        }
+        for r in routes {
+            self.out.line(&r);
+        }
+    }
+
+    /// The VRML97 field a channel drives, or `None` (with a warning) when
+    /// the target has no such field.
+    fn route_field(&mut self, ch: &Channel) -> Option<&'static str> {
+        let kind = match ch.of {
+            TargetRef::Node(id) => Some(&self.scene.node(id).kind),
+            TargetRef::Material(_) => None,
+        };
+        let spot = matches!(
+            kind,
+            Some(NodeKind::Light(Light {
+                kind: LightKind::Spot { .. },
+                ..
+            }))
+        );
+        let light = matches!(kind, Some(NodeKind::Light(_)));
+        let directional = matches!(
+            kind,
+            Some(NodeKind::Light(Light {
+                kind: LightKind::Directional,
+                ..
+            }))
+        );
+        let point = matches!(
+            kind,
+            Some(NodeKind::Light(Light {
+                kind: LightKind::Point,
+                ..
+            }))
+        );
+        let perspective = matches!(
+            kind,
+            Some(NodeKind::Camera(Camera {
+                kind: CameraKind::Perspective { .. },
+                ..
+            }))
+        );
+        let camera = matches!(kind, Some(NodeKind::Camera(_)));
+        let f = match ch.property {
+            Property::Translation => Some("translation"),
+            Property::Rotation => Some("rotation"),
+            Property::Scale => Some("scale"),
+            Property::LightIntensity if light => Some("intensity"),
+            Property::LightColor if light => Some("color"),
+            Property::LightLocation if light && !directional => Some("location"),
+            Property::LightDirection if light && !point => Some("direction"),
+            Property::LightCutOff if spot => Some("cutOffAngle"),
+            Property::LightBeamWidth if spot => Some("beamWidth"),
+            Property::CameraPosition if camera => Some("position"),
+            Property::CameraOrientation if camera => Some("orientation"),
+            Property::CameraFov if perspective => Some("fieldOfView"),
+            Property::Diffuse => Some("diffuseColor"),
+            Property::Emissive => Some("emissiveColor"),
+            Property::Specular => Some("specularColor"),
+            Property::Transparency => Some("transparency"),
+            Property::Shininess => Some("shininess"),
+            _ => None,
+        };
+        if f.is_none() {
+            let who = self
+                .plan
+                .target_name(ch.of, ch.property)
+                .map_or("(unnamed)".to_string(), |(_, n)| n.to_string());
+            self.report.warnings.push(format!(
+                "{who}.{}: no VRML97 field plays it (kept in the key note only)",
+                ch.property.name()
+            ));
+        }
+        f
+    }
+}
+
+fn is_color(p: Property) -> bool {
+    matches!(
+        p,
+        Property::LightColor | Property::Diffuse | Property::Emissive | Property::Specular
+    )
+}
+
+fn material_fields(out: &mut Out, m: &Material) {
+    out.line(&format!("diffuseColor {}", vec3(m.diffuse)));
+    out.line(&format!("ambientIntensity {}", num(m.ambient_intensity)));
+    out.line(&format!("specularColor {}", vec3(m.specular)));
+    out.line(&format!("emissiveColor {}", vec3(m.emissive)));
+    out.line(&format!("shininess {}", num(m.shininess)));
+    out.line(&format!("transparency {}", num(m.transparency)));
+}

@@ -1,0 +1,152 @@
+//! Rendering one frame of a scene the way `animed render` does: choose the
+//! camera (named viewpoint, else the first camera, else Coin's view-all),
+//! decide the headlight, evaluate the animation at a time and draw.
+//! The CLI, GIF/sequence output and sharded rendering all call
+//! [`render_at`], so every frame they write is the same picture.
+
+use super::{render, Frame, RenderOptions, View};
+use crate::anim::{evaluate, Pose};
+use crate::scene::{NodeId, RenderStyle, Scene, SourceFormat};
+use glam::Vec3;
+
+/// `--headlight on|off|auto`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Headlight {
+    On,
+    Off,
+    /// VRML97: NavigationInfo.headlight (default on); every other format:
+    /// on, as the examiner viewers do.
+    #[default]
+    Auto,
+}
+
+impl Headlight {
+    pub fn parse(s: &str) -> Option<Headlight> {
+        match s.to_ascii_lowercase().as_str() {
+            "on" | "true" | "1" => Some(Headlight::On),
+            "off" | "false" | "0" => Some(Headlight::Off),
+            "auto" => Some(Headlight::Auto),
+            _ => None,
+        }
+    }
+
+    /// Whether the headlight shines for `scene`.
+    pub fn resolve(self, scene: &Scene) -> bool {
+        match self {
+            Headlight::On => true,
+            Headlight::Off => false,
+            // Only VRML97 readers set `settings.headlight` (NavigationInfo);
+            // other formats leave it `None` and get the examiner headlight.
+            Headlight::Auto => match scene.format {
+                SourceFormat::Vrml97 => scene.settings.headlight.unwrap_or(true),
+                _ => true,
+            },
+        }
+    }
+}
+
+/// What to draw, independent of time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameSpec {
+    pub width: u32,
+    pub height: u32,
+    /// Camera description or node name; `None` = first camera, else view-all.
+    pub viewpoint: Option<String>,
+    pub style: Option<RenderStyle>,
+    /// `None` = the scene's background.
+    pub background: Option<Vec3>,
+    pub headlight: Headlight,
+    /// 0 = all cores; never changes the picture.
+    pub threads: usize,
+}
+
+impl Default for FrameSpec {
+    fn default() -> Self {
+        FrameSpec {
+            width: 640,
+            height: 480,
+            viewpoint: None,
+            style: None,
+            background: None,
+            headlight: Headlight::Auto,
+            threads: 0,
+        }
+    }
+}
+
+/// The camera node a spec asks for: `Ok(None)` means "no camera, view all".
+/// A name that matches nothing is an error listing the cameras there are.
+pub fn find_camera(scene: &Scene, name: Option<&str>) -> Result<Option<NodeId>, String> {
+    let cameras: Vec<NodeId> = scene
+        .walk()
+        .into_iter()
+        .filter(|&id| scene.node(id).camera().is_some())
+        .collect();
+    let Some(name) = name else {
+        return Ok(cameras.first().copied());
+    };
+    let matches = |id: &NodeId| {
+        let n = scene.node(*id);
+        n.camera().is_some_and(|c| c.description == name) || n.name == name
+    };
+    if let Some(id) = cameras.iter().find(|id| matches(id)) {
+        return Ok(Some(*id));
+    }
+    let names: Vec<String> = cameras
+        .iter()
+        .map(|&id| {
+            let n = scene.node(id);
+            let d = n.camera().map(|c| c.description.as_str()).unwrap_or("");
+            if d.is_empty() {
+                format!("{:?}", n.name)
+            } else {
+                format!("{d:?}")
+            }
+        })
+        .collect();
+    Err(if names.is_empty() {
+        format!("no viewpoint named {name:?}: the scene has no cameras")
+    } else {
+        format!(
+            "no viewpoint named {name:?}; the scene has {}",
+            names.join(", ")
+        )
+    })
+}
+
+/// The view through `camera` (animated values from `pose`), or view-all.
+pub fn view_for(scene: &Scene, pose: &Pose, camera: Option<NodeId>, aspect: f32) -> View {
+    if let Some(id) = camera {
+        let cam = pose.camera(id).or_else(|| scene.node(id).camera());
+        if let Some(cam) = cam {
+            let world = pose
+                .world
+                .get(id.0 as usize)
+                .copied()
+                .unwrap_or(glam::Mat4::IDENTITY);
+            return View::for_scene(cam, world, aspect, scene, pose);
+        }
+    }
+    View::view_all(scene, pose, aspect)
+}
+
+/// The render options a spec means for `scene`.
+pub fn options_for(scene: &Scene, spec: &FrameSpec) -> RenderOptions {
+    RenderOptions {
+        width: spec.width,
+        height: spec.height,
+        threads: spec.threads,
+        style_override: spec.style,
+        headlight: spec.headlight.resolve(scene),
+        background: spec.background.unwrap_or(scene.settings.background),
+    }
+}
+
+/// Renders `scene` at `time` seconds as `spec` says.
+pub fn render_at(scene: &Scene, spec: &FrameSpec, time: f32) -> Result<Frame, String> {
+    let camera = find_camera(scene, spec.viewpoint.as_deref())?;
+    let pose = evaluate(scene, time);
+    let aspect = spec.width.max(1) as f32 / spec.height.max(1) as f32;
+    let view = view_for(scene, &pose, camera, aspect);
+    Ok(render(scene, &pose, &view, &options_for(scene, spec)))
+}

@@ -1,0 +1,445 @@
+//! From a posed scene to screen-space primitives: gather the visible shapes
+//! with their material and lights, transform vertices, clip, project, cull,
+//! and snap to the fixed-point grid. Everything here is per primitive and
+//! order-preserving, so it can run in parallel without changing the result.
+
+use super::clip::{self, ClipVert, ATTRS};
+use super::shade::{ShadeMaterial, WorldLight};
+use super::{RenderOptions, View};
+use crate::anim::Pose;
+use crate::scene::{Material, Mesh, NodeId, NodeKind, RenderStyle, Scene};
+use glam::{Mat3, Mat4, Vec3, Vec4};
+use rayon::prelude::*;
+
+/// Sub-pixel bits of the fixed-point screen coordinates.
+pub const SUBPIXEL_BITS: u32 = 8;
+pub const SUBPIXEL: i64 = 1 << SUBPIXEL_BITS;
+/// Screen coordinates stay within ±2^20 pixels (guard band), so edge
+/// function products fit easily in i64.
+const MAX_SCREEN: f32 = (1 << 20) as f32;
+
+/// One drawn shape: what every pixel of it needs besides its attributes.
+#[derive(Clone, Debug)]
+pub struct Item {
+    /// `NodeId.0 + 1` for the id buffer.
+    pub id: u32,
+    pub material: ShadeMaterial,
+    pub lights: Vec<WorldLight>,
+    /// Lines/points without normals: colour is used as is.
+    pub unlit: bool,
+}
+
+/// A screen-space triangle, oriented so its edge functions are positive
+/// inside (see `raster`).
+#[derive(Clone, Debug)]
+pub struct Tri {
+    /// Fixed-point (SUBPIXEL) screen coordinates, y down.
+    pub x: [i64; 3],
+    pub y: [i64; 3],
+    /// Window depth 0..1 (linear in screen space).
+    pub z: [f32; 3],
+    pub inv_w: [f32; 3],
+    pub attr: [[f32; ATTRS]; 3],
+    pub item: u32,
+    /// Seen from behind (non-solid shape): normals are flipped when shading.
+    pub back: bool,
+    /// Pixel bounding box, inclusive min, exclusive max, clamped to the frame.
+    pub bbox: [i32; 4],
+}
+
+/// A screen-space line segment.
+#[derive(Clone, Debug)]
+pub struct Line {
+    pub x: [f32; 2],
+    pub y: [f32; 2],
+    pub z: [f32; 2],
+    pub inv_w: [f32; 2],
+    pub attr: [[f32; ATTRS]; 2],
+    pub item: u32,
+    pub bbox: [i32; 4],
+}
+
+/// A screen-space point (drawn as a small square).
+#[derive(Clone, Debug)]
+pub struct Point {
+    pub z: f32,
+    pub attr: [f32; ATTRS],
+    pub item: u32,
+    pub bbox: [i32; 4],
+}
+
+/// Side of the square a point covers, in pixels.
+pub const POINT_SIZE: i32 = 2;
+
+/// Everything the tiles draw, in drawing order.
+#[derive(Default)]
+pub struct Prepared {
+    pub items: Vec<Item>,
+    pub opaque: Vec<Tri>,
+    /// Sorted back to front.
+    pub transparent: Vec<Tri>,
+    pub lines: Vec<Line>,
+    pub points: Vec<Point>,
+}
+
+struct Screen {
+    w: f32,
+    h: f32,
+    guard: f32,
+}
+
+impl Screen {
+    /// Clip space → (screen x, screen y, depth, 1/w).
+    fn project(&self, c: Vec4) -> (f32, f32, f32, f32) {
+        let iw = 1.0 / c.w;
+        (
+            (c.x * iw * 0.5 + 0.5) * self.w,
+            (0.5 - c.y * iw * 0.5) * self.h,
+            c.z * iw * 0.5 + 0.5,
+            iw,
+        )
+    }
+}
+
+/// Prepares a frame's primitives.
+pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) -> Prepared {
+    let screen = Screen {
+        w: opts.width as f32,
+        h: opts.height as f32,
+        guard: MAX_SCREEN / opts.width.max(opts.height).max(1) as f32,
+    };
+    let view_proj = view.proj * view.view;
+    let lights = gather_lights(scene, pose);
+    let headlight = opts
+        .headlight
+        .then(|| WorldLight::headlight(view.forward()));
+
+    let mut out = Prepared::default();
+    for node_id in scene.walk() {
+        let i = node_id.0 as usize;
+        let node = &scene.nodes[i];
+        let NodeKind::Shape(shape) = &node.kind else {
+            continue;
+        };
+        if !pose.visible.get(i).copied().unwrap_or(node.visible) {
+            continue;
+        }
+        let style = opts.style_override.unwrap_or(node.style);
+        if style == RenderStyle::Hidden {
+            continue;
+        }
+        let Some(mesh) = scene.meshes.get(shape.mesh.0 as usize) else {
+            continue;
+        };
+        let default_material = Material::default();
+        let material = pose
+            .materials
+            .get(shape.material.0 as usize)
+            .or_else(|| scene.materials.get(shape.material.0 as usize))
+            .unwrap_or(&default_material);
+        let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+
+        let mut item_lights: Vec<WorldLight> = lights
+            .iter()
+            .filter(|(scope, _)| scope.is_none_or(|s| is_ancestor(scene, s, node_id)))
+            .map(|(_, l)| l.clone())
+            .collect();
+        item_lights.extend(headlight.clone());
+        let has_normals = mesh.normals.len() == mesh.positions.len();
+        let smat = ShadeMaterial::new(material);
+        let item = out.items.len() as u32;
+
+        let verts = transform_vertices(mesh, world, view_proj, material, has_normals);
+        match style {
+            RenderStyle::Filled => {
+                let tris = setup_triangles(mesh, &verts, item, &screen, opts);
+                if smat.alpha < 1.0 {
+                    out.transparent.extend(tris);
+                } else {
+                    out.opaque.extend(tris);
+                }
+                push_lines(&mut out.lines, &mesh.lines, &verts, item, &screen);
+                push_points(&mut out.points, &mesh.points, &verts, item, &screen);
+            }
+            RenderStyle::Lines => {
+                let mut edges: Vec<[u32; 2]> = Vec::with_capacity(mesh.triangles.len() * 3);
+                for t in &mesh.triangles {
+                    edges.extend([[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]]);
+                }
+                edges.extend(&mesh.lines);
+                push_lines(&mut out.lines, &edges, &verts, item, &screen);
+                push_points(&mut out.points, &mesh.points, &verts, item, &screen);
+            }
+            RenderStyle::Points | RenderStyle::Hidden => {
+                let all: Vec<u32> = (0..mesh.positions.len() as u32).collect();
+                push_points(&mut out.points, &all, &verts, item, &screen);
+            }
+        }
+        out.items.push(Item {
+            id: node_id.0 + 1,
+            material: smat,
+            lights: item_lights,
+            unlit: !has_normals,
+        });
+    }
+    // Back to front by mean depth; the stable sort keeps scene order on ties.
+    out.transparent
+        .sort_by(|a, b| mean(&b.z).total_cmp(&mean(&a.z)));
+    out
+}
+
+fn mean(z: &[f32; 3]) -> f32 {
+    (z[0] + z[1] + z[2]) / 3.0
+}
+
+/// Lights in world space with their scope: `Some(parent)` for a scoped
+/// DirectionalLight (lights only `parent`'s descendants), `None` = global.
+fn gather_lights(scene: &Scene, pose: &Pose) -> Vec<(Option<NodeId>, WorldLight)> {
+    let mut out = Vec::new();
+    for (id, light) in &pose.lights {
+        let i = id.0 as usize;
+        // A light under a hidden group (Inventor Switch) does not shine.
+        if !pose.visible.get(i).copied().unwrap_or(true) {
+            continue;
+        }
+        let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        if let Some(wl) = WorldLight::new(light, world) {
+            let scope = if light.scoped {
+                scene.nodes.get(i).and_then(|n| n.parent)
+            } else {
+                None
+            };
+            out.push((scope, wl));
+        }
+    }
+    out
+}
+
+fn is_ancestor(scene: &Scene, ancestor: NodeId, mut node: NodeId) -> bool {
+    // Bounded by the node count so a malformed parent cycle cannot hang.
+    for _ in 0..scene.nodes.len() {
+        match scene.nodes.get(node.0 as usize).and_then(|n| n.parent) {
+            Some(p) if p == ancestor => return true,
+            Some(p) => node = p,
+            None => return false,
+        }
+    }
+    false
+}
+
+/// Object → clip space, plus world position, world normal and colour.
+fn transform_vertices(
+    mesh: &Mesh,
+    world: Mat4,
+    view_proj: Mat4,
+    material: &Material,
+    has_normals: bool,
+) -> Vec<ClipVert> {
+    let mvp = view_proj * world;
+    let normal_m = Mat3::from_mat4(world).inverse().transpose();
+    let has_colors = mesh.colors.len() == mesh.positions.len();
+    // Unlit geometry (lines/points without normals) shows its own colour or
+    // the material's emissive colour (VRML97 IndexedLineSet/PointSet).
+    let base = if has_normals {
+        material.diffuse
+    } else {
+        material.emissive
+    };
+    mesh.positions
+        .par_iter()
+        .enumerate()
+        .map(|(k, &p)| {
+            let wp = world.transform_point3(p);
+            let n = if has_normals {
+                (normal_m * mesh.normals[k]).normalize_or_zero()
+            } else {
+                Vec3::ZERO
+            };
+            let c = if has_colors { mesh.colors[k] } else { base };
+            ClipVert {
+                clip: mvp * p.extend(1.0),
+                attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z],
+            }
+        })
+        .collect()
+}
+
+fn setup_triangles(
+    mesh: &Mesh,
+    verts: &[ClipVert],
+    item: u32,
+    screen: &Screen,
+    opts: &RenderOptions,
+) -> Vec<Tri> {
+    let n = verts.len();
+    let cull = mesh.solid;
+    let (w, h) = (opts.width as i32, opts.height as i32);
+    mesh.triangles
+        .par_iter()
+        .flat_map_iter(|t| {
+            let mut out = Vec::new();
+            if t.iter().any(|&i| i as usize >= n) {
+                return out.into_iter();
+            }
+            let tri = [
+                verts[t[0] as usize],
+                verts[t[1] as usize],
+                verts[t[2] as usize],
+            ];
+            if clip::outside_one(&tri, screen.guard) {
+                return out.into_iter();
+            }
+            let poly = if clip::inside_all(&tri, screen.guard) {
+                tri.to_vec()
+            } else {
+                clip::clip_polygon(&tri, screen.guard)
+            };
+            // Fan the (convex) clipped polygon.
+            for k in 1..poly.len().saturating_sub(1) {
+                if let Some(tri) =
+                    screen_triangle([&poly[0], &poly[k], &poly[k + 1]], item, cull, screen, w, h)
+                {
+                    out.push(tri);
+                }
+            }
+            out.into_iter()
+        })
+        .collect()
+}
+
+fn screen_triangle(
+    v: [&ClipVert; 3],
+    item: u32,
+    cull: bool,
+    screen: &Screen,
+    w: i32,
+    h: i32,
+) -> Option<Tri> {
+    let mut x = [0i64; 3];
+    let mut y = [0i64; 3];
+    let mut z = [0f32; 3];
+    let mut inv_w = [0f32; 3];
+    for k in 0..3 {
+        let (sx, sy, sz, iw) = screen.project(v[k].clip);
+        if !(sx.is_finite() && sy.is_finite() && sz.is_finite()) {
+            return None;
+        }
+        x[k] = (sx * SUBPIXEL as f32).round() as i64;
+        y[k] = (sy * SUBPIXEL as f32).round() as i64;
+        z[k] = sz;
+        inv_w[k] = iw;
+    }
+    let area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    if area == 0 {
+        return None;
+    }
+    // Counter-clockwise in the picture (y up) is negative here (y down).
+    let back = area > 0;
+    if back && cull {
+        return None;
+    }
+    let mut attr = [v[0].attr, v[1].attr, v[2].attr];
+    if area < 0 {
+        x.swap(1, 2);
+        y.swap(1, 2);
+        z.swap(1, 2);
+        inv_w.swap(1, 2);
+        attr.swap(1, 2);
+    }
+    let px = |f: i64| (f >> SUBPIXEL_BITS) as i32;
+    let bbox = [
+        px(*x.iter().min()?).max(0),
+        px(*y.iter().min()?).max(0),
+        (px(*x.iter().max()?) + 1).min(w),
+        (px(*y.iter().max()?) + 1).min(h),
+    ];
+    if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
+        return None;
+    }
+    Some(Tri {
+        x,
+        y,
+        z,
+        inv_w,
+        attr,
+        item,
+        back,
+        bbox,
+    })
+}
+
+fn push_lines(out: &mut Vec<Line>, edges: &[[u32; 2]], verts: &[ClipVert], item: u32, s: &Screen) {
+    let n = verts.len();
+    for e in edges {
+        if e[0] as usize >= n || e[1] as usize >= n {
+            continue;
+        }
+        let Some((a, b)) =
+            clip::clip_segment(&verts[e[0] as usize], &verts[e[1] as usize], s.guard)
+        else {
+            continue;
+        };
+        let (ax, ay, az, aw) = s.project(a.clip);
+        let (bx, by, bz, bw) = s.project(b.clip);
+        if ![ax, ay, az, bx, by, bz].iter().all(|v| v.is_finite()) {
+            continue;
+        }
+        let bbox = [
+            (ax.min(bx).floor() as i32 - 1).max(0),
+            (ay.min(by).floor() as i32 - 1).max(0),
+            (ax.max(bx).ceil() as i32 + 1).min(s.w as i32),
+            (ay.max(by).ceil() as i32 + 1).min(s.h as i32),
+        ];
+        if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
+            continue;
+        }
+        out.push(Line {
+            x: [ax, bx],
+            y: [ay, by],
+            z: [az, bz],
+            inv_w: [aw, bw],
+            attr: [a.attr, b.attr],
+            item,
+            bbox,
+        });
+    }
+}
+
+fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], item: u32, s: &Screen) {
+    for &i in idx {
+        let Some(v) = verts.get(i as usize) else {
+            continue;
+        };
+        let c = v.clip;
+        if c.z < -c.w || c.z > c.w || c.w <= 0.0 {
+            continue;
+        }
+        let (x, y, z, _) = s.project(c);
+        if !(x.is_finite() && y.is_finite())
+            || x < -4.0
+            || y < -4.0
+            || x > s.w + 4.0
+            || y > s.h + 4.0
+        {
+            continue;
+        }
+        // The POINT_SIZE × POINT_SIZE pixels whose centres are nearest.
+        let x0 = (x - POINT_SIZE as f32 * 0.5).round() as i32;
+        let y0 = (y - POINT_SIZE as f32 * 0.5).round() as i32;
+        let bbox = [
+            x0.max(0),
+            y0.max(0),
+            (x0 + POINT_SIZE).min(s.w as i32),
+            (y0 + POINT_SIZE).min(s.h as i32),
+        ];
+        if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
+            continue;
+        }
+        out.push(Point {
+            z,
+            attr: v.attr,
+            item,
+            bbox,
+        });
+    }
+}

@@ -1,0 +1,141 @@
+//! The renderer's output does not depend on the thread count, nor on the
+//! build profile.
+//!
+//! Build-profile check: `goldens/release_*.png` were written by the
+//! *release* binary (`tests/release-goldens.sh`, which runs
+//! `cargo run --release -- render …`). The tests here render the same
+//! frames in the test profile (a different optimisation level) and through
+//! the test-profile binary, and require the exact same bytes. Regenerate
+//! them with that script whenever the renderer's output changes on purpose.
+
+#[path = "common/golden.rs"]
+mod golden;
+
+use animed::render::job::{render_at, FrameSpec, Headlight};
+use animed::render::Frame;
+use animed::scene::RenderStyle;
+use std::path::PathBuf;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn same(a: &Frame, b: &Frame) -> bool {
+    a.color == b.color
+        && a.ids == b.ids
+        && a.depth
+            .iter()
+            .map(|d| d.to_bits())
+            .eq(b.depth.iter().map(|d| d.to_bits()))
+}
+
+/// The demo (three light types, transparency, specular) and the oak in
+/// lines style, at a size that is not a multiple of the tile, drawn with
+/// 1, 2 and 7 threads: byte-identical colour, depth and ids.
+#[test]
+fn thread_count_never_changes_the_picture() {
+    let demo = animed::format::demo().expect("bundled demo loads").scene;
+    let oak = animed::format::load(&root().join("tests/data/oak_leafless.obj"))
+        .unwrap()
+        .scene;
+    let cases = [
+        (&demo, None, 2.5f32),
+        (&oak, Some(RenderStyle::Lines), 0.0),
+        (&oak, Some(RenderStyle::Points), 0.0),
+    ];
+    for (scene, style, time) in cases {
+        let spec = |threads| FrameSpec {
+            width: 333,
+            height: 201,
+            style,
+            threads,
+            ..FrameSpec::default()
+        };
+        let one = render_at(scene, &spec(1), time).unwrap();
+        assert!(one.ids.iter().any(|&i| i != 0), "something was drawn");
+        for threads in [2, 7] {
+            let n = render_at(scene, &spec(threads), time).unwrap();
+            assert!(
+                same(&one, &n),
+                "{threads} threads differ from 1 ({style:?})"
+            );
+        }
+    }
+}
+
+/// The frames `tests/release-goldens.sh` writes with the release binary.
+fn release_cases() -> Vec<(&'static str, FrameSpec)> {
+    let base = FrameSpec {
+        width: 200,
+        height: 150,
+        headlight: Headlight::On,
+        threads: 2,
+        ..FrameSpec::default()
+    };
+    vec![
+        ("release_oak", base.clone()),
+        (
+            "release_oak_lines",
+            FrameSpec {
+                style: Some(RenderStyle::Lines),
+                ..base
+            },
+        ),
+    ]
+}
+
+#[test]
+fn test_profile_matches_release_binary_exactly() {
+    let oak = animed::format::load(&root().join("tests/data/oak_leafless.obj"))
+        .unwrap()
+        .scene;
+    for (name, spec) in release_cases() {
+        let frame = render_at(&oak, &spec, 0.0).unwrap();
+        golden::check_exact_external(name, &frame);
+    }
+}
+
+/// The CLI binary of this build writes the same bytes as the release one.
+#[test]
+fn cli_binary_matches_release_binary_exactly() {
+    let out_dir = root().join("target").join("render-determinism");
+    std::fs::create_dir_all(&out_dir).unwrap();
+    for (name, style) in [("release_oak", "filled"), ("release_oak_lines", "lines")] {
+        let out = out_dir.join(format!("{name}.png"));
+        let status = std::process::Command::new(env!("CARGO_BIN_EXE_animed"))
+            .args(["render", "tests/data/oak_leafless.obj", "--size", "200x150"])
+            .args([
+                "--headlight",
+                "on",
+                "--threads",
+                "2",
+                "--style",
+                style,
+                "-o",
+            ])
+            .arg(&out)
+            .current_dir(root())
+            .status()
+            .unwrap();
+        assert!(status.success());
+        let got = image::open(&out).unwrap().to_rgb8();
+        let want = image::open(golden::golden_path(name)).unwrap().to_rgb8();
+        assert!(
+            got == want,
+            "{name}: the CLI's picture differs from the release binary's"
+        );
+    }
+}
+
+/// The demo scene golden (tolerant). When `assets/demo.wrl` changes on
+/// purpose, rerun with UPDATE_GOLDENS=1 and look at the picture.
+#[test]
+fn demo_scene() {
+    let demo = animed::format::demo().expect("bundled demo loads").scene;
+    let spec = FrameSpec {
+        width: 320,
+        height: 240,
+        ..FrameSpec::default()
+    };
+    golden::check("demo", &render_at(&demo, &spec, 0.0).unwrap());
+}

@@ -1,0 +1,133 @@
+//! The VRML97 writer, checked on scenes built in code.
+mod writers_common;
+
+use animed::format::save::{to_bytes, OutputFormat};
+use animed::format::WriteOptions;
+use animed::scene::{Node, Scene};
+use std::collections::HashSet;
+use std::io::Read as _;
+
+fn vrml(s: &Scene) -> String {
+    let (b, _) = to_bytes(s, OutputFormat::Vrml97, &WriteOptions::default());
+    String::from_utf8(b).unwrap()
+}
+
+/// Names after `DEF`.
+fn defs(text: &str) -> Vec<String> {
+    let words: Vec<&str> = text.split_whitespace().collect();
+    words
+        .windows(2)
+        .filter(|w| w[0] == "DEF")
+        .map(|w| w[1].to_string())
+        .collect()
+}
+
+#[test]
+fn demo_scene_has_every_part_and_routes_to_defined_names() {
+    let text = vrml(&writers_common::demo_scene());
+    assert!(text.starts_with("#VRML V2.0 utf8\n"));
+    for needle in [
+        "WorldInfo {",
+        "\"animed-keys 1\nfps 24\nduration 48\n",
+        "Background { skyColor [ 0.1 0.1 0.2 ] }",
+        "DEF Cam Viewpoint {",
+        "description \"Front\"",
+        "DEF Lamp PointLight {",
+        "DEF Spot SpotLight {",
+        "cutOffAngle 0.7853982",
+        "DEF Spinner Transform {",
+        "DEF Red Material {",
+        "geometry DEF CubeMesh IndexedFaceSet {",
+        "geometry USE CubeMesh",
+        "DEF _animed_clock TimeSensor { cycleInterval 2 loop TRUE }",
+        "OrientationInterpolator",
+        "ColorInterpolator",
+        "ScalarInterpolator",
+        "ROUTE Blinker_scale.value_changed TO Blinker.set_scale",
+        "ROUTE Lamp_intensity.value_changed TO Lamp.set_intensity",
+        "ROUTE Red_diffuseColor.value_changed TO Red.set_diffuseColor",
+        "ROUTE Cam_position.value_changed TO Cam.set_position",
+        "ROUTE Spot_cutOffAngle.value_changed TO Spot.set_cutOffAngle",
+    ] {
+        assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+    }
+    let names: HashSet<String> = defs(&text).into_iter().collect();
+    for line in text.lines().filter(|l| l.starts_with("ROUTE ")) {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        for end in [w[1], w[3]] {
+            let node = end.split('.').next().unwrap();
+            assert!(names.contains(node), "{line}: {node} is not DEF'd");
+        }
+    }
+}
+
+#[test]
+fn def_names_are_unique_even_when_the_scene_repeats_them() {
+    let mut s = writers_common::demo_scene();
+    s.add_node(None, Node::group("Spinner"));
+    s.add_node(None, Node::group("Spinner"));
+    s.add_node(None, Node::group("bad name!"));
+    let text = vrml(&s);
+    let d = defs(&text);
+    let unique: HashSet<&String> = d.iter().collect();
+    assert_eq!(unique.len(), d.len(), "{d:?}");
+    assert!(d.contains(&"Spinner_1".to_string()));
+    assert!(d.contains(&"Spinner_2".to_string()));
+    assert!(d.contains(&"bad_name_".to_string()));
+}
+
+#[test]
+fn writing_is_deterministic_and_gzip_holds_the_same_text() {
+    let s = writers_common::demo_scene();
+    let a = vrml(&s);
+    assert_eq!(a, vrml(&s));
+    let (gz, _) = to_bytes(&s, OutputFormat::Vrml97Gz, &WriteOptions::default());
+    assert_eq!(&gz[..2], &[0x1f, 0x8b]);
+    let mut text = String::new();
+    flate2::read::GzDecoder::new(&gz[..])
+        .read_to_string(&mut text)
+        .unwrap();
+    assert_eq!(text, a);
+}
+
+#[test]
+fn interpolator_keys_run_from_0_to_1_and_match_their_values() {
+    let text = vrml(&writers_common::demo_scene());
+    // Every interpolator: key count == keyValue count, keys non-decreasing in [0, 1].
+    let mut n = 0;
+    for block in text.split("Interpolator {").skip(1) {
+        let field = |name: &str| -> Vec<String> {
+            let start = block.find(&format!("{name} [")).unwrap() + name.len() + 2;
+            let end = start + block[start..].find(']').unwrap();
+            block[start..end]
+                .split(',')
+                .map(|s| s.trim().to_string())
+                .filter(|s| !s.is_empty())
+                .collect()
+        };
+        let keys: Vec<f32> = field("key").iter().map(|k| k.parse().unwrap()).collect();
+        let values = field("keyValue");
+        assert_eq!(keys.len(), values.len());
+        assert_eq!(keys[0], 0.0);
+        assert_eq!(*keys.last().unwrap(), 1.0);
+        assert!(keys.windows(2).all(|w| w[0] <= w[1]), "{keys:?}");
+        n += 1;
+    }
+    assert_eq!(n, 7);
+}
+
+#[test]
+fn hidden_node_plays_as_scale_zero() {
+    let mut s = writers_common::demo_scene();
+    s.animation.tracks.clear();
+    let id = s.find_node("Spinner").unwrap();
+    s.node_mut(id).visible = false;
+    let text = vrml(&s);
+    assert!(text.contains("hidden Spinner\n"));
+    assert!(text.contains("ROUTE Spinner_scale.value_changed TO Spinner.set_scale"));
+    let block = text
+        .split("DEF Spinner_scale PositionInterpolator")
+        .nth(1)
+        .unwrap();
+    assert!(block.contains("0 0 0,"));
+}
