@@ -6,17 +6,18 @@
 //! and every 8×8 block (the dither tile) averages to within
 //! [`MAX_BLOCK_ERR`] levels of the original per channel.
 
-use animed::output::{FrameRange, Pattern, Shard, SequenceJob};
+use animed::output::{FrameRange, Pattern, SequenceJob, Shard};
 use animed::render::Frame;
 use image::AnimationDecoder;
 
-pub const MAX_MEAN_ERR: f64 = 2.0;
-pub const MAX_BLOCK_ERR: f64 = 4.0;
-/// The same for a background through every hue (see `synthetic`): the
-/// worst blocks sit in the gamut's corners, outside the hull of the
-/// palette's box means, where no mix of palette colours can reach.
-pub const RAINBOW_MEAN_ERR: f64 = 12.0;
-pub const RAINBOW_BLOCK_ERR: f64 = 30.0;
+/// Measured 0.46 and 1.5 on this test's frames.
+pub const MAX_MEAN_ERR: f64 = 1.0;
+pub const MAX_BLOCK_ERR: f64 = 3.0;
+/// The same for a background through every hue (see `synthetic`), measured
+/// 5.7 and 9.8: the worst blocks sit in the gamut's corners, outside the
+/// hull of the palette's box means, where no mix of palette colours reaches.
+pub const RAINBOW_MEAN_ERR: f64 = 7.0;
+pub const RAINBOW_BLOCK_ERR: f64 = 12.0;
 
 /// A lit sphere (orange diffuse, white specular) moving over a
 /// blue-grey gradient: smooth shading as the renderer makes it. With
@@ -95,12 +96,8 @@ fn round_trip(rainbow: bool) -> (f64, f64) {
     let dir = std::env::temp_dir().join(format!("animed-gif-rt-{}-{rainbow}", std::process::id()));
     let path = dir.join("sub/anim.gif");
     let range = FrameRange::parse("0:0.04:12").unwrap();
-    let mut job = SequenceJob::new(
-        range,
-        Shard::default(),
-        Pattern::from_path(&path).unwrap(),
-    )
-    .unwrap();
+    let mut job =
+        SequenceJob::new(range, Shard::default(), Pattern::from_path(&path).unwrap()).unwrap();
     job.workers = 2;
     let (w, h) = (200, 150);
     let n = job.run(|t| Ok(synthetic(t / 0.44, w, h, rainbow))).unwrap();
@@ -141,15 +138,14 @@ fn every_hue_at_once_stays_within_the_loose_bound() {
 }
 
 #[test]
-fn keeping_frames_or_drawing_them_again_gives_the_same_gif() {
-    let dir = std::env::temp_dir().join(format!("animed-gif-keep-{}", std::process::id()));
+fn the_gif_is_the_same_bytes_for_any_worker_count() {
+    let dir = std::env::temp_dir().join(format!("animed-gif-workers-{}", std::process::id()));
     let range = FrameRange::parse("0:0.1:6").unwrap();
     let mut bytes = Vec::new();
-    for (name, keep, workers) in [("a.gif", usize::MAX, 1), ("b.gif", 0, 2), ("c.gif", 60_000, 2)] {
-        let path = dir.join(name);
+    for workers in [1, 2, 3] {
+        let path = dir.join(format!("w{workers}.gif"));
         let mut job =
             SequenceJob::new(range, Shard::default(), Pattern::from_path(&path).unwrap()).unwrap();
-        job.gif_keep_bytes = keep;
         job.workers = workers;
         job.run(|t| Ok(synthetic(t, 64, 48, true))).unwrap();
         bytes.push(std::fs::read(&path).unwrap());

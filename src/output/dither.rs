@@ -217,7 +217,10 @@ mod tests {
             let mean = sum as f64 / 64.0;
             // The plan's error is what is left in e after 16 steps, at most
             // half a palette step (25) spread over 16 entries.
-            assert!((mean - v as f64).abs() <= 25.0 / 16.0, "grey {v}: mean {mean}");
+            assert!(
+                (mean - v as f64).abs() <= 25.0 / 16.0,
+                "grey {v}: mean {mean}"
+            );
             let (lo, hi) = ((v / 50).min(1) as u8, (v.div_ceil(50)).min(2) as u8);
             assert!(idx.iter().all(|&i| i == lo || i == hi), "grey {v}: {idx:?}");
         }

@@ -1,7 +1,9 @@
-//! Writing an animated GIF from palette-index frames: one global palette,
-//! loops forever, and every frame after the first stores only the
-//! rectangle that changed (disposal "keep"), which is what makes a GIF of
-//! an object moving over a still background small.
+//! Writing an animated GIF: each frame carries its own palette (a local
+//! colour table), the animation loops forever, and every frame after the
+//! first stores only the rectangle whose source pixels changed (disposal
+//! "keep"), which is what makes a GIF of an object moving over a still
+//! background small — and keeps the still part from shimmering, since it is
+//! not re-quantised.
 //!
 //! The file is written beside the target and renamed into place when the
 //! last frame is in, so a reader never sees half a GIF.
@@ -22,7 +24,8 @@ pub struct GifWriter {
     width: u16,
     height: u16,
     delay: u16,
-    previous: Option<Vec<u8>>,
+    /// The previous frame's source pixels (`0x00RRGGBB`).
+    previous: Option<Vec<u32>>,
     tmp: PathBuf,
     path: PathBuf,
 }
@@ -35,23 +38,16 @@ fn gif_side(v: u32, what: &str) -> Result<u16, String> {
 }
 
 impl GifWriter {
-    /// Starts `path` (through `path.partial`) with `palette` as the global
-    /// colour table and `delay` hundredths of a second per frame.
-    pub fn create(
-        path: &Path,
-        width: u32,
-        height: u32,
-        palette: &Palette,
-        delay: u16,
-    ) -> Result<GifWriter, String> {
+    /// Starts `path` (through `path.partial`) with `delay` hundredths of a
+    /// second per frame.
+    pub fn create(path: &Path, width: u32, height: u32, delay: u16) -> Result<GifWriter, String> {
         let (w, h) = (gif_side(width, "width")?, gif_side(height, "height")?);
         let mut tmp = path.as_os_str().to_owned();
         tmp.push(".partial");
         let tmp = PathBuf::from(tmp);
         let file = File::create(&tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;
         let err = |e: gif::EncodingError| format!("{}: {e}", path.display());
-        let mut encoder =
-            gif::Encoder::new(BufWriter::new(file), w, h, &palette.to_rgb_bytes()).map_err(err)?;
+        let mut encoder = gif::Encoder::new(BufWriter::new(file), w, h, &[]).map_err(err)?;
         encoder.set_repeat(gif::Repeat::Infinite).map_err(err)?;
         Ok(GifWriter {
             encoder,
@@ -64,10 +60,15 @@ impl GifWriter {
         })
     }
 
-    /// Appends a frame of `width × height` palette indices.
-    pub fn add(&mut self, indices: Vec<u8>) -> Result<(), String> {
+    /// Appends a frame: its source pixels, their `palette` indices.
+    pub fn add(
+        &mut self,
+        pixels: Vec<u32>,
+        indices: &[u8],
+        palette: &Palette,
+    ) -> Result<(), String> {
         let (w, h) = (self.width as usize, self.height as usize);
-        if indices.len() != w * h {
+        if indices.len() != w * h || pixels.len() != w * h {
             return Err(format!(
                 "GIF frame has {} pixels, expected {}",
                 indices.len(),
@@ -76,7 +77,7 @@ impl GifWriter {
         }
         let rect = match &self.previous {
             None => [0, 0, w, h],
-            Some(prev) => changed_rect(prev, &indices, w, h),
+            Some(prev) => changed_rect(prev, &pixels, w, h),
         };
         let [x0, y0, x1, y1] = rect;
         let mut sub = Vec::with_capacity((x1 - x0) * (y1 - y0));
@@ -90,13 +91,14 @@ impl GifWriter {
             top: y0 as u16,
             width: (x1 - x0) as u16,
             height: (y1 - y0) as u16,
+            palette: Some(palette.to_rgb_bytes()),
             buffer: std::borrow::Cow::Owned(sub),
             ..gif::Frame::default()
         };
         self.encoder
             .write_frame(&frame)
             .map_err(|e| format!("{}: {e}", self.path.display()))?;
-        self.previous = Some(indices);
+        self.previous = Some(pixels);
         Ok(())
     }
 
@@ -120,7 +122,7 @@ impl GifWriter {
 
 /// The smallest rectangle `[x0, y0, x1, y1)` holding every pixel that
 /// differs; 1×1 at the origin when nothing does (a GIF frame cannot be empty).
-fn changed_rect(prev: &[u8], cur: &[u8], w: usize, h: usize) -> [usize; 4] {
+fn changed_rect<T: PartialEq>(prev: &[T], cur: &[T], w: usize, h: usize) -> [usize; 4] {
     let row_differs = |y: usize| prev[y * w..(y + 1) * w] != cur[y * w..(y + 1) * w];
     let Some(y0) = (0..h).find(|&y| row_differs(y)) else {
         return [0, 0, 1, 1];
@@ -165,14 +167,15 @@ mod tests {
         let pal = Palette {
             colours: vec![[0, 0, 0], [255, 0, 0], [0, 0, 255]],
         };
-        let mut g = GifWriter::create(&path, 4, 3, &pal, 5).unwrap();
+        let mut g = GifWriter::create(&path, 4, 3, 5).unwrap();
         let f0 = vec![0u8; 12];
         let mut f1 = f0.clone();
         f1[5] = 1;
         let mut f2 = f1.clone();
         f2[11] = 2;
+        let colours = |f: &[u8]| -> Vec<u32> { f.iter().map(|&i| i as u32).collect() };
         for f in [&f0, &f1, &f2, &f2] {
-            g.add(f.clone()).unwrap();
+            g.add(colours(f), f, &pal).unwrap();
         }
         g.finish().unwrap();
         assert!(!dir.join("t.gif.partial").exists());
@@ -200,11 +203,8 @@ mod tests {
 
     #[test]
     fn rejects_sizes_a_gif_cannot_hold() {
-        let pal = Palette {
-            colours: vec![[0, 0, 0]],
-        };
         let p = std::env::temp_dir().join("animed-never.gif");
-        let e = GifWriter::create(&p, 70000, 10, &pal, 4).err().unwrap();
+        let e = GifWriter::create(&p, 70000, 10, 4).err().unwrap();
         assert!(e.contains("1..=65535"), "{e}");
     }
 }

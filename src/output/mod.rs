@@ -29,7 +29,7 @@ use crate::scene::Scene;
 use std::path::Path;
 
 /// The range arguments of `animed render`, as typed.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct RangeArgs<'a> {
     /// `--range START:STEP:COUNT` (seconds, seconds, frames).
     pub range: Option<&'a str>,
@@ -61,7 +61,11 @@ pub fn render_range(scene: &Scene, spec: &FrameSpec, args: RangeArgs) -> Result<
             return Err("--shard needs a range: --range START:STEP:COUNT or --frames A:B".into())
         }
     };
-    let shard = args.shard.map(Shard::parse).transpose()?.unwrap_or_default();
+    let shard = args
+        .shard
+        .map(Shard::parse)
+        .transpose()?
+        .unwrap_or_default();
     let pattern = Pattern::from_path(args.output)?;
     let mut job = SequenceJob::new(range, shard, pattern)?;
     job.workers = match spec.threads {

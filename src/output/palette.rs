@@ -1,12 +1,13 @@
-//! A 256-colour palette for a whole animation: median cut over the colour
-//! histogram of every frame (Heckbert 1982, "Color image quantization for
-//! frame buffer display"), splitting each box where the two halves' summed
-//! squared error is least.
+//! A 256-colour palette for a frame: median cut over its colour histogram
+//! (Heckbert 1982, "Color image quantization for frame buffer display"),
+//! always splitting the box whose best cut (the one that leaves the two
+//! halves' summed squared error least) lowers the error most.
 //!
-//! One palette for all frames (GIF's global colour table) means a pixel
-//! that does not change keeps its palette index, so still parts of the
-//! picture never shimmer from frame to frame. Everything is integer sums
-//! and sorts, so the palette is the same on every machine.
+//! Each GIF frame gets its own palette: one palette for a whole animation
+//! whose lighting changes spreads 256 colours too thin (the demo has
+//! ~120 000 colours over 100 frames), and the dithering then mixes in
+//! far-off colours that show as coloured specks. Sums are integers and
+//! sorts total, so the palette is the same on every machine.
 
 /// Colour counts, sorted by colour (`0x00RRGGBB`).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -91,9 +92,9 @@ impl Sums {
     fn add(&mut self, (c, n): (u32, u64)) {
         let ch = channels(c);
         self.n += n;
-        for k in 0..3 {
-            self.s1[k] += n * ch[k];
-            self.s2[k] += n * ch[k] * ch[k];
+        for (k, &v) in ch.iter().enumerate() {
+            self.s1[k] += n * v;
+            self.s2[k] += n * v * v;
         }
     }
 

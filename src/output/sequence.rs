@@ -15,7 +15,6 @@ use super::pool::ordered_map;
 use super::progress::{Mode, Progress};
 use super::range::{FrameRange, Shard};
 use crate::render::Frame;
-use std::sync::Mutex;
 
 /// What kind of file(s) a pattern asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,13 +35,7 @@ pub struct SequenceJob {
     /// Frames drawn at once (each on its own thread).
     pub workers: usize,
     pub progress: Mode,
-    /// A GIF needs every frame twice (palette, then dithering): frames are
-    /// kept in memory up to this many bytes and drawn again beyond it.
-    pub gif_keep_bytes: usize,
 }
-
-/// Frames kept between the two GIF passes: 512 MiB (≈ 145 frames at 1280×720).
-pub const GIF_KEEP_BYTES: usize = 512 << 20;
 
 impl SequenceJob {
     /// Checks that the pattern, range and shard go together.
@@ -83,7 +76,6 @@ impl SequenceJob {
             kind,
             workers: 1,
             progress: Mode::Quiet,
-            gif_keep_bytes: GIF_KEEP_BYTES,
         })
     }
 
@@ -134,84 +126,42 @@ impl SequenceJob {
         let path = self.pattern.expand(0);
         create_parent(&path)?;
         let indices: Vec<u32> = (0..self.range.count).collect();
-        let n = indices.len();
-        let mut progress = Progress::new("gif pass 1/2 (palette)", n as u32, self.progress);
-
-        // Pass 1: every frame's colours → one histogram; keep frames while
-        // they fit in memory.
-        let mut hist = Histogram::default();
-        let mut kept: Vec<Option<Vec<u32>>> = vec![None; n];
-        let mut kept_bytes = 0usize;
+        let n = indices.len() as u32;
+        let mut progress = Progress::new("gif", n, self.progress);
+        let mut writer: Option<GifWriter> = None;
         let mut size: Option<(u32, u32)> = None;
+        // Each frame: draw, median-cut its own palette, dither (in
+        // parallel); then append in order.
         ordered_map(
             &indices,
             self.workers,
             2 * self.workers,
             |&i| {
                 let frame = render(self.range.time(i))?;
-                let h = Histogram::of_pixels(&frame.color);
-                Ok::<_, String>((frame, h))
+                let palette = median_cut(&Histogram::of_pixels(&frame.color), 256);
+                let idx = Ditherer::new(&palette).dither(&frame.color, frame.width as usize);
+                Ok::<_, String>((frame, palette, idx))
             },
             |i, r| {
-                let (frame, h) = r?;
+                let (frame, palette, idx) = r?;
                 check_size(&mut size, &frame)?;
-                hist.merge(&h);
-                let bytes = frame.color.len() * 4;
-                if kept_bytes + bytes <= self.gif_keep_bytes {
-                    kept_bytes += bytes;
-                    kept[i] = Some(frame.color);
-                }
+                let w = match &mut writer {
+                    Some(w) => w,
+                    None => writer.insert(GifWriter::create(
+                        &path,
+                        frame.width,
+                        frame.height,
+                        delay_centiseconds(self.range.step),
+                    )?),
+                };
+                w.add(frame.color, &idx, &palette)?;
                 progress.frame_done(&format!("frame {i} t={} s", self.range.time(i as u32)));
                 Ok(())
             },
         )?;
-        let (width, height) = size.ok_or("no frames to write")?;
-        let palette = median_cut(&hist, 256);
-        let ditherer = Ditherer::new(&palette);
-        let mut writer = GifWriter::create(
-            &path,
-            width,
-            height,
-            &palette,
-            delay_centiseconds(self.range.step),
-        )?;
-
-        // Pass 2: dither each frame (drawing it again if it was not kept)
-        // and append it in order.
-        progress.stage("gif pass 2/2 (dither + encode)", n as u32);
-        let kept = Mutex::new(kept);
-        ordered_map(
-            &indices,
-            self.workers,
-            2 * self.workers,
-            |&i| {
-                // Each slot is taken once; a poisoned lock means a worker
-                // panicked, and that panic is re-raised when the scope ends.
-                let stored = kept.lock().ok().and_then(|mut k| k[i as usize].take());
-                let colours = match stored {
-                    Some(c) => c,
-                    None => {
-                        let f = render(self.range.time(i))?;
-                        let mut s = Some((width, height));
-                        check_size(&mut s, &f)?;
-                        f.color
-                    }
-                };
-                Ok::<_, String>(ditherer.dither(&colours, width as usize))
-            },
-            |i, r| {
-                writer.add(r?)?;
-                progress.frame_done(&format!("frame {i}"));
-                Ok(())
-            },
-        )?;
-        writer.finish()?;
-        progress.finish(&format!(
-            "wrote {} ({n} frames, {} colours)",
-            path.display(),
-            palette.colours.len()
-        ));
-        Ok(n as u32)
+        writer.ok_or("no frames to write")?.finish()?;
+        progress.finish(&format!("wrote {} ({n} frames)", path.display()));
+        Ok(n)
     }
 }
 

@@ -216,7 +216,10 @@ mod tests {
         let c = project(&v, Vec3::ZERO);
         assert!(c.x.abs() < 1e-6 && c.y.abs() < 1e-6);
         // 45° vertical: a point at height tan(22.5°)·10 is at the top edge.
-        let top = project(&v, Vec3::new(0.0, std::f32::consts::FRAC_PI_8.tan() * 10.0, 0.0));
+        let top = project(
+            &v,
+            Vec3::new(0.0, std::f32::consts::FRAC_PI_8.tan() * 10.0, 0.0),
+        );
         assert!((top.y - 1.0).abs() < 1e-4, "{top}");
         assert_eq!(v.eye, Vec3::new(0.0, 0.0, 10.0));
     }
@@ -224,7 +227,10 @@ mod tests {
     #[test]
     fn fov_applies_to_the_smaller_side() {
         let v = View::from_camera(&Camera::default(), Mat4::IDENTITY, 0.5);
-        let right = project(&v, Vec3::new(std::f32::consts::FRAC_PI_8.tan() * 10.0, 0.0, 0.0));
+        let right = project(
+            &v,
+            Vec3::new(std::f32::consts::FRAC_PI_8.tan() * 10.0, 0.0, 0.0),
+        );
         assert!((right.x - 1.0).abs() < 1e-4, "{right}");
     }
 

@@ -54,10 +54,16 @@ impl Default for ViewerOptions {
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Drag {
     None,
-    Orbit { last: (f32, f32) },
-    Pan { last: (f32, f32) },
+    Orbit {
+        last: (f32, f32),
+    },
+    Pan {
+        last: (f32, f32),
+    },
     /// Dragging on the scrub bar; `resume` = play again on release.
-    Scrub { resume: bool },
+    Scrub {
+        resume: bool,
+    },
 }
 
 /// The picture of the scene last rendered, and what it was rendered for.
