@@ -1,1 +1,45 @@
-fn main() {}
+//! `cargo bench --bench render`: the same scenes as `animed bench`, at
+//! 1280×720 with all cores.
+
+use animed::anim::evaluate;
+use animed::render::job::{find_camera, view_for};
+use animed::render::{bench_scenes, render, RenderOptions};
+use animed::scene::Scene;
+use criterion::{criterion_group, criterion_main, Criterion};
+
+const W: u32 = 1280;
+const H: u32 = 720;
+
+fn frame(c: &mut Criterion, name: &str, scene: &Scene) {
+    let pose = evaluate(scene, 0.0);
+    let camera = find_camera(scene, None).ok().flatten();
+    let view = view_for(scene, &pose, camera, W as f32 / H as f32);
+    let opts = RenderOptions {
+        width: W,
+        height: H,
+        headlight: false,
+        ..RenderOptions::default()
+    };
+    c.bench_function(name, |b| b.iter(|| render(scene, &pose, &view, &opts)));
+}
+
+fn benches(c: &mut Criterion) {
+    let aspect = W as f32 / H as f32;
+    frame(c, "layers_1_3lights", &bench_scenes::layers(1, aspect));
+    frame(c, "layers_8_3lights", &bench_scenes::layers(8, aspect));
+    frame(
+        c,
+        "small_triangles_100k",
+        &bench_scenes::small_triangles(100_000, aspect),
+    );
+    if let Ok(demo) = animed::format::demo() {
+        frame(c, "demo", &demo.scene);
+    }
+}
+
+criterion_group! {
+    name = render_benches;
+    config = Criterion::default().sample_size(10);
+    targets = benches
+}
+criterion_main!(render_benches);

@@ -110,4 +110,35 @@ proptest! {
         let r = Track::new(target(Property::Shininess), Repeat::Constant, Keys::Scalar(keys));
         prop_assert_eq!(r.is_ok(), valid);
     }
+
+    #[test]
+    fn random_edits_keep_tracks_valid(ops in prop::collection::vec((0u8..3, -20.0f32..60.0, -5.0f32..5.0, -10.0f32..10.0), 1..40)) {
+        let mut t = Track::new(
+            target(Property::Transparency),
+            Repeat::Constant,
+            Keys::Scalar(vec![Key::new(0.0, 0.0)]),
+        ).unwrap();
+        for (op, frame, delta, value) in ops {
+            let before = t.clone();
+            let r = match op {
+                0 => t.set_key(frame, Value::Scalar(value)).map(|_| ()),
+                1 => {
+                    // Remove the key nearest to `frame`.
+                    let f = t.keys.frames().into_iter().min_by(|a, b| (a - frame).abs().total_cmp(&(b - frame).abs())).unwrap();
+                    t.remove_key(f)
+                }
+                _ => {
+                    let f = t.keys.frames()[(frame.abs() as usize) % t.key_count()];
+                    t.move_keys(&[f], delta)
+                }
+            };
+            prop_assert!(t.validate().is_ok(), "{:?} after op {}", t.validate(), op);
+            if r.is_err() {
+                prop_assert_eq!(&t, &before, "a failed edit changed the track");
+            }
+            if op == 0 && r.is_ok() {
+                prop_assert_eq!(t.sample(t.key(t.key_index_at(frame).unwrap()).unwrap().frame), Value::Scalar(value));
+            }
+        }
+    }
 }

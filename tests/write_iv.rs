@@ -24,14 +24,14 @@ fn v2_has_scene_engines_and_note() {
         "DEF Lamp PointLight {",
         "DEF Spot SpotLight {",
         "DEF Cam PerspectiveCamera {",
-        "DEF Spinner Separator {",
+        "DEF Spinner Transform {",
         "DEF Red Material {",
         "DEF CubeMesh IndexedFaceSet {",
         "USE CubeMesh",
         "index 0 = DEF _animed_clock Calculator {",
-        "a 0 = ElapsedTime { } . timeOut",
+        "a 0 = ElapsedTime { } .timeOut",
         "expression \"oa = floor(fmod(a * 24 + 0.001, 48))\"",
-        "index 0 = USE _animed_clock . oa",
+        "index 0 = USE _animed_clock .oa",
         "type MFRotation",
         "type MFColor",
         "scaleFactor 0.6 0.6 0.6 = SelectOne {",
@@ -59,7 +59,9 @@ fn v1_is_a_still_scene_with_the_note() {
     }
     assert!(text.contains("track node Spinner rotation constant"));
     assert!(
-        text.contains("  Switch {\n    whichChild -1\n    DEF Spinner Separator"),
+        text.contains(
+            "  Switch {\n    whichChild -1\n    Separator {\n      DEF Spinner Transform"
+        ),
         "{text}"
     );
     assert!(report

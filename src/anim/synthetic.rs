@@ -162,3 +162,52 @@ pub fn bench_tracks(n: usize, min_secs: f64) -> AnimBench {
         evaluate_ms,
     }
 }
+
+impl AnimBench {
+    /// Human-readable lines for `animed bench`.
+    pub fn lines(&self) -> Vec<String> {
+        vec![
+            format!(
+                "TCB vec3 tracks ({} × 8 keys): {:.2} M samples/s",
+                self.tracks,
+                self.vec3_samples_per_s / 1e6
+            ),
+            format!(
+                "squad-TCB rotation tracks ({} × 8 keys): {:.2} M samples/s",
+                self.tracks,
+                self.squad_samples_per_s / 1e6
+            ),
+            format!(
+                "evaluate scene ({} nodes, {} tracks): {:.3} ms",
+                self.tracks,
+                2 * self.tracks,
+                self.evaluate_ms
+            ),
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn synthetic_tracks_are_valid() {
+        for i in 0..20 {
+            vec3_track(i, 8, i as u64).validate().expect("vec3 track");
+            squad_track(i, 8, i as u64).validate().expect("squad track");
+        }
+        let s = scene(3, 5);
+        assert_eq!(s.animation.tracks.len(), 6);
+        assert_eq!(s.nodes.len(), 4);
+    }
+
+    #[test]
+    fn bench_reports_positive_figures() {
+        let b = bench_tracks(10, 0.001);
+        assert!(b.vec3_samples_per_s > 0.0 && b.squad_samples_per_s > 0.0);
+        assert!(b.evaluate_ms > 0.0);
+        assert_eq!(b.lines().len(), 3);
+        assert!(b.lines()[2].contains("20 tracks"));
+    }
+}

@@ -7,6 +7,7 @@
 //! Every change to the scene goes through [`command::History`] so it can be
 //! undone; a drag previews live and records one command at release.
 
+pub mod bench;
 pub mod browser;
 pub mod camera;
 pub mod command;
@@ -83,7 +84,6 @@ struct Playback {
 struct SceneLayer {
     key: Option<LayerKey>,
     frame: Frame,
-    painter: Painter,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -166,7 +166,6 @@ impl Editor {
             layer: SceneLayer {
                 key: None,
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
-                painter: Painter::new(),
             },
             painter: Painter::new(),
         };

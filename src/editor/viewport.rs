@@ -6,9 +6,8 @@ use super::camera::Projector;
 use super::{gizmo, ops, Editor, LayerKey};
 use crate::render::{self, Frame, RenderOptions};
 use crate::scene::{NodeId, NodeKind};
-use crate::ui::{theme, Painter, Rect};
+use crate::ui::{line, theme, Painter, Rect};
 use glam::Vec3;
-use tiny_skia::Mask;
 
 /// Gizmo size in pixels.
 const GIZMO_PX: f32 = 28.0;
@@ -63,7 +62,7 @@ impl Editor {
         }
         if self.show_grid {
             let proj = Projector::new(&view, 0.0, 0.0, w as f32, h as f32);
-            draw_grid(&mut self.layer.painter, &mut frame, &proj, radius);
+            draw_grid(&mut frame, &proj, radius);
         }
         self.layer.frame = frame;
         self.layer.key = Some(key);
@@ -77,53 +76,57 @@ impl Editor {
     /// Copies the viewport layer into `frame` and outlines the selection.
     pub(super) fn blit_viewport(&self, frame: &mut Frame, vp: Rect) {
         let lf = &self.layer.frame;
-        let fw = frame.width as i32;
-        for y in 0..vp.h.min(lf.height as i32) {
-            let dst = ((vp.y + y) * fw + vp.x) as usize;
-            let src = (y * lf.width as i32) as usize;
-            let n = vp.w.min(lf.width as i32) as usize;
+        let fw = frame.width as usize;
+        let rows = vp.h.min(lf.height as i32).max(0) as usize;
+        let n = vp.w.min(lf.width as i32).max(0) as usize;
+        for y in 0..rows {
+            let dst = (vp.y as usize + y) * fw + vp.x as usize;
+            let src = y * lf.width as usize;
             frame.color[dst..dst + n].copy_from_slice(&lf.color[src..src + n]);
-            frame.ids[dst..dst + n].copy_from_slice(&lf.ids[src..src + n]);
-            frame.depth[dst..dst + n].copy_from_slice(&lf.depth[src..src + n]);
         }
         if let Some(sel) = self.selection {
             self.outline(frame, vp, sel);
         }
     }
 
-    /// Paints the border pixels of the selected subtree's silhouette.
+    /// Paints the border pixels of the selected subtree's silhouette and
+    /// tints its inside.
     fn outline(&self, frame: &mut Frame, vp: Rect, sel: NodeId) {
         let mut mine = vec![false; self.scene.nodes.len() + 1];
         for id in ops::subtree(&self.scene, sel) {
             mine[id.0 as usize + 1] = true;
         }
         let lf = &self.layer.frame;
-        let (w, h) = (lf.width as i32, lf.height as i32);
-        let is = |x: i32, y: i32| -> bool {
-            if x < 0 || y < 0 || x >= w || y >= h {
-                return false;
-            }
-            let id = lf.ids[(y * w + x) as usize] as usize;
-            id < mine.len() && mine[id]
-        };
-        let fw = frame.width as i32;
-        for y in 0..h.min(vp.h) {
-            for x in 0..w.min(vp.w) {
-                if !is(x, y) {
+        let (w, h) = (lf.width as usize, lf.height as usize);
+        let ids = &lf.ids;
+        let is = |i: usize| mine.get(ids[i] as usize).copied().unwrap_or(false);
+        let fw = frame.width as usize;
+        for y in 0..h.min(vp.h.max(0) as usize) {
+            let row = y * w;
+            for x in 0..w.min(vp.w.max(0) as usize) {
+                let i = row + x;
+                if ids[i] == 0 || !is(i) {
                     continue;
                 }
-                let edge = !is(x - 1, y) || !is(x + 1, y) || !is(x, y - 1) || !is(x, y + 1);
-                let i = ((vp.y + y) * fw + vp.x + x) as usize;
+                let edge = x == 0
+                    || y == 0
+                    || x + 1 == w
+                    || y + 1 == h
+                    || !is(i - 1)
+                    || !is(i + 1)
+                    || !is(i - w)
+                    || !is(i + w);
+                let o = (vp.y as usize + y) * fw + vp.x as usize + x;
                 if edge {
-                    frame.color[i] = theme::SELECTED;
+                    frame.color[o] = theme::SELECTED;
                 } else {
                     // A light orange tint inside.
-                    let c = frame.color[i];
+                    let c = frame.color[o];
                     let mix = |s: u32, t: u32| (s * 3 + t) / 4;
                     let r = mix((c >> 16) & 255, 0xff);
                     let g = mix((c >> 8) & 255, 0x9a);
                     let b = mix(c & 255, 0x1f);
-                    frame.color[i] = (r << 16) | (g << 8) | b;
+                    frame.color[o] = (r << 16) | (g << 8) | b;
                 }
             }
         }
@@ -223,19 +226,13 @@ impl Editor {
 
 /// Ground grid (y = 0) drawn only over background pixels, so objects
 /// cover it. Spacing is a power of ten suited to the scene's size.
-fn draw_grid(p: &mut Painter, frame: &mut Frame, proj: &Projector, radius: f32) {
+fn draw_grid(frame: &mut Frame, proj: &Projector, radius: f32) {
     let step = 10f32.powf((radius * 0.5).max(1e-3).log10().floor());
     let n = ((radius * 2.0 / step).ceil() as i32).clamp(2, 40);
     let ext = n as f32 * step;
-    let mut mask = match Mask::new(frame.width, frame.height) {
-        Some(m) => m,
-        None => return,
-    };
-    for (m, id) in mask.data_mut().iter_mut().zip(frame.ids.iter()) {
-        *m = if *id == 0 { 255 } else { 0 };
-    }
-    p.begin(frame);
-    p.set_path_mask(Some(mask));
+    let (w, h) = (frame.width, frame.height);
+    let ids = &frame.ids;
+    let keep = |i: usize| ids[i] == 0;
     for i in -n..=n {
         let t = i as f32 * step;
         let (cx, cz) = if i == 0 {
@@ -244,13 +241,13 @@ fn draw_grid(p: &mut Painter, frame: &mut Frame, proj: &Projector, radius: f32) 
             (theme::GRID, theme::GRID)
         };
         // Line along x (at z = t) and along z (at x = t).
-        if let Some((a, b)) = proj.segment(Vec3::new(-ext, 0.0, t), Vec3::new(ext, 0.0, t)) {
-            p.line(a, b, cx, 1.0);
-        }
-        if let Some((a, b)) = proj.segment(Vec3::new(t, 0.0, -ext), Vec3::new(t, 0.0, ext)) {
-            p.line(a, b, cz, 1.0);
+        for (a, b, c) in [
+            (Vec3::new(-ext, 0.0, t), Vec3::new(ext, 0.0, t), cx),
+            (Vec3::new(t, 0.0, -ext), Vec3::new(t, 0.0, ext), cz),
+        ] {
+            if let Some((pa, pb)) = proj.segment(a, b) {
+                line::wu_line(&mut frame.color, (w, h), pa, pb, c, 0.8, &keep);
+            }
         }
     }
-    p.set_path_mask(None);
-    p.end(frame);
 }

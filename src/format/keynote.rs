@@ -491,11 +491,16 @@ pub fn apply_to_loaded(loaded: &mut Loaded, path: &Path) {
     let result = parse(&text)
         .map_err(|e| e.to_string())
         .and_then(|note| apply(&note, &mut loaded.scene));
-    if let Err(e) = result {
-        loaded.warnings.push(format!(
+    match result {
+        // The note replaces what the engines would drive, so the reader's
+        // remark that it does not evaluate them no longer applies.
+        Ok(()) => loaded
+            .warnings
+            .retain(|w| !w.contains("field connections (engines) are not evaluated")),
+        Err(e) => loaded.warnings.push(format!(
             "{}:0:0: ignored the animed key note ({e}); using the file's interpolators",
             path.display()
-        ));
+        )),
     }
 }
 

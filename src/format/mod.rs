@@ -16,7 +16,7 @@ pub use error::LoadError;
 pub mod keynote;
 pub mod sampling;
 pub mod save;
-mod write_anim;
+pub mod write_anim;
 mod write_iv;
 pub mod write_plan;
 mod write_text;
@@ -38,7 +38,10 @@ pub struct Loaded {
 
 /// Loads any supported file from disk, detecting the format by content.
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
-    load_nested(path, 0)
+    let mut loaded = load_nested(path, 0)?;
+    // animed's own key note, if the file has one, replaces the sampled tracks.
+    keynote::apply_to_loaded(&mut loaded, path);
+    Ok(loaded)
 }
 
 /// Loads a file included `depth` levels deep (Inline / File / WWWInline).

@@ -4,8 +4,9 @@
 //!
 //! Layout: every scene node with a transform, children or a shape is a
 //! `Separator` (lights: `TransformSeparator`, so the light still reaches the
-//! rest of the scene) holding `MatrixTransform`/`Transform`, its content,
-//! then its children. Lights are written before their siblings, because an
+//! rest of the scene) holding `MatrixTransform`, `DEF NAME Transform`, its
+//! content, then its children. The node's name sits on the Transform, since
+//! an Inventor reader makes a named Transform the group that carries it. Lights are written before their siblings, because an
 //! Inventor light only lights what follows it.
 //!
 //! Animation (2.1): one `Calculator`, fed by an `ElapsedTime` engine, turns
@@ -102,7 +103,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         w.out
             .line("# intensity 0). The authored keys are in the Info node (animed key note).");
     }
-    for s in &scene.info {
+    for s in scene.info.iter().filter(|s| !keynote::is_note(s)) {
         w.out.line(&format!("Info {{ string {} }}", quoted(s)));
     }
     let note = keynote::write(scene, &w.plan);
@@ -186,7 +187,7 @@ impl Writer<'_> {
         }
     }
 
-    /// `field value` or, when a channel drives it, `field value = SelectOne {…} . output`.
+    /// `field value` or, when a channel drives it, `field value = SelectOne {…} .output`.
     fn field(&mut self, of: TargetRef, property: Property, name: &str, value: &str) {
         let ch = self
             .channels
@@ -241,7 +242,7 @@ impl Writer<'_> {
         self.out.line(&format!("type {ty}"));
         self.out.list("input", rows(&items, 4, |v| v.clone(), ","));
         if self.clock_defined {
-            self.out.line(&format!("index 0 = USE {clock} . oa"));
+            self.out.line(&format!("index 0 = USE {clock} .oa"));
         } else {
             self.clock_defined = true;
             let fps = self.scene.settings.fps;
@@ -249,15 +250,15 @@ impl Writer<'_> {
             self.out
                 .line(&format!("index 0 = DEF {clock} Calculator {{"));
             self.out.depth += 1;
-            self.out.line("a 0 = ElapsedTime { } . timeOut");
+            self.out.line("a 0 = ElapsedTime { } .timeOut");
             self.out.line(&format!(
                 "expression \"oa = floor(fmod(a * {} + 0.001, {}))\"",
                 num(fps),
                 num(d)
             ));
-            self.out.close("} . oa");
+            self.out.close("} .oa");
         }
-        self.out.close("} . output");
+        self.out.close("} .output");
     }
 
     fn node(&mut self, id: NodeId) {
@@ -276,8 +277,9 @@ impl Writer<'_> {
             } else {
                 "Separator"
             };
-            self.out
-                .open(&format!("{}{group}", def(&self.plan.wrapper[i])));
+            // The name goes on the Transform: readers make a DEF'd Transform
+            // the named group that holds what follows it.
+            self.out.open(group);
             if let Some(m) = node.transform.extra {
                 let c = m.to_cols_array();
                 self.out.open("MatrixTransform");
@@ -294,8 +296,12 @@ impl Writer<'_> {
                 .iter()
                 .any(|p| self.channels.iter().any(|c| c.of == of && c.property == *p));
             let t = node.transform;
-            if animated || (Transform { extra: None, ..t }) != Transform::default() {
-                self.out.open("Transform");
+            let name = self.plan.wrapper[i].clone();
+            if name.is_some()
+                || animated
+                || (Transform { extra: None, ..t }) != Transform::default()
+            {
+                self.out.open(&format!("{}Transform", def(&name)));
                 self.transform_fields(of, &t);
                 self.out.close("}");
             }

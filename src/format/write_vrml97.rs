@@ -89,7 +89,13 @@ fn bool_word(b: bool) -> &'static str {
 impl Writer<'_> {
     fn world_info(&mut self) {
         let note = keynote::write(self.scene, &self.plan);
-        let mut strings: Vec<String> = self.scene.info.iter().map(|s| quoted(s)).collect();
+        let mut strings: Vec<String> = self
+            .scene
+            .info
+            .iter()
+            .filter(|s| !keynote::is_note(s))
+            .map(|s| quoted(s))
+            .collect();
         strings.push(quoted(&note));
         self.out.open("WorldInfo");
         self.out.list("info", strings);

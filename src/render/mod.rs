@@ -119,33 +119,37 @@ fn draw(p: &prepare::Prepared, opts: &RenderOptions, eye: Vec3, frame: &mut Fram
         &mut b.points
     });
 
+    // Bands of one tile row each run in parallel; a band draws its tiles left
+    // to right straight into its rows of the frame.
+    let band = raster::TILE as usize * w as usize;
     let background = opts.background;
-    let tiles: Vec<raster::TileOut> = bins
-        .par_iter()
+    frame
+        .color
+        .par_chunks_mut(band)
+        .zip(frame.depth.par_chunks_mut(band))
+        .zip(frame.ids.par_chunks_mut(band))
         .enumerate()
-        .map(|(i, bin)| {
-            let (tx, ty) = (i as i32 % tiles_x, i as i32 / tiles_x);
-            let rect = [
-                tx * raster::TILE,
-                ty * raster::TILE,
-                ((tx + 1) * raster::TILE).min(w),
-                ((ty + 1) * raster::TILE).min(h),
-            ];
-            raster::draw_tile(p, bin, rect, background, eye)
-        })
-        .collect();
-    for t in tiles {
-        let tw = (t.rect[2] - t.rect[0]) as usize;
-        for (row, y) in (t.rect[1]..t.rect[3]).enumerate() {
-            let dst = y as usize * w as usize + t.rect[0] as usize;
-            let src = row * tw;
-            for k in 0..tw {
-                frame.color[dst + k] = pack_rgb(t.color[src + k]);
+        .for_each(|(ty, ((color, depth), ids))| {
+            let ty = ty as i32;
+            let mut scratch = raster::Scratch::default();
+            let mut target = raster::Target {
+                color,
+                depth,
+                ids,
+                stride: w as usize,
+                y0: ty * raster::TILE,
+            };
+            for tx in 0..tiles_x {
+                let rect = [
+                    tx * raster::TILE,
+                    ty * raster::TILE,
+                    ((tx + 1) * raster::TILE).min(w),
+                    ((ty + 1) * raster::TILE).min(h),
+                ];
+                let bin = &bins[(ty * tiles_x + tx) as usize];
+                raster::draw_tile(p, bin, rect, background, eye, &mut scratch, &mut target);
             }
-            frame.depth[dst..dst + tw].copy_from_slice(&t.depth[src..src + tw]);
-            frame.ids[dst..dst + tw].copy_from_slice(&t.ids[src..src + tw]);
-        }
-    }
+        });
 }
 
 /// A rayon pool per requested thread count, built once and reused (the

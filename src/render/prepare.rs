@@ -274,37 +274,53 @@ fn setup_triangles(
     let n = verts.len();
     let cull = mesh.solid;
     let (w, h) = (opts.width as i32, opts.height as i32);
-    mesh.triangles
-        .par_iter()
-        .flat_map_iter(|t| {
-            let mut out = Vec::new();
-            if t.iter().any(|&i| i as usize >= n) {
-                return out.into_iter();
-            }
-            let tri = [
-                verts[t[0] as usize],
-                verts[t[1] as usize],
-                verts[t[2] as usize],
-            ];
-            if clip::outside_one(&tri, screen.guard) {
-                return out.into_iter();
-            }
-            let poly = if clip::inside_all(&tri, screen.guard) {
-                tri.to_vec()
-            } else {
-                clip::clip_polygon(&tri, screen.guard)
-            };
-            // Fan the (convex) clipped polygon.
-            for k in 1..poly.len().saturating_sub(1) {
-                if let Some(tri) =
-                    screen_triangle([&poly[0], &poly[k], &poly[k + 1]], item, cull, screen, w, h)
-                {
-                    out.push(tri);
+    // Chunks keep the allocation count low; concatenating them in chunk
+    // order keeps the scene order.
+    let chunks: Vec<Vec<Tri>> = mesh
+        .triangles
+        .par_chunks(4096)
+        .map(|chunk| {
+            let mut out = Vec::with_capacity(chunk.len());
+            for t in chunk {
+                if t.iter().any(|&i| i as usize >= n) {
+                    continue;
+                }
+                let tri = [
+                    verts[t[0] as usize],
+                    verts[t[1] as usize],
+                    verts[t[2] as usize],
+                ];
+                if clip::outside_one(&tri, screen.guard) {
+                    continue;
+                }
+                if clip::inside_all(&tri, screen.guard) {
+                    out.extend(screen_triangle(
+                        [&tri[0], &tri[1], &tri[2]],
+                        item,
+                        cull,
+                        screen,
+                        w,
+                        h,
+                    ));
+                    continue;
+                }
+                // Fan the (convex) clipped polygon.
+                let poly = clip::clip_polygon(&tri, screen.guard);
+                for k in 1..poly.len().saturating_sub(1) {
+                    out.extend(screen_triangle(
+                        [&poly[0], &poly[k], &poly[k + 1]],
+                        item,
+                        cull,
+                        screen,
+                        w,
+                        h,
+                    ));
                 }
             }
-            out.into_iter()
+            out
         })
-        .collect()
+        .collect();
+    chunks.concat()
 }
 
 fn screen_triangle(

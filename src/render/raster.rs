@@ -24,12 +24,25 @@ pub struct Bin {
     pub points: Vec<u32>,
 }
 
-/// The finished pixels of one tile.
-pub struct TileOut {
-    pub rect: Rect,
-    pub color: Vec<Vec3>,
-    pub depth: Vec<f32>,
-    pub ids: Vec<u32>,
+/// Per-thread working buffers for one tile, reused from tile to tile (every
+/// entry is reset before use, so reuse never changes a picture).
+#[derive(Default)]
+pub struct Scratch {
+    color: Vec<Vec3>,
+    depth: Vec<f32>,
+    ids: Vec<u32>,
+    winner: Vec<u32>,
+    bary: Vec<[f32; 2]>,
+}
+
+/// Where a tile's finished pixels go: rows of the frame starting at row
+/// `y0`, `stride` pixels apart.
+pub struct Target<'a> {
+    pub color: &'a mut [u32],
+    pub depth: &'a mut [f32],
+    pub ids: &'a mut [u32],
+    pub stride: usize,
+    pub y0: i32,
 }
 
 const NONE: u32 = u32::MAX;
@@ -132,7 +145,7 @@ fn shade_attrs(item: &Item, a: &[f32; ATTRS], back: bool, eye: Vec3) -> Vec3 {
         return color;
     }
     let p = Vec3::new(a[0], a[1], a[2]);
-    let mut n = Vec3::new(a[3], a[4], a[5]).normalize_or_zero();
+    let mut n = Vec3::new(a[3], a[4], a[5]);
     if back {
         n = -n; // two-sided lighting: light the side we see
     }
@@ -140,17 +153,32 @@ fn shade_attrs(item: &Item, a: &[f32; ATTRS], back: bool, eye: Vec3) -> Vec3 {
 }
 
 /// Draws every primitive of `bin` into the tile `rect`.
-pub fn draw_tile(p: &Prepared, bin: &Bin, rect: Rect, background: Vec3, eye: Vec3) -> TileOut {
+pub fn draw_tile(
+    p: &Prepared,
+    bin: &Bin,
+    rect: Rect,
+    background: Vec3,
+    eye: Vec3,
+    scratch: &mut Scratch,
+    target: &mut Target,
+) {
     let tw = (rect[2] - rect[0]) as usize;
     let n = tw * (rect[3] - rect[1]) as usize;
     let at = |x: i32, y: i32| (y - rect[1]) as usize * tw + (x - rect[0]) as usize;
-    let mut color = vec![background; n];
-    let mut depth = vec![1.0f32; n];
-    let mut ids = vec![0u32; n];
+    let Scratch {
+        color,
+        depth,
+        ids,
+        winner,
+        bary,
+    } = scratch;
+    reset(color, n, background);
+    reset(depth, n, 1.0);
+    reset(ids, n, 0);
+    reset(winner, n, NONE);
+    reset(bary, n, [0.0; 2]);
 
     // 1. Depth pass: nearest opaque triangle per pixel (first wins on ties).
-    let mut winner = vec![NONE; n];
-    let mut bary = vec![[0.0f32; 2]; n];
     for &ti in &bin.opaque {
         let t = &p.opaque[ti as usize];
         for_each_pixel(t, rect, |x, y, b1, b2| {
@@ -193,16 +221,16 @@ pub fn draw_tile(p: &Prepared, bin: &Bin, rect: Rect, background: Vec3, eye: Vec
             continue;
         }
         if t.item != batch_item || batch.len == LANES {
-            flush(&mut batch, batch_item, &mut color);
+            flush(&mut batch, batch_item, color);
             batch_item = t.item;
         }
-        let mut nrm = Vec3::new(a[3], a[4], a[5]).normalize_or_zero();
+        let mut nrm = Vec3::new(a[3], a[4], a[5]);
         if t.back {
             nrm = -nrm;
         }
         batch.push(i as u32, Vec3::new(a[0], a[1], a[2]), nrm, c);
     }
-    flush(&mut batch, batch_item, &mut color);
+    flush(&mut batch, batch_item, color);
     // 3. Lines and points, depth-tested and shaded as they come.
     for &li in &bin.lines {
         let l = &p.lines[li as usize];
@@ -248,12 +276,21 @@ pub fn draw_tile(p: &Prepared, bin: &Bin, rect: Rect, background: Vec3, eye: Vec
             }
         });
     }
-    TileOut {
-        rect,
-        color,
-        depth,
-        ids,
+    // 5. Into the frame.
+    for (row, y) in (rect[1]..rect[3]).enumerate() {
+        let dst = (y - target.y0) as usize * target.stride + rect[0] as usize;
+        let src = row * tw;
+        for k in 0..tw {
+            target.color[dst + k] = super::frame::pack_rgb(color[src + k]);
+        }
+        target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
+        target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
     }
+}
+
+fn reset<T: Copy>(v: &mut Vec<T>, n: usize, value: T) {
+    v.clear();
+    v.resize(n, value);
 }
 
 /// Lines and points have no "side": turn their normal towards the eye.

@@ -62,11 +62,24 @@ impl View {
     }
 
     /// Frames the whole posed scene the way Coin's `viewAll` does: the
-    /// bounding sphere of the scene's bounding box, seen down −z from its
-    /// centre at distance r / sin(heightAngle/2), heightAngle 45°, near/far
-    /// fitted to the sphere. An empty scene gives the VRML97 default view.
+    /// sphere around the scene's bounding box (radius r), a default camera
+    /// (heightAngle 45°, looking down −z) moved back from the sphere's centre
+    /// by `r' / tan(heightAngle/2)` with `r' = r / min(aspect, 1)`, near and
+    /// far at that distance ∓ r. That distance is what Coin 4.0 (Debian's
+    /// libcoin80) computes: probed with pivy, a scene with bounding radius
+    /// 3.316 got its camera 8.006 from the centre, near 4.690, far 11.322.
+    /// (`r / sin(heightAngle/2)`, the tangent distance, frames ~6 % smaller;
+    /// the sphere's silhouette is slightly cropped, as in Coin.)
+    /// An empty scene gives the VRML97 default view.
     pub fn view_all(scene: &Scene, pose: &Pose, aspect: f32) -> View {
         Self::build_view_all(bounding_sphere(scene, pose), aspect).0
+    }
+
+    /// The distance [`View::view_all`] puts the camera from the sphere's
+    /// centre.
+    pub fn view_all_distance(radius: f32, height_angle: f32, aspect: f32) -> f32 {
+        let r = radius / if aspect < 1.0 { aspect } else { 1.0 };
+        r / libm::tanf(height_angle / 2.0)
     }
 
     /// The camera [`View::view_all`] builds (for the editor's orbit and for
@@ -83,7 +96,7 @@ impl View {
         };
         if let Some((c, r)) = sphere {
             let r = r.max(1e-6);
-            let d = r / libm::sinf(height_angle / 2.0);
+            let d = Self::view_all_distance(r, height_angle, aspect);
             cam.position = c + Vec3::Z * d;
             cam.orientation = Quat::IDENTITY;
             cam.focal_distance = d;
@@ -246,14 +259,45 @@ mod tests {
         let pose = crate::anim::evaluate(&s, 0.0);
         let (v, cam) = View::view_all_camera(&s, &pose, 1.0);
         let r = 3f32.sqrt();
-        let d = r / (std::f32::consts::FRAC_PI_8).sin();
+        // Coin 4.0: r / tan(heightAngle / 2) = r · (1 + √2) for 45°.
+        let d = r * (1.0 + 2f32.sqrt());
         assert!((cam.position - Vec3::new(0.0, 0.0, d)).length() < 1e-4);
         assert!((cam.near.unwrap() - (d - r)).abs() < 1e-4);
-        // The sphere's silhouette touches the top edge: the tangent ray from
-        // the eye makes the half angle 22.5° with the axis.
-        let tangent_y = r * (std::f32::consts::FRAC_PI_8).cos();
-        let tangent_z = d - r * (std::f32::consts::FRAC_PI_8).sin();
-        let p = project(&v, Vec3::new(0.0, tangent_y, d - tangent_z));
-        assert!((p.y - 1.0).abs() < 1e-3, "{p}");
+        assert!((cam.far.unwrap() - (d + r)).abs() < 1e-4);
+        // The sphere's centre-plane cross-section exactly fills the height.
+        let p = project(&v, Vec3::new(0.0, r, 0.0));
+        assert!((p.y - 1.0).abs() < 1e-4, "{p}");
+        // A tall picture moves the camera back by 1/aspect.
+        let (_, tall) = View::view_all_camera(&s, &pose, 0.5);
+        assert!((tall.position.z - 2.0 * d).abs() < 1e-3);
+    }
+
+    /// Numbers Coin 4.0 printed for `cam.viewAll` (pivy, 320×240) on a scene
+    /// whose bounding box is (-2,-1.5,-1.5)..(2,1.5,2.857008): camera at
+    /// z 8.684045, near 4.689537, far 11.321545.
+    #[test]
+    fn view_all_matches_coin_probe() {
+        let mut s = Scene::new();
+        let lo = Vec3::new(-2.0, -1.5, -1.5);
+        let hi = Vec3::new(2.0, 1.5, 2.857_008);
+        let mesh = s.add_mesh(crate::scene::Mesh {
+            positions: vec![lo, hi],
+            points: vec![0, 1],
+            ..Default::default()
+        });
+        let material = s.add_material(Material::default());
+        s.add_node(
+            None,
+            Node::new("b", NodeKind::Shape(Shape { mesh, material })),
+        );
+        let pose = crate::anim::evaluate(&s, 0.0);
+        let (_, cam) = View::view_all_camera(&s, &pose, 320.0 / 240.0);
+        assert!(
+            (cam.position.z - 8.684_045).abs() < 1e-3,
+            "{}",
+            cam.position
+        );
+        assert!((cam.near.unwrap() - 4.689_537).abs() < 1e-3);
+        assert!((cam.far.unwrap() - 11.321_545).abs() < 1e-3);
     }
 }

@@ -7,6 +7,7 @@
 //! and tiny-skia's premultiplied RGBA pixmap (see `pixels.rs`).
 
 pub mod layout;
+pub mod line;
 mod painter;
 mod pixels;
 mod rect;

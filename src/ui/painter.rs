@@ -128,6 +128,16 @@ impl Painter {
         let w = self.pixmap.width() as usize;
         let data = self.pixmap.data_mut();
         let src = [(color >> 16) as u8, (color >> 8) as u8, color as u8];
+        if alpha == 255 {
+            let px = [src[0], src[1], src[2], 255];
+            for y in r.y..r.bottom() {
+                let row = (y as usize * w + r.x as usize) * 4;
+                for d in data[row..row + r.w as usize * 4].chunks_exact_mut(4) {
+                    d.copy_from_slice(&px);
+                }
+            }
+            return;
+        }
         let a = alpha as u32;
         for y in r.y..r.bottom() {
             let row = y as usize * w;
