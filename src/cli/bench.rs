@@ -51,7 +51,20 @@ pub fn sections() -> Vec<Section> {
             about: "the bundled demo scene",
             run: bench_demo,
         },
+        Section {
+            name: "animation",
+            about: "track sampling and whole-scene evaluation (1000 tracks of each kind)",
+            run: bench_animation,
+        },
     ]
+}
+
+/// Sampling speed of TCB vec3 and squad tracks and one `evaluate_into` of a
+/// scene with 2000 tracks (see `anim::synthetic`).
+fn bench_animation(args: &Args) -> Result<Vec<String>, String> {
+    // Three figures share the time budget.
+    let b = crate::anim::synthetic::bench_tracks(1000, args.seconds / 3.0);
+    Ok(b.lines())
 }
 
 pub fn run(args: Args) -> i32 {

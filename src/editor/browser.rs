@@ -93,13 +93,15 @@ impl Browser {
         }
     }
 
-    /// The typed path resolved against the current folder.
+    /// The typed path: a bare name is in the shown folder; anything with a
+    /// '/' is a path as a shell would read it (absolute, `~/…`, or relative
+    /// to the working directory, which is how the shown folder is written).
     pub fn resolved(&self) -> PathBuf {
-        let p = expand_home(self.input.trim());
-        if p.is_absolute() {
-            p
+        let t = self.input.trim();
+        if t.contains('/') {
+            expand_home(t)
         } else {
-            self.dir.join(p)
+            self.dir.join(t)
         }
     }
 
@@ -114,12 +116,7 @@ impl Browser {
         let folder = if head.is_empty() {
             self.dir.clone()
         } else {
-            let p = expand_home(&head);
-            if p.is_absolute() {
-                p
-            } else {
-                self.dir.join(p)
-            }
+            expand_home(&head)
         };
         let Ok(entries) = list(&folder) else {
             self.message = Some(format!("no folder {}", folder.display()));
@@ -318,6 +315,7 @@ mod tests {
         assert_eq!(b.input, format!("{}/walk.wrl", d.display()));
         b.input = "mo".into();
         b.complete();
+        // A bare name completes in the shown folder.
         assert_eq!(b.input, format!("{}/models/", d.display()));
         assert!(b.dir.ends_with("models"));
         let _ = std::fs::remove_dir_all(&d);

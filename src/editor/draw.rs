@@ -128,7 +128,7 @@ impl Editor {
                 let editing = self.edit.as_ref().filter(|e| e.field == *id);
                 let text = match editing {
                     Some(e) => e.text.clone(),
-                    None => self.field_text(*id),
+                    None => self.field_text(*id, text::fit_chars(w.rect.w - 5)),
                 };
                 widgets::field(p, w.rect, &text, hot, editing.is_some());
             }
@@ -148,7 +148,7 @@ impl Editor {
         }
     }
 
-    fn field_text(&self, id: super::fields::FieldId) -> String {
+    fn field_text(&self, id: super::fields::FieldId, max_chars: usize) -> String {
         use super::fields::FieldId;
         let v = if id == FieldId::Frame {
             Some(FieldValue::Number(self.frame))
@@ -158,7 +158,11 @@ impl Editor {
             self.selection
                 .and_then(|s| id.read_node(self.scene.node(s)))
         };
-        v.map(|v| v.display()).unwrap_or_default()
+        match v {
+            Some(FieldValue::Number(x)) => super::fields::format_fit(x, max_chars),
+            Some(v) => v.display(),
+            None => String::new(),
+        }
     }
 
     fn draw_timeline(&self, p: &mut Painter, l: &Layout) {

@@ -43,6 +43,28 @@ impl FieldValue {
     }
 }
 
+/// Like [`format_number`] but with fewer decimals when the text would be
+/// longer than `max_chars` (never cutting the integer part).
+pub fn format_fit(x: f32, max_chars: usize) -> String {
+    for decimals in (0..=3).rev() {
+        let x = if x.abs() < 0.5 * 10f32.powi(-decimals) {
+            0.0
+        } else {
+            x
+        };
+        let s = format!("{x:.*}", decimals as usize);
+        let s = if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        };
+        if s.chars().count() <= max_chars || decimals == 0 {
+            return s;
+        }
+    }
+    format_number(x)
+}
+
 pub fn format_number(x: f32) -> String {
     let x = if x.abs() < 5e-4 { 0.0 } else { x };
     let s = format!("{x:.3}");
@@ -224,6 +246,15 @@ pub fn parse_number(s: &str) -> Option<f32> {
 mod tests {
     use super::*;
     use crate::scene::Light;
+
+    #[test]
+    fn numbers_fit_their_field() {
+        assert_eq!(format_fit(-0.05, 5), "-0.05");
+        assert_eq!(format_fit(-0.05, 4), "-0.1");
+        assert_eq!(format_fit(-0.05, 2), "0");
+        assert_eq!(format_fit(123.456, 6), "123.46");
+        assert_eq!(format_fit(12345.0, 3), "12345");
+    }
 
     #[test]
     fn numbers_format_and_parse() {

@@ -21,7 +21,7 @@ pub fn segments(light: &Light, world: &Mat4, size: f32) -> Vec<(Vec3, Vec3)> {
             }
         }
         LightKind::Spot { cut_off_angle, .. } => {
-            let len = size * 2.0;
+            let len = size * 1.5;
             let r = len * cut_off_angle.clamp(0.05, 1.5).tan().min(3.0);
             let base = pos + dir * len;
             let (u, v) = basis(dir);

@@ -50,6 +50,12 @@ const DRAG_SLOP: f32 = 3.0;
 impl Editor {
     /// Feeds one event; returns true when the picture needs redrawing.
     pub fn handle(&mut self, ev: Event) -> bool {
+        let redraw = self.dispatch(ev);
+        self.reveal_selection();
+        redraw
+    }
+
+    fn dispatch(&mut self, ev: Event) -> bool {
         match ev {
             Event::Resize { width, height } => {
                 let changed = (width.max(1), height.max(1)) != (self.width, self.height);

@@ -126,6 +126,8 @@ pub struct Editor {
     quit: bool,
     /// First visible row of the objects and lights lists.
     scroll: [usize; 2],
+    /// The selection the lists were last scrolled to show.
+    revealed: Option<NodeId>,
     /// Folder the file browser starts in when no file is open.
     start_dir: PathBuf,
     pose: Option<(u64, f32, Pose)>,
@@ -161,6 +163,7 @@ impl Editor {
             status: Status::default(),
             quit: false,
             scroll: [0, 0],
+            revealed: None,
             start_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
             pose: None,
             layer: SceneLayer {
@@ -399,11 +402,12 @@ impl Editor {
         Ok(())
     }
 
-    /// Looks at everything.
+    /// Looks at everything drawn (lights too when there is nothing else).
     pub fn frame_all(&mut self) {
         let b = {
             let pose = self.pose().clone();
-            ops::scene_bounds(&self.scene, &pose)
+            crate::render::scene_bounds(&self.scene, &pose)
+                .or_else(|| ops::scene_bounds(&self.scene, &pose))
         };
         let (c, r) = ops::sphere(b);
         self.camera.frame_sphere(c, r);

@@ -276,13 +276,12 @@ fn unique_or(scene: &Scene, name: &str) -> String {
     }
 }
 
-/// Writes the scene to `path` (format from the extension) through the
-/// writers; the writers save atomically.
-pub fn save_scene(_scene: &Scene, path: &std::path::Path) -> Result<(), String> {
-    Err(format!(
-        "{}: cannot save yet: the .wrl/.iv writers are not in this build",
-        path.display()
-    ))
+/// Writes the scene to `path` (format from the extension: .wrl, .wrl.gz,
+/// .iv) through the writers, which save atomically.
+pub fn save_scene(scene: &Scene, path: &std::path::Path) -> Result<(), String> {
+    crate::format::save(scene, path, &crate::format::WriteOptions::default())
+        .map(|_| ())
+        .map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

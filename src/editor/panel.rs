@@ -143,7 +143,45 @@ impl Editor {
     }
 
     pub fn side_panel(&self) -> SidePanel {
-        SidePanel::new(self.layout().side, self.prop_rows())
+        SidePanel::new(
+            self.layout().side,
+            self.prop_rows(),
+            [
+                ops::objects(&self.scene).len(),
+                ops::lights(&self.scene).len(),
+            ],
+        )
+    }
+
+    /// Scrolls the objects and lights lists so the selection's row shows.
+    pub(super) fn reveal_selection(&mut self) {
+        let Some(sel) = self.selection else { return };
+        if self.revealed == Some(sel) {
+            return;
+        }
+        self.revealed = Some(sel);
+        let sp = self.side_panel();
+        let lists: [(Vec<NodeId>, Rect); 2] = [
+            (
+                ops::objects(&self.scene)
+                    .into_iter()
+                    .map(|(id, _)| id)
+                    .collect(),
+                sp.objects,
+            ),
+            (ops::lights(&self.scene), sp.lights),
+        ];
+        for (i, (ids, r)) in lists.iter().enumerate() {
+            if let Some(pos) = ids.iter().position(|&id| id == sel) {
+                let cap = Self::list_capacity(*r).max(1);
+                let s = &mut self.scroll[i];
+                if pos < *s {
+                    *s = pos;
+                } else if pos >= *s + cap {
+                    *s = pos + 1 - cap;
+                }
+            }
+        }
     }
 
     /// Visible rows of a list section.
@@ -191,7 +229,7 @@ impl Editor {
         ];
         let mut x = r.x + 2;
         for (label, action, on) in items {
-            let bw = text::width(label) + 8;
+            let bw = text::width(label) + 6;
             if x + bw > r.right() - 2 {
                 break;
             }
@@ -201,7 +239,7 @@ impl Editor {
                 action,
                 on,
             ));
-            x += bw + 2;
+            x += bw + 1;
         }
     }
 
@@ -236,18 +274,28 @@ impl Editor {
         };
         out.push(w(h, WidgetKind::Header(title)));
         if list == List::Lights {
-            // Add-light buttons at the right of the header.
-            let mut x = h.right() - 2;
-            for (label, which) in [
+            // Add-light buttons at the right of the header; one-letter
+            // labels when the panel is narrow.
+            let long = [
                 ("+Spot", NewLight::Spot),
                 ("+Pt", NewLight::Point),
                 ("+Dir", NewLight::Directional),
-            ] {
+            ];
+            let short = [
+                ("+S", NewLight::Spot),
+                ("+P", NewLight::Point),
+                ("+D", NewLight::Directional),
+            ];
+            let need: i32 = long.iter().map(|(l, _)| text::width(l) + 5).sum();
+            let items = if h.w - text::width("Lights") - 8 >= need {
+                long
+            } else {
+                short
+            };
+            let mut x = h.right() - 2;
+            for (label, which) in items {
                 let bw = text::width(label) + 4;
                 x -= bw;
-                if x < h.x + text::width("Lights") + 6 {
-                    break;
-                }
                 out.push(button(
                     Rect::new(x, h.y + 1, bw, h.h - 2),
                     label,

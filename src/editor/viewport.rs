@@ -10,7 +10,7 @@ use crate::ui::{line, theme, Painter, Rect};
 use glam::Vec3;
 
 /// Gizmo size in pixels.
-const GIZMO_PX: f32 = 28.0;
+const GIZMO_PX: f32 = 18.0;
 /// How close (pixels) a click must be to a light's centre to pick it.
 const LIGHT_PICK_PX: f32 = 10.0;
 

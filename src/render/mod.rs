@@ -20,6 +20,7 @@ pub mod job;
 mod prepare;
 mod raster;
 mod shade;
+mod simd;
 mod view;
 
 pub use frame::{pack_rgb, Frame};

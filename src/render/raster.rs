@@ -428,6 +428,37 @@ mod tests {
         assert_eq!(hits.iter().sum::<u32>(), 43 * 40);
     }
 
+    fn covered(tris: &[Tri]) -> Vec<u32> {
+        coverage(tris)
+    }
+
+    proptest::proptest! {
+        /// A convex quad split along either diagonal covers the same pixels,
+        /// each exactly once: the shared diagonal is never doubled or
+        /// dropped, whatever the sub-pixel positions.
+        #[test]
+        fn quad_split_either_way_covers_the_same_pixels(
+            cx in 20.0f32..44.0, cy in 20.0f32..44.0,
+            r in proptest::array::uniform4(6.0f32..18.0),
+            a0 in 0.0f32..1.4,
+            // Snapped to 1/16 px sometimes, so exact hits on edges happen.
+            snap in proptest::bool::ANY,
+        ) {
+            let q = |v: f32| if snap { (v * 16.0).round() / 16.0 } else { v };
+            let pts: Vec<(f32, f32)> = (0..4)
+                .map(|k| {
+                    let a = a0 + k as f32 * std::f32::consts::FRAC_PI_2;
+                    (q(cx + r[k] * a.cos()), q(cy + r[k] * a.sin()))
+                })
+                .collect();
+            let one = covered(&[tri([pts[0], pts[1], pts[2]]), tri([pts[0], pts[2], pts[3]])]);
+            let other = covered(&[tri([pts[0], pts[1], pts[3]]), tri([pts[1], pts[2], pts[3]])]);
+            proptest::prop_assert!(one.iter().all(|&h| h <= 1));
+            proptest::prop_assert!(other.iter().all(|&h| h <= 1));
+            proptest::prop_assert_eq!(one, other);
+        }
+    }
+
     #[test]
     fn barycentrics_reproduce_vertex_positions() {
         let t = tri([(2.5, 2.5), (40.5, 6.5), (10.5, 50.5)]);

@@ -12,6 +12,7 @@
 //! the cut-off (the OpenGL spot exponent Inventor maps dropOffRate to).
 //! Lights are prepared once per frame in world space.
 
+use super::simd::F4;
 use crate::scene::{Light, LightKind, Material};
 use glam::{Mat4, Vec3};
 
@@ -197,12 +198,9 @@ pub fn shade(
 }
 
 /// Shades every lane of `b` (see [`shade`]) into `out`. Normals need not be
-/// unit length (they are normalised here, all lanes at once).
-///
-/// On x86-64 CPUs with AVX2 the same code is compiled a second time for
-/// 8-wide registers and chosen at run time. Without FMA (never enabled) both
-/// versions perform the same IEEE operations per lane, so the bits match;
-/// `avx2_and_baseline_agree` checks it.
+/// unit length (they are normalised here). Runs four lanes at a time in
+/// SSE2 registers (see `simd`); each lane does exactly the arithmetic a lone
+/// pixel would, so grouping never changes a result.
 pub fn shade_batch(
     m: &ShadeMaterial,
     lights: &[WorldLight],
@@ -210,86 +208,92 @@ pub fn shade_batch(
     b: &Batch,
     out: &mut [Vec3; LANES],
 ) {
-    #[cfg(target_arch = "x86_64")]
-    if std::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU supports AVX2 (checked just above).
-        unsafe { shade_batch_avx2(m, lights, eye, b, out) };
-        return;
+    for half in 0..LANES / 4 {
+        if half * 4 >= b.len {
+            break;
+        }
+        let r = half * 4..half * 4 + 4;
+        let load3 = |v: &[Lanes; 3]| {
+            [
+                F4::load(&v[0][r.clone()]),
+                F4::load(&v[1][r.clone()]),
+                F4::load(&v[2][r.clone()]),
+            ]
+        };
+        let c = shade4(m, lights, eye, load3(&b.p), load3(&b.n), load3(&b.c));
+        let [cr, cg, cb] = c.map(F4::to_array);
+        for k in 0..4 {
+            out[half * 4 + k] = Vec3::new(cr[k], cg[k], cb[k]);
+        }
     }
-    shade_batch_any(m, lights, eye, b, out);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn shade_batch_avx2(
-    m: &ShadeMaterial,
-    lights: &[WorldLight],
-    eye: Vec3,
-    b: &Batch,
-    out: &mut [Vec3; LANES],
-) {
-    shade_batch_any(m, lights, eye, b, out);
 }
 
 #[inline(always)]
-fn shade_batch_any(
+fn dot(a: &[F4; 3], b: &[F4; 3]) -> F4 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// `v / |v|`, or zero for a zero vector; also returns |v|.
+#[inline(always)]
+fn normalize(v: [F4; 3]) -> ([F4; 3], F4) {
+    let len = dot(&v, &v).sqrt();
+    let zero = F4::splat(0.0);
+    let inv = len.gt(zero).select(F4::splat(1.0).div(len), zero);
+    ([v[0] * inv, v[1] * inv, v[2] * inv], len)
+}
+
+/// The lighting model for four pixels.
+fn shade4(
     m: &ShadeMaterial,
     lights: &[WorldLight],
     eye: Vec3,
-    b: &Batch,
-    out: &mut [Vec3; LANES],
-) {
-    const L: usize = LANES;
-    let [px, py, pz] = &b.p;
-    let [cr, cg, cb] = &b.c;
-    let (mut nx, mut ny, mut nz) = (b.n[0], b.n[1], b.n[2]);
-    for k in 0..L {
-        let len = (nx[k] * nx[k] + ny[k] * ny[k] + nz[k] * nz[k]).sqrt();
-        let inv = if len > 0.0 { 1.0 / len } else { 0.0 };
-        nx[k] *= inv;
-        ny[k] *= inv;
-        nz[k] *= inv;
-    }
-    // Unit vector to the eye.
-    let (mut vx, mut vy, mut vz) = ([0.0; L], [0.0; L], [0.0; L]);
-    for k in 0..L {
-        let (x, y, z) = (eye.x - px[k], eye.y - py[k], eye.z - pz[k]);
-        let len = (x * x + y * y + z * z).sqrt();
-        let inv = if len > 0.0 { 1.0 / len } else { 0.0 };
-        vx[k] = x * inv;
-        vy[k] = y * inv;
-        vz[k] = z * inv;
-    }
-    let (mut sr, mut sg, mut sb) = ([m.emissive.x; L], [m.emissive.y; L], [m.emissive.z; L]);
+    p: [F4; 3],
+    n: [F4; 3],
+    diffuse: [F4; 3],
+) -> [F4; 3] {
+    let zero = F4::splat(0.0);
+    let one = F4::splat(1.0);
+    let (n, _) = normalize(n);
+    let (v, _) = normalize([
+        F4::splat(eye.x) - p[0],
+        F4::splat(eye.y) - p[1],
+        F4::splat(eye.z) - p[2],
+    ]);
+    let mut sum = [
+        F4::splat(m.emissive.x),
+        F4::splat(m.emissive.y),
+        F4::splat(m.emissive.z),
+    ];
     let use_specular = m.specular != Vec3::ZERO;
     for l in lights {
-        // Per lane: unit vector to the light and attenuation × spot factor
+        // Unit vector to the light and attenuation × spot factor per lane
         // (0 where the light does not reach).
-        let (mut lx, mut ly, mut lz, mut factor) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
-        match l.kind {
-            WorldLightKind::Directional { to_light } => {
-                lx = [to_light.x; L];
-                ly = [to_light.y; L];
-                lz = [to_light.z; L];
-                factor = [1.0; L];
+        let (to_light, factor) = match l.kind {
+            WorldLightKind::Directional { to_light } => (
+                [
+                    F4::splat(to_light.x),
+                    F4::splat(to_light.y),
+                    F4::splat(to_light.z),
+                ],
+                one,
+            ),
+            WorldLightKind::Point {
+                location, radius, ..
             }
-            WorldLightKind::Point { location, radius }
             | WorldLightKind::Spot {
                 location, radius, ..
             } => {
+                let d = [
+                    F4::splat(location.x) - p[0],
+                    F4::splat(location.y) - p[1],
+                    F4::splat(location.z) - p[2],
+                ];
+                let (to_light, dist) = normalize(d);
+                let d2 = dist * dist;
                 let a = l.attenuation;
-                for k in 0..L {
-                    let (x, y, z) = (location.x - px[k], location.y - py[k], location.z - pz[k]);
-                    let d2 = x * x + y * y + z * z;
-                    let dist = d2.sqrt();
-                    let reach = dist <= radius && dist > 0.0;
-                    let inv = if reach { 1.0 / dist } else { 0.0 };
-                    lx[k] = x * inv;
-                    ly[k] = y * inv;
-                    lz[k] = z * inv;
-                    let att = 1.0 / (a.x + a.y * dist + a.z * d2).max(1.0);
-                    factor[k] = if reach { att } else { 0.0 };
-                }
+                let denom = (F4::splat(a.x) + F4::splat(a.y) * dist + F4::splat(a.z) * d2).max(one);
+                let reach = dist.le(F4::splat(radius)).and(dist.gt(zero));
+                let mut factor = reach.select(one.div(denom), zero);
                 if let WorldLightKind::Spot {
                     axis,
                     cos_cut_off,
@@ -300,106 +304,85 @@ fn shade_batch_any(
                     ..
                 } = l.kind
                 {
-                    spot_factor(
-                        &mut factor,
-                        [&lx, &ly, &lz],
-                        axis,
-                        cos_cut_off,
-                        cos_beam,
-                        cut_off,
-                        beam_width,
-                        exponent,
-                    );
+                    let cos = zero
+                        - (to_light[0] * F4::splat(axis.x)
+                            + to_light[1] * F4::splat(axis.y)
+                            + to_light[2] * F4::splat(axis.z));
+                    let inside = cos.gt(F4::splat(cos_cut_off));
+                    factor = inside.select(factor, zero);
+                    let full = F4::splat(cos_beam).le(cos);
+                    // Lanes lit by the spot but outside its full beam need the ramp.
+                    let partial = inside.and(factor.gt(zero)).and(F4::splat(cos_beam).gt(cos));
+                    if exponent > 0.0 || partial.any() {
+                        factor = spot_lanes(factor, cos, cos_beam, cut_off, beam_width, exponent);
+                    } else {
+                        factor = full.select(factor, zero);
+                    }
                 }
+                (to_light, factor)
             }
-        }
+        };
         let amb = l.ambient * m.ambient_intensity;
-        let mut ndl = [0.0; L];
-        for k in 0..L {
-            ndl[k] = (nx[k] * lx[k] + ny[k] * ly[k] + nz[k] * lz[k]).max(0.0);
-        }
-        let mut spec = [0.0; L];
-        if use_specular {
-            let mut ndh = [0.0; L];
-            for k in 0..L {
-                let (hx, hy, hz) = (lx[k] + vx[k], ly[k] + vy[k], lz[k] + vz[k]);
-                let hl = (hx * hx + hy * hy + hz * hz).sqrt();
-                let d = nx[k] * hx + ny[k] * hy + nz[k] * hz;
-                ndh[k] = if hl > 0.0 { (d / hl).max(0.0) } else { 0.0 };
-            }
-            let p = pow_lanes(ndh, m.exponent as u32);
-            for k in 0..L {
-                spec[k] = if ndl[k] > 0.0 { p[k] } else { 0.0 };
-            }
-        }
-        for k in 0..L {
-            let f = factor[k];
-            let d = ndl[k];
-            sr[k] +=
-                f * (amb.x * cr[k] + l.color.x * cr[k] * d + l.color.x * m.specular.x * spec[k]);
-            sg[k] +=
-                f * (amb.y * cg[k] + l.color.y * cg[k] * d + l.color.y * m.specular.y * spec[k]);
-            sb[k] +=
-                f * (amb.z * cb[k] + l.color.z * cb[k] * d + l.color.z * m.specular.z * spec[k]);
+        let ndl = dot(&n, &to_light).max(zero);
+        let lit = ndl.gt(zero);
+        let spec = if use_specular {
+            let (h, _) = normalize([to_light[0] + v[0], to_light[1] + v[1], to_light[2] + v[2]]);
+            let ndh = dot(&n, &h).max(zero);
+            lit.select(pow4(ndh, m.exponent as u32), zero)
+        } else {
+            zero
+        };
+        for ch in 0..3 {
+            let term = F4::splat(amb[ch]) * diffuse[ch]
+                + F4::splat(l.color[ch]) * diffuse[ch] * ndl
+                + F4::splat(l.color[ch] * m.specular[ch]) * spec;
+            sum[ch] = sum[ch] + factor * term;
         }
     }
-    for k in 0..b.len.min(L) {
-        out[k] = Vec3::new(sr[k], sg[k], sb[k]);
-    }
+    sum
 }
 
-/// Multiplies `factor` by the spot term: 0 outside the cut-off cone; inside,
-/// `cos^exponent` (Inventor dropOffRate) or the VRML97 ramp — 1 within the
-/// beam width, linear in the angle down to 0 at the cut-off.
-#[allow(clippy::too_many_arguments)]
-#[inline]
-fn spot_factor(
-    factor: &mut Lanes,
-    l: [&Lanes; 3],
-    axis: Vec3,
-    cos_cut_off: f32,
+/// The spot term per lane, multiplied into `factor`: `cos^exponent`
+/// (Inventor dropOffRate) or the VRML97 ramp — 1 within the beam width,
+/// linear in the angle down to 0 at the cut-off. Lanes with `factor` 0 stay 0.
+#[inline(never)]
+fn spot_lanes(
+    factor: F4,
+    cos: F4,
     cos_beam: f32,
     cut_off: f32,
     beam_width: f32,
     exponent: f32,
-) {
-    let mut cos = [0.0; LANES];
-    for k in 0..LANES {
-        cos[k] = -(l[0][k] * axis.x + l[1][k] * axis.y + l[2][k] * axis.z);
-        if cos[k] <= cos_cut_off {
-            factor[k] = 0.0;
-        }
-    }
-    for k in 0..LANES {
-        if factor[k] == 0.0 {
+) -> F4 {
+    let mut f = factor.to_array();
+    let c = cos.to_array();
+    for k in 0..4 {
+        if f[k] == 0.0 {
             continue;
         }
         let spot = if exponent > 0.0 {
-            libm::powf(cos[k], exponent)
-        } else if cos[k] >= cos_beam {
+            libm::powf(c[k], exponent)
+        } else if c[k] >= cos_beam {
             1.0
         } else {
-            let angle = libm::acosf(cos[k].clamp(-1.0, 1.0));
+            let angle = libm::acosf(c[k].clamp(-1.0, 1.0));
             ((angle - cut_off) / (beam_width - cut_off)).clamp(0.0, 1.0)
         };
-        factor[k] *= spot;
+        f[k] *= spot;
     }
+    F4::load(&f)
 }
 
-/// `x^e` on every lane by repeated squaring (the exponent is the same for
-/// all): exact same bits on every machine and build, unlike platform `powf`.
-#[inline]
-fn pow_lanes(mut x: Lanes, mut e: u32) -> Lanes {
-    let mut r = [1.0; LANES];
+/// `x^e` per lane by repeated squaring: the same bits on every machine and
+/// build, unlike platform `powf`.
+#[inline(always)]
+fn pow4(mut x: F4, mut e: u32) -> F4 {
+    let mut r = F4::splat(1.0);
     while e > 0 {
         if e & 1 == 1 {
-            for k in 0..LANES {
-                r[k] *= x[k];
-            }
+            r = r * x;
         }
-        for v in &mut x {
-            *v *= *v;
-        }
+        x = x * x;
         e >>= 1;
     }
     r
@@ -513,56 +496,7 @@ mod tests {
         let tilted = Vec3::new(0.2, 0.0, 1.0).normalize();
         let c = shade(&m, Vec3::ZERO, &[l], Vec3::ZERO, tilted, Vec3::Z * 3.0);
         assert!((c.x - tilted.z.powi(64)).abs() < 1e-6);
-        assert_eq!(pow_lanes([0.5; LANES], 10), [1.0 / 1024.0; LANES]);
-    }
-
-    /// The AVX2 build of the shader gives the same bits as the baseline one.
-    #[test]
-    #[cfg(target_arch = "x86_64")]
-    fn avx2_and_baseline_agree() {
-        if !std::is_x86_feature_detected!("avx2") {
-            eprintln!("*** NOTE: no AVX2 on this CPU; nothing to compare ***");
-            return;
-        }
-        let mut lights =
-            vec![WorldLight::new(&Light::new(LightKind::Directional), Mat4::IDENTITY).unwrap()];
-        let mut spot = Light::spot();
-        spot.location = Vec3::new(0.3, 0.2, 2.0);
-        spot.attenuation = Vec3::new(0.5, 0.3, 0.1);
-        lights.push(WorldLight::new(&spot, Mat4::IDENTITY).unwrap());
-        let mut point = Light::new(LightKind::Point);
-        point.location = Vec3::new(-1.0, 1.0, 1.0);
-        lights.push(WorldLight::new(&point, Mat4::IDENTITY).unwrap());
-        let m = ShadeMaterial::new(&Material {
-            specular: Vec3::new(0.9, 0.8, 0.7),
-            shininess: 0.37,
-            ..Material::default()
-        });
-        let mut b = Batch::default();
-        let mut seed = 12345u32;
-        let mut rnd = || {
-            seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
-            (seed >> 8) as f32 / (1 << 24) as f32 * 2.0 - 1.0
-        };
-        for round in 0..200 {
-            b.len = 0;
-            for k in 0..LANES {
-                let p = Vec3::new(rnd(), rnd(), rnd() * 0.2);
-                let n = Vec3::new(rnd(), rnd(), 1.0);
-                b.push(k as u32, p, n, Vec3::new(rnd().abs(), 0.5, 0.25));
-            }
-            let (mut x, mut y) = ([Vec3::ZERO; LANES], [Vec3::ZERO; LANES]);
-            shade_batch_any(&m, &lights, Vec3::new(0.0, 0.0, 5.0), &b, &mut x);
-            // SAFETY: AVX2 is present (checked above).
-            unsafe { shade_batch_avx2(&m, &lights, Vec3::new(0.0, 0.0, 5.0), &b, &mut y) };
-            for k in 0..LANES {
-                assert_eq!(
-                    x[k].to_array().map(f32::to_bits),
-                    y[k].to_array().map(f32::to_bits),
-                    "round {round} lane {k}"
-                );
-            }
-        }
+        assert_eq!(pow4(F4::splat(0.5), 10).to_array(), [1.0 / 1024.0; 4]);
     }
 
     #[test]

@@ -83,14 +83,19 @@ pub struct SidePanel {
 }
 
 impl SidePanel {
-    /// Splits `side` so the selection's `prop_rows` rows fit and the two lists
-    /// share what is left (each keeps its header and at least one row).
-    pub fn new(side: Rect, prop_rows: i32) -> SidePanel {
+    /// Splits `side` so the selection's `prop_rows` rows fit and the two
+    /// lists share what is left in proportion to their `rows` (each keeps
+    /// its header and at least one row).
+    pub fn new(side: Rect, prop_rows: i32, rows: [usize; 2]) -> SidePanel {
         let (scene, rest) = side.take_top(2 * ROW + 2);
         let min_lists = 2 * (2 * ROW);
         let props_h = ((prop_rows + 1) * ROW + 2).min((rest.h - min_lists).max(ROW));
         let (lists, props) = rest.take_top(rest.h - props_h);
-        let obj_h = (lists.h * 55 / 100).max(2 * ROW.min(lists.h / 2));
+        let free_rows = ((lists.h - 2 * ROW) / ROW).max(2);
+        let (a, b) = (rows[0].max(1) as i32, rows[1].max(1) as i32);
+        let obj_rows = (free_rows * a + (a + b) / 2) / (a + b);
+        let obj_rows = obj_rows.clamp(1, (free_rows - 1).max(1));
+        let obj_h = ((obj_rows + 1) * ROW).min(lists.h);
         let (objects, lights) = lists.take_top(obj_h);
         SidePanel {
             scene,
@@ -116,7 +121,8 @@ mod tests {
                 l.viewport.w > l.side.w,
                 "{w}x{h}: viewport is the main area"
             );
-            let s = SidePanel::new(l.side, 5);
+            let s = SidePanel::new(l.side, 5, [6, 3]);
+            assert!(s.objects.h >= 2 * ROW && s.lights.h >= 2 * ROW);
             assert_eq!(s.scene.h + s.objects.h + s.lights.h + s.props.h, l.side.h);
         }
     }
