@@ -396,3 +396,108 @@ fn idle_events_do_not_ask_for_redraws() {
         mods: Mods::NONE
     }));
 }
+
+fn temp_dir(tag: &str) -> std::path::PathBuf {
+    let d = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("editor-session-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn save_as_open_and_import_through_the_browser() {
+    let dir = temp_dir("files");
+    let mut ed = editor();
+    ed.set_start_dir(&dir);
+    ed.select(Some(NodeId(0)));
+    key(&mut ed, Key::Delete, Mods::NONE);
+    assert!(ed.is_dirty());
+    // Ctrl+S without a file asks for a name; the browser's path starts as
+    // the folder, typing appends the file name.
+    key(&mut ed, Key::Char('s'), Mods::ctrl());
+    assert!(ed.browser().is_some());
+    ed.handle(Event::Text("saved".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    let saved = dir.join("saved.wrl");
+    assert!(ed.browser().is_none(), "status: {:?}", ed.status());
+    assert!(
+        saved.is_file(),
+        ".wrl is added when no known extension is typed"
+    );
+    assert!(!ed.is_dirty());
+    assert_eq!(ed.path(), Some(saved.as_path()));
+    // Open it again into a fresh editor.
+    let mut other = Editor::new(Scene::new(), None, 480, 320);
+    other.set_start_dir(&dir);
+    key(&mut other, Key::Char('o'), Mods::ctrl());
+    other.handle(Event::Text("saved.wrl".into()));
+    key(&mut other, Key::Enter, Mods::NONE);
+    assert!(other.browser().is_none(), "status: {:?}", other.status());
+    assert!(other.scene().find_node("Right").is_some());
+    assert!(
+        other.scene().find_node("Left").is_none(),
+        "deleted before saving"
+    );
+    assert!(other.scene().find_node("Lamp").is_some());
+    // Import it into the first editor as a new object (undoable).
+    let before = ed.scene().nodes.len();
+    key(&mut ed, Key::Char('i'), Mods::ctrl());
+    ed.handle(Event::Text("saved.wrl".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    let group = ed.selection().expect("the import is selected");
+    assert_eq!(ed.scene().node(group).name, "saved");
+    assert!(ed.scene().nodes.len() > before);
+    assert!(ed.is_dirty());
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(ed.scene().nodes.len(), before);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn ctrl_s_saves_in_place_and_quit_can_save_first() {
+    let dir = temp_dir("inplace");
+    let path = dir.join("scene.wrl");
+    let mut ed = Editor::new(scene(), Some(path.clone()), 480, 320);
+    ed.select(Some(NodeId(2)));
+    key(&mut ed, Key::Delete, Mods::NONE);
+    key(&mut ed, Key::Char('q'), Mods::ctrl());
+    assert!(ed.dialog().is_some());
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert!(path.is_file(), "Save in the dialog wrote the file");
+    assert!(ed.wants_quit());
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        text.starts_with("#VRML V2.0"),
+        "{}",
+        &text[..40.min(text.len())]
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn opening_a_bad_file_reports_it_and_keeps_the_scene() {
+    let dir = temp_dir("bad");
+    std::fs::write(
+        dir.join("broken.wrl"),
+        "#VRML V2.0 utf8\nShape { geometry Box { size 1 2 } \n",
+    )
+    .unwrap();
+    let mut ed = editor();
+    ed.set_start_dir(&dir);
+    key(&mut ed, Key::Char('o'), Mods::ctrl());
+    ed.handle(Event::Text("broken.wrl".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert!(ed.status().error);
+    assert!(
+        ed.status().text.contains("broken.wrl:"),
+        "{}",
+        ed.status().text
+    );
+    assert!(
+        ed.browser().is_some(),
+        "the browser stays open to pick another"
+    );
+    assert_eq!(ed.scene().nodes.len(), 5);
+    let _ = std::fs::remove_dir_all(&dir);
+}

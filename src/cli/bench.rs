@@ -56,6 +56,11 @@ pub fn sections() -> Vec<Section> {
             about: "track sampling and whole-scene evaluation (1000 tracks of each kind)",
             run: bench_animation,
         },
+        Section {
+            name: "editor",
+            about: "editor frame on the demo scene: scene + grid + overlay + panels",
+            run: bench_editor,
+        },
     ]
 }
 
@@ -235,4 +240,21 @@ fn bench_demo(args: &Args) -> Result<Vec<String>, String> {
         t.describe(),
         1.0 / t.wall.as_secs_f64()
     )])
+}
+
+/// The editor's frame time: a full redraw (scene render, grid, outline,
+/// gizmos, panels) and an overlay-only redraw over the cached scene picture.
+fn bench_editor(args: &Args) -> Result<Vec<String>, String> {
+    let (w, h) = args.size;
+    let mut ed = crate::editor::bench::setup(w, h);
+    let mut frame = crate::render::Frame::new(w, h, glam::Vec3::ZERO);
+    let full = time_it(args.seconds, || {
+        ed.invalidate();
+        ed.draw(&mut frame);
+    });
+    let overlay = time_it(args.seconds, || ed.draw(&mut frame));
+    Ok(vec![
+        format!("editor frame (scene + overlay): {}", full.describe()),
+        format!("overlay only (scene cached): {}", overlay.describe()),
+    ])
 }

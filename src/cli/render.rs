@@ -169,7 +169,7 @@ pub fn save_png_atomic(frame: &Frame, path: &Path) -> Result<(), String> {
     })
 }
 
-/// Parses `WIDTHxHEIGHT` (each 1..=16384).
+/// Parses `WIDTHxHEIGHT` (each side 1..=16384, at most 64 Mpix).
 pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once(['x', 'X'])
@@ -187,7 +187,14 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
         }
         Ok(n)
     };
-    Ok((side(w)?, side(h)?))
+    let (w, h) = (side(w)?, side(h)?);
+    if w as u64 * h as u64 > crate::render::MAX_PIXELS {
+        return Err(format!(
+            "size {s:?}: more than {} pixels",
+            crate::render::MAX_PIXELS
+        ));
+    }
+    Ok((w, h))
 }
 
 pub fn parse_style(s: &str) -> Result<RenderStyle, String> {
@@ -233,6 +240,8 @@ mod tests {
         assert_eq!(parse_size("320x240"), Ok((320, 240)));
         assert!(parse_size("0x10").is_err());
         assert!(parse_size("99999x10").is_err());
+        assert!(parse_size("16384x16384").is_err());
+        assert_eq!(parse_size("8192x8192"), Ok((8192, 8192)));
         assert!(parse_size("abc").is_err());
         assert_eq!(parse_rgb("0,0.5,1"), Ok(Vec3::new(0.0, 0.5, 1.0)));
         assert!(parse_rgb("0,2,1").is_err());

@@ -11,10 +11,21 @@ use std::time::Instant;
 pub struct FrameTimes {
     pub width: u32,
     pub height: u32,
+    /// Frames measured of each kind.
+    pub frames: usize,
     /// Scene render + grid + overlay + panels.
     pub full_ms: f64,
     /// Overlay + panels over the cached scene picture.
     pub overlay_ms: f64,
+}
+
+/// The benchmark's editor: the demo scene with its first object selected
+/// (so the outline pass runs too).
+pub fn setup(width: u32, height: u32) -> Editor {
+    let mut ed = Editor::with_demo(width, height);
+    let first = super::ops::objects(ed.scene()).first().map(|(id, _)| *id);
+    ed.select(first);
+    ed
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -22,17 +33,17 @@ fn median(mut v: Vec<f64>) -> f64 {
     v.get(v.len() / 2).copied().unwrap_or(0.0)
 }
 
-/// Draws `frames` full and `frames` overlay-only frames of the demo scene
-/// (with its first object selected) at `width`×`height`.
-pub fn bench_frame(width: u32, height: u32, frames: usize) -> FrameTimes {
-    let mut ed = Editor::with_demo(width, height);
-    let first = super::ops::objects(ed.scene()).first().map(|(id, _)| *id);
-    ed.select(first);
+/// Draws full and overlay-only frames of the demo scene (with its first
+/// object selected) at `width`×`height` for at least `min_seconds` (and at
+/// least 5 of each).
+pub fn bench_frame(width: u32, height: u32, min_seconds: f64) -> FrameTimes {
+    let mut ed = setup(width, height);
     let mut frame = Frame::new(width, height, glam::Vec3::ZERO);
     ed.draw(&mut frame); // warm-up: allocations, caches
-    let mut full = Vec::with_capacity(frames);
-    let mut overlay = Vec::with_capacity(frames);
-    for _ in 0..frames.max(1) {
+    let mut full = Vec::new();
+    let mut overlay = Vec::new();
+    let start = Instant::now();
+    while full.len() < 5 || start.elapsed().as_secs_f64() < min_seconds {
         ed.invalidate();
         let t = Instant::now();
         ed.draw(&mut frame);
@@ -44,6 +55,7 @@ pub fn bench_frame(width: u32, height: u32, frames: usize) -> FrameTimes {
     FrameTimes {
         width,
         height,
+        frames: full.len(),
         full_ms: median(full),
         overlay_ms: median(overlay),
     }
