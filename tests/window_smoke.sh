@@ -58,7 +58,7 @@ app_pid=$!
 
 wid=""
 for _ in $(seq 1 100); do
-  wid=$(xdotool search --name '^animed$' 2>/dev/null | head -1)
+  wid=$(xdotool search --name '^animed' 2>/dev/null | head -1)
   [ -n "$wid" ] && break
   kill -0 "$app_pid" 2>/dev/null || { cat "$OUT/animed.log"; fail "animed exited early"; }
   sleep 0.1
@@ -134,6 +134,9 @@ shot 4-typed
 n=$(diff_px 3-orbited 4-typed "$VIEW_GEOM")
 echo "window_smoke: typing 3 + Enter changed $n viewport pixels"
 [ "${n%.*}" -gt 200 ] || fail "typing into the translation field changed nothing"
+title=$(xdotool getwindowname "$wid")
+echo "window_smoke: title '$title'"
+case "$title" in *"*") ;; *) fail "the title does not mark unsaved changes: '$title'" ;; esac
 
 # Ctrl+Q now asks (unsaved change); D discards and quits.
 xdotool key ctrl+q

@@ -79,6 +79,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     let mut buttons = [false; 3];
     let mut last_input = Instant::now();
     let mut dirty = true;
+    let mut title = String::from("animed");
 
     while window.is_open() && !ed.wants_quit() {
         let mut events = Vec::new();
@@ -172,6 +173,11 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
             dirty |= ed.handle(Event::Tick {
                 time: start.elapsed().as_secs_f64(),
             });
+        }
+        let t = ed.window_title();
+        if t != title {
+            window.set_title(&t);
+            title = t;
         }
         if dirty {
             ed.draw(&mut frame);
