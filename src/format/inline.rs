@@ -28,11 +28,17 @@ pub fn resolve(base: &Path, urls: &[String]) -> Option<PathBuf> {
     })
 }
 
+/// Scenes already loaded by this file's Inline/File nodes, by path, so a
+/// file inlined many times is read once (and warned about once).
+pub type Cache = std::collections::HashMap<PathBuf, Option<Scene>>;
+
 /// Loads the file named by `urls` and adds its scene under `parent`;
 /// problems become warnings (`path:line:column: message`).
+#[allow(clippy::too_many_arguments)]
 pub fn load_into(
     scene: &mut Scene,
     warnings: &mut Vec<String>,
+    cache: &mut Cache,
     base: &Path,
     pos: Pos,
     urls: &[String],
@@ -52,12 +58,21 @@ pub fn load_into(
         )));
         return;
     };
-    match crate::format::load_nested(&file, depth + 1) {
-        Ok(mut loaded) => {
-            graft(scene, &loaded.scene, parent);
-            warnings.append(&mut loaded.warnings);
-        }
-        Err(e) => warnings.push(at(format!("inline file not loaded: {e}"))),
+    if !cache.contains_key(&file) {
+        let loaded = match crate::format::load_nested(&file, depth + 1) {
+            Ok(mut loaded) => {
+                warnings.append(&mut loaded.warnings);
+                Some(loaded.scene)
+            }
+            Err(e) => {
+                warnings.push(at(format!("inline file not loaded: {e}")));
+                None
+            }
+        };
+        cache.insert(file.clone(), loaded);
+    }
+    if let Some(Some(src)) = cache.get(&file) {
+        graft(scene, src, parent);
     }
 }
 

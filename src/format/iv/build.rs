@@ -85,6 +85,7 @@ pub struct Builder {
     coords: HashMap<usize, Rc<Vec<Vec3>>>,
     build_depth: usize,
     full: bool,
+    inlines: inline::Cache,
 }
 
 impl Builder {
@@ -101,6 +102,7 @@ impl Builder {
             coords: HashMap::new(),
             build_depth: 0,
             full: false,
+            inlines: inline::Cache::new(),
         }
     }
 
@@ -245,6 +247,7 @@ impl Builder {
                     inline::load_into(
                         &mut self.scene,
                         &mut self.warnings,
+                        &mut self.inlines,
                         &self.path,
                         n.pos,
                         &urls,

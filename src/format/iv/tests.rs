@@ -151,3 +151,12 @@ fn rotor_spins_once_per_period_and_loops() {
     let quarter = k.iter().find(|k| k.frame == 12.0).unwrap().value;
     assert!(quarter.angle_between(glam::Quat::from_rotation_y(std::f32::consts::FRAC_PI_2)) < 1e-5);
 }
+
+#[test]
+fn engine_connections_are_read_and_ignored() {
+    let l = load(
+        "#Inventor V2.0 ascii\nSeparator { DEF C Crank { size 1 } RivetHinge { origin = USE C . endPoint hingePoint 2 2 0 } Translation { translation 1 0 0 = ElapsedTime { speed 2 }.timeOut } DEF A Cube {} }",
+    );
+    assert!(l.scene.find_node("A").is_some());
+    assert!(l.warnings.iter().any(|w| w.contains("connections")));
+}

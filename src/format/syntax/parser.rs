@@ -356,7 +356,13 @@ impl Parser<'_> {
                             self.node_statement()?;
                             // `.output` follows the node's closing brace.
                             if let Tok::Ident(s) = self.peek()? {
-                                if s.starts_with('.') {
+                                if s == "." {
+                                    // `USE X . output` written with spaces.
+                                    self.next()?;
+                                    if let Tok::Ident(_) = self.peek()? {
+                                        self.next()?;
+                                    }
+                                } else if s.starts_with('.') {
                                     self.next()?;
                                 }
                             }
@@ -385,6 +391,8 @@ impl Parser<'_> {
 
     fn raw_value(&mut self) -> PResult<Value> {
         match self.peek()? {
+            // Inventor: a field given only by a connection (`origin = USE X.out`).
+            Tok::Punct(b'=') => Ok(Value::Empty),
             Tok::Num(_) => {
                 let mut v = Vec::new();
                 self.numbers(&mut v)?;

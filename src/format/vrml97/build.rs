@@ -52,6 +52,7 @@ pub struct Builder {
     saw_background: bool,
     build_depth: usize,
     full: bool,
+    inlines: inline::Cache,
     /// Non-zero while adding a Switch choice that is not shown: its shapes are
     /// kept (hidden) but its lights, viewpoints and bindable nodes are not.
     hidden: usize,
@@ -74,6 +75,7 @@ impl Builder {
             saw_background: false,
             build_depth: 0,
             full: false,
+            inlines: inline::Cache::new(),
             hidden: 0,
         }
     }
@@ -201,6 +203,7 @@ impl Builder {
                     inline::load_into(
                         &mut self.scene,
                         &mut self.warnings,
+                        &mut self.inlines,
                         &self.path,
                         eff.pos,
                         &urls,
