@@ -308,12 +308,14 @@ fn timeline_click_seeks() {
 #[test]
 fn quit_asks_when_unsaved() {
     let mut ed = editor();
+    assert_eq!(ed.window_title(), "animed — untitled");
     key(&mut ed, Key::Char('q'), Mods::ctrl());
     assert!(ed.wants_quit(), "nothing to save: quits at once");
     let mut ed = editor();
     key(&mut ed, Key::Char('g'), Mods::NONE);
     ed.select(Some(NodeId(0)));
     key(&mut ed, Key::Delete, Mods::NONE);
+    assert_eq!(ed.window_title(), "animed — untitled *");
     key(&mut ed, Key::Char('q'), Mods::ctrl());
     assert!(!ed.wants_quit());
     assert!(ed.dialog().is_some());

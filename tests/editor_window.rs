@@ -16,6 +16,16 @@ fn window_smoke() {
         .into_iter()
         .find(|w| matches!(w.kind, WidgetKind::Row { .. }))
         .expect("the demo scene has objects");
+    // The properties' first translation field once the row is selected.
+    let mut selected = Editor::with_demo(800, 600);
+    if let WidgetKind::Row { node, .. } = row.kind {
+        selected.select(Some(node));
+    }
+    let field = selected
+        .widgets()
+        .into_iter()
+        .find(|w| format!("{:?}", w.kind) == "Field(Translation(0))")
+        .expect("a selected object shows its translation");
     let vp = l.viewport;
     let geom = |r: animed::ui::Rect| format!("{}x{}+{}+{}", r.w, r.h, r.x, r.y);
     let out = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("window-smoke");
@@ -26,6 +36,8 @@ fn window_smoke() {
         .arg(&out)
         .env("ROW_X", (row.rect.x + 20).to_string())
         .env("ROW_Y", (row.rect.y + row.rect.h / 2).to_string())
+        .env("FIELD_X", (field.rect.x + field.rect.w / 2).to_string())
+        .env("FIELD_Y", (field.rect.y + field.rect.h / 2).to_string())
         .env("VIEW_X", (vp.x + vp.w / 3).to_string())
         .env("VIEW_Y", (vp.y + vp.h / 2).to_string())
         .env("VIEW_GEOM", geom(vp))

@@ -6,8 +6,11 @@
 # `animed render --time`, and compares each pair:
 #   mae  = mean absolute difference over all pixels (0..1, ImageMagick MAE)
 #   iou  = silhouette agreement: non-background pixels, intersection / union
-# Thresholds (a pair fails below them): iou >= 0.90, mae <= 0.08. Lighting
-# models differ a little between viewers; geometry, camera and timing must not.
+# Thresholds (a pair fails outside them): iou >= 0.90, mae <= 0.10. Lighting
+# models differ between viewers (Coin lights per vertex, so a spot light's
+# pool on the demo's big floor quad vanishes there; Inventor has no spot
+# beamWidth), which is what the mae allows for; geometry, camera and timing
+# must agree, which is what the iou checks.
 #
 # Needs: view3dscene, /usr/bin/python3 with pivy + PySide2 + OpenGL,
 # ImageMagick (/usr/bin/convert, /usr/bin/compare), Xvfb.
@@ -76,7 +79,7 @@ compare_pair() {
   union=$(/usr/bin/convert "$OUT/m1.png" "$OUT/m2.png" -compose lighten -composite -format '%[fx:mean*w*h]' info:)
   iou=$(awk -v i="$inter" -v u="$union" 'BEGIN { if (u == 0) print 1; else printf "%.4f", i / u }')
   local verdict=ok
-  if ! awk -v x="$iou" -v m="$mae" 'BEGIN { exit !(x >= 0.90 && m <= 0.08) }'; then
+  if ! awk -v x="$iou" -v m="$mae" 'BEGIN { exit !(x >= 0.90 && m <= 0.10) }'; then
     verdict=FAIL
     fail=1
   fi

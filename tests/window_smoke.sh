@@ -8,6 +8,7 @@
 # Coordinates (window pixels) come from the environment, computed by
 # tests/editor_window.rs from the editor's own layout:
 #   ROW_X ROW_Y    a row of the objects list
+#   FIELD_X FIELD_Y  the selected object's translation x field
 #   VIEW_X VIEW_Y  a point inside the viewport
 #   SIDE_GEOM VIEW_GEOM   ImageMagick crop geometries (WxH+X+Y)
 # Exit status: 0 ok, 1 a check failed, 77 a tool is missing.
@@ -57,7 +58,7 @@ app_pid=$!
 
 wid=""
 for _ in $(seq 1 100); do
-  wid=$(xdotool search --name '^animed$' 2>/dev/null | head -1)
+  wid=$(xdotool search --name '^animed' 2>/dev/null | head -1)
   [ -n "$wid" ] && break
   kill -0 "$app_pid" 2>/dev/null || { cat "$OUT/animed.log"; fail "animed exited early"; }
   sleep 0.1
@@ -123,8 +124,26 @@ n=$(diff_px 2-grid-off 3-orbited "$VIEW_GEOM")
 echo "window_smoke: middle-drag changed $n viewport pixels"
 [ "${n%.*}" -gt 200 ] || fail "middle-drag did not orbit"
 
-# Ctrl+Q quits (nothing was changed, so no question).
+# Typing into a field: click, type, Enter moves the object.
+xdotool mousemove $(at "$FIELD_X" "$FIELD_Y") mousedown 1 sleep 0.1 mouseup 1
+sleep 0.3
+xdotool type --delay 50 "3"
+xdotool key Return
+sleep 0.5
+shot 4-typed
+n=$(diff_px 3-orbited 4-typed "$VIEW_GEOM")
+echo "window_smoke: typing 3 + Enter changed $n viewport pixels"
+[ "${n%.*}" -gt 200 ] || fail "typing into the translation field changed nothing"
+title=$(xdotool getwindowname "$wid")
+echo "window_smoke: title '$title'"
+case "$title" in *"*") ;; *) fail "the title does not mark unsaved changes: '$title'" ;; esac
+
+# Ctrl+Q now asks (unsaved change); D discards and quits.
 xdotool key ctrl+q
+sleep 0.5
+shot 5-quit-question
+kill -0 "$app_pid" 2>/dev/null || fail "Ctrl+Q quit without asking about the unsaved change"
+xdotool key d
 for _ in $(seq 1 50); do
   kill -0 "$app_pid" 2>/dev/null || break
   sleep 0.1

@@ -4,8 +4,11 @@
 //! to no CPU.
 
 mod keymap;
+mod screen;
 
-use crate::editor::{Editor, Event, Mods, MouseButton};
+pub use screen::Screen;
+
+use crate::editor::{Event, Mods, MouseButton};
 use crate::render::Frame;
 use minifb::{MouseMode, Window, WindowOptions};
 use std::cell::RefCell;
@@ -43,8 +46,9 @@ impl minifb::InputCallback for Sink {
     }
 }
 
-/// Opens the window and runs the editor until it quits or the window closes.
-pub fn run(mut ed: Editor) -> Result<(), String> {
+/// Opens the window and runs the editor (or the viewer) until it quits or
+/// the window closes.
+pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
         return Err(no_display("DISPLAY is not set"));
     }
@@ -55,7 +59,8 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
     };
     // minifb reports a missing X server or libraries as an error; guard
     // against a panic in its C glue as well.
-    let window = std::panic::catch_unwind(|| Window::new("animed", w as usize, h as usize, opts));
+    let title = ed.title();
+    let window = std::panic::catch_unwind(|| Window::new(&title, w as usize, h as usize, opts));
     let mut window = match window {
         Ok(Ok(win)) => win,
         Ok(Err(e)) => return Err(no_display(&e.to_string())),
@@ -74,6 +79,7 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
     let mut buttons = [false; 3];
     let mut last_input = Instant::now();
     let mut dirty = true;
+    let mut title = String::from("animed");
 
     while window.is_open() && !ed.wants_quit() {
         let mut events = Vec::new();
@@ -167,6 +173,11 @@ pub fn run(mut ed: Editor) -> Result<(), String> {
             dirty |= ed.handle(Event::Tick {
                 time: start.elapsed().as_secs_f64(),
             });
+        }
+        let t = ed.window_title();
+        if t != title {
+            window.set_title(&t);
+            title = t;
         }
         if dirty {
             ed.draw(&mut frame);

@@ -20,7 +20,7 @@ pub struct Args {
     pub size: (u32, u32),
 }
 
-/// Parses `WxH` (each 16..=8192).
+/// Parses `WxH` (each 16..=4096).
 pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once(['x', 'X'])
@@ -29,8 +29,8 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
         v.trim()
             .parse::<u32>()
             .ok()
-            .filter(|n| (16..=8192).contains(n))
-            .ok_or_else(|| format!("'{v}' is not a size from 16 to 8192"))
+            .filter(|n| (16..=4096).contains(n))
+            .ok_or_else(|| format!("'{v}' is not a size from 16 to 4096"))
     };
     Ok((p(w)?, p(h)?))
 }

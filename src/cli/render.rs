@@ -46,6 +46,18 @@ pub struct Args {
     /// Frame number at which to evaluate the animation (uses the scene's fps).
     #[arg(long)]
     pub frame: Option<f32>,
+    /// Render a range: START:STEP:COUNT in seconds (frame i at START + i·STEP).
+    /// -o is then a pattern whose run of # becomes the zero-padded frame
+    /// index (frames/f_####.png), or a .gif (looping, STEP per frame).
+    #[arg(long, conflicts_with_all = ["time", "frame", "frames"])]
+    pub range: Option<String>,
+    /// Render scene frames A..=B (inclusive, at the scene's fps), as --range.
+    #[arg(long, conflicts_with_all = ["time", "frame"])]
+    pub frames: Option<String>,
+    /// With --range/--frames: render only frame indices i with i mod N = K
+    /// (K/N, K from 0), to spread a range over machines.
+    #[arg(long)]
+    pub shard: Option<String>,
 }
 
 /// A loaded scene and everything needed to draw frames of it.
@@ -108,6 +120,21 @@ pub fn prepare(args: &Args) -> Result<Job, String> {
 }
 
 pub fn run(args: Args) -> i32 {
+    let range = crate::output::RangeArgs {
+        range: args.range.as_deref(),
+        frames: args.frames.as_deref(),
+        shard: args.shard.as_deref(),
+        output: &args.output,
+    };
+    if range.wanted() {
+        let result = prepare(&args)
+            .and_then(|job| crate::output::render_range(&job.scene, &job.spec, range));
+        if let Err(e) = result {
+            eprintln!("animed render: {e}");
+            return 1;
+        }
+        return 0;
+    }
     let result = prepare(&args).and_then(|job| {
         let frame = render_at(&job.scene, &job.spec, job.time)?;
         save_png_atomic(&frame, &job.output).map_err(|e| format!("{}: {e}", job.output.display()))
@@ -142,7 +169,7 @@ pub fn save_png_atomic(frame: &Frame, path: &Path) -> Result<(), String> {
     })
 }
 
-/// Parses `WIDTHxHEIGHT` (each 1..=16384).
+/// Parses `WIDTHxHEIGHT` (each side 1..=16384, at most 64 Mpix).
 pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once(['x', 'X'])
@@ -160,7 +187,14 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
         }
         Ok(n)
     };
-    Ok((side(w)?, side(h)?))
+    let (w, h) = (side(w)?, side(h)?);
+    if w as u64 * h as u64 > crate::render::MAX_PIXELS {
+        return Err(format!(
+            "size {s:?}: more than {} pixels",
+            crate::render::MAX_PIXELS
+        ));
+    }
+    Ok((w, h))
 }
 
 pub fn parse_style(s: &str) -> Result<RenderStyle, String> {
@@ -206,6 +240,8 @@ mod tests {
         assert_eq!(parse_size("320x240"), Ok((320, 240)));
         assert!(parse_size("0x10").is_err());
         assert!(parse_size("99999x10").is_err());
+        assert!(parse_size("16384x16384").is_err());
+        assert_eq!(parse_size("8192x8192"), Ok((8192, 8192)));
         assert!(parse_size("abc").is_err());
         assert_eq!(parse_rgb("0,0.5,1"), Ok(Vec3::new(0.0, 0.5, 1.0)));
         assert!(parse_rgb("0,2,1").is_err());

@@ -260,6 +260,17 @@ impl Editor {
     pub fn wants_ticks(&self) -> bool {
         self.playback.is_some()
     }
+    /// "animed — name.wrl *" (the mark when there are unsaved changes).
+    pub fn window_title(&self) -> String {
+        let name = self
+            .path
+            .as_ref()
+            .and_then(|p| p.file_name())
+            .map(|s| s.to_string_lossy().to_string())
+            .unwrap_or_else(|| "untitled".into());
+        format!("animed — {name}{}", if self.is_dirty() { " *" } else { "" })
+    }
+
     /// Layout of the current window.
     pub fn layout(&self) -> Layout {
         Layout::new(self.width as i32, self.height as i32, 0)

@@ -47,7 +47,7 @@ impl std::error::Error for ScriptError {}
 /// Steps of a drag between its end points.
 const DRAG_STEPS: usize = 8;
 /// Largest window a script may ask for.
-const MAX_SIDE: u32 = 8192;
+const MAX_SIDE: u32 = 4096;
 /// Largest wait, so a typo cannot hang a session.
 const MAX_WAIT: u64 = 100_000;
 

@@ -105,17 +105,26 @@ pub fn write(scene: &Scene, plan: &WritePlan) -> String {
     if let Some(h) = scene.settings.headlight {
         let _ = writeln!(s, "headlight {}", if h { "on" } else { "off" });
     }
+    // Sorted by name: the order must not depend on how a reader orders nodes.
+    let mut flags: Vec<(String, String)> = Vec::new();
     for id in scene.walk() {
         let node = scene.node(id);
         let Some(name) = plan.node_name(id) else {
             continue;
         };
         if !node.visible {
-            let _ = writeln!(s, "hidden {name}");
+            flags.push((name.to_string(), format!("hidden {name}")));
         }
         if node.style != RenderStyle::Filled {
-            let _ = writeln!(s, "style {name} {}", style_name(node.style));
+            flags.push((
+                format!("{name}~"),
+                format!("style {name} {}", style_name(node.style)),
+            ));
         }
+    }
+    flags.sort();
+    for (_, line) in flags {
+        let _ = writeln!(s, "{line}");
     }
     for t in &scene.animation.tracks {
         let Some((owner, name)) = plan.target_name(t.target.of, t.target.property) else {

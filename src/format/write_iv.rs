@@ -2,12 +2,17 @@
 //! animation, or `#Inventor V1.0 ascii` (still scene only) for readers that
 //! know just 1.0 (view3dscene, VRML 1.0 tools).
 //!
-//! Layout: every scene node with a transform, children or a shape is a
-//! `Separator` (lights: `TransformSeparator`, so the light still reaches the
-//! rest of the scene) holding `MatrixTransform`, `DEF NAME Transform`, its
-//! content, then its children. The node's name sits on the Transform, since
-//! an Inventor reader makes a named Transform the group that carries it. Lights are written before their siblings, because an
-//! Inventor light only lights what follows it.
+//! Layout (chosen so that reading the file back and writing it again gives
+//! the same bytes): a node with a transform, children or hidden state is a
+//! `Separator` holding `MatrixTransform`, `DEF NAME Transform`, then its
+//! content and children; the name sits on the Transform because a reader
+//! makes a DEF'd Transform the named group holding what follows it. A named
+//! node whose first item is a light uses `TransformSeparator`, so the light
+//! still reaches the rest of the scene; lights are written before their
+//! siblings, since an Inventor light only lights what follows it. A plain
+//! shape is `Separator { state… DEF NAME IndexedFaceSet }`. Equal point and
+//! normal lists are shared (DEF/USE `_coords`, `_normals`). An unnamed
+//! identity group around one such Separator is that Separator.
 //!
 //! Animation (2.1): one `Calculator`, fed by an `ElapsedTime` engine, turns
 //! the time into a frame index `oa = floor(fmod(t·fps + 0.001, duration))`;
@@ -35,6 +40,7 @@ use crate::scene::{
     Camera, CameraKind, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene, Shape, Transform,
 };
 use glam::{Quat, Vec3};
+use std::collections::HashMap;
 
 struct Writer<'a> {
     scene: &'a Scene,
@@ -45,8 +51,10 @@ struct Writer<'a> {
     clock: Option<String>,
     clock_defined: bool,
     written_materials: Vec<bool>,
-    /// Names of a named mesh's Coordinate3, Normal and face set once written.
-    written_meshes: Vec<Option<[Option<String>; 3]>>,
+    /// How many shapes use each set of points + normals.
+    coord_uses: HashMap<Vec<u32>, usize>,
+    /// DEF names of shared Coordinate3 / Normal nodes once written.
+    coord_names: HashMap<Vec<u32>, (String, Option<String>)>,
     report: WriteReport,
 }
 
@@ -70,7 +78,8 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         clock: None,
         clock_defined: false,
         written_materials: vec![false; scene.materials.len()],
-        written_meshes: vec![None; scene.meshes.len()],
+        coord_uses: coord_uses(scene),
+        coord_names: HashMap::new(),
         report: WriteReport::default(),
     };
     if !w.channels.is_empty() {
@@ -108,7 +117,15 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
     }
     let note = keynote::write(scene, &w.plan);
     w.out.line(&format!("Info {{ string {} }}", quoted(&note)));
-    for id in lights_first(scene, &scene.roots) {
+    // Lights (and groups that start with one) first, as inside groups.
+    let mut roots: Vec<NodeId> = scene
+        .roots
+        .iter()
+        .copied()
+        .filter(|&r| w.lightish(r))
+        .collect();
+    roots.extend(scene.roots.iter().copied().filter(|&r| !w.lightish(r)));
+    for id in roots {
         w.node(id);
     }
     if v1 {
@@ -123,12 +140,50 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
     (w.out.text, w.report)
 }
 
-/// `ids` with the light nodes moved to the front (stable otherwise).
-fn lights_first(scene: &Scene, ids: &[NodeId]) -> Vec<NodeId> {
-    let is_light = |id: &NodeId| matches!(scene.node(*id).kind, NodeKind::Light(_));
-    let mut v: Vec<NodeId> = ids.iter().copied().filter(is_light).collect();
-    v.extend(ids.iter().copied().filter(|id| !is_light(id)));
-    v
+/// The grey `ambientColor` that reads back as `ambient_intensity` exactly:
+/// readers take the channels' mean, and `(b + b + b) / 3` is not always `b`
+/// in f32, so look a few ulps around for a `b` that gives `a` back.
+fn ambient_grey(a: f32) -> f32 {
+    let mean = |b: f32| (b + b + b) / 3.0;
+    if !a.is_finite() || a <= 0.0 || mean(a) == a {
+        return a;
+    }
+    (1..=8u32)
+        .flat_map(|d| [a.to_bits() + d, a.to_bits() - d])
+        .map(f32::from_bits)
+        .find(|&b| mean(b) == a)
+        .unwrap_or(a)
+}
+
+/// The identity of a mesh's Coordinate3 + Normal: their bits.
+fn mesh_key(m: &Mesh) -> Vec<u32> {
+    let mut k: Vec<u32> = m
+        .positions
+        .iter()
+        .flat_map(|p| p.to_array())
+        .map(f32::to_bits)
+        .collect();
+    k.push(u32::MAX);
+    k.extend(
+        m.normals
+            .iter()
+            .flat_map(|p| p.to_array())
+            .map(f32::to_bits),
+    );
+    k
+}
+
+/// How many shape nodes use each mesh key.
+fn coord_uses(scene: &Scene) -> HashMap<Vec<u32>, usize> {
+    let mut uses = HashMap::new();
+    for n in &scene.nodes {
+        if let NodeKind::Shape(s) = &n.kind {
+            if let Some(m) = scene.meshes.get(s.mesh.0 as usize) {
+                *uses.entry(mesh_key(m)).or_insert(0) += 1;
+            }
+        }
+    }
+    uses
 }
 
 fn def(name: &Option<String>) -> String {
@@ -269,17 +324,48 @@ impl Writer<'_> {
             self.out.open("Switch");
             self.out.line("whichChild -1");
         }
-        if !self.plan.wrapped[i] {
-            self.content(id);
+        if self.collapsible(id) {
+            // An unnamed identity group around one node that brings its own
+            // Separator: that Separator is the group (a reader turns it back
+            // into exactly this group), so writing both would nest deeper on
+            // every round trip.
+            self.node(node.children[0]);
+        } else if !self.plan.wrapped[i] {
+            match &node.kind {
+                NodeKind::Shape(s) => {
+                    self.out.open("Separator");
+                    let name = self.plan.content[i].clone();
+                    self.shape(s, &name);
+                    self.out.close("}");
+                }
+                _ => self.content(id),
+            }
         } else {
-            let group = if matches!(node.kind, NodeKind::Light(_)) {
+            // The node's own content reads back as its first child, so it
+            // is ordered with the children (lights first) to keep the file
+            // the same on every round trip. `None` stands for the content.
+            let is_light = |c: Option<NodeId>| match c {
+                Some(c) => self.lightish(c),
+                None => matches!(node.kind, NodeKind::Light(_)),
+            };
+            let mut items: Vec<Option<NodeId>> = Vec::new();
+            if !matches!(node.kind, NodeKind::Group) {
+                items.push(None);
+            }
+            items.extend(node.children.iter().map(|&c| Some(c)));
+            let mut sorted: Vec<Option<NodeId>> =
+                items.iter().copied().filter(|c| is_light(*c)).collect();
+            sorted.extend(items.iter().copied().filter(|c| !is_light(*c)));
+            // An unnamed TransformSeparator leaves no node behind when read,
+            // so only a named node (its DEF'd Transform becomes the group)
+            // may use one; unnamed groups keep their lights inside.
+            let light_first =
+                self.plan.wrapper[i].is_some() && sorted.first().is_some_and(|c| is_light(*c));
+            self.out.open(if light_first {
                 "TransformSeparator"
             } else {
                 "Separator"
-            };
-            // The name goes on the Transform: readers make a DEF'd Transform
-            // the named group that holds what follows it.
-            self.out.open(group);
+            });
             if let Some(m) = node.transform.extra {
                 let c = m.to_cols_array();
                 self.out.open("MatrixTransform");
@@ -291,31 +377,95 @@ impl Writer<'_> {
                 );
                 self.out.close("}");
             }
+            // The name goes on the Transform: readers make a DEF'd Transform
+            // the named group that holds what follows it.
             let of = TargetRef::Node(id);
-            let animated = [Property::Translation, Property::Rotation, Property::Scale]
-                .iter()
-                .any(|p| self.channels.iter().any(|c| c.of == of && c.property == *p));
-            let t = node.transform;
             let name = self.plan.wrapper[i].clone();
-            if name.is_some()
-                || animated
-                || (Transform { extra: None, ..t }) != Transform::default()
-            {
+            if name.is_some() {
                 self.out.open(&format!("{}Transform", def(&name)));
-                self.transform_fields(of, &t);
+                self.transform_fields(of, &node.transform);
                 self.out.close("}");
             }
-            if !matches!(node.kind, NodeKind::Group) {
-                self.content(id);
-            }
-            for c in lights_first(self.scene, &node.children) {
-                self.node(c);
+            let alone = sorted.len() == 1;
+            for item in sorted {
+                match item {
+                    None => match &node.kind {
+                        NodeKind::Shape(s) if alone => self.shape(s, &None),
+                        NodeKind::Shape(s) => {
+                            self.out.open("Separator");
+                            self.shape(s, &None);
+                            self.out.close("}");
+                        }
+                        _ => self.content(id),
+                    },
+                    Some(c) => match &self.scene.node(c).kind {
+                        NodeKind::Shape(s) if alone && self.is_plain_shape(c) => {
+                            self.shape(s, &None)
+                        }
+                        _ => self.node(c),
+                    },
+                }
             }
             self.out.close("}");
         }
         if hidden_v1 {
             self.out.close("}");
         }
+    }
+
+    /// Whether `id` is written as a light or a `TransformSeparator` whose
+    /// first item is one (such nodes go first among their siblings, so the
+    /// light reaches them; a reader keeps that order).
+    fn lightish(&self, id: NodeId) -> bool {
+        let node = self.scene.node(id);
+        match node.kind {
+            NodeKind::Light(_) => true,
+            _ if self.collapsible(id) => self.lightish(node.children[0]),
+            _ if self.plan.wrapper[id.0 as usize].is_none() => false,
+            _ if !self.plan.wrapped[id.0 as usize] => false,
+            NodeKind::Group => node.children.iter().any(|&c| self.lightish(c)),
+            // Content first unless a child is light-ish.
+            _ => node.children.iter().any(|&c| self.lightish(c)),
+        }
+    }
+
+    /// An unnamed shape node with nothing but its shape (written as a bare
+    /// Separator with the shape state).
+    fn is_plain_shape(&self, id: NodeId) -> bool {
+        let i = id.0 as usize;
+        matches!(self.scene.node(id).kind, NodeKind::Shape(_))
+            && !self.plan.wrapped[i]
+            && self.plan.content[i].is_none()
+            && self.plan.wrapper[i].is_none()
+    }
+
+    /// See [`Writer::node`]: an unnamed, identity, un-animated, visible group
+    /// with one child that writes its own `Separator`.
+    fn collapsible(&self, id: NodeId) -> bool {
+        let i = id.0 as usize;
+        let node = self.scene.node(id);
+        if !matches!(node.kind, NodeKind::Group)
+            || self.plan.wrapper[i].is_some()
+            || node.transform != Transform::default()
+            || !node.visible
+            || node.style != crate::scene::RenderStyle::Filled
+            || node.children.len() != 1
+            || self
+                .scene
+                .animation
+                .tracks
+                .iter()
+                .any(|t| t.target.of == TargetRef::Node(id))
+        {
+            return false;
+        }
+        let c = node.children[0];
+        let ci = c.0 as usize;
+        let child = self.scene.node(c);
+        if !self.plan.wrapped[ci] {
+            return matches!(child.kind, NodeKind::Shape(_));
+        }
+        !self.lightish(c)
     }
 
     fn transform_fields(&mut self, of: TargetRef, t: &Transform) {
@@ -353,7 +503,7 @@ impl Writer<'_> {
         let of = TargetRef::Node(id);
         match &node.kind {
             NodeKind::Group => {}
-            NodeKind::Shape(s) => self.shape(s),
+            NodeKind::Shape(s) => self.shape(s, &None),
             NodeKind::Light(l) => {
                 let force_on = self
                     .scene
@@ -367,7 +517,7 @@ impl Writer<'_> {
         }
     }
 
-    fn shape(&mut self, s: &Shape) {
+    fn shape(&mut self, s: &Shape, faces_name: &Option<String>) {
         let Some(mesh) = self.scene.meshes.get(s.mesh.0 as usize) else {
             self.report
                 .warnings
@@ -375,69 +525,60 @@ impl Writer<'_> {
             return;
         };
         self.material(s.material.0 as usize, mesh);
-        let mi = s.mesh.0 as usize;
         let has_normals = !mesh.normals.is_empty() && mesh.normals.len() == mesh.positions.len();
-        let shared = self.written_meshes[mi].clone();
+        let key = mesh_key(mesh);
         let hints = if mesh.solid {
             "ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID }"
         } else {
             "ShapeHints { vertexOrdering COUNTERCLOCKWISE }"
         };
-        if let Some([coords, normals, faces]) = shared {
-            // A mesh written before under a name: share its nodes.
-            if let Some(c) = coords {
-                self.out.line(&format!("USE {c}"));
-            }
+        if let Some((coords, normals)) = self.coord_names.get(&key).cloned() {
+            // The same points (and normals) written before: share them.
+            self.out.line(&format!("USE {coords}"));
             if let Some(n) = normals {
                 self.out.line(&format!("USE {n}"));
                 self.out.line("NormalBinding { value PER_VERTEX_INDEXED }");
             }
-            self.out.line(hints);
-            if let Some(f) = faces {
-                self.out.line(&format!("USE {f}"));
-            }
         } else {
-            let base = self.plan.meshes[mi].clone();
-            let sub = |w: &mut Self, suffix: &str| {
-                base.as_ref()
-                    .map(|b| w.plan.internal(&format!("{b}_{suffix}")))
-            };
-            let coords = sub(self, "coords");
+            // Named only when another shape uses the same points: the names
+            // then come from the geometry itself, so a re-read scene (which
+            // may hold two copies of one mesh) writes the same file.
+            let shared = self.coord_uses.get(&key).copied().unwrap_or(0) > 1;
+            let coords = shared.then(|| self.plan.internal("_coords"));
             self.out.open(&format!("{}Coordinate3", def(&coords)));
             self.out
                 .list("point", rows(&mesh.positions, 4, |v| vec3(*v), ","));
             self.out.close("}");
             let mut normals = None;
             if has_normals {
-                normals = sub(self, "normals");
+                normals = if shared {
+                    Some(self.plan.internal("_normals"))
+                } else {
+                    None
+                };
                 self.out.open(&format!("{}Normal", def(&normals)));
                 self.out
                     .list("vector", rows(&mesh.normals, 4, |v| vec3(*v), ","));
                 self.out.close("}");
                 self.out.line("NormalBinding { value PER_VERTEX_INDEXED }");
             }
-            self.out.line(hints);
-            if !mesh.triangles.is_empty() {
-                self.out.open(&format!("{}IndexedFaceSet", def(&base)));
-                self.out.list(
-                    "coordIndex",
-                    rows(
-                        &mesh.triangles,
-                        4,
-                        |t| format!("{}, {}, {}, -1", t[0], t[1], t[2]),
-                        ",",
-                    ),
-                );
-                self.out.close("}");
+            if let Some(c) = coords {
+                self.coord_names.insert(key, (c, normals));
             }
-            if base.is_some() {
-                let faces = if mesh.triangles.is_empty() {
-                    None
-                } else {
-                    base
-                };
-                self.written_meshes[mi] = Some([coords, normals, faces]);
-            }
+        }
+        self.out.line(hints);
+        if !mesh.triangles.is_empty() {
+            self.out.open(&format!("{}IndexedFaceSet", def(faces_name)));
+            self.out.list(
+                "coordIndex",
+                rows(
+                    &mesh.triangles,
+                    4,
+                    |t| format!("{}, {}, {}, -1", t[0], t[1], t[2]),
+                    ",",
+                ),
+            );
+            self.out.close("}");
         }
         if !mesh.lines.is_empty() {
             self.out.open("IndexedLineSet");
@@ -505,10 +646,9 @@ impl Writer<'_> {
     }
 
     fn material_fields(&mut self, of: TargetRef, m: &Material) {
-        self.out.line(&format!(
-            "ambientColor {}",
-            vec3(m.diffuse * m.ambient_intensity)
-        ));
+        let a = ambient_grey(m.ambient_intensity);
+        self.out
+            .line(&format!("ambientColor {}", vec3(Vec3::splat(a))));
         self.field(of, Property::Diffuse, "diffuseColor", &vec3(m.diffuse));
         self.field(of, Property::Specular, "specularColor", &vec3(m.specular));
         self.field(of, Property::Emissive, "emissiveColor", &vec3(m.emissive));

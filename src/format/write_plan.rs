@@ -18,7 +18,7 @@
 //! materials, then meshes; a clash gets the smallest free `_N` suffix.
 
 use crate::anim::{Property, TargetRef};
-use crate::scene::{NodeId, NodeKind, RenderStyle, Scene};
+use crate::scene::{NodeId, NodeKind, RenderStyle, Scene, Transform};
 use std::collections::HashSet;
 
 /// Names and layout decisions for one scene.
@@ -87,13 +87,15 @@ impl WritePlan {
         Self::build(scene, false)
     }
 
-    /// The Inventor layout: every shape sits in its own Separator (which
-    /// holds its material and coordinate state), so shapes are always wrapped.
+    /// The Inventor layout: as VRML97, except that a wrapped node with a
+    /// transform always gets a name (an Inventor reader keeps a transform
+    /// on a node only when the Transform is DEF'd), and meshes are not
+    /// named (face sets carry their shape node's name).
     pub fn inventor(scene: &Scene) -> WritePlan {
         Self::build(scene, true)
     }
 
-    fn build(scene: &Scene, wrap_shapes: bool) -> WritePlan {
+    fn build(scene: &Scene, inventor: bool) -> WritePlan {
         let n = scene.nodes.len();
         let mut plan = WritePlan {
             wrapper: vec![None; n],
@@ -128,7 +130,6 @@ impl WritePlan {
             let needs_note = !node.visible || node.style != RenderStyle::Filled;
             let wrapped = match node.kind {
                 NodeKind::Group => true,
-                NodeKind::Shape(_) if wrap_shapes => true,
                 _ => {
                     !node.transform.is_identity()
                         || transform_animated[i]
@@ -137,7 +138,9 @@ impl WritePlan {
                 }
             };
             plan.wrapped[i] = wrapped;
+            let transformed = node.transform != Transform::default();
             let wants_name = !node.name.is_empty()
+                || (inventor && wrapped && (transformed || !matches!(node.kind, NodeKind::Group)))
                 || transform_animated[i]
                 || needs_note
                 || (!wrapped && content_animated[i]);
@@ -179,7 +182,7 @@ impl WritePlan {
             }
         }
         for (i, m) in scene.meshes.iter().enumerate() {
-            if !m.name.is_empty() || mesh_uses[i] > 1 {
+            if !inventor && (!m.name.is_empty() || mesh_uses[i] > 1) {
                 plan.meshes[i] = Some(plan.claim(&m.name, "mesh"));
             }
         }

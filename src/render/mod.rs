@@ -63,12 +63,18 @@ impl Default for RenderOptions {
 /// Largest picture side accepted; bigger requests are clamped so a typo
 /// cannot allocate gigabytes.
 pub const MAX_SIDE: u32 = 16384;
+/// Largest picture area (64 Mpix, 768 MB of frame buffers); taller
+/// requests are cut to this many rows.
+pub const MAX_PIXELS: u64 = 1 << 26;
 
 /// Draws `pose` of `scene` seen through `view`.
 pub fn render(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) -> Frame {
     let mut opts = opts.clone();
     opts.width = opts.width.min(MAX_SIDE);
     opts.height = opts.height.min(MAX_SIDE);
+    if opts.width as u64 * opts.height as u64 > MAX_PIXELS {
+        opts.height = (MAX_PIXELS / opts.width as u64) as u32;
+    }
     let mut frame = Frame::new(opts.width, opts.height, opts.background);
     if opts.width == 0 || opts.height == 0 {
         return frame;

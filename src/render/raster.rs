@@ -179,17 +179,21 @@ pub fn draw_tile(
     reset(bary, n, [0.0; 2]);
 
     // 1. Depth pass: nearest opaque triangle per pixel (first wins on ties).
-    for &ti in &bin.opaque {
-        let t = &p.opaque[ti as usize];
-        for_each_pixel(t, rect, |x, y, b1, b2| {
-            let z = depth_at(t, b1, b2);
-            let i = at(x, y);
-            if z < depth[i] && z >= 0.0 {
-                depth[i] = z;
-                winner[i] = ti;
-                bary[i] = [b1, b2];
-            }
-        });
+    {
+        // Plain slices: the loop then keeps their pointers in registers.
+        let (depth, winner, bary) = (&mut depth[..n], &mut winner[..n], &mut bary[..n]);
+        for &ti in &bin.opaque {
+            let t = &p.opaque[ti as usize];
+            for_each_pixel(t, rect, |x, y, b1, b2| {
+                let z = depth_at(t, b1, b2);
+                let i = at(x, y);
+                if z < depth[i] && z >= 0.0 {
+                    depth[i] = z;
+                    winner[i] = ti;
+                    bary[i] = [b1, b2];
+                }
+            });
+        }
     }
     // 2. Shade each visible pixel once, in batches of pixels of one item.
     let mut batch = Batch::default();
