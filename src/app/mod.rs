@@ -174,7 +174,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
                 time: start.elapsed().as_secs_f64(),
             });
         }
-        let t = ed.window_title();
+        let t = ed.title();
         if t != title {
             window.set_title(&t);
             title = t;
