@@ -79,7 +79,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     let mut buttons = [false; 3];
     let mut last_input = Instant::now();
     let mut dirty = true;
-    let mut title = String::from("animed");
+    let mut title = title;
 
     while window.is_open() && !ed.wants_quit() {
         let mut events = Vec::new();
@@ -174,7 +174,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
                 time: start.elapsed().as_secs_f64(),
             });
         }
-        let t = ed.window_title();
+        let t = ed.title();
         if t != title {
             window.set_title(&t);
             title = t;

@@ -45,4 +45,7 @@ impl Screen for Editor {
     fn is_dirty(&self) -> bool {
         Editor::is_dirty(self)
     }
+    fn title(&self) -> String {
+        Editor::window_title(self)
+    }
 }
