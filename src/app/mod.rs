@@ -59,8 +59,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     };
     // minifb reports a missing X server or libraries as an error; guard
     // against a panic in its C glue as well.
-    let title = ed.title();
-    let window = std::panic::catch_unwind(|| Window::new(&title, w as usize, h as usize, opts));
+    let window = std::panic::catch_unwind(|| Window::new("animed", w as usize, h as usize, opts));
     let mut window = match window {
         Ok(Ok(win)) => win,
         Ok(Err(e)) => return Err(no_display(&e.to_string())),
@@ -79,7 +78,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     let mut buttons = [false; 3];
     let mut last_input = Instant::now();
     let mut dirty = true;
-    let mut title = title;
+    let mut title = String::from("animed");
 
     while window.is_open() && !ed.wants_quit() {
         let mut events = Vec::new();
@@ -174,7 +173,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
                 time: start.elapsed().as_secs_f64(),
             });
         }
-        let t = ed.title();
+        let t = ed.window_title();
         if t != title {
             window.set_title(&t);
             title = t;

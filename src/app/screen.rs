@@ -20,8 +20,8 @@ pub trait Screen {
     fn is_dirty(&self) -> bool {
         false
     }
-    /// Window title.
-    fn title(&self) -> String {
+    /// Window title (checked every frame; the window follows changes).
+    fn window_title(&self) -> String {
         "animed".to_string()
     }
 }
@@ -45,7 +45,7 @@ impl Screen for Editor {
     fn is_dirty(&self) -> bool {
         Editor::is_dirty(self)
     }
-    fn title(&self) -> String {
+    fn window_title(&self) -> String {
         Editor::window_title(self)
     }
 }

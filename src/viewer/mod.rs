@@ -240,7 +240,7 @@ impl crate::app::Screen for Viewer {
         // Ticks also keep the stats' frame counter honest while paused.
         Viewer::wants_ticks(self) || self.show_stats
     }
-    fn title(&self) -> String {
+    fn window_title(&self) -> String {
         self.title.clone()
     }
 }
