@@ -156,7 +156,7 @@ impl Editor {
             id.read_settings(&self.scene.settings)
         } else {
             self.selection
-                .and_then(|s| id.read_node(self.scene.node(s)))
+                .and_then(|s| id.read_node(&self.posed_node(s)))
         };
         match v {
             Some(FieldValue::Number(x)) => super::fields::format_fit(x, max_chars),

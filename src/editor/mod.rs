@@ -26,12 +26,13 @@ pub mod gizmo;
 mod input;
 pub mod ops;
 pub mod panel;
+pub mod record;
 pub mod script;
 mod viewport;
 
 pub use event::{Event, Key, Mods, MouseButton};
 
-use crate::anim::{evaluate, Pose};
+use crate::anim::Pose;
 use crate::render::Frame;
 use crate::scene::{NodeId, RenderStyle, Scene};
 use crate::ui::{Layout, Painter};
@@ -119,6 +120,8 @@ pub struct Editor {
     frame: f32,
     playback: Option<Playback>,
     record: bool,
+    /// A change on an animated property not yet keyed (record off).
+    pending: Option<record::Pending>,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     width: u32,
@@ -158,6 +161,7 @@ impl Editor {
             frame: 0.0,
             playback: None,
             record: false,
+            pending: None,
             show_grid: true,
             view_style: None,
             width: width.max(1),
@@ -305,7 +309,7 @@ impl Editor {
             matches!(&self.pose, Some((r, f, _)) if *r == self.scene_rev && *f == self.frame);
         if !fresh {
             let t = self.frame / self.scene.settings.fps.max(1e-6);
-            self.pose = Some((self.scene_rev, self.frame, evaluate(&self.scene, t)));
+            self.pose = Some((self.scene_rev, self.frame, self.evaluate_shown(t)));
         }
         // Just filled above.
         &self.pose.as_ref().expect("pose cached").2
