@@ -74,7 +74,6 @@ impl Viewer {
         }
         p.end(frame);
         self.painter = p;
-        self.count_shown();
     }
 
     /// Size of the scene picture.
@@ -111,6 +110,7 @@ impl Viewer {
         let frame = render(&self.scene, &pose, &view, &options_for(&self.scene, &spec));
         self.stats.last_render = started.elapsed();
         self.layer = Some((key, frame));
+        self.count_shown();
     }
 
     fn count_shown(&mut self) {
@@ -197,7 +197,7 @@ impl Viewer {
         let ms = self.stats.last_render.as_secs_f64() * 1000.0;
         let lines = [
             format!("render {ms:.1} ms ({w}x{h})"),
-            format!("shown  {} fps", self.stats.shown_fps),
+            format!("shown  {} new pictures/s", self.stats.shown_fps),
         ];
         let bw = lines.iter().map(|l| text::width(l)).max().unwrap_or(0) + 8;
         p.fill_rect_alpha(

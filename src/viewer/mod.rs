@@ -81,7 +81,8 @@ struct LayerKey {
 pub struct Stats {
     /// Wall time of the last scene render.
     pub last_render: Duration,
-    /// Frames shown in the last whole second, and the current second's count.
+    /// New scene pictures shown in the last whole second (re-renders; at
+    /// most the file's fps while playing), and the current second's count.
     pub shown_fps: u32,
     count: u32,
     second: Option<f64>,
