@@ -119,6 +119,9 @@ impl Editor {
     fn mouse_move(&mut self, x: f32, y: f32, _mods: Mods) -> bool {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
+        if let Some(redraw) = self.handles_move(x, y, _mods) {
+            return redraw;
+        }
         match self.drag.clone() {
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
@@ -181,6 +184,10 @@ impl Editor {
         let l = self.layout();
         if l.viewport.contains(x, y) {
             self.commit_edit();
+            let grab = button == MouseButton::Left && !mods.alt && self.mode == Mode::Select;
+            if grab && self.handles_press(x, y) {
+                return;
+            }
             self.drag = match (button, self.mode) {
                 (MouseButton::Middle, _) if mods.shift => Drag::Pan { last: (x, y) },
                 (MouseButton::Middle, _) => Drag::Orbit { last: (x, y) },
@@ -233,6 +240,9 @@ impl Editor {
     }
 
     fn mouse_up(&mut self, _button: MouseButton, x: f32, y: f32, _mods: Mods) {
+        if self.handles_release() {
+            return;
+        }
         match std::mem::take(&mut self.drag) {
             Drag::Field {
                 id,
@@ -498,6 +508,9 @@ impl Editor {
                 }
                 _ => {}
             }
+            return;
+        }
+        if self.handles_key(key) {
             return;
         }
         if !matches!(self.drag, Drag::None) {

@@ -24,6 +24,7 @@ pub mod event;
 pub mod fields;
 pub mod gizmo;
 mod input;
+pub mod manip;
 pub mod ops;
 pub mod panel;
 pub mod record;
@@ -122,6 +123,8 @@ pub struct Editor {
     record: bool,
     /// A change on an animated property not yet keyed (record off).
     pending: Option<record::Pending>,
+    /// Translate handles: hover and drag.
+    manip: manip::Manip,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     width: u32,
@@ -162,6 +165,7 @@ impl Editor {
             playback: None,
             record: false,
             pending: None,
+            manip: manip::Manip::default(),
             show_grid: true,
             view_style: None,
             width: width.max(1),
