@@ -6,6 +6,8 @@ pub mod app;
 pub mod cli;
 pub mod editor;
 pub mod format;
+pub mod output;
 pub mod render;
 pub mod scene;
 pub mod ui;
+pub mod viewer;

@@ -4,8 +4,11 @@
 //! to no CPU.
 
 mod keymap;
+mod screen;
 
-use crate::editor::{Editor, Event, Mods, MouseButton};
+pub use screen::Screen;
+
+use crate::editor::{Event, Mods, MouseButton};
 use crate::render::Frame;
 use minifb::{MouseMode, Window, WindowOptions};
 use std::cell::RefCell;
@@ -43,8 +46,9 @@ impl minifb::InputCallback for Sink {
     }
 }
 
-/// Opens the window and runs the editor until it quits or the window closes.
-pub fn run(mut ed: Editor) -> Result<(), String> {
+/// Opens the window and runs the editor (or the viewer) until it quits or
+/// the window closes.
+pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
         return Err(no_display("DISPLAY is not set"));
     }

@@ -46,6 +46,18 @@ pub struct Args {
     /// Frame number at which to evaluate the animation (uses the scene's fps).
     #[arg(long)]
     pub frame: Option<f32>,
+    /// Render a range: START:STEP:COUNT in seconds (frame i at START + i·STEP).
+    /// -o is then a pattern whose run of # becomes the zero-padded frame
+    /// index (frames/f_####.png), or a .gif (looping, STEP per frame).
+    #[arg(long, conflicts_with_all = ["time", "frame", "frames"])]
+    pub range: Option<String>,
+    /// Render scene frames A..=B (inclusive, at the scene's fps), as --range.
+    #[arg(long, conflicts_with_all = ["time", "frame"])]
+    pub frames: Option<String>,
+    /// With --range/--frames: render only frame indices i with i mod N = K
+    /// (K/N, K from 0), to spread a range over machines.
+    #[arg(long)]
+    pub shard: Option<String>,
 }
 
 /// A loaded scene and everything needed to draw frames of it.
@@ -108,6 +120,21 @@ pub fn prepare(args: &Args) -> Result<Job, String> {
 }
 
 pub fn run(args: Args) -> i32 {
+    let range = crate::output::RangeArgs {
+        range: args.range.as_deref(),
+        frames: args.frames.as_deref(),
+        shard: args.shard.as_deref(),
+        output: &args.output,
+    };
+    if range.wanted() {
+        let result = prepare(&args)
+            .and_then(|job| crate::output::render_range(&job.scene, &job.spec, range));
+        if let Err(e) = result {
+            eprintln!("animed render: {e}");
+            return 1;
+        }
+        return 0;
+    }
     let result = prepare(&args).and_then(|job| {
         let frame = render_at(&job.scene, &job.spec, job.time)?;
         save_png_atomic(&frame, &job.output).map_err(|e| format!("{}: {e}", job.output.display()))

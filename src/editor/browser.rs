@@ -269,8 +269,10 @@ fn list(dir: &Path) -> std::io::Result<Vec<Entry>> {
 mod tests {
     use super::*;
 
-    fn tree() -> PathBuf {
-        let d = std::env::temp_dir().join(format!("animed-browser-unit-{}", std::process::id()));
+    /// A small folder tree; `tag` keeps parallel tests apart.
+    fn tree(tag: &str) -> PathBuf {
+        let d =
+            std::env::temp_dir().join(format!("animed-browser-unit-{tag}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&d);
         std::fs::create_dir_all(d.join("models")).unwrap();
         std::fs::create_dir_all(d.join(".hidden")).unwrap();
@@ -282,7 +284,7 @@ mod tests {
 
     #[test]
     fn lists_folders_then_known_files() {
-        let d = tree();
+        let d = tree("list");
         let b = Browser::new(Purpose::Open, &d);
         let names: Vec<_> = b.entries.iter().map(|e| e.name.as_str()).collect();
         assert_eq!(
@@ -301,7 +303,7 @@ mod tests {
 
     #[test]
     fn tab_completes_common_prefix_then_unique() {
-        let d = tree();
+        let d = tree("complete");
         let mut b = Browser::new(Purpose::Open, &d);
         b.input = format!("{}/wa", d.display());
         b.complete();

@@ -25,6 +25,7 @@ impl Editor {
         let mut p = std::mem::take(&mut self.painter);
         p.begin(frame);
         self.draw_viewport_overlay(&mut p);
+        self.draw_handles(&mut p);
         self.draw_viewport_labels(&mut p, &l);
         self.draw_timeline(&mut p, &l);
         self.draw_panels(&mut p, &l);
@@ -156,7 +157,7 @@ impl Editor {
             id.read_settings(&self.scene.settings)
         } else {
             self.selection
-                .and_then(|s| id.read_node(self.scene.node(s)))
+                .and_then(|s| id.read_node(&self.posed_node(s)))
         };
         match v {
             Some(FieldValue::Number(x)) => super::fields::format_fit(x, max_chars),

@@ -110,7 +110,7 @@ impl Editor {
         };
     }
 
-    fn stop_playback(&mut self) {
+    pub(super) fn stop_playback(&mut self) {
         self.playback = None;
     }
 
@@ -119,6 +119,9 @@ impl Editor {
     fn mouse_move(&mut self, x: f32, y: f32, _mods: Mods) -> bool {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
+        if let Some(redraw) = self.handles_move(x, y, _mods) {
+            return redraw;
+        }
         match self.drag.clone() {
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
@@ -181,6 +184,10 @@ impl Editor {
         let l = self.layout();
         if l.viewport.contains(x, y) {
             self.commit_edit();
+            let grab = button == MouseButton::Left && !mods.alt && self.mode == Mode::Select;
+            if grab && self.handles_press(x, y) {
+                return;
+            }
             self.drag = match (button, self.mode) {
                 (MouseButton::Middle, _) if mods.shift => Drag::Pan { last: (x, y) },
                 (MouseButton::Middle, _) => Drag::Orbit { last: (x, y) },
@@ -233,6 +240,9 @@ impl Editor {
     }
 
     fn mouse_up(&mut self, _button: MouseButton, x: f32, y: f32, _mods: Mods) {
+        if self.handles_release() {
+            return;
+        }
         match std::mem::take(&mut self.drag) {
             Drag::Field {
                 id,
@@ -321,7 +331,8 @@ impl Editor {
             return Some(Base::Settings(self.scene.settings.clone()));
         }
         let sel = self.selection?;
-        Some(Base::Node(sel, Box::new(self.scene.node(sel).clone())))
+        // Fields edit what is shown: animated values at the current frame.
+        Some(Base::Node(sel, Box::new(self.posed_node(sel))))
     }
 
     fn field_value(&self, id: FieldId, base: &Base) -> Option<FieldValue> {
@@ -382,14 +393,17 @@ impl Editor {
             }
             Base::Node(nid, before) => {
                 let after = Box::new(self.scene.node(nid).clone());
-                self.push_applied(
-                    &label,
-                    Command::SetNode {
-                        id: nid,
-                        before,
-                        after,
-                    },
-                );
+                // Previews changed the stored node; put it back so the
+                // recorded command starts from it.
+                self.scene.nodes[nid.0 as usize] = (*before).clone();
+                let props: Vec<_> = super::record::field_property(id).into_iter().collect();
+                let c = Command::SetNode {
+                    id: nid,
+                    before,
+                    after,
+                };
+                let c = self.recorded(c, &props);
+                self.execute(&label, c);
             }
         }
     }
@@ -421,6 +435,10 @@ impl Editor {
         match self.field_command(edit.field, &base, &value) {
             Some(c) => {
                 self.stop_playback();
+                let props: Vec<_> = super::record::field_property(edit.field)
+                    .into_iter()
+                    .collect();
+                let c = self.recorded(c, &props);
                 self.execute(&format!("Set {:?}", edit.field), c);
             }
             None => self.set_status("cannot set that value here", true),
@@ -492,6 +510,9 @@ impl Editor {
             }
             return;
         }
+        if self.handles_key(key) {
+            return;
+        }
         if !matches!(self.drag, Drag::None) {
             if key == Key::Escape {
                 self.cancel_drag();
@@ -547,6 +568,9 @@ impl Editor {
                     self.run_action(Action::ToggleLight(s));
                 }
             }
+            (Key::Char('k'), false, _) => self.insert_keys(),
+            (Key::Up, false, _) => self.jump_key(1),
+            (Key::Down, false, _) => self.jump_key(-1),
             (Key::Left, _, _) => self.step_frame(-1.0),
             (Key::Right, _, _) => self.step_frame(1.0),
             (Key::End, _, _) => {
@@ -632,12 +656,14 @@ impl Editor {
                 self.set_status(&format!("Added {name}"), false);
             }
             Action::ToggleLight(id) => {
-                let before = Box::new(self.scene.node(id).clone());
+                let before = Box::new(self.posed_node(id));
                 let mut after = before.clone();
                 if let crate::scene::NodeKind::Light(l) = &mut after.kind {
                     l.on = !l.on;
                     let label = if l.on { "Light on" } else { "Light off" };
-                    self.execute(label, Command::SetNode { id, before, after });
+                    let c = Command::SetNode { id, before, after };
+                    let c = self.recorded(c, &[crate::anim::Property::LightOn]);
+                    self.execute(label, c);
                 }
             }
             Action::ObjectStyle => self.cycle_object_style(),

@@ -6,6 +6,14 @@
 //!
 //! Every change to the scene goes through [`command::History`] so it can be
 //! undone; a drag previews live and records one command at release.
+//!
+//! Where the animating tools plug in: `ui::Layout::new(w, h, key_rows)`
+//! reserves key strip rows under the ruler (`layout.key_rows`, clicks there
+//! already seek); `input::Drag` takes new variants for handle and key drags
+//! (press captures a `Base`, moves call `preview`, release `push_applied`);
+//! keys change through `Command::SetAnimation` (grouped with `SetNode` for a
+//! record-mode drag); `record` is the R / toolbar flag; `viewport.rs` draws
+//! overlays with a `camera::Projector` and picks with `pick_at`.
 
 pub mod bench;
 pub mod browser;
@@ -16,14 +24,16 @@ pub mod event;
 pub mod fields;
 pub mod gizmo;
 mod input;
+pub mod manip;
 pub mod ops;
 pub mod panel;
+pub mod record;
 pub mod script;
 mod viewport;
 
 pub use event::{Event, Key, Mods, MouseButton};
 
-use crate::anim::{evaluate, Pose};
+use crate::anim::Pose;
 use crate::render::Frame;
 use crate::scene::{NodeId, RenderStyle, Scene};
 use crate::ui::{Layout, Painter};
@@ -111,6 +121,10 @@ pub struct Editor {
     frame: f32,
     playback: Option<Playback>,
     record: bool,
+    /// A change on an animated property not yet keyed (record off).
+    pending: Option<record::Pending>,
+    /// Translate handles: hover and drag.
+    manip: manip::Manip,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     width: u32,
@@ -150,6 +164,8 @@ impl Editor {
             frame: 0.0,
             playback: None,
             record: false,
+            pending: None,
+            manip: manip::Manip::default(),
             show_grid: true,
             view_style: None,
             width: width.max(1),
@@ -297,7 +313,7 @@ impl Editor {
             matches!(&self.pose, Some((r, f, _)) if *r == self.scene_rev && *f == self.frame);
         if !fresh {
             let t = self.frame / self.scene.settings.fps.max(1e-6);
-            self.pose = Some((self.scene_rev, self.frame, evaluate(&self.scene, t)));
+            self.pose = Some((self.scene_rev, self.frame, self.evaluate_shown(t)));
         }
         // Just filled above.
         &self.pose.as_ref().expect("pose cached").2

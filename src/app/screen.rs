@@ -1,0 +1,51 @@
+//! What the window loop drives. The editor and the viewer (`animed view`)
+//! both implement it, so there is one window loop for both.
+
+use crate::editor::{Editor, Event};
+use crate::render::Frame;
+
+/// A pure state machine the window shows: events in, frames out.
+pub trait Screen {
+    /// Size the window opens at.
+    fn size(&self) -> (u32, u32);
+    /// Feeds one event; returns true when the picture needs redrawing.
+    fn handle(&mut self, ev: Event) -> bool;
+    /// Draws into `frame` (resizing it to [`Screen::size`]).
+    fn draw(&mut self, frame: &mut Frame);
+    fn wants_quit(&self) -> bool;
+    /// True while something moves on its own (playback): the loop then
+    /// sends `Event::Tick`s and polls fast.
+    fn wants_ticks(&self) -> bool;
+    /// Unsaved changes (reported when the window is closed).
+    fn is_dirty(&self) -> bool {
+        false
+    }
+    /// Window title (checked every frame; the window follows changes).
+    fn window_title(&self) -> String {
+        "animed".to_string()
+    }
+}
+
+impl Screen for Editor {
+    fn size(&self) -> (u32, u32) {
+        Editor::size(self)
+    }
+    fn handle(&mut self, ev: Event) -> bool {
+        Editor::handle(self, ev)
+    }
+    fn draw(&mut self, frame: &mut Frame) {
+        Editor::draw(self, frame)
+    }
+    fn wants_quit(&self) -> bool {
+        Editor::wants_quit(self)
+    }
+    fn wants_ticks(&self) -> bool {
+        Editor::wants_ticks(self)
+    }
+    fn is_dirty(&self) -> bool {
+        Editor::is_dirty(self)
+    }
+    fn window_title(&self) -> String {
+        Editor::window_title(self)
+    }
+}
