@@ -234,3 +234,15 @@ fn handles_golden_with_hover() {
     let frame = ed.render_frame();
     golden::check("editor_handles", &frame);
 }
+
+#[test]
+fn motion_path_golden() {
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    // Frame of the ball's second key: its marker is highlighted.
+    key(&mut ed, Key::Up, Mods::NONE);
+    assert!(ed.current_frame() > 0.0, "the ball has a key after frame 0");
+    let frame = ed.render_frame();
+    golden::check("editor_motion_path", &frame);
+}

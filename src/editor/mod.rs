@@ -25,6 +25,7 @@ pub mod fields;
 pub mod gizmo;
 mod input;
 pub mod manip;
+pub mod motion_path;
 pub mod ops;
 pub mod panel;
 pub mod record;
