@@ -400,7 +400,8 @@ impl Writer<'_> {
                     },
                     Some(c) => match &self.scene.node(c).kind {
                         NodeKind::Shape(s) if alone && self.is_plain_shape(c) => {
-                            self.shape(s, &None)
+                            let name = self.plan.content[c.0 as usize].clone();
+                            self.shape(s, &name)
                         }
                         _ => self.node(c),
                     },
@@ -429,14 +430,10 @@ impl Writer<'_> {
         }
     }
 
-    /// An unnamed shape node with nothing but its shape (written as a bare
-    /// Separator with the shape state).
+    /// A shape node with nothing but its shape (written as a bare Separator
+    /// with the shape state, or inline in a parent that holds only it).
     fn is_plain_shape(&self, id: NodeId) -> bool {
-        let i = id.0 as usize;
-        matches!(self.scene.node(id).kind, NodeKind::Shape(_))
-            && !self.plan.wrapped[i]
-            && self.plan.content[i].is_none()
-            && self.plan.wrapper[i].is_none()
+        matches!(self.scene.node(id).kind, NodeKind::Shape(_)) && !self.plan.wrapped[id.0 as usize]
     }
 
     /// See [`Writer::node`]: an unnamed, identity, un-animated, visible group
