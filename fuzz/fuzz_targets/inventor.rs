@@ -1,0 +1,18 @@
+//! The Inventor / VRML 1.0 reader on arbitrary bodies (the first input byte
+//! picks the header).
+#![no_main]
+use libfuzzer_sys::fuzz_target;
+use std::path::Path;
+
+fuzz_target!(|data: &[u8]| {
+    let (header, body): (&[u8], &[u8]) = match data.split_first() {
+        Some((b, rest)) if b % 2 == 0 => (b"#Inventor V2.1 ascii\n", rest),
+        Some((_, rest)) => (b"#VRML V1.0 ascii\n", rest),
+        None => (b"#Inventor V2.1 ascii\n", data),
+    };
+    let mut src = header.to_vec();
+    src.extend_from_slice(body);
+    if let Err(e) = animed::format::load_bytes(&src, Path::new("fuzz.iv")) {
+        assert!(e.to_string().starts_with("fuzz.iv:"));
+    }
+});
