@@ -23,4 +23,19 @@ fi
 
 cargo fmt --check
 cargo clippy --all-targets -- -D warnings
+# Proof that exported files play elsewhere: runs when view3dscene and Coin
+# (pivy) are installed (see ../shared/REFERENCE-RENDERERS.md); says so loudly
+# when they are not. Exit 3 from the script means "viewers missing".
+set +e
+bash tests/reference_viewers.sh
+rc=$?
+set -e
+if [ "$rc" = 3 ]; then
+  echo "run-all: reference-viewer comparison NOT RUN (viewers not installed)"
+elif [ "$rc" != 0 ]; then
+  echo "run-all: reference-viewer comparison FAILED"
+  exit "$rc"
+fi
+
 cargo test
+
