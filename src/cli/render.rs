@@ -137,7 +137,7 @@ pub fn run(args: Args) -> i32 {
     }
     let result = prepare(&args).and_then(|job| {
         let frame = render_at(&job.scene, &job.spec, job.time)?;
-        save_png_atomic(&frame, &job.output).map_err(|e| format!("{}: {e}", job.output.display()))
+        save_png_atomic(&frame, &job.output)
     });
     match result {
         Ok(()) => 0,
@@ -149,24 +149,10 @@ pub fn run(args: Args) -> i32 {
 }
 
 /// Writes `frame` as PNG next to `path`, then renames it into place, so a
-/// reader never sees a half-written file.
+/// reader never sees a half-written file (one implementation with the
+/// sequence writer, so both give the same bytes).
 pub fn save_png_atomic(frame: &Frame, path: &Path) -> Result<(), String> {
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(".partial");
-    let tmp = PathBuf::from(tmp);
-    image::save_buffer_with_format(
-        &tmp,
-        &frame.to_rgba8(),
-        frame.width,
-        frame.height,
-        image::ExtendedColorType::Rgba8,
-        image::ImageFormat::Png,
-    )
-    .map_err(|e| e.to_string())?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        e.to_string()
-    })
+    crate::output::png::save_atomic(frame, path)
 }
 
 /// Parses `WIDTHxHEIGHT` (each side 1..=16384, at most 64 Mpix).
