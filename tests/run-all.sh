@@ -37,5 +37,8 @@ elif [ "$rc" != 0 ]; then
   exit "$rc"
 fi
 
-cargo test
-
+mkdir -p target
+cargo test 2>&1 | tee target/test-output.log
+# cargo's last summary is the (empty) doc-test run; close with the total.
+awk '/^test result:/ {p += $4; f += $6} END {printf "tests: %d passed, %d failed\n", p, f}' \
+  target/test-output.log
