@@ -24,6 +24,9 @@ pub mod event;
 pub mod fields;
 pub mod gizmo;
 mod input;
+pub mod keyprops;
+pub mod keystrip;
+mod keystrip_draw;
 pub mod manip;
 pub mod motion_path;
 pub mod ops;
@@ -126,6 +129,8 @@ pub struct Editor {
     pending: Option<record::Pending>,
     /// Translate handles: hover and drag.
     manip: manip::Manip,
+    /// Key strip: selected keys, fold state, clipboard, strip drags.
+    keys: keystrip::KeyStrip,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     width: u32,
@@ -167,6 +172,7 @@ impl Editor {
             record: false,
             pending: None,
             manip: manip::Manip::default(),
+            keys: keystrip::KeyStrip::default(),
             show_grid: true,
             view_style: None,
             width: width.max(1),
@@ -286,7 +292,7 @@ impl Editor {
 
     /// Layout of the current window.
     pub fn layout(&self) -> Layout {
-        Layout::new(self.width as i32, self.height as i32, 0)
+        Layout::new(self.width as i32, self.height as i32, self.key_strip_rows())
     }
 
     /// Where the file browser starts when no file is open (default: the
