@@ -10,6 +10,9 @@
 //! move X Y                   mouse move
 //! wheel N [X Y]              N wheel notches (positive zooms in)
 //! wait-frames N              N ticks of 1/fps seconds (playback advances)
+//! sleep-ms N                 N real milliseconds, a tick every 100 ms
+//!                            (session time advances by the real time slept:
+//!                            autosave fires; another process can watch)
 //! resize W H                 window resized
 //! ```
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
@@ -48,8 +51,10 @@ impl std::error::Error for ScriptError {}
 const DRAG_STEPS: usize = 8;
 /// Largest window a script may ask for.
 const MAX_SIDE: u32 = 4096;
-/// Largest wait, so a typo cannot hang a session.
+/// Largest wait (frames or milliseconds), so a typo cannot hang a session.
 const MAX_WAIT: u64 = 100_000;
+/// How often `sleep-ms` ticks.
+const SLEEP_SLICE: std::time::Duration = std::time::Duration::from_millis(100);
 
 /// One parsed line.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,6 +66,7 @@ pub enum Step {
     Move(f32, f32),
     Wheel(f32, Option<(f32, f32)>),
     WaitFrames(u64),
+    SleepMs(u64),
     Resize(u32, u32),
 }
 
@@ -183,6 +189,10 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 want(1..=1)?;
                 Step::WaitFrames(count(0, MAX_WAIT)?)
             }
+            "sleep-ms" => {
+                want(1..=1)?;
+                Step::SleepMs(count(0, MAX_WAIT)?)
+            }
             "resize" => {
                 want(2..=2)?;
                 let w = count(0, MAX_SIDE as u64)? as u32;
@@ -196,7 +206,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, resize)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize)"
                     ),
                 ))
             }
@@ -335,6 +345,20 @@ impl Runner {
                     ed.handle(Event::Tick { time: self.clock });
                 }
             }
+            Step::SleepMs(ms) => {
+                // Real time, in slices, each followed by a tick.
+                let end = std::time::Instant::now() + std::time::Duration::from_millis(*ms);
+                loop {
+                    let now = std::time::Instant::now();
+                    let left = end.saturating_duration_since(now);
+                    std::thread::sleep(left.min(SLEEP_SLICE));
+                    self.clock += now.elapsed().as_secs_f64();
+                    ed.handle(Event::Tick { time: self.clock });
+                    if left <= SLEEP_SLICE {
+                        break;
+                    }
+                }
+            }
             Step::Resize(w, h) => {
                 ed.handle(Event::Resize {
                     width: *w,
@@ -363,7 +387,7 @@ mod tests {
 
     #[test]
     fn parses_every_command() {
-        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\n";
+        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\nsleep-ms 5\n";
         let steps = parse(s, Path::new("t.txt")).unwrap();
         let kinds: Vec<Step> = steps.into_iter().map(|(_, s)| s).collect();
         assert_eq!(
@@ -390,6 +414,7 @@ mod tests {
         assert_eq!(kinds[6], Step::Wheel(1.0, Some((10.0, 20.0))));
         assert_eq!(kinds[7], Step::WaitFrames(3));
         assert_eq!(kinds[8], Step::Resize(320, 240));
+        assert_eq!(kinds[9], Step::SleepMs(5));
     }
 
     #[test]
