@@ -11,6 +11,7 @@
 //! wheel N [X Y]              N wheel notches (positive zooms in)
 //! wait-frames N              N ticks of 1/fps seconds (playback advances)
 //! resize W H                 window resized
+//! screenshot OUT.png         the window as it looks now, written as a PNG
 //! ```
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
 //! modifiers: `alt+left`, `shift+middle`.
@@ -62,6 +63,9 @@ pub enum Step {
     Wheel(f32, Option<(f32, f32)>),
     WaitFrames(u64),
     Resize(u32, u32),
+    /// Saves the current window picture (relative paths: the working
+    /// directory, as `--screenshot`).
+    Screenshot(PathBuf),
 }
 
 /// Parses a whole script; `path` names it in errors.
@@ -192,11 +196,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 }
                 Step::Resize(w, h)
             }
+            "screenshot" => {
+                want(1..=1)?;
+                Step::Screenshot(PathBuf::from(args[0]))
+            }
             _ => {
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, resize)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, resize, screenshot)"
                     ),
                 ))
             }
@@ -260,13 +268,27 @@ impl Default for Runner {
 }
 
 impl Runner {
-    pub fn run(&mut self, ed: &mut Editor, steps: &[(usize, Step)]) {
-        for (_, s) in steps {
-            self.step(ed, s);
+    /// Runs `steps`; a step that cannot be carried out (a screenshot that
+    /// cannot be written) stops the session with its line. `path` names
+    /// the script in errors.
+    pub fn run(
+        &mut self,
+        ed: &mut Editor,
+        steps: &[(usize, Step)],
+        path: &Path,
+    ) -> Result<(), ScriptError> {
+        for (line, s) in steps {
+            self.step(ed, s).map_err(|message| ScriptError {
+                path: path.to_path_buf(),
+                line: *line,
+                column: 1,
+                message,
+            })?;
         }
+        Ok(())
     }
 
-    pub fn step(&mut self, ed: &mut Editor, s: &Step) {
+    pub fn step(&mut self, ed: &mut Editor, s: &Step) -> Result<(), String> {
         match s {
             Step::Key(key, mods) => {
                 ed.handle(Event::KeyDown {
@@ -341,7 +363,14 @@ impl Runner {
                     height: *h,
                 });
             }
+            Step::Screenshot(out) => {
+                let frame = ed.render_frame();
+                frame
+                    .save_png(out)
+                    .map_err(|e| format!("screenshot {}: {e}", out.display()))?;
+            }
         }
+        Ok(())
     }
 
     fn move_to(&mut self, ed: &mut Editor, x: f32, y: f32, mods: Mods) {
@@ -353,8 +382,7 @@ impl Runner {
 /// Parses and runs a script on `ed`.
 pub fn run(ed: &mut Editor, text: &str, path: &Path) -> Result<(), ScriptError> {
     let steps = parse(text, path)?;
-    Runner::default().run(ed, &steps);
-    Ok(())
+    Runner::default().run(ed, &steps, path)
 }
 
 #[cfg(test)]
@@ -363,7 +391,7 @@ mod tests {
 
     #[test]
     fn parses_every_command() {
-        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\n";
+        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\nscreenshot out/a.png\n";
         let steps = parse(s, Path::new("t.txt")).unwrap();
         let kinds: Vec<Step> = steps.into_iter().map(|(_, s)| s).collect();
         assert_eq!(
@@ -390,6 +418,7 @@ mod tests {
         assert_eq!(kinds[6], Step::Wheel(1.0, Some((10.0, 20.0))));
         assert_eq!(kinds[7], Step::WaitFrames(3));
         assert_eq!(kinds[8], Step::Resize(320, 240));
+        assert_eq!(kinds[9], Step::Screenshot(PathBuf::from("out/a.png")));
     }
 
     #[test]
@@ -405,5 +434,25 @@ mod tests {
         assert!(e.message.contains("count up to"));
         let e = parse("resize 100000 10\n", Path::new("s.txt")).unwrap_err();
         assert_eq!(e.line, 1);
+    }
+
+    #[test]
+    fn screenshots_mid_session_and_report_unwritable_paths() {
+        let dir = std::env::temp_dir().join(format!("animed-script-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let shot = dir.join("mid.png");
+        let mut ed = Editor::new(crate::scene::Scene::new(), None, 64, 48);
+        let text = format!("key g\nscreenshot {}\n", shot.display());
+        run(&mut ed, &text, Path::new("s.txt")).unwrap();
+        let img = image::open(&shot).unwrap();
+        assert_eq!((img.width(), img.height()), (64, 48));
+        let bad = format!(
+            "key g\nscreenshot {}\n",
+            dir.join("no/such/dir/x.png").display()
+        );
+        let e = run(&mut ed, &bad, Path::new("s.txt")).unwrap_err();
+        assert_eq!((e.line, e.column), (2, 1));
+        assert!(e.message.contains("screenshot"), "{}", e.message);
+        std::fs::remove_dir_all(&dir).ok();
     }
 }
