@@ -168,6 +168,16 @@ fn k_keys_the_transform_and_arrows_jump_between_keys() {
     goto(&mut ed, 12);
     type_into(&mut ed, "Field(Scale(0))", "2");
     key(&mut ed, Key::Char('k'), Mods::NONE);
+    // The scale was animated (keyed at 4), so typing it made a pending
+    // change and K keys only what changed.
+    for p in [Property::Translation, Property::Rotation] {
+        let k = keys(&ed, bx, p);
+        assert_eq!(k.len(), 1, "{p:?} untouched at 12");
+    }
+    let k = keys(&ed, bx, Property::Scale);
+    assert_eq!((k.len(), k[0].0, k[1].0), (2, 4.0, 12.0));
+    // With nothing pending K keys the whole transform.
+    key(&mut ed, Key::Char('k'), Mods::NONE);
     for p in [Property::Translation, Property::Rotation, Property::Scale] {
         let k = keys(&ed, bx, p);
         assert_eq!(k.len(), 2, "{p:?}");
@@ -188,10 +198,14 @@ fn k_keys_the_transform_and_arrows_jump_between_keys() {
     assert!((ed.posed_node(bx).transform.scale.y - 1.0).abs() < 1e-5);
     assert_eq!(keys(&ed, bx, Property::Scale).len(), 2);
     key(&mut ed, Key::Char('z'), Mods::ctrl());
-    // K is one undo step.
+    // The second K (whole transform) is one undo step; the first one's
+    // scale key stays.
     key(&mut ed, Key::Char('z'), Mods::ctrl());
-    assert_eq!(keys(&ed, bx, Property::Scale).len(), 1);
+    assert_eq!(keys(&ed, bx, Property::Translation).len(), 1);
+    assert_eq!(keys(&ed, bx, Property::Rotation).len(), 1);
+    assert_eq!(keys(&ed, bx, Property::Scale).len(), 2);
     key(&mut ed, Key::Char('y'), Mods::ctrl());
+    assert_eq!(keys(&ed, bx, Property::Translation).len(), 2);
     goto(&mut ed, 0);
     key(&mut ed, Key::Up, Mods::NONE);
     assert_eq!(ed.current_frame(), 4.0);

@@ -285,10 +285,10 @@ fn grid_style_and_playback_toggles() {
     assert!(ed.is_playing());
     let steps = script::parse("wait-frames 1\nwait-frames 10", Path::new("t")).unwrap();
     let mut runner = script::Runner::default();
-    runner.run(&mut ed, &steps);
+    runner.run(&mut ed, &steps, Path::new("t")).unwrap();
     assert_eq!(ed.current_frame(), 10.0);
     let steps = script::parse("wait-frames 90", Path::new("t")).unwrap();
-    runner.run(&mut ed, &steps);
+    runner.run(&mut ed, &steps, Path::new("t")).unwrap();
     assert_eq!(ed.current_frame(), 3.0, "96 frames + frame 0 = 97 per loop");
     key(&mut ed, Key::Char('p'), Mods::ctrl());
     assert!(!ed.is_playing());

@@ -20,6 +20,8 @@ const ACTIVE_POLL: Duration = Duration::from_millis(8);
 const IDLE_POLL: Duration = Duration::from_millis(20);
 /// How long after the last input the loop stays in the fast poll.
 const ACTIVE_FOR: Duration = Duration::from_millis(500);
+/// Longest gap between `Tick`s for a screen that wants a clock (autosave).
+const CLOCK_EVERY: Duration = Duration::from_secs(1);
 
 /// What minifb's input callback saw since the last poll, in order. Key
 /// edges come from here rather than from `get_keys_pressed`, which misses a
@@ -77,6 +79,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     let mut mouse = (-1.0f32, -1.0f32);
     let mut buttons = [false; 3];
     let mut last_input = Instant::now();
+    let mut last_tick = Instant::now();
     let mut dirty = true;
     let mut title = String::from("animed");
 
@@ -168,7 +171,9 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
         for ev in events {
             dirty |= ed.handle(ev);
         }
-        if ed.wants_ticks() {
+        // Playback ticks every pass; the autosave clock at least once a second.
+        if ed.wants_ticks() || (ed.wants_clock() && last_tick.elapsed() >= CLOCK_EVERY) {
+            last_tick = Instant::now();
             dirty |= ed.handle(Event::Tick {
                 time: start.elapsed().as_secs_f64(),
             });
@@ -191,8 +196,9 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
         let busy = ed.wants_ticks() || last_input.elapsed() < ACTIVE_FOR;
         std::thread::sleep(if busy { ACTIVE_POLL } else { IDLE_POLL });
     }
-    if ed.is_dirty() && !ed.wants_quit() {
-        eprintln!("animed: window closed with unsaved changes");
+    // minifb cannot refuse a close: unsaved work goes to the recovery copy.
+    if let Some(msg) = ed.window_closed() {
+        eprintln!("animed: {msg}");
     }
     Ok(())
 }

@@ -24,6 +24,16 @@ pub trait Screen {
     fn window_title(&self) -> String {
         "animed".to_string()
     }
+    /// True when it needs a `Tick` at least every second even while idle
+    /// (the editor's autosave clock).
+    fn wants_clock(&self) -> bool {
+        false
+    }
+    /// The window closed without `wants_quit`: last chance to keep unsaved
+    /// work. Returns a line to print.
+    fn window_closed(&mut self) -> Option<String> {
+        None
+    }
 }
 
 impl Screen for Editor {
@@ -47,5 +57,11 @@ impl Screen for Editor {
     }
     fn window_title(&self) -> String {
         Editor::window_title(self)
+    }
+    fn wants_clock(&self) -> bool {
+        Editor::wants_clock(self)
+    }
+    fn window_closed(&mut self) -> Option<String> {
+        Editor::window_closed(self)
     }
 }

@@ -18,6 +18,28 @@ pub struct Args {
     /// Window / screenshot size, WxH.
     #[arg(long, default_value = "1024x640", value_parser = parse_size)]
     pub size: (u32, u32),
+    /// Seconds between autosaves of unsaved work to the recovery copy
+    /// (0: off). Default: $ANIMED_AUTOSAVE_SECS, else 30.
+    #[arg(long, value_name = "SECS")]
+    pub autosave_secs: Option<f64>,
+}
+
+/// The autosave interval: the flag, else `$ANIMED_AUTOSAVE_SECS`, else 30 s.
+fn autosave_interval(flag: Option<f64>) -> Result<Option<f64>, String> {
+    let secs = match flag {
+        Some(s) => s,
+        None => match std::env::var("ANIMED_AUTOSAVE_SECS") {
+            Ok(v) => v
+                .trim()
+                .parse::<f64>()
+                .map_err(|_| format!("ANIMED_AUTOSAVE_SECS: '{v}' is not a number of seconds"))?,
+            Err(_) => crate::editor::recovery::DEFAULT_INTERVAL,
+        },
+    };
+    if !secs.is_finite() || secs < 0.0 {
+        return Err(format!("autosave interval {secs} is not 0 or more seconds"));
+    }
+    Ok((secs > 0.0).then_some(secs))
 }
 
 /// Parses `WxH` (each 16..=4096).
@@ -43,13 +65,21 @@ fn make_editor(file: Option<&PathBuf>, (w, h): (u32, u32)) -> Result<Editor, Str
             for warning in &loaded.warnings {
                 eprintln!("warning: {warning}");
             }
-            Ok(Editor::new(loaded.scene, Some(path.clone()), w, h))
+            let mut ed = Editor::new(loaded.scene, Some(path.clone()), w, h);
+            // A crash left newer work beside the file: ask.
+            ed.check_recovery();
+            Ok(ed)
         }
     }
 }
 
 pub fn run(args: Args) -> i32 {
-    let mut ed = match make_editor(args.file.as_ref(), args.size) {
+    let made = autosave_interval(args.autosave_secs).and_then(|secs| {
+        let mut ed = make_editor(args.file.as_ref(), args.size)?;
+        ed.set_autosave_interval(secs);
+        Ok(ed)
+    });
+    let mut ed = match made {
         Ok(e) => e,
         Err(msg) => {
             eprintln!("animed edit: {msg}");
@@ -97,7 +127,15 @@ fn window(ed: Editor) -> i32 {
 
 /// `animed` with no arguments: the editor on the bundled demo scene.
 pub fn run_default() -> i32 {
-    window(Editor::with_demo(1024, 640))
+    let mut ed = Editor::with_demo(1024, 640);
+    match autosave_interval(None) {
+        Ok(secs) => ed.set_autosave_interval(secs),
+        Err(msg) => {
+            eprintln!("animed: {msg}");
+            return 1;
+        }
+    }
+    window(ed)
 }
 
 #[cfg(test)]
@@ -110,5 +148,13 @@ mod tests {
         assert!(parse_size("320").is_err());
         assert!(parse_size("0x10").is_err());
         assert!(parse_size("99999x10").is_err());
+    }
+
+    #[test]
+    fn autosave_flag_wins_and_zero_is_off() {
+        assert_eq!(autosave_interval(Some(5.0)), Ok(Some(5.0)));
+        assert_eq!(autosave_interval(Some(0.0)), Ok(None));
+        assert!(autosave_interval(Some(-1.0)).is_err());
+        assert!(autosave_interval(Some(f64::NAN)).is_err());
     }
 }

@@ -86,8 +86,9 @@ impl Editor {
     }
 
     fn tick(&mut self, time: f64) -> bool {
+        let status = self.autosave_tick(time);
         let Some(pb) = &mut self.playback else {
-            return false;
+            return status;
         };
         let start = *pb.start_time.get_or_insert(time);
         let fps = self.scene.settings.fps.max(1e-6) as f64;
@@ -97,7 +98,7 @@ impl Editor {
         let f = (f + 1e-6).rem_euclid(dur + 1.0).floor() as f32;
         let changed = f != self.frame;
         self.frame = f;
-        changed
+        changed || status
     }
 
     fn toggle_play(&mut self) {
@@ -481,6 +482,9 @@ impl Editor {
     // ----- keyboard -----
 
     fn key_down(&mut self, key: Key, mods: Mods) {
+        if self.recovery_key(key) {
+            return;
+        }
         if self.dialog.is_some() {
             match key {
                 Key::Escape => self.run_action(Action::DialogCancel),
@@ -598,10 +602,14 @@ impl Editor {
             After::Quit => self.quit = true,
             After::New => self.new_scene(),
             After::Open => self.browse(Purpose::Open, None),
+            After::Recover => {}
         }
     }
 
     pub(super) fn run_action(&mut self, a: Action) {
+        if self.recovery_action(a) {
+            return;
+        }
         match a {
             Action::New => self.ask_unsaved(After::New),
             Action::Open => self.ask_unsaved(After::Open),

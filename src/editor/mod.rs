@@ -30,6 +30,7 @@ mod onion;
 pub mod ops;
 pub mod panel;
 pub mod record;
+pub mod recovery;
 pub mod script;
 mod viewport;
 
@@ -58,6 +59,8 @@ pub enum After {
     Quit,
     New,
     Open,
+    /// The recovery question when opening a scene (see `recovery`).
+    Recover,
 }
 
 /// A modal question.
@@ -149,6 +152,8 @@ pub struct Editor {
     /// Folder the file browser starts in when no file is open.
     start_dir: PathBuf,
     pose: Option<(u64, f32, Pose)>,
+    /// Recovery copies of unsaved work.
+    autosave: recovery::Autosave,
     layer: SceneLayer,
     painter: Painter,
 }
@@ -187,6 +192,7 @@ impl Editor {
             revealed: None,
             start_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
             pose: None,
+            autosave: recovery::Autosave::default(),
             layer: SceneLayer {
                 key: None,
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
@@ -340,11 +346,16 @@ impl Editor {
     fn preview(&mut self, c: &Command) {
         c.apply(&mut self.scene);
         self.scene_rev += 1;
+        // Any edit stops playback (issue 7): every edit path passes here
+        // or through `touched`.
+        self.playback = None;
     }
 
-    /// After any change: new revision, selection still valid.
+    /// After any change: new revision, selection still valid, playback
+    /// stopped.
     fn touched(&mut self) {
         self.scene_rev += 1;
+        self.playback = None;
         self.select(self.selection);
         let n = self.scene.nodes.len();
         if self.selection.is_some_and(|s| s.0 as usize >= n) {
@@ -380,6 +391,7 @@ impl Editor {
         self.edit = None;
         self.scroll = [0, 0];
         self.scene_rev += 1;
+        self.reset_recovery();
         self.frame_all();
     }
 
@@ -398,6 +410,7 @@ impl Editor {
             _ => format!("Opened {} ({n} warnings)", path.display()),
         };
         self.set_status(&msg, false);
+        self.check_recovery();
         Ok(())
     }
 
@@ -428,8 +441,9 @@ impl Editor {
     /// Saves to `path` through the writers (format from the extension).
     pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
         ops::save_scene(&self.scene, path)?;
-        self.path = Some(path.to_path_buf());
+        let old = self.path.replace(path.to_path_buf());
         self.saved_revision = self.history.revision();
+        self.saved_recovery(old.as_deref());
         self.set_status(&format!("Saved {}", path.display()), false);
         Ok(())
     }

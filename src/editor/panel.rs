@@ -557,27 +557,42 @@ impl Editor {
     pub fn dialog_rect(&self) -> Rect {
         let win = self.layout().window;
         let bw = (win.w - 20).clamp(100, 360);
-        let bh = 3 * ROW + 20;
+        let lines = self
+            .dialog
+            .as_ref()
+            .map_or(1, |d| d.message.lines().count());
+        let bh = (2 + lines.max(1) as i32) * ROW + 20;
         Rect::new((win.w - bw) / 2, (win.h - bh) / 2, bw, bh)
     }
 
     pub fn dialog_widgets(&self, message: &str) -> Vec<Widget> {
         let r = self.dialog_rect();
         let mut out = Vec::new();
+        let recover = self
+            .dialog
+            .as_ref()
+            .is_some_and(|d| d.then == super::After::Recover);
+        let (heading, labels) = if recover {
+            ("Recovery copy", ["Open saved", "Discard copy", "Recover"])
+        } else {
+            ("Unsaved changes", ["Cancel", "Discard", "Save"])
+        };
         let (title, rest) = r.take_top(ROW + 2);
-        out.push(w(title, WidgetKind::Header("Unsaved changes".into())));
-        out.push(label(
-            Rect::new(rest.x + 6, rest.y + 4, rest.w - 12, ROW),
-            message,
-            false,
-        ));
+        out.push(w(title, WidgetKind::Header(heading.into())));
+        for (i, line) in message.lines().enumerate() {
+            out.push(label(
+                Rect::new(rest.x + 6, rest.y + 4 + i as i32 * ROW, rest.w - 12, ROW),
+                line,
+                false,
+            ));
+        }
         let by = rest.bottom() - ROW - 8;
         let mut x = rest.right() - 6;
-        for (l, a) in [
-            ("Cancel", Action::DialogCancel),
-            ("Discard", Action::DialogDiscard),
-            ("Save", Action::DialogSave),
-        ] {
+        for (l, a) in labels.into_iter().zip([
+            Action::DialogCancel,
+            Action::DialogDiscard,
+            Action::DialogSave,
+        ]) {
             let bw = text::width(l) + 10;
             x -= bw;
             out.push(button(

@@ -242,15 +242,21 @@ impl Editor {
             .is_some()
     }
 
-    /// K: keys the selection's transform (objects) or light fields (lights)
-    /// at the current frame with the values shown.
+    /// K: keys the selection's changed properties at the current frame
+    /// with the values shown. "Changed" is the pending change on animated
+    /// properties; with nothing pending, K keys the whole transform
+    /// (objects) or all light fields (lights), as Blender's default keying
+    /// set does.
     pub(super) fn insert_keys(&mut self) {
         let Some(sel) = self.selection else {
             self.set_status("Select something to key (K)", false);
             return;
         };
         let n = self.posed_node(sel);
-        let props = keyable(&n);
+        let props = match self.pending().filter(|p| p.id == sel) {
+            Some(p) => p.props.clone(),
+            None => keyable(&n),
+        };
         match with_keys(&self.scene.animation, sel, &n, &props, self.frame) {
             Ok(after) => {
                 let before = Box::new(self.scene.animation.clone());

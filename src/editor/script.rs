@@ -10,7 +10,11 @@
 //! move X Y                   mouse move
 //! wheel N [X Y]              N wheel notches (positive zooms in)
 //! wait-frames N              N ticks of 1/fps seconds (playback advances)
+//! sleep-ms N                 N real milliseconds, a tick every 100 ms
+//!                            (session time advances by the real time slept:
+//!                            autosave fires; another process can watch)
 //! resize W H                 window resized
+//! screenshot OUT.png         the window as it looks now, written as a PNG
 //! ```
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
 //! modifiers: `alt+left`, `shift+middle`.
@@ -48,8 +52,10 @@ impl std::error::Error for ScriptError {}
 const DRAG_STEPS: usize = 8;
 /// Largest window a script may ask for.
 const MAX_SIDE: u32 = 4096;
-/// Largest wait, so a typo cannot hang a session.
+/// Largest wait (frames or milliseconds), so a typo cannot hang a session.
 const MAX_WAIT: u64 = 100_000;
+/// How often `sleep-ms` ticks.
+const SLEEP_SLICE: std::time::Duration = std::time::Duration::from_millis(100);
 
 /// One parsed line.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,7 +67,11 @@ pub enum Step {
     Move(f32, f32),
     Wheel(f32, Option<(f32, f32)>),
     WaitFrames(u64),
+    SleepMs(u64),
     Resize(u32, u32),
+    /// Saves the current window picture (relative paths: the working
+    /// directory, as `--screenshot`).
+    Screenshot(PathBuf),
 }
 
 /// Parses a whole script; `path` names it in errors.
@@ -183,6 +193,10 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 want(1..=1)?;
                 Step::WaitFrames(count(0, MAX_WAIT)?)
             }
+            "sleep-ms" => {
+                want(1..=1)?;
+                Step::SleepMs(count(0, MAX_WAIT)?)
+            }
             "resize" => {
                 want(2..=2)?;
                 let w = count(0, MAX_SIDE as u64)? as u32;
@@ -192,11 +206,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 }
                 Step::Resize(w, h)
             }
+            "screenshot" => {
+                want(1..=1)?;
+                Step::Screenshot(PathBuf::from(args[0]))
+            }
             _ => {
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, resize)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot)"
                     ),
                 ))
             }
@@ -260,13 +278,27 @@ impl Default for Runner {
 }
 
 impl Runner {
-    pub fn run(&mut self, ed: &mut Editor, steps: &[(usize, Step)]) {
-        for (_, s) in steps {
-            self.step(ed, s);
+    /// Runs `steps`; a step that cannot be carried out (a screenshot that
+    /// cannot be written) stops the session with its line. `path` names
+    /// the script in errors.
+    pub fn run(
+        &mut self,
+        ed: &mut Editor,
+        steps: &[(usize, Step)],
+        path: &Path,
+    ) -> Result<(), ScriptError> {
+        for (line, s) in steps {
+            self.step(ed, s).map_err(|message| ScriptError {
+                path: path.to_path_buf(),
+                line: *line,
+                column: 1,
+                message,
+            })?;
         }
+        Ok(())
     }
 
-    pub fn step(&mut self, ed: &mut Editor, s: &Step) {
+    pub fn step(&mut self, ed: &mut Editor, s: &Step) -> Result<(), String> {
         match s {
             Step::Key(key, mods) => {
                 ed.handle(Event::KeyDown {
@@ -335,13 +367,34 @@ impl Runner {
                     ed.handle(Event::Tick { time: self.clock });
                 }
             }
+            Step::SleepMs(ms) => {
+                // Real time, in slices, each followed by a tick.
+                let end = std::time::Instant::now() + std::time::Duration::from_millis(*ms);
+                loop {
+                    let now = std::time::Instant::now();
+                    let left = end.saturating_duration_since(now);
+                    std::thread::sleep(left.min(SLEEP_SLICE));
+                    self.clock += now.elapsed().as_secs_f64();
+                    ed.handle(Event::Tick { time: self.clock });
+                    if left <= SLEEP_SLICE {
+                        break;
+                    }
+                }
+            }
             Step::Resize(w, h) => {
                 ed.handle(Event::Resize {
                     width: *w,
                     height: *h,
                 });
             }
+            Step::Screenshot(out) => {
+                let frame = ed.render_frame();
+                frame
+                    .save_png(out)
+                    .map_err(|e| format!("screenshot {}: {e}", out.display()))?;
+            }
         }
+        Ok(())
     }
 
     fn move_to(&mut self, ed: &mut Editor, x: f32, y: f32, mods: Mods) {
@@ -353,8 +406,7 @@ impl Runner {
 /// Parses and runs a script on `ed`.
 pub fn run(ed: &mut Editor, text: &str, path: &Path) -> Result<(), ScriptError> {
     let steps = parse(text, path)?;
-    Runner::default().run(ed, &steps);
-    Ok(())
+    Runner::default().run(ed, &steps, path)
 }
 
 #[cfg(test)]
@@ -363,7 +415,7 @@ mod tests {
 
     #[test]
     fn parses_every_command() {
-        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\n";
+        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\nscreenshot out/a.png\nsleep-ms 5\n";
         let steps = parse(s, Path::new("t.txt")).unwrap();
         let kinds: Vec<Step> = steps.into_iter().map(|(_, s)| s).collect();
         assert_eq!(
@@ -390,6 +442,8 @@ mod tests {
         assert_eq!(kinds[6], Step::Wheel(1.0, Some((10.0, 20.0))));
         assert_eq!(kinds[7], Step::WaitFrames(3));
         assert_eq!(kinds[8], Step::Resize(320, 240));
+        assert_eq!(kinds[9], Step::Screenshot(PathBuf::from("out/a.png")));
+        assert_eq!(kinds[10], Step::SleepMs(5));
     }
 
     #[test]
@@ -405,5 +459,25 @@ mod tests {
         assert!(e.message.contains("count up to"));
         let e = parse("resize 100000 10\n", Path::new("s.txt")).unwrap_err();
         assert_eq!(e.line, 1);
+    }
+
+    #[test]
+    fn screenshots_mid_session_and_report_unwritable_paths() {
+        let dir = std::env::temp_dir().join(format!("animed-script-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let shot = dir.join("mid.png");
+        let mut ed = Editor::new(crate::scene::Scene::new(), None, 64, 48);
+        let text = format!("key g\nscreenshot {}\n", shot.display());
+        run(&mut ed, &text, Path::new("s.txt")).unwrap();
+        let img = image::open(&shot).unwrap();
+        assert_eq!((img.width(), img.height()), (64, 48));
+        let bad = format!(
+            "key g\nscreenshot {}\n",
+            dir.join("no/such/dir/x.png").display()
+        );
+        let e = run(&mut ed, &bad, Path::new("s.txt")).unwrap_err();
+        assert_eq!((e.line, e.column), (2, 1));
+        assert!(e.message.contains("screenshot"), "{}", e.message);
+        std::fs::remove_dir_all(&dir).ok();
     }
 }

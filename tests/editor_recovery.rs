@@ -1,0 +1,282 @@
+//! Never lose work (issue 7 item 8): a headless `animed edit` session makes
+//! keyed edits, autosaves, and is killed with SIGKILL; the scene file is
+//! untouched, and a second session recovers the copy and saves the edits.
+//! Also the recovery dialog's other answers, driven in-process.
+
+use animed::anim::{Property, Target, TargetRef, Value};
+use animed::editor::panel::WidgetKind;
+use animed::editor::recovery::recovery_path;
+use animed::editor::{After, Editor, Event, Key, Mods};
+use animed::scene::NodeId;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+const SIZE: (u32, u32) = (640, 400);
+
+/// A fresh folder for one test.
+fn dir(tag: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("editor-recovery-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The demo scene saved as `dir/scene.wrl`.
+fn demo_file(d: &Path) -> PathBuf {
+    let p = d.join("scene.wrl");
+    let demo = animed::format::demo().expect("the bundled demo loads");
+    animed::format::save(&demo.scene, &p, &Default::default()).unwrap();
+    p
+}
+
+fn centre(ed: &Editor, pred: impl Fn(&WidgetKind) -> bool) -> (i32, i32) {
+    let w = ed
+        .widgets()
+        .into_iter()
+        .find(|w| pred(&w.kind))
+        .expect("widget shown");
+    (w.rect.x + w.rect.w / 2, w.rect.y + w.rect.h / 2)
+}
+
+/// Script that selects the first object, turns record on, types x = 2.5
+/// at frame 0 and x = -4 at frame 10 (two translation keys), then idles in
+/// real time so autosave fires. Returns it and the object.
+fn editing_script(scene: &Path) -> (String, NodeId) {
+    let loaded = animed::format::load(scene).unwrap();
+    let mut ed = Editor::new(loaded.scene, Some(scene.to_path_buf()), SIZE.0, SIZE.1);
+    let (row, node) = ed
+        .widgets()
+        .into_iter()
+        .find_map(|w| match w.kind {
+            WidgetKind::Row { node, .. } => Some(((w.rect.x + 20, w.rect.y + w.rect.h / 2), node)),
+            _ => None,
+        })
+        .expect("the demo lists objects");
+    ed.select(Some(node));
+    let tx = centre(&ed, |k| format!("{k:?}") == "Field(Translation(0))");
+    let mut s = format!("click {} {}\nkey r\n", row.0, row.1);
+    s += &format!("click {} {}\ntype 2.5\nkey enter\n", tx.0, tx.1);
+    s += &"key right\n".repeat(10);
+    s += &format!("click {} {}\ntype -4\nkey enter\n", tx.0, tx.1);
+    s += "sleep-ms 60000\n";
+    (s, node)
+}
+
+fn translation_keys(scene: &animed::scene::Scene, id: NodeId) -> Vec<(f32, Value)> {
+    let t = scene.animation.track(Target {
+        of: TargetRef::Node(id),
+        property: Property::Translation,
+    });
+    t.map(|t| {
+        (0..t.key_count())
+            .map(|i| {
+                let k = t.key(i).expect("index in range");
+                (k.frame, k.value)
+            })
+            .collect()
+    })
+    .unwrap_or_default()
+}
+
+fn key_x(keys: &[(f32, Value)], frame: f32) -> Option<f32> {
+    keys.iter().find(|k| k.0 == frame).and_then(|k| match k.1 {
+        Value::Vec3(v) => Some(v.x),
+        _ => None,
+    })
+}
+
+#[test]
+fn a_killed_session_is_recovered_and_saved() {
+    let d = dir("kill");
+    let scene = demo_file(&d);
+    let original = std::fs::read(&scene).unwrap();
+    let copy = recovery_path(&scene);
+    let (script, node) = editing_script(&scene);
+    let s1 = d.join("s1.txt");
+    std::fs::write(&s1, script).unwrap();
+
+    let mut child = Command::new(env!("CARGO_BIN_EXE_animed"))
+        .args(["edit"])
+        .arg(&scene)
+        .arg("--script")
+        .arg(&s1)
+        .args(["--size", &format!("{}x{}", SIZE.0, SIZE.1)])
+        .env("ANIMED_AUTOSAVE_SECS", "1")
+        .spawn()
+        .expect("animed starts");
+    let t0 = Instant::now();
+    while !copy.exists() {
+        if let Some(st) = child.try_wait().unwrap() {
+            panic!("the session ended ({st}) before autosaving");
+        }
+        assert!(
+            t0.elapsed() < Duration::from_secs(40),
+            "no recovery copy after 40 s"
+        );
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    let appeared = t0.elapsed();
+    // SIGKILL: no chance to clean up or save.
+    child.kill().unwrap();
+    let st = child.wait().unwrap();
+    assert!(!st.success(), "killed, not finished");
+    eprintln!("recovery copy appeared after {appeared:?}");
+
+    assert_eq!(
+        std::fs::read(&scene).unwrap(),
+        original,
+        "the scene file is untouched"
+    );
+    let autosaved = animed::format::load(&copy).expect("the copy loads");
+    let k = translation_keys(&autosaved.scene, node);
+    assert_eq!(key_x(&k, 0.0), Some(2.5), "{k:?}");
+    assert_eq!(key_x(&k, 10.0), Some(-4.0), "{k:?}");
+
+    // Second session: Recover (Enter), save (Ctrl+S).
+    let s2 = d.join("s2.txt");
+    std::fs::write(&s2, "key enter\nkey ctrl+s\n").unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_animed"))
+        .args(["edit"])
+        .arg(&scene)
+        .arg("--script")
+        .arg(&s2)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!copy.exists(), "saving deletes the recovery copy");
+    let saved = animed::format::load(&scene).expect("the saved scene loads");
+    let k = translation_keys(&saved.scene, node);
+    assert_eq!(key_x(&k, 0.0), Some(2.5), "{k:?}");
+    assert_eq!(key_x(&k, 10.0), Some(-4.0), "{k:?}");
+    assert_eq!(
+        saved.scene.node(node).name,
+        autosaved.scene.node(node).name,
+        "same object"
+    );
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+fn key(ed: &mut Editor, k: Key) {
+    ed.handle(Event::KeyDown {
+        key: k,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::KeyUp {
+        key: k,
+        mods: Mods::NONE,
+    });
+}
+
+/// `dir/scene.wrl` plus a newer recovery copy in which the first node
+/// moved to x = 7; an editor that opened the scene.
+fn crashed(d: &Path) -> (PathBuf, Editor) {
+    let scene = demo_file(d);
+    let mut moved = animed::format::load(&scene).unwrap().scene;
+    moved.nodes[0].transform.translation.x = 7.0;
+    let copy = recovery_path(&scene);
+    animed::format::save(&moved, &copy, &Default::default()).unwrap();
+    // Newer than the scene, whatever the file system's time resolution.
+    let f = std::fs::OpenOptions::new()
+        .write(true)
+        .open(&scene)
+        .unwrap();
+    f.set_modified(std::time::SystemTime::now() - Duration::from_secs(120))
+        .unwrap();
+    let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
+    ed.open_file(&scene).unwrap();
+    (copy, ed)
+}
+
+#[test]
+fn opening_offers_the_copy_recover_keeps_the_name_and_undo_shows_the_saved_file() {
+    let d = dir("recover");
+    let (copy, mut ed) = crashed(&d);
+    let dlg = ed.dialog().expect("the recovery question").clone();
+    assert_eq!(dlg.then, After::Recover);
+    assert!(dlg.message.contains("scene.wrl"), "{}", dlg.message);
+    assert!(dlg.message.contains("UTC"), "{}", dlg.message);
+    assert_eq!(ed.recovery_offer(), Some(copy.as_path()));
+    // The dialog's buttons say what they do.
+    let labels: Vec<String> = ed
+        .dialog_widgets(&dlg.message)
+        .into_iter()
+        .filter_map(|w| match w.kind {
+            WidgetKind::Button { label, .. } => Some(label),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(labels, ["Open saved", "Discard copy", "Recover"]);
+    key(&mut ed, Key::Char('r'));
+    assert!(ed.dialog().is_none());
+    assert_eq!(ed.scene().nodes[0].transform.translation.x, 7.0);
+    assert!(ed.is_dirty(), "recovered work is unsaved");
+    assert_eq!(ed.path(), Some(d.join("scene.wrl").as_path()));
+    ed.undo();
+    assert_ne!(ed.scene().nodes[0].transform.translation.x, 7.0);
+    assert!(!ed.is_dirty(), "undo shows the saved file");
+    ed.redo();
+    assert_eq!(ed.scene().nodes[0].transform.translation.x, 7.0);
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn open_saved_keeps_the_copy_and_discard_deletes_it() {
+    let d = dir("answers");
+    let (copy, mut ed) = crashed(&d);
+    key(&mut ed, Key::Char('o'));
+    assert!(ed.dialog().is_none());
+    assert_ne!(ed.scene().nodes[0].transform.translation.x, 7.0);
+    assert!(!ed.is_dirty());
+    assert!(copy.exists(), "Open saved keeps the copy");
+
+    let (copy, mut ed) = crashed(&d);
+    assert!(ed.dialog().is_some(), "asked again");
+    // Keys of the unsaved-changes dialog do nothing unexpected here.
+    key(&mut ed, Key::Char('s'));
+    assert!(ed.dialog().is_some());
+    key(&mut ed, Key::Char('d'));
+    assert!(ed.dialog().is_none());
+    assert!(!copy.exists(), "Discard copy deletes it");
+    assert!(!ed.is_dirty());
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn discarding_unsaved_changes_deletes_this_sessions_copy() {
+    let d = dir("discard");
+    let scene = demo_file(&d);
+    let loaded = animed::format::load(&scene).unwrap();
+    let mut ed = Editor::new(loaded.scene, Some(scene.clone()), SIZE.0, SIZE.1);
+    ed.set_autosave_interval(Some(1.0));
+    let x = centre(&ed, |k| matches!(k, WidgetKind::Row { .. }));
+    ed.handle(Event::MouseDown {
+        button: animed::editor::MouseButton::Left,
+        x: x.0 as f32,
+        y: x.1 as f32,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::MouseUp {
+        button: animed::editor::MouseButton::Left,
+        x: x.0 as f32,
+        y: x.1 as f32,
+        mods: Mods::NONE,
+    });
+    key(&mut ed, Key::Delete);
+    assert!(ed.is_dirty());
+    ed.handle(Event::Tick { time: 10.0 });
+    ed.handle(Event::Tick { time: 11.5 });
+    let copy = recovery_path(&scene);
+    assert!(copy.exists(), "autosaved");
+    assert!(ed.last_autosave_ms().is_some());
+    ed.handle(Event::KeyDown {
+        key: Key::Char('q'),
+        mods: Mods::ctrl(),
+    });
+    assert!(ed.dialog().is_some(), "asks about the unsaved changes");
+    key(&mut ed, Key::Char('d'));
+    assert!(ed.wants_quit());
+    assert!(!copy.exists(), "discarding drops the copy");
+    std::fs::remove_dir_all(&d).unwrap();
+}
