@@ -284,3 +284,50 @@ fn discarding_unsaved_changes_deletes_this_sessions_copy() {
     assert!(!copy.exists(), "discarding drops the copy");
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+#[test]
+fn closing_the_window_asks_once_then_keeps_the_work_in_the_copy() {
+    let d = dir("close");
+    let scene = demo_file(&d);
+    let loaded = animed::format::load(&scene).unwrap();
+    let mut ed = Editor::new(loaded.scene, Some(scene.clone()), SIZE.0, SIZE.1);
+    // Nothing unsaved: the window just closes.
+    assert!(!ed.close_requested());
+    assert_eq!(ed.window_closed(), None);
+    let node = NodeId(0);
+    ed.select(Some(node));
+    key(&mut ed, Key::Char('k'));
+    assert!(ed.is_dirty());
+    // Unsaved work: the first close asks (the app reopens the window).
+    assert!(ed.close_requested());
+    assert_eq!(ed.dialog().map(|d| d.then), Some(After::Quit));
+    // Closing again while asked: the work goes to the recovery copy.
+    assert!(!ed.close_requested());
+    let msg = ed.window_closed().expect("says where the work went");
+    let copy = recovery_path(&scene);
+    assert!(msg.contains(&copy.display().to_string()), "{msg}");
+    let kept = animed::format::load(&copy).expect("the copy loads");
+    // Node ids may differ after a round trip; compare by name.
+    let named = |sc: &animed::scene::Scene| {
+        let mut v: Vec<String> = sc
+            .animation
+            .tracks
+            .iter()
+            .map(|t| match t.target.of {
+                TargetRef::Node(n) => format!("{} {:?}", sc.node(n).name, t.target.property),
+                TargetRef::Material(m) => format!("material {} {:?}", m.0, t.target.property),
+            })
+            .collect();
+        v.sort();
+        v
+    };
+    let name = &ed.scene().node(node).name;
+    assert!(!name.is_empty());
+    let ours = named(ed.scene());
+    assert!(
+        ours.contains(&format!("{name} Translation")),
+        "K keyed the object: {ours:?}"
+    );
+    assert_eq!(named(&kept.scene), ours, "every track kept");
+    std::fs::remove_dir_all(&d).unwrap();
+}

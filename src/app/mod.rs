@@ -55,22 +55,9 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
         return Err(no_display("DISPLAY is not set"));
     }
     let (w, h) = ed.size();
-    let opts = WindowOptions {
-        resize: true,
-        ..WindowOptions::default()
-    };
-    // minifb reports a missing X server or libraries as an error; guard
-    // against a panic in its C glue as well.
-    let window = std::panic::catch_unwind(|| Window::new("animed", w as usize, h as usize, opts));
-    let mut window = match window {
-        Ok(Ok(win)) => win,
-        Ok(Err(e)) => return Err(no_display(&e.to_string())),
-        Err(_) => return Err(no_display("the window system failed")),
-    };
-    // We pace the loop ourselves.
-    window.set_target_fps(0);
     let typed = Rc::new(RefCell::new(Typed::default()));
-    window.set_input_callback(Box::new(Sink(typed.clone())));
+    let mut window =
+        open_window("animed", (w as usize, h as usize), &typed).map_err(|e| no_display(&e))?;
     let mut mods = Mods::NONE;
 
     let start = Instant::now();
@@ -83,7 +70,21 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     let mut dirty = true;
     let mut title = String::from("animed");
 
-    while window.is_open() && !ed.wants_quit() {
+    while !ed.wants_quit() {
+        if !window.is_open() {
+            // minifb cannot refuse a close. With unsaved changes the screen
+            // asks first: a fresh window shows the question (a second close
+            // while it is shown really closes; see `window_closed`).
+            if !ed.close_requested() {
+                break;
+            }
+            match open_window(&title, size, &typed) {
+                Ok(win) => window = win,
+                Err(_) => break,
+            }
+            (mods, buttons, dirty) = (Mods::NONE, [false; 3], true);
+            continue;
+        }
         let mut events = Vec::new();
         let Typed { text, keys } = std::mem::take(&mut *typed.borrow_mut());
         let mods_before = mods;
@@ -201,6 +202,30 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
         eprintln!("animed: {msg}");
     }
     Ok(())
+}
+
+/// A resizable window whose input goes to `typed`, paced by the caller.
+fn open_window(
+    title: &str,
+    (w, h): (usize, usize),
+    typed: &Rc<RefCell<Typed>>,
+) -> Result<Window, String> {
+    let opts = WindowOptions {
+        resize: true,
+        ..WindowOptions::default()
+    };
+    // minifb reports a missing X server or libraries as an error; guard
+    // against a panic in its C glue as well.
+    let window = std::panic::catch_unwind(|| Window::new(title, w, h, opts));
+    let mut window = match window {
+        Ok(Ok(win)) => win,
+        Ok(Err(e)) => return Err(e.to_string()),
+        Err(_) => return Err("the window system failed".into()),
+    };
+    // We pace the loop ourselves.
+    window.set_target_fps(0);
+    window.set_input_callback(Box::new(Sink(typed.clone())));
+    Ok(window)
 }
 
 fn no_display(why: &str) -> String {

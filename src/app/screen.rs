@@ -29,8 +29,14 @@ pub trait Screen {
     fn wants_clock(&self) -> bool {
         false
     }
-    /// The window closed without `wants_quit`: last chance to keep unsaved
-    /// work. Returns a line to print.
+    /// The window's close button was used: true keeps the program running
+    /// (the screen asks about unsaved work first; the loop reopens the
+    /// window to show the question).
+    fn close_requested(&mut self) -> bool {
+        false
+    }
+    /// The loop ended (quit or closed): last chance to keep unsaved work.
+    /// Returns a line to print.
     fn window_closed(&mut self) -> Option<String> {
         None
     }
@@ -63,5 +69,8 @@ impl Screen for Editor {
     }
     fn window_closed(&mut self) -> Option<String> {
         Editor::window_closed(self)
+    }
+    fn close_requested(&mut self) -> bool {
+        Editor::close_requested(self)
     }
 }

@@ -537,7 +537,7 @@ impl Editor {
             }
             return;
         }
-        if self.handles_key(key) || self.key_strip_key(key, mods) {
+        if self.handles_key(key, mods) || self.key_strip_key(key, mods) {
             return;
         }
         if !matches!(self.drag, Drag::None) {
@@ -668,6 +668,8 @@ impl Editor {
                     Mode::View => Mode::Select,
                 };
             }
+            Action::Tool(t) => self.set_tool(t),
+            Action::Onion => self.toggle_onion(),
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::AddLight(which) => {

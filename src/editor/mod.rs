@@ -29,6 +29,7 @@ pub mod keystrip;
 mod keystrip_draw;
 pub mod manip;
 pub mod motion_path;
+mod onion;
 pub mod ops;
 pub mod panel;
 pub mod record;
@@ -130,10 +131,12 @@ pub struct Editor {
     record: bool,
     /// A change on an animated property not yet keyed (record off).
     pending: Option<record::Pending>,
-    /// Translate handles: hover and drag.
+    /// Handles: tool, hover and drag.
     manip: manip::Manip,
     /// Key strip: selected keys, fold state, clipboard, strip drags.
     keys: keystrip::KeyStrip,
+    /// Onion skin switch and its cached copies.
+    onion: onion::Onion,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     width: u32,
@@ -178,6 +181,7 @@ impl Editor {
             pending: None,
             manip: manip::Manip::default(),
             keys: keystrip::KeyStrip::default(),
+            onion: onion::Onion::default(),
             show_grid: true,
             view_style: None,
             width: width.max(1),

@@ -373,20 +373,41 @@ impl Editor {
         }
     }
 
-    /// The window was closed: unsaved changes are written to the recovery
-    /// copy right away (the close cannot be refused). Returns a line to
-    /// print.
+    /// The window's close button: with unsaved changes, ask "Save changes
+    /// first?" (as Ctrl+Q does) and keep running — true. Closing again
+    /// while that question is shown, or with nothing unsaved, closes.
+    pub fn close_requested(&mut self) -> bool {
+        let asked = self.dialog.as_ref().is_some_and(|d| d.then == After::Quit);
+        if !self.is_dirty() || self.quit || asked {
+            return false;
+        }
+        self.dialog = Some(Dialog {
+            message: "Save changes before closing?".into(),
+            then: After::Quit,
+        });
+        true
+    }
+
+    /// The window loop ended: after a clean quit this session's copy goes;
+    /// closed with unsaved changes (closed twice, or the window system
+    /// went away), they are written to the recovery copy right away.
+    /// Returns a line to print.
     pub fn window_closed(&mut self) -> Option<String> {
         if !self.is_dirty() || self.quit {
             self.forget_recovery();
             return None;
         }
         Some(match self.autosave_now() {
-            Ok(p) => format!(
-                "window closed with unsaved changes; they are in the recovery copy {} \
-                 (open the scene again to recover them)",
-                p.display()
-            ),
+            Ok(p) => {
+                let how = match &self.path {
+                    Some(_) => "open the scene again to recover them",
+                    None => "open it with `animed edit` and save it under a name",
+                };
+                format!(
+                    "window closed with unsaved changes; they are in the recovery copy {} ({how})",
+                    p.display()
+                )
+            }
             Err(e) => format!("window closed with unsaved changes; autosave failed: {e}"),
         })
     }
