@@ -153,6 +153,47 @@ fn ring_drag_turns_about_its_axis_by_the_arc_as_one_step() {
 }
 
 #[test]
+fn ring_drag_on_a_parented_node_turns_it_about_the_world_axis() {
+    use animed::scene::{Node, Transform};
+    use glam::Mat4;
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
+    let mut scene = animed::format::load(&path).expect("the stage loads").scene;
+    // A parent turned and scaled, a child with a raw matrix
+    // (Inventor MatrixTransform) before its own transform.
+    let parent = scene.add_node(
+        None,
+        Node::group("P").with_transform(Transform {
+            translation: Vec3::new(1.0, 1.0, 0.0),
+            rotation: Quat::from_rotation_x(0.7),
+            scale: Vec3::splat(1.5),
+            ..Transform::default()
+        }),
+    );
+    let child = scene.add_node(
+        Some(parent),
+        Node::group("C").with_transform(Transform {
+            translation: Vec3::new(0.5, 0.0, 0.3),
+            rotation: Quat::from_rotation_y(0.3),
+            extra: Some(Mat4::from_rotation_z(0.9)),
+            ..Transform::default()
+        }),
+    );
+    let mut ed = Editor::new(scene, None, 480, 320);
+    ed.select(Some(child));
+    key(&mut ed, Key::Char('e'), Mods::NONE);
+    let world = |ed: &Editor| animed::anim::evaluate(ed.scene(), 0.0).world[child.0 as usize];
+    let w0 = world(&ed);
+    let t0 = grabbable(&mut ed, Handle::Ring(1), 0.5);
+    ring_drag(&mut ed, Handle::Ring(1), t0, t0 + 0.5, Mods::NONE);
+    let w1 = world(&ed);
+    // Turned about the world y axis through its own origin.
+    let p = w0.w_axis.truncate();
+    let want =
+        Mat4::from_translation(p) * Mat4::from_rotation_y(0.5) * Mat4::from_translation(-p) * w0;
+    assert!(w1.abs_diff_eq(want, 0.01), "{w1} want {want}");
+}
+
+#[test]
 fn ctrl_snaps_the_angle_to_15_degrees() {
     let mut ed = stage();
     let pyr = node(&ed, "Pyramid");
@@ -320,6 +361,34 @@ fn body_drag_moves_in_the_view_plane_and_a_click_still_selects() {
     down(&mut ed, g, Mods::NONE);
     up(&mut ed, g, Mods::NONE);
     assert_eq!(ed.selection(), Some(glass));
+}
+
+#[test]
+fn body_drag_in_record_mode_keys_the_translation() {
+    let mut ed = stage();
+    let pyr = node(&ed, "Pyramid");
+    ed.select(Some(pyr));
+    key(&mut ed, Key::Char('r'), Mods::NONE);
+    for _ in 0..10 {
+        key(&mut ed, Key::Right, Mods::NONE);
+    }
+    let a = body_pixel(&mut ed, pyr);
+    drag_via(&mut ed, &[a, (a.0 + 12.0, a.1 + 9.0)], Mods::NONE);
+    let t = ed
+        .scene()
+        .animation
+        .track(Target {
+            of: TargetRef::Node(pyr),
+            property: Property::Translation,
+        })
+        .expect("a translation track");
+    assert_eq!(t.keys.frames(), vec![10.0]);
+    let k = t.key(0).unwrap();
+    assert_eq!(
+        k.value,
+        Value::Vec3(ed.scene().node(pyr).transform.translation)
+    );
+    assert_eq!(labels(&ed), vec!["Move Pyramid"]);
 }
 
 #[test]

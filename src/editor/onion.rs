@@ -19,9 +19,10 @@ use crate::ui::Rect;
 /// How much of a copy shows over the viewport, inside and on its outline.
 pub const ALPHA: f32 = 0.4;
 pub const EDGE_ALPHA: f32 = 0.8;
-/// Tints of the copy at the previous key (blue) and at the next (green).
+/// Tints of the copy at the previous key (blue) and at the next (magenta:
+/// distinct from the green y handle and green objects).
 pub const BEFORE: u32 = 0x4c8fe8;
-pub const AFTER: u32 = 0x5cc040;
+pub const AFTER: u32 = 0xe060d0;
 
 /// Onion skin switch and its cached copies.
 #[derive(Default)]

@@ -163,11 +163,14 @@ impl Editor {
         let pose = self.pose().clone();
         let world = *pose.world.get(id.0 as usize)?;
         let n = self.posed_node(id);
+        // The space translation, rotation and scale live in: the parent's
+        // world matrix, then an Inventor MatrixTransform's raw matrix.
+        let tr = &n.transform;
         let parent = n
             .parent
             .and_then(|p| pose.world.get(p.0 as usize).copied())
-            .unwrap_or(Mat4::IDENTITY);
-        let tr = &n.transform;
+            .unwrap_or(Mat4::IDENTITY)
+            * tr.extra.unwrap_or(Mat4::IDENTITY);
         let frame = {
             let r = tr.rotation * tr.scale_orientation;
             [Vec3::X, Vec3::Y, Vec3::Z].map(|a| parent.transform_vector3(r * a).normalize_or(a))
