@@ -21,6 +21,7 @@ impl Editor {
         let l = self.layout();
         self.update_layer();
         self.blit_viewport(frame, l.viewport);
+        self.blit_onion(frame, l.viewport);
         // The painter is moved out so `self` can be borrowed while drawing.
         let mut p = std::mem::take(&mut self.painter);
         p.begin(frame);
@@ -45,11 +46,17 @@ impl Editor {
     fn draw_viewport_labels(&self, p: &mut Painter, l: &Layout) {
         let vp = l.viewport;
         let mode = match self.mode {
-            Mode::Select => "Select",
-            Mode::View => "View (Esc: select)",
+            Mode::Select => format!("Select: {}", self.tool().name()),
+            Mode::View => "View (Esc: select)".into(),
         };
+        let onion = if self.onion_shown() { "  Onion" } else { "" };
         p.set_clip(Some(vp));
-        p.text(vp.x + 4, vp.y + 2, mode, theme::TEXT_DIM);
+        p.text(
+            vp.x + 4,
+            vp.y + 2,
+            &format!("{mode}{onion}"),
+            theme::TEXT_DIM,
+        );
         if self.record {
             let x = vp.right() - text::width("REC") - 6;
             p.fill_circle((x as f32 - 6.0, vp.y as f32 + 10.0), 4.0, theme::RECORD);

@@ -514,7 +514,7 @@ impl Editor {
             }
             return;
         }
-        if self.handles_key(key) {
+        if self.handles_key(key, mods) {
             return;
         }
         if !matches!(self.drag, Drag::None) {
@@ -644,6 +644,8 @@ impl Editor {
                     Mode::View => Mode::Select,
                 };
             }
+            Action::Tool(t) => self.set_tool(t),
+            Action::Onion => self.toggle_onion(),
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::AddLight(which) => {

@@ -26,6 +26,7 @@ pub mod gizmo;
 mod input;
 pub mod manip;
 pub mod motion_path;
+mod onion;
 pub mod ops;
 pub mod panel;
 pub mod record;
@@ -127,8 +128,10 @@ pub struct Editor {
     record: bool,
     /// A change on an animated property not yet keyed (record off).
     pending: Option<record::Pending>,
-    /// Translate handles: hover and drag.
+    /// Handles: tool, hover and drag.
     manip: manip::Manip,
+    /// Onion skin switch and its cached copies.
+    onion: onion::Onion,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     width: u32,
@@ -172,6 +175,7 @@ impl Editor {
             record: false,
             pending: None,
             manip: manip::Manip::default(),
+            onion: onion::Onion::default(),
             show_grid: true,
             view_style: None,
             width: width.max(1),

@@ -24,6 +24,10 @@ pub enum Action {
     Grid,
     ViewStyle,
     Mode,
+    /// Pick the handles' tool (W / E / T).
+    Tool(super::manip::Tool),
+    /// Onion skin on or off (O).
+    Onion,
     Undo,
     Redo,
     AddLight(NewLight),
@@ -209,11 +213,20 @@ impl Editor {
             Some(s) => style_name(s),
         };
         let style_label = format!("Style:{style}");
-        let items: [(&str, Action, bool); 8] = [
+        use super::manip::Tool;
+        let tool = self.tool();
+        let items: [(&str, Action, bool); 12] = [
             ("New", Action::New, false),
             ("Open", Action::Open, false),
             ("Imp", Action::Import, false),
             ("Save", Action::Save, false),
+            (
+                "Mov",
+                Action::Tool(Tool::Translate),
+                tool == Tool::Translate,
+            ),
+            ("Rot", Action::Tool(Tool::Rotate), tool == Tool::Rotate),
+            ("Scl", Action::Tool(Tool::Scale), tool == Tool::Scale),
             ("Rec", Action::Record, self.record),
             (
                 if self.playback.is_some() {
@@ -225,6 +238,7 @@ impl Editor {
                 self.playback.is_some(),
             ),
             ("Grid", Action::Grid, self.show_grid),
+            ("Onion", Action::Onion, self.onion_shown()),
             (&style_label, Action::ViewStyle, false),
         ];
         let mut x = r.x + 2;

@@ -1,0 +1,215 @@
+//! Onion skin (O, toolbar): faint tinted copies of the selected object at
+//! its previous and next key frames, so the user sees where it comes from
+//! and goes to.
+//!
+//! Each copy is the selected subtree alone (every other shape hidden in
+//! the pose, lights kept so it is shaded as usual) rendered by the normal
+//! renderer with the viewport's camera, then blended at [`ALPHA`] with a
+//! tint (outline firmer) over the viewport where it is not behind what the viewport shows.
+//! The copies are cached until the scene, frame, camera, size, style or
+//! selection change, and only made while the onion skin is on.
+
+use super::record::key_frames;
+use super::{ops, Editor};
+use crate::anim::KEY_EPS;
+use crate::render::{self, Frame, RenderOptions, View};
+use crate::scene::{NodeId, NodeKind, RenderStyle};
+use crate::ui::Rect;
+
+/// How much of a copy shows over the viewport, inside and on its outline.
+pub const ALPHA: f32 = 0.4;
+pub const EDGE_ALPHA: f32 = 0.8;
+/// Tints of the copy at the previous key (blue) and at the next (magenta:
+/// distinct from the green y handle and green objects).
+pub const BEFORE: u32 = 0x4c8fe8;
+pub const AFTER: u32 = 0xe060d0;
+
+/// Onion skin switch and its cached copies.
+#[derive(Default)]
+pub(super) struct Onion {
+    pub on: bool,
+    key: Option<OnionKey>,
+    /// Rendered copies with their tints.
+    ghosts: Vec<(u32, Frame)>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct OnionKey {
+    rev: u64,
+    frame: f32,
+    camera: super::camera::OrbitCamera,
+    w: u32,
+    h: u32,
+    sel: NodeId,
+    style: Option<RenderStyle>,
+}
+
+/// The key frames of `id` just before and just after `frame`.
+pub fn neighbour_keys(
+    anim: &crate::anim::Animation,
+    id: NodeId,
+    frame: f32,
+) -> (Option<f32>, Option<f32>) {
+    let keys = key_frames(anim, Some(id));
+    let before = keys.iter().rev().copied().find(|&k| k < frame - KEY_EPS);
+    let after = keys.iter().copied().find(|&k| k > frame + KEY_EPS);
+    (before, after)
+}
+
+/// Mixes `a` towards `b` by `t` (packed 0xRRGGBB).
+fn mix(a: u32, b: u32, t: f32) -> u32 {
+    let ch = |s: u32| {
+        let (x, y) = (((a >> s) & 255) as f32, ((b >> s) & 255) as f32);
+        ((x + (y - x) * t).round() as u32).min(255) << s
+    };
+    ch(16) | ch(8) | ch(0)
+}
+
+impl Editor {
+    /// Whether the onion skin is on.
+    pub fn onion_shown(&self) -> bool {
+        self.onion.on
+    }
+
+    /// O / toolbar: shows or hides the onion skin.
+    pub(super) fn toggle_onion(&mut self) {
+        self.onion.on = !self.onion.on;
+        let s = if self.onion.on { "on" } else { "off" };
+        self.set_status(&format!("Onion skin {s}"), false);
+    }
+
+    /// The frames the onion skin shows copies at for the selection.
+    pub fn onion_frames(&self) -> (Option<f32>, Option<f32>) {
+        match self.selection {
+            Some(id) => neighbour_keys(&self.scene.animation, id, self.frame),
+            None => (None, None),
+        }
+    }
+
+    /// Re-renders the copies when their inputs changed.
+    fn update_onion(&mut self, w: u32, h: u32) {
+        let Some(sel) = self.selection.filter(|_| self.onion.on) else {
+            self.onion.ghosts.clear();
+            self.onion.key = None;
+            return;
+        };
+        let key = OnionKey {
+            rev: self.scene_rev,
+            frame: self.frame,
+            camera: self.camera,
+            w,
+            h,
+            sel,
+            style: self.view_style,
+        };
+        if self.onion.key == Some(key) {
+            return;
+        }
+        self.onion.key = Some(key);
+        self.onion.ghosts.clear();
+        if matches!(self.scene.node(sel).kind, NodeKind::Light(_)) {
+            return;
+        }
+        let proj = self.projector();
+        let view = View {
+            view: proj.view,
+            proj: proj.proj,
+            eye: self.camera.eye(),
+        };
+        let opts = RenderOptions {
+            width: w,
+            height: h,
+            threads: 0,
+            style_override: self.view_style,
+            headlight: self.scene.settings.headlight.unwrap_or(true),
+            background: self.scene.settings.background,
+        };
+        let mut mine = vec![false; self.scene.nodes.len()];
+        for id in ops::subtree(&self.scene, sel) {
+            mine[id.0 as usize] = true;
+        }
+        let (before, after) = self.onion_frames();
+        let fps = self.scene.settings.fps.max(1e-6);
+        for (f, tint) in [(before, BEFORE), (after, AFTER)] {
+            let Some(f) = f else { continue };
+            let mut pose = crate::anim::evaluate(&self.scene, f / fps);
+            for (i, n) in self.scene.nodes.iter().enumerate() {
+                if !mine[i] && matches!(n.kind, NodeKind::Shape(_)) {
+                    pose.visible[i] = false;
+                }
+            }
+            let ghost = render::render(&self.scene, &pose, &view, &opts);
+            if ghost.width == w && ghost.height == h {
+                self.onion.ghosts.push((tint, ghost));
+            }
+        }
+    }
+
+    /// Blends the copies over the viewport part of `frame` (after the
+    /// viewport layer was copied there).
+    pub(super) fn blit_onion(&mut self, frame: &mut Frame, vp: Rect) {
+        let (w, h) = (self.layer.frame.width, self.layer.frame.height);
+        self.update_onion(w, h);
+        let depth = &self.layer.frame.depth;
+        let fw = frame.width as usize;
+        let rows = (vp.h.max(0) as usize).min(h as usize);
+        let cols = (vp.w.max(0) as usize).min(w as usize);
+        for (tint, g) in &self.onion.ghosts {
+            for y in 0..rows {
+                for x in 0..cols {
+                    let i = y * w as usize + x;
+                    // Hidden where the viewport shows something nearer.
+                    if g.ids[i] == 0 || g.depth[i] > depth[i] + 1e-6 {
+                        continue;
+                    }
+                    let o = (vp.y as usize + y) * fw + vp.x as usize + x;
+                    // The copy's silhouette is drawn firmer so its shape reads.
+                    let (wu, hu) = (w as usize, h as usize);
+                    let edge = x == 0
+                        || y == 0
+                        || x + 1 == wu
+                        || y + 1 == hu
+                        || g.ids[i - 1] == 0
+                        || g.ids[i + 1] == 0
+                        || g.ids[i - wu] == 0
+                        || g.ids[i + wu] == 0;
+                    frame.color[o] = if edge {
+                        mix(frame.color[o], *tint, EDGE_ALPHA)
+                    } else {
+                        mix(frame.color[o], mix(g.color[i], *tint, 0.5), ALPHA)
+                    };
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::anim::{Animation, Property, Target, TargetRef, Value};
+    use glam::Vec3;
+
+    #[test]
+    fn neighbours_skip_the_key_under_the_frame() {
+        let mut a = Animation::default();
+        let t = Target {
+            of: TargetRef::Node(NodeId(0)),
+            property: Property::Translation,
+        };
+        for f in [0.0, 10.0, 20.0] {
+            a.set_key(t, f, Value::Vec3(Vec3::ZERO)).unwrap();
+        }
+        assert_eq!(neighbour_keys(&a, NodeId(0), 10.0), (Some(0.0), Some(20.0)));
+        assert_eq!(neighbour_keys(&a, NodeId(0), 5.0), (Some(0.0), Some(10.0)));
+        assert_eq!(neighbour_keys(&a, NodeId(0), 0.0), (None, Some(10.0)));
+        assert_eq!(neighbour_keys(&a, NodeId(1), 5.0), (None, None));
+    }
+
+    #[test]
+    fn mixing_by_hand() {
+        assert_eq!(mix(0x000000, 0xffffff, 0.5), 0x808080);
+        assert_eq!(mix(0x102030, 0x102030, 0.35), 0x102030);
+        assert_eq!(mix(0xff0000, 0x0000ff, 0.0), 0xff0000);
+    }
+}
