@@ -59,6 +59,10 @@ fn editing_script(scene: &Path) -> (String, NodeId) {
     let mut s = format!("click {} {}\nkey r\n", row.0, row.1);
     s += &format!("click {} {}\ntype 2.5\nkey enter\n", tx.0, tx.1);
     s += &"key right\n".repeat(10);
+    // The first key adds key strip rows, which moves the panel: find the
+    // field again in an editor that ran the steps so far.
+    animed::editor::script::run(&mut ed, &s, Path::new("s1.txt")).expect("script runs");
+    let tx = centre(&ed, |k| format!("{k:?}") == "Field(Translation(0))");
     s += &format!("click {} {}\ntype -4\nkey enter\n", tx.0, tx.1);
     s += "sleep-ms 60000\n";
     (s, node)

@@ -159,6 +159,9 @@ impl Editor {
 
     fn field_text(&self, id: super::fields::FieldId, max_chars: usize) -> String {
         use super::fields::FieldId;
+        if let FieldId::Key(k) = id {
+            return self.key_field_text(k, max_chars);
+        }
         let v = if id == FieldId::Frame {
             Some(FieldValue::Number(self.frame))
         } else if id.is_setting() {
@@ -210,6 +213,7 @@ impl Editor {
             f += minor;
         }
         p.fill_rect(Rect::new(r.x, base, r.w, 1), theme::BORDER);
+        self.draw_key_strip(p, l);
         // Current frame cursor with its number.
         let cx = l.frame_to_x(self.frame.clamp(0.0, dur), dur) as i32;
         p.fill_rect(

@@ -23,6 +23,8 @@ pub enum FieldId {
     LightDirection(u8),
     /// Spot cut-off angle in degrees.
     LightCutOff,
+    /// A parameter of the selected keys (the key panel, `keyprops.rs`).
+    Key(super::keyprops::KeyField),
 }
 
 /// A field's value.

@@ -42,6 +42,8 @@ pub(super) enum Base {
     Node(NodeId, Box<Node>),
     Settings(Settings),
     Frame(f32),
+    /// A key panel field: the animation and selected keys at press.
+    Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
 }
 
 /// Pixels the mouse may move before a press counts as a drag.
@@ -121,6 +123,9 @@ impl Editor {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
         if let Some(redraw) = self.handles_move(x, y, _mods) {
+            return redraw;
+        }
+        if let Some(redraw) = self.key_strip_move(x, y) {
             return redraw;
         }
         match self.drag.clone() {
@@ -203,10 +208,15 @@ impl Editor {
         if button != MouseButton::Left {
             return;
         }
-        if l.ruler.contains(x, y) || l.key_rows.contains(x, y) {
+        if l.ruler.contains(x, y) {
             self.commit_edit();
             self.drag = Drag::Seek;
             self.seek_to_x(x);
+            return;
+        }
+        if l.key_rows.contains(x, y) {
+            self.commit_edit();
+            self.key_strip_press(x, y, mods);
             return;
         }
         let Some(widget) = self.widget_at(x, y) else {
@@ -241,7 +251,7 @@ impl Editor {
     }
 
     fn mouse_up(&mut self, _button: MouseButton, x: f32, y: f32, _mods: Mods) {
-        if self.handles_release() {
+        if self.handles_release() || self.key_strip_release() {
             return;
         }
         match std::mem::take(&mut self.drag) {
@@ -331,6 +341,9 @@ impl Editor {
         if id.is_setting() {
             return Some(Base::Settings(self.scene.settings.clone()));
         }
+        if let FieldId::Key(_) = id {
+            return self.key_field_base().map(|(a, k)| Base::Keys(a, k));
+        }
         let sel = self.selection?;
         // Fields edit what is shown: animated values at the current frame.
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
@@ -341,6 +354,7 @@ impl Editor {
             Base::Frame(f) => Some(FieldValue::Number(*f)),
             Base::Settings(s) => id.read_settings(s),
             Base::Node(_, n) => id.read_node(n),
+            Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
         }
     }
 
@@ -348,7 +362,7 @@ impl Editor {
     /// Returns the command that would record it.
     fn field_command(&self, id: FieldId, base: &Base, value: &FieldValue) -> Option<Command> {
         match base {
-            Base::Frame(_) => None,
+            Base::Frame(_) | Base::Keys(..) => None,
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -370,6 +384,10 @@ impl Editor {
 
     fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
         self.stop_playback();
+        if let Base::Keys(a, k) = base {
+            self.drag_key_field(id, a, k, dx);
+            return;
+        }
         let Some(FieldValue::Number(v0)) = self.field_value(id, base) else {
             return;
         };
@@ -388,6 +406,7 @@ impl Editor {
         let label = format!("Drag {id:?}");
         match base {
             Base::Frame(_) => {}
+            Base::Keys(before, _) => self.finish_key_field_drag(id, before),
             Base::Settings(before) => {
                 let after = self.scene.settings.clone();
                 self.push_applied(&label, Command::SetSettings { before, after });
@@ -423,6 +442,10 @@ impl Editor {
                 }
             }
         };
+        if let (FieldId::Key(_), FieldValue::Number(x)) = (edit.field, &value) {
+            self.commit_key_field(edit.field, *x);
+            return;
+        }
         if edit.field == FieldId::Frame {
             if let FieldValue::Number(x) = value {
                 self.stop_playback();
@@ -514,7 +537,7 @@ impl Editor {
             }
             return;
         }
-        if self.handles_key(key, mods) {
+        if self.handles_key(key, mods) || self.key_strip_key(key, mods) {
             return;
         }
         if !matches!(self.drag, Drag::None) {
@@ -531,6 +554,7 @@ impl Editor {
         if let Drag::Field { id, base, .. } = std::mem::take(&mut self.drag) {
             match base {
                 Base::Frame(f) => self.frame = f,
+                Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
                 Base::Settings(s) => {
                     self.scene.settings = s;
                     self.scene_rev += 1;
@@ -697,6 +721,7 @@ impl Editor {
                     }
                 }
             }
+            Action::Key(a) => self.key_action(a),
             Action::BrowserAccept => self.browser_accept(),
             Action::BrowserCancel => {
                 self.browser = None;

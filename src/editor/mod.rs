@@ -24,6 +24,9 @@ pub mod event;
 pub mod fields;
 pub mod gizmo;
 mod input;
+pub mod keyprops;
+pub mod keystrip;
+mod keystrip_draw;
 pub mod manip;
 pub mod motion_path;
 mod onion;
@@ -130,6 +133,8 @@ pub struct Editor {
     pending: Option<record::Pending>,
     /// Handles: tool, hover and drag.
     manip: manip::Manip,
+    /// Key strip: selected keys, fold state, clipboard, strip drags.
+    keys: keystrip::KeyStrip,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
     show_grid: bool,
@@ -175,6 +180,7 @@ impl Editor {
             record: false,
             pending: None,
             manip: manip::Manip::default(),
+            keys: keystrip::KeyStrip::default(),
             onion: onion::Onion::default(),
             show_grid: true,
             view_style: None,
@@ -296,7 +302,7 @@ impl Editor {
 
     /// Layout of the current window.
     pub fn layout(&self) -> Layout {
-        Layout::new(self.width as i32, self.height as i32, 0)
+        Layout::new(self.width as i32, self.height as i32, self.key_strip_rows())
     }
 
     /// Where the file browser starts when no file is open (default: the

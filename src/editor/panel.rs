@@ -40,6 +40,8 @@ pub enum Action {
     BrowserAccept,
     BrowserCancel,
     BrowserUp,
+    /// Key panel buttons (`keyprops.rs`).
+    Key(super::keyprops::KeyAction),
 }
 
 /// Which list a row belongs to.
@@ -134,7 +136,7 @@ fn style_name(s: RenderStyle) -> &'static str {
 
 impl Editor {
     /// Property rows the selection needs (for the side panel split).
-    fn prop_rows(&self) -> i32 {
+    pub(super) fn prop_rows(&self) -> i32 {
         match self.selection.map(|s| &self.scene.node(s).kind) {
             None => 1,
             Some(NodeKind::Light(l)) => match l.kind {
@@ -149,7 +151,7 @@ impl Editor {
     pub fn side_panel(&self) -> SidePanel {
         SidePanel::new(
             self.layout().side,
-            self.prop_rows(),
+            self.section_rows(),
             [
                 ops::objects(&self.scene).len(),
                 ops::lights(&self.scene).len(),
@@ -363,6 +365,10 @@ impl Editor {
     }
 
     fn prop_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+        if self.key_panel_shown() {
+            self.key_panel_widgets(r, out);
+            return;
+        }
         let (h, body) = r.take_top(ROW);
         let body = Rect::new(body.x + 2, body.y + 1, body.w - 4, body.h - 1);
         let Some(sel) = self.selection else {
@@ -467,6 +473,8 @@ impl Editor {
                 });
             }
         }
+        row(out, &|o, r| self.key_list_row(r, o));
+        self.key_panel_switch(h, out);
     }
 
     fn controls_widgets(&self, r: Rect, out: &mut Vec<Widget>) {

@@ -11,6 +11,8 @@ pub const TOOLBAR_H: i32 = 22;
 pub const RULER_H: i32 = 18;
 /// Height of a key strip row (issue: record mode / key strip).
 pub const KEY_ROW_H: i32 = 14;
+/// Characters of a key strip row name that fit the name column.
+pub const KEY_NAMES_CHARS: i32 = 12;
 /// Height of the timeline's control row (frame field, status).
 pub const CONTROLS_H: i32 = 18;
 
@@ -65,9 +67,20 @@ impl Layout {
         ((x - r.0) / (r.1 - r.0).max(1.0) * duration.max(1.0)).clamp(0.0, duration.max(0.0))
     }
 
+    /// Width of the key strip's name column at the left of the timeline
+    /// (0 without key rows): the ruler starts after it so keys and ruler
+    /// ticks line up.
+    pub fn key_names_w(&self) -> i32 {
+        if self.key_rows.h > 0 {
+            (KEY_NAMES_CHARS * super::text::CHAR_W + 12).min(self.ruler.w / 4)
+        } else {
+            0
+        }
+    }
+
     /// Left and right x of the ruler's usable span (a margin for labels).
     fn ruler_span(&self) -> (f32, f32) {
-        let x0 = (self.ruler.x + 8) as f32;
+        let x0 = (self.ruler.x + 8 + self.key_names_w()) as f32;
         let x1 = (self.ruler.right() - 8) as f32;
         (x0, x1.max(x0 + 1.0))
     }

@@ -1,0 +1,495 @@
+//! The key properties panel: frame, value, interpolation, tension,
+//! continuity, bias and ease of the selected keys, shown in the side
+//! panel's properties section while keys are selected (its "Object" button
+//! shows the node's properties again, their "Keys" button comes back).
+//!
+//! Values show the *primary* key (the first selected); an edit sets the
+//! parameter on every selected key (a value only on keys of the primary's
+//! property, a frame moves them all by the same offset). Typing records at
+//! Enter, dragging previews live and records one step at release, so the
+//! motion path follows at once.
+
+use super::command::Command;
+use super::fields::{euler_degrees, format_fit, from_euler_degrees, FieldId};
+use super::keystrip::{retime, row_name, KeyRef};
+use super::panel::{Action, Widget, WidgetKind};
+use super::Editor;
+use crate::anim::{Animation, Interp, Key, Property, Value, ValueKind};
+use crate::ui::layout::ROW;
+use crate::ui::text::{self, CHAR_W};
+use crate::ui::Rect;
+
+/// Which key parameter a key panel field edits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KeyField {
+    Frame,
+    /// Component of the value (x/y/z, r/g/b, Euler degrees; 0 for scalars).
+    Value(u8),
+    Tension,
+    Continuity,
+    Bias,
+    EaseIn,
+    EaseOut,
+}
+
+/// Buttons of the key panel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KeyAction {
+    Interp(Interp),
+    /// Flip the value of boolean keys (light on, visible).
+    ToggleBool,
+    /// Show the node's properties / the key panel.
+    ShowNode,
+    ShowKeys,
+}
+
+/// The node field that edits the same value as `Value(i)` of a key of
+/// `p` (for clamping and drag speed).
+fn value_field(p: Property, i: u8) -> Option<FieldId> {
+    Some(match p {
+        Property::Translation => FieldId::Translation(i),
+        Property::Rotation => FieldId::Rotation(i),
+        Property::Scale => FieldId::Scale(i),
+        Property::LightIntensity => FieldId::LightIntensity,
+        Property::LightColor => FieldId::LightColor(i),
+        Property::LightLocation => FieldId::LightLocation(i),
+        Property::LightDirection => FieldId::LightDirection(i),
+        _ => return None,
+    })
+}
+
+impl KeyField {
+    /// Change per pixel of horizontal drag for a key of `p`.
+    fn drag_step(self, p: Property) -> f32 {
+        match self {
+            KeyField::Frame => 0.25,
+            KeyField::Value(i) => value_field(p, i).map(|f| f.drag_step()).unwrap_or(0.02),
+            _ => 0.01,
+        }
+    }
+
+    /// What the parameter accepts (TCB [-1, 1], ease [0, 1], frames >= 0).
+    fn clamp(self, p: Property, v: f32) -> f32 {
+        match self {
+            KeyField::Frame => v.max(0.0).round(),
+            KeyField::Value(i) => value_field(p, i).map(|f| f.clamp(v)).unwrap_or(v),
+            KeyField::Tension | KeyField::Continuity | KeyField::Bias => v.clamp(-1.0, 1.0),
+            KeyField::EaseIn | KeyField::EaseOut => v.clamp(0.0, 1.0),
+        }
+    }
+}
+
+/// The number a field shows for `key`.
+fn read(field: KeyField, key: &Key<Value>) -> Option<f32> {
+    Some(match field {
+        KeyField::Frame => key.frame,
+        KeyField::Value(i) => match key.value {
+            Value::Vec3(v) => v[i as usize],
+            Value::Rotation(q) => euler_degrees(q)[i as usize],
+            Value::Scalar(x) if i == 0 => x,
+            _ => return None,
+        },
+        KeyField::Tension => key.tension,
+        KeyField::Continuity => key.continuity,
+        KeyField::Bias => key.bias,
+        KeyField::EaseIn => key.ease_in,
+        KeyField::EaseOut => key.ease_out,
+    })
+}
+
+/// `key` with the field set to `v` (already clamped).
+fn write(field: KeyField, key: Key<Value>, v: f32) -> Key<Value> {
+    let mut k = key;
+    match field {
+        KeyField::Frame => k.frame = v,
+        KeyField::Value(i) => {
+            k.value = match k.value {
+                Value::Vec3(mut x) => {
+                    x[i as usize] = v;
+                    Value::Vec3(x)
+                }
+                Value::Rotation(q) => {
+                    let mut e = euler_degrees(q);
+                    e[i as usize] = v;
+                    Value::Rotation(from_euler_degrees(e))
+                }
+                Value::Scalar(_) if i == 0 => Value::Scalar(v),
+                other => other,
+            }
+        }
+        KeyField::Tension => k.tension = v,
+        KeyField::Continuity => k.continuity = v,
+        KeyField::Bias => k.bias = v,
+        KeyField::EaseIn => k.ease_in = v,
+        KeyField::EaseOut => k.ease_out = v,
+    }
+    k
+}
+
+/// `anim` with `field` = `v` on the selected `keys` (`keys[0]` is the
+/// primary). Returns the new animation and the keys' refs after it.
+pub fn set_field(
+    anim: &Animation,
+    keys: &[KeyRef],
+    field: KeyField,
+    v: f32,
+) -> Result<(Animation, Vec<KeyRef>), String> {
+    let Some(primary) = keys.first() else {
+        return Err("no keys selected".into());
+    };
+    let v = field.clamp(primary.property, v);
+    if !v.is_finite() {
+        return Err("not a number".into());
+    }
+    if field == KeyField::Frame {
+        let first = keys.iter().map(|k| k.frame).fold(f32::INFINITY, f32::min);
+        let delta = (v - primary.frame).max(-first.max(0.0));
+        return retime(anim, keys, |f| f + delta);
+    }
+    let mut out = anim.clone();
+    for k in keys {
+        if matches!(field, KeyField::Value(_)) && k.property != primary.property {
+            continue;
+        }
+        let Some(key) = k.get(&out) else { continue };
+        let Some(track) = out.track_mut(k.target()) else {
+            continue;
+        };
+        track
+            .insert_key(write(field, key, v))
+            .map_err(|e| e.to_string())?;
+    }
+    Ok((out, keys.to_vec()))
+}
+
+impl Editor {
+    /// Whether the properties section shows the key panel.
+    pub fn key_panel_shown(&self) -> bool {
+        !self.keys.node_panel && !self.selected_keys().is_empty()
+    }
+
+    /// Rows the key panel needs (for the side panel split).
+    pub(super) fn key_panel_rows(&self) -> i32 {
+        6 + self.selected_keys().len().min(4) as i32
+    }
+
+    /// The number a key field shows (the primary key's).
+    fn key_field_number(&self, f: KeyField, anim: &Animation, keys: &[KeyRef]) -> Option<f32> {
+        let k = keys.first()?.get(anim)?;
+        read(f, &k)
+    }
+
+    /// Text of a key panel field.
+    pub(super) fn key_field_text(&self, f: KeyField, max_chars: usize) -> String {
+        self.key_field_number(f, &self.scene.animation, &self.selected_keys())
+            .map(|x| format_fit(x, max_chars))
+            .unwrap_or_default()
+    }
+
+    /// The base of a key field drag or edit: the animation and the keys.
+    pub(super) fn key_field_base(&self) -> Option<(Box<Animation>, Vec<KeyRef>)> {
+        let keys = self.selected_keys();
+        (!keys.is_empty()).then(|| (Box::new(self.scene.animation.clone()), keys))
+    }
+
+    /// The value a field started from.
+    pub(super) fn key_field_start(
+        &self,
+        id: FieldId,
+        anim: &Animation,
+        keys: &[KeyRef],
+    ) -> Option<f32> {
+        let FieldId::Key(f) = id else { return None };
+        self.key_field_number(f, anim, keys)
+    }
+
+    /// A drag on a key field: previews `field` = start + dx · step.
+    pub(super) fn drag_key_field(
+        &mut self,
+        id: FieldId,
+        base: &Animation,
+        keys: &[KeyRef],
+        dx: f32,
+    ) {
+        let FieldId::Key(f) = id else { return };
+        let Some(v0) = self.key_field_number(f, base, keys) else {
+            return;
+        };
+        let v = v0 + dx * f.drag_step(keys[0].property);
+        if let Ok((anim, refs)) = set_field(base, keys, f, v) {
+            self.pending = None;
+            self.scene.animation = anim;
+            self.scene_rev += 1;
+            self.keys.selected = refs;
+        }
+    }
+
+    /// Release of a key field drag: one undo step.
+    pub(super) fn finish_key_field_drag(&mut self, id: FieldId, before: Box<Animation>) {
+        let after = Box::new(self.scene.animation.clone());
+        self.push_applied(
+            &format!("Drag key {id:?}"),
+            Command::SetAnimation { before, after },
+        );
+    }
+
+    /// Esc during a key field drag.
+    pub(super) fn cancel_key_field_drag(&mut self, before: Animation, keys: Vec<KeyRef>) {
+        self.scene.animation = before;
+        self.scene_rev += 1;
+        self.keys.selected = keys;
+    }
+
+    /// Enter in a key field: sets the typed number on the selected keys.
+    pub(super) fn commit_key_field(&mut self, id: FieldId, x: f32) {
+        let FieldId::Key(f) = id else { return };
+        let keys = self.selected_keys();
+        match set_field(&self.scene.animation, &keys, f, x) {
+            Ok((anim, refs)) => {
+                self.apply_key_edit(&format!("Set key {f:?}"), anim, Vec::new());
+                self.keys.selected = refs;
+            }
+            Err(e) => self.set_status(&e, true),
+        }
+    }
+
+    /// Key panel buttons.
+    pub(super) fn key_action(&mut self, a: KeyAction) {
+        let keys = self.selected_keys();
+        match a {
+            KeyAction::ShowNode => self.keys.node_panel = true,
+            KeyAction::ShowKeys => self.keys.node_panel = false,
+            KeyAction::Interp(i) => {
+                let mut anim = self.scene.animation.clone();
+                for k in &keys {
+                    if let Some(t) = anim.track_mut(k.target()) {
+                        if let Some(idx) = t.key_index_at(k.frame) {
+                            if let Some(mut p) = t.key_params(idx) {
+                                p.interp = i;
+                                // Ranges are unchanged: cannot fail.
+                                let _ = t.set_key_params(idx, p);
+                            }
+                        }
+                    }
+                }
+                let rot = keys
+                    .first()
+                    .is_some_and(|k| k.property.kind() == ValueKind::Rotation);
+                self.apply_key_edit(&format!("Interpolation {}", i.name(rot)), anim, Vec::new());
+            }
+            KeyAction::ToggleBool => {
+                let Some(p) = keys.first() else { return };
+                let Some(Value::Bool(b)) = p.get(&self.scene.animation).map(|k| k.value) else {
+                    return;
+                };
+                let mut anim = self.scene.animation.clone();
+                for k in keys.iter().filter(|k| k.property == p.property) {
+                    let Some(key) = k.get(&anim) else { continue };
+                    if let Some(t) = anim.track_mut(k.target()) {
+                        let _ = t.insert_key(Key {
+                            value: Value::Bool(!b),
+                            ..key
+                        });
+                    }
+                }
+                self.apply_key_edit(if b { "Key off" } else { "Key on" }, anim, Vec::new());
+            }
+        }
+    }
+
+    /// The key panel's widgets in the properties section `r`.
+    pub(super) fn key_panel_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+        let keys = self.selected_keys();
+        let Some(primary) = keys.first().copied() else {
+            return;
+        };
+        let Some(pkey) = primary.get(&self.scene.animation) else {
+            return;
+        };
+        let (h, body) = r.take_top(ROW);
+        let bw = text::width("Object") + 6;
+        let name = row_name(primary.property);
+        let title = match keys.len() {
+            1 if text::width(name) + text::width("Key: ") + bw + 12 <= h.w => {
+                format!("Key: {name}")
+            }
+            1 => name.to_string(),
+            n => format!("{n} keys"),
+        };
+        out.push(widget(h, WidgetKind::Header(title)));
+        out.push(button(
+            Rect::new(h.right() - bw - 2, h.y + 1, bw, h.h - 2),
+            "Object",
+            Action::Key(KeyAction::ShowNode),
+            false,
+        ));
+        let body = Rect::new(body.x + 2, body.y + 1, body.w - 4, body.h - 1);
+        let lw = 5 * CHAR_W;
+        let mut y = body.y;
+        let mut next = || {
+            let r = (y + ROW <= body.bottom() + 1).then(|| Rect::new(body.x, y, body.w, ROW));
+            y += ROW;
+            r
+        };
+        if let Some(r) = next() {
+            let (a, _) = r.take_left(r.w / 2 + lw / 2);
+            field_row(out, a, "Frame", lw + CHAR_W, &[KeyField::Frame]);
+        }
+        let rotation = primary.property.kind() == ValueKind::Rotation;
+        if let Some(r) = next() {
+            match pkey.value {
+                Value::Vec3(_) | Value::Rotation(_) => {
+                    let name = match primary.property.kind() {
+                        ValueKind::Color => "RGB",
+                        ValueKind::Rotation => "Euler",
+                        _ => "Value",
+                    };
+                    field_row(out, r, name, lw, &[0, 1, 2].map(KeyField::Value));
+                }
+                Value::Scalar(_) => field_row(out, r, "Value", lw, &[KeyField::Value(0)]),
+                Value::Bool(b) => {
+                    let (a, rest) = r.take_left(lw);
+                    out.push(label(a, "Value", true));
+                    let bw = text::width("Off") + 10;
+                    out.push(button(
+                        Rect::new(rest.x, rest.y + 1, bw, rest.h - 2),
+                        if b { "On" } else { "Off" },
+                        Action::Key(KeyAction::ToggleBool),
+                        b,
+                    ));
+                }
+            }
+        }
+        if let Some(r) = next() {
+            // Interpolation buttons use the whole row (no label).
+            let rest = r;
+            if matches!(pkey.value, Value::Bool(_)) {
+                out.push(label(rest, "Steps (on/off)", true));
+            } else {
+                let n = 3;
+                let bw = (rest.w - (n - 1) * 2) / n;
+                for (i, it) in [Interp::Step, Interp::Linear, Interp::Tcb]
+                    .into_iter()
+                    .enumerate()
+                {
+                    out.push(button(
+                        Rect::new(rest.x + i as i32 * (bw + 2), rest.y + 1, bw, rest.h - 2),
+                        it.name(rotation),
+                        Action::Key(KeyAction::Interp(it)),
+                        pkey.interp == it,
+                    ));
+                }
+            }
+        }
+        if let Some(r) = next() {
+            field_row(
+                out,
+                r,
+                "TCB",
+                lw,
+                &[KeyField::Tension, KeyField::Continuity, KeyField::Bias],
+            );
+        }
+        if let Some(r) = next() {
+            field_row(out, r, "Ease", lw, &[KeyField::EaseIn, KeyField::EaseOut]);
+        }
+        // The selected keys, one per row (frame and property).
+        let shown = keys.len().min(4);
+        for (i, k) in keys.iter().take(shown).enumerate() {
+            let Some(r) = next() else { break };
+            let more = keys.len() - shown;
+            let s = if i + 1 == shown && more > 0 {
+                format!("+{} more", more + 1)
+            } else {
+                format!(
+                    "{:>5} {}",
+                    super::fields::format_number(k.frame),
+                    row_name(k.property)
+                )
+            };
+            out.push(label(r, &s, i > 0));
+        }
+    }
+
+    /// "Keys" at the right of the node properties header while keys are
+    /// selected but the node is shown.
+    pub(super) fn key_panel_switch(&self, header: Rect, out: &mut Vec<Widget>) {
+        if self.keys.node_panel && !self.selected_keys().is_empty() {
+            let bw = text::width("Keys") + 6;
+            out.push(button(
+                Rect::new(header.right() - bw - 2, header.y + 1, bw, header.h - 2),
+                "Keys",
+                Action::Key(KeyAction::ShowKeys),
+                false,
+            ));
+        }
+    }
+
+    /// The node panel's compact list of the selection's key frames.
+    pub(super) fn key_list_row(&self, r: Rect, out: &mut Vec<Widget>) {
+        let Some(sel) = self.selection else { return };
+        let frames = super::record::key_frames(&self.scene.animation, Some(sel));
+        if frames.is_empty() {
+            return;
+        }
+        let (a, b) = r.take_left(5 * CHAR_W);
+        out.push(label(a, "Keys", true));
+        let list: Vec<String> = frames
+            .iter()
+            .map(|f| super::fields::format_number(*f))
+            .collect();
+        out.push(label(b, &list.join(" "), false));
+    }
+}
+
+fn widget(rect: Rect, kind: WidgetKind) -> Widget {
+    Widget { rect, kind }
+}
+
+fn label(rect: Rect, text: &str, dim: bool) -> Widget {
+    widget(
+        rect,
+        WidgetKind::Label {
+            text: text.into(),
+            dim,
+        },
+    )
+}
+
+fn button(rect: Rect, text: &str, action: Action, on: bool) -> Widget {
+    widget(
+        rect,
+        WidgetKind::Button {
+            label: text.into(),
+            action,
+            on,
+        },
+    )
+}
+
+/// A label then equal fields for `ids`.
+fn field_row(out: &mut Vec<Widget>, r: Rect, name: &str, label_w: i32, ids: &[KeyField]) {
+    let (l, rest) = r.take_left(label_w);
+    out.push(label(l, name, true));
+    let n = ids.len() as i32;
+    let fw = (rest.w - (n - 1)) / n;
+    for (i, id) in ids.iter().enumerate() {
+        let x = rest.x + i as i32 * (fw + 1);
+        out.push(widget(
+            Rect::new(x, r.y + 1, fw, r.h - 2),
+            WidgetKind::Field(FieldId::Key(*id)),
+        ));
+    }
+}
+
+impl Editor {
+    /// Rows of the properties section: the key panel's, or the node's plus
+    /// its key list row.
+    pub(super) fn section_rows(&self) -> i32 {
+        if self.key_panel_shown() {
+            self.key_panel_rows()
+        } else {
+            self.prop_rows() + self.key_strip_rows().min(1) as i32
+        }
+    }
+}

@@ -1,0 +1,877 @@
+//! The key strip under the timeline ruler: a summary row with every key of
+//! the selected node, one row per animated property below it (collapsible),
+//! key selection (click, Shift+click, box), and the edits made there: move
+//! (drag, whole-frame steps), scale timing (Alt+drag, about the current
+//! frame), delete, copy and paste. Every edit is one
+//! [`Command::SetAnimation`] (plus node values for deleted tracks).
+//!
+//! A key moved or pasted onto another key of the same track replaces it,
+//! as in Blender; two *selected* keys of one track landing on one frame (a
+//! timing scale squeezing them) is refused and the drag keeps its last
+//! valid state. Drawing is in `keystrip_draw.rs`, the key properties panel
+//! in `keyprops.rs`.
+
+use super::command::Command;
+use super::event::{Key as KeyName, Mods};
+use super::record::{read_property, write_property};
+use super::Editor;
+use crate::anim::{Animation, Key, Keys, Property, Target, TargetRef, Value, KEY_EPS};
+use crate::scene::NodeId;
+use crate::ui::layout::KEY_ROW_H;
+use crate::ui::Rect;
+
+/// One key: a node property's track and the key's frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KeyRef {
+    pub node: NodeId,
+    pub property: Property,
+    pub frame: f32,
+}
+
+impl KeyRef {
+    pub fn target(&self) -> Target {
+        Target {
+            of: TargetRef::Node(self.node),
+            property: self.property,
+        }
+    }
+
+    /// Same track and frame (within [`KEY_EPS`]).
+    pub fn same(&self, o: &KeyRef) -> bool {
+        self.node == o.node
+            && self.property == o.property
+            && (self.frame - o.frame).abs() <= KEY_EPS
+    }
+
+    /// The key in `anim`, if it exists.
+    pub fn get(&self, anim: &Animation) -> Option<Key<Value>> {
+        let t = anim.track(self.target())?;
+        t.key(t.key_index_at(self.frame)?)
+    }
+}
+
+/// A row of the strip.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Row {
+    /// All keys of the selection; its name cell folds the property rows.
+    Summary,
+    Track(Property),
+    /// Rows that did not fit.
+    More(usize),
+}
+
+/// What is under the mouse in the strip.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Hit {
+    /// The name cell of a row.
+    Name(Row),
+    /// A marker: the keys it stands for (one, or all at a summary frame).
+    Keys(Vec<KeyRef>),
+    /// Empty row space.
+    Empty,
+}
+
+/// Keys copied with Ctrl+C: frames relative to the earliest.
+#[derive(Clone, Debug, Default)]
+struct Clipboard {
+    keys: Vec<(Property, Key<Value>)>,
+}
+
+/// A mouse drag that started in the strip.
+#[derive(Clone, Debug)]
+enum StripDrag {
+    /// Pressed on a marker: moves (or with Alt scales) `keys` from `base`.
+    Keys {
+        x0: f32,
+        base: Box<Animation>,
+        keys: Vec<KeyRef>,
+        scale: bool,
+        moved: bool,
+        /// A click (no drag) on an already selected key selects just it.
+        narrow_to: Option<Vec<KeyRef>>,
+    },
+    /// Pressed on empty space: a selection box.
+    Box {
+        from: (f32, f32),
+        to: (f32, f32),
+        add: bool,
+        before: Vec<KeyRef>,
+    },
+}
+
+/// Key strip state kept by the editor.
+#[derive(Clone, Debug, Default)]
+pub struct KeyStrip {
+    pub(super) selected: Vec<KeyRef>,
+    pub collapsed: bool,
+    /// Show the node's properties instead of the key panel while keys are
+    /// selected.
+    pub node_panel: bool,
+    clipboard: Clipboard,
+    drag: Option<StripDrag>,
+}
+
+/// Half size of a marker in pixels (also the click tolerance).
+pub const MARKER_R: f32 = 4.5;
+
+/// The row name shown at the left of the strip.
+pub fn row_name(p: Property) -> &'static str {
+    match p {
+        Property::Translation => "Translation",
+        Property::Rotation => "Rotation",
+        Property::Scale => "Scale",
+        Property::Visibility => "Visible",
+        Property::LightOn => "Light on",
+        Property::LightIntensity => "Intensity",
+        Property::LightColor => "Colour",
+        Property::LightLocation => "Location",
+        Property::LightDirection => "Direction",
+        Property::LightCutOff => "Cut-off",
+        Property::LightBeamWidth => "Beam width",
+        Property::LightDropOff => "Drop-off",
+        Property::CameraPosition => "Position",
+        Property::CameraOrientation => "Orientation",
+        Property::CameraFov => "Field of vw",
+        Property::Diffuse => "Diffuse",
+        Property::Emissive => "Emissive",
+        Property::Specular => "Specular",
+        Property::Transparency => "Transparent",
+        Property::Shininess => "Shininess",
+    }
+}
+
+/// Properties of node `id` driven by tracks, in [`Property::ALL`] order.
+pub fn animated_properties(anim: &Animation, id: NodeId) -> Vec<Property> {
+    let mut v: Vec<Property> = anim
+        .tracks_of(TargetRef::Node(id))
+        .map(|t| t.target.property)
+        .collect();
+    v.sort_by_key(|p| Property::ALL.iter().position(|q| q == p));
+    v.dedup();
+    v
+}
+
+/// Every key of `id`'s track for `p`.
+pub fn track_keys(anim: &Animation, id: NodeId, p: Property) -> Vec<KeyRef> {
+    let t = Target {
+        of: TargetRef::Node(id),
+        property: p,
+    };
+    anim.track(t)
+        .map(|t| {
+            t.keys
+                .frames()
+                .into_iter()
+                .map(|frame| KeyRef {
+                    node: id,
+                    property: p,
+                    frame,
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// Every key of node `id`.
+pub fn node_keys(anim: &Animation, id: NodeId) -> Vec<KeyRef> {
+    animated_properties(anim, id)
+        .into_iter()
+        .flat_map(|p| track_keys(anim, id, p))
+        .collect()
+}
+
+fn typed(kind: crate::anim::ValueKind, keys: &[Key<Value>]) -> Result<Keys, String> {
+    Keys::from_values(kind, keys).map_err(|e| e.to_string())
+}
+
+/// `anim` with the keys `keys` moved to `map(frame)`. A key already at a
+/// destination (not itself moving) is replaced; two moving keys of one
+/// track meeting on a frame is an error. Returns the moved keys' new refs.
+pub fn retime(
+    anim: &Animation,
+    keys: &[KeyRef],
+    map: impl Fn(f32) -> f32,
+) -> Result<(Animation, Vec<KeyRef>), String> {
+    let mut out = anim.clone();
+    let mut moved_refs = Vec::new();
+    let mut targets: Vec<Target> = keys.iter().map(KeyRef::target).collect();
+    targets.dedup();
+    let mut seen = Vec::new();
+    for t in targets {
+        if seen.contains(&t) {
+            continue;
+        }
+        seen.push(t);
+        let Some(track) = out.track_mut(t) else {
+            continue;
+        };
+        let all: Vec<Key<Value>> = (0..track.key_count())
+            .filter_map(|i| track.key(i))
+            .collect();
+        let is_moving = |f: f32| {
+            keys.iter()
+                .any(|k| k.target() == t && (k.frame - f).abs() <= KEY_EPS)
+        };
+        let mut moving: Vec<Key<Value>> = Vec::new();
+        for k in all.iter().filter(|k| is_moving(k.frame)) {
+            let to = map(k.frame);
+            if !to.is_finite() {
+                return Err("a key would leave the timeline".into());
+            }
+            if moving.iter().any(|m| (m.frame - to).abs() <= KEY_EPS) {
+                return Err(format!(
+                    "two {} keys would land on frame {}",
+                    row_name(t.property),
+                    super::fields::format_number(to)
+                ));
+            }
+            moving.push(Key { frame: to, ..*k });
+        }
+        let mut list: Vec<Key<Value>> = all
+            .iter()
+            .filter(|k| !is_moving(k.frame))
+            .filter(|k| !moving.iter().any(|m| (m.frame - k.frame).abs() <= KEY_EPS))
+            .copied()
+            .collect();
+        for m in &moving {
+            moved_refs.push(KeyRef {
+                node: match t.of {
+                    TargetRef::Node(n) => n,
+                    TargetRef::Material(_) => continue,
+                },
+                property: t.property,
+                frame: m.frame,
+            });
+        }
+        list.extend(moving);
+        track.keys = typed(t.property.kind(), &list)?;
+    }
+    Ok((out, moved_refs))
+}
+
+/// `anim` without `keys`; tracks left without keys are removed and
+/// returned (their node keeps a value the caller chooses).
+pub fn delete(anim: &Animation, keys: &[KeyRef]) -> Result<(Animation, Vec<Target>), String> {
+    let mut out = anim.clone();
+    let mut emptied = Vec::new();
+    for k in keys {
+        let t = k.target();
+        let Some(track) = out.track_mut(t) else {
+            continue;
+        };
+        if track.key_index_at(k.frame).is_none() {
+            continue;
+        }
+        if track.key_count() == 1 {
+            out.remove_tracks(t);
+            emptied.push(t);
+        } else {
+            track.remove_key(k.frame).map_err(|e| e.to_string())?;
+        }
+    }
+    Ok((out, emptied))
+}
+
+/// Appends the keys of `ks` not already in `v`.
+fn add_unique(v: &mut Vec<KeyRef>, ks: impl IntoIterator<Item = KeyRef>) {
+    for k in ks {
+        if !v.iter().any(|o| o.same(&k)) {
+            v.push(k);
+        }
+    }
+}
+
+/// The keys `keys` with frames relative to the earliest.
+fn copy(anim: &Animation, keys: &[KeyRef]) -> Clipboard {
+    let f0 = keys.iter().map(|k| k.frame).fold(f32::INFINITY, f32::min);
+    Clipboard {
+        keys: keys
+            .iter()
+            .filter_map(|k| {
+                let key = k.get(anim)?;
+                Some((
+                    k.property,
+                    Key {
+                        frame: key.frame - f0,
+                        ..key
+                    },
+                ))
+            })
+            .collect(),
+    }
+}
+
+impl Editor {
+    // ----- state -----
+
+    /// The selected keys that still exist on the selected node.
+    pub fn selected_keys(&self) -> Vec<KeyRef> {
+        let Some(sel) = self.selection else {
+            return Vec::new();
+        };
+        let anim = &self.scene.animation;
+        let mut out: Vec<KeyRef> = Vec::new();
+        for k in &self.keys.selected {
+            if k.node == sel && k.get(anim).is_some() && !out.iter().any(|o| o.same(k)) {
+                out.push(*k);
+            }
+        }
+        out
+    }
+
+    fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
+        self.keys.selected = keys;
+        self.keys.node_panel = false;
+    }
+
+    /// Whether the key is selected.
+    pub fn is_key_selected(&self, k: &KeyRef) -> bool {
+        self.keys.selected.iter().any(|s| s.same(k))
+    }
+
+    /// Rows the strip wants (0 when the selection is not animated).
+    pub(super) fn key_strip_rows(&self) -> usize {
+        let Some(sel) = self.selection else { return 0 };
+        let props = animated_properties(&self.scene.animation, sel);
+        match (props.len(), self.keys.collapsed) {
+            (0, _) => 0,
+            (_, true) => 1,
+            (n, false) => n + 1,
+        }
+    }
+
+    /// The visible rows with their rectangles (the last one says how many
+    /// did not fit when the strip is too short).
+    pub fn key_strip_layout(&self) -> Vec<(Row, Rect)> {
+        let l = self.layout();
+        let Some(sel) = self.selection else {
+            return Vec::new();
+        };
+        let mut rows = vec![Row::Summary];
+        if !self.keys.collapsed {
+            rows.extend(
+                animated_properties(&self.scene.animation, sel)
+                    .into_iter()
+                    .map(Row::Track),
+            );
+        }
+        let cap = (l.key_rows.h / KEY_ROW_H).max(0) as usize;
+        if rows.len() > cap {
+            let keep = cap.saturating_sub(1);
+            let more = rows.len() - keep;
+            rows.truncate(keep);
+            if cap > 0 {
+                rows.push(Row::More(more));
+            }
+        }
+        rows.into_iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let y = l.key_rows.y + i as i32 * KEY_ROW_H;
+                (r, Rect::new(l.key_rows.x, y, l.key_rows.w, KEY_ROW_H))
+            })
+            .collect()
+    }
+
+    /// The keys a row shows, grouped per marker: (frame, keys at it).
+    pub fn row_markers(&self, row: Row) -> Vec<(f32, Vec<KeyRef>)> {
+        let Some(sel) = self.selection else {
+            return Vec::new();
+        };
+        let anim = &self.scene.animation;
+        let keys = match row {
+            Row::Summary => node_keys(anim, sel),
+            Row::Track(p) => track_keys(anim, sel, p),
+            Row::More(_) => Vec::new(),
+        };
+        let mut out: Vec<(f32, Vec<KeyRef>)> = Vec::new();
+        for k in keys {
+            match out.iter_mut().find(|(f, _)| (f - k.frame).abs() <= KEY_EPS) {
+                Some((_, v)) => v.push(k),
+                None => out.push((k.frame, vec![k])),
+            }
+        }
+        out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        out
+    }
+
+    /// Window point of the marker for `row` at `frame` (for tests and
+    /// scripts that aim at keys).
+    pub fn key_marker_at(&self, row: Row, frame: f32) -> Option<(f32, f32)> {
+        let (_, r) = self
+            .key_strip_layout()
+            .into_iter()
+            .find(|(rr, _)| *rr == row)?;
+        let l = self.layout();
+        let x = l.frame_to_x(frame, self.scene.settings.duration);
+        Some((x, r.y as f32 + r.h as f32 / 2.0))
+    }
+
+    /// What is under (x, y) in the strip.
+    pub fn key_strip_hit(&self, x: f32, y: f32) -> Option<Hit> {
+        let l = self.layout();
+        if !l.key_rows.contains(x, y) {
+            return None;
+        }
+        let Some((row, r)) = self
+            .key_strip_layout()
+            .into_iter()
+            .find(|(_, r)| r.contains(x, y))
+        else {
+            return Some(Hit::Empty);
+        };
+        if x < (r.x + l.key_names_w()) as f32 {
+            return Some(Hit::Name(row));
+        }
+        let dur = self.scene.settings.duration;
+        let best = self
+            .row_markers(row)
+            .into_iter()
+            .map(|(f, ks)| ((l.frame_to_x(f, dur) - x).abs(), ks))
+            .filter(|(d, _)| *d <= MARKER_R + 1.0)
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        Some(match best {
+            Some((_, ks)) => Hit::Keys(ks),
+            None => Hit::Empty,
+        })
+    }
+
+    /// Keys whose markers lie in the box between two window points.
+    fn keys_in_box(&self, a: (f32, f32), b: (f32, f32)) -> Vec<KeyRef> {
+        let l = self.layout();
+        let dur = self.scene.settings.duration;
+        let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
+        let (y0, y1) = (a.1.min(b.1), a.1.max(b.1));
+        let mut out: Vec<KeyRef> = Vec::new();
+        for (row, r) in self.key_strip_layout() {
+            let cy = r.y as f32 + r.h as f32 / 2.0;
+            if cy < y0 - MARKER_R || cy > y1 + MARKER_R {
+                continue;
+            }
+            for (f, ks) in self.row_markers(row) {
+                let x = l.frame_to_x(f, dur);
+                if x >= x0 - MARKER_R && x <= x1 + MARKER_R {
+                    add_unique(&mut out, ks);
+                }
+            }
+        }
+        out
+    }
+
+    /// The selection box being dragged, if any (for drawing).
+    pub(super) fn key_box(&self) -> Option<Rect> {
+        match &self.keys.drag {
+            Some(StripDrag::Box { from, to, .. }) => {
+                let x = from.0.min(to.0) as i32;
+                let y = from.1.min(to.1) as i32;
+                let w = (from.0 - to.0).abs() as i32 + 1;
+                let h = (from.1 - to.1).abs() as i32 + 1;
+                Some(Rect::new(x, y, w, h))
+            }
+            _ => None,
+        }
+    }
+
+    // ----- mouse -----
+
+    /// A left press in the key rows.
+    pub(super) fn key_strip_press(&mut self, x: f32, y: f32, mods: Mods) {
+        let Some(hit) = self.key_strip_hit(x, y) else {
+            return;
+        };
+        match hit {
+            Hit::Name(Row::Summary) => self.keys.collapsed = !self.keys.collapsed,
+            Hit::Name(Row::Track(p)) => {
+                let Some(sel) = self.selection else { return };
+                let ks = track_keys(&self.scene.animation, sel, p);
+                let mut now = if mods.shift {
+                    self.selected_keys()
+                } else {
+                    Vec::new()
+                };
+                add_unique(&mut now, ks);
+                self.set_key_selection(now);
+            }
+            Hit::Name(Row::More(_)) => {}
+            Hit::Keys(ks) => {
+                let current = self.selected_keys();
+                let all_in = ks.iter().all(|k| current.iter().any(|c| c.same(k)));
+                let mut narrow_to = None;
+                let now: Vec<KeyRef> = if mods.shift {
+                    if all_in {
+                        current
+                            .into_iter()
+                            .filter(|c| !ks.iter().any(|k| k.same(c)))
+                            .collect()
+                    } else {
+                        let mut v = current;
+                        add_unique(&mut v, ks.iter().copied());
+                        v
+                    }
+                } else if all_in {
+                    narrow_to = Some(ks.clone());
+                    current
+                } else {
+                    ks.clone()
+                };
+                let grabbed = now.iter().any(|c| ks.iter().any(|k| k.same(c)));
+                self.set_key_selection(now.clone());
+                if grabbed {
+                    self.keys.drag = Some(StripDrag::Keys {
+                        x0: x,
+                        base: Box::new(self.scene.animation.clone()),
+                        keys: now,
+                        scale: mods.alt,
+                        moved: false,
+                        narrow_to,
+                    });
+                }
+            }
+            Hit::Empty => {
+                self.keys.drag = Some(StripDrag::Box {
+                    from: (x, y),
+                    to: (x, y),
+                    add: mods.shift,
+                    before: self.selected_keys(),
+                });
+            }
+        }
+    }
+
+    /// Mouse move during a strip drag (`None` when no strip drag runs).
+    pub(super) fn key_strip_move(&mut self, x: f32, y: f32) -> Option<bool> {
+        let drag = self.keys.drag.take()?;
+        let redraw = match drag {
+            StripDrag::Box {
+                from, add, before, ..
+            } => {
+                let mut now = if add { before.clone() } else { Vec::new() };
+                add_unique(&mut now, self.keys_in_box(from, (x, y)));
+                self.keys.selected = now;
+                self.keys.drag = Some(StripDrag::Box {
+                    from,
+                    to: (x, y),
+                    add,
+                    before,
+                });
+                true
+            }
+            StripDrag::Keys {
+                x0,
+                base,
+                keys,
+                scale,
+                moved,
+                narrow_to,
+            } => {
+                if !moved && (x - x0).abs() < 3.0 {
+                    self.keys.drag = Some(StripDrag::Keys {
+                        x0,
+                        base,
+                        keys,
+                        scale,
+                        moved,
+                        narrow_to,
+                    });
+                    return Some(false);
+                }
+                if !moved {
+                    self.stop_playback();
+                    self.pending = None;
+                }
+                self.retime_preview(x0, x, &base, &keys, scale);
+                self.keys.drag = Some(StripDrag::Keys {
+                    x0,
+                    base,
+                    keys,
+                    scale,
+                    moved: true,
+                    narrow_to: None,
+                });
+                true
+            }
+        };
+        Some(redraw)
+    }
+
+    /// Shows `keys` moved (or scaled) for a drag from `x0` to `x`.
+    fn retime_preview(&mut self, x0: f32, x: f32, base: &Animation, keys: &[KeyRef], scale: bool) {
+        let l = self.layout();
+        let dur = self.scene.settings.duration;
+        let ppf = ((l.frame_to_x(dur, dur) - l.frame_to_x(0.0, dur)) / dur.max(1.0)).max(1e-3);
+        let result = if scale {
+            let pivot = self.frame;
+            let px = l.frame_to_x(pivot, dur);
+            let f = if (x0 - px).abs() >= 3.0 {
+                (x - px) / (x0 - px)
+            } else {
+                1.0 + (x - x0) / 100.0
+            };
+            let f = f.max(0.0);
+            retime(base, keys, |k| (pivot + (k - pivot) * f).round())
+        } else {
+            let first = keys.iter().map(|k| k.frame).fold(f32::INFINITY, f32::min);
+            let delta = ((x - x0) / ppf).round().max(-first.max(0.0).floor());
+            retime(base, keys, |k| k + delta)
+        };
+        match result {
+            Ok((anim, refs)) => {
+                self.scene.animation = anim;
+                self.scene_rev += 1;
+                self.keys.selected = refs;
+            }
+            Err(e) => self.set_status(&e, true),
+        }
+    }
+
+    /// Release of a strip drag; false when none ran.
+    pub(super) fn key_strip_release(&mut self) -> bool {
+        let Some(drag) = self.keys.drag.take() else {
+            return false;
+        };
+        match drag {
+            StripDrag::Box { from, to, add, .. } => {
+                let tiny = (from.0 - to.0).abs() < 3.0 && (from.1 - to.1).abs() < 3.0;
+                if tiny && !add {
+                    // A click on empty strip space clears the key selection.
+                    self.keys.selected.clear();
+                }
+            }
+            StripDrag::Keys {
+                base,
+                moved,
+                narrow_to,
+                scale,
+                ..
+            } => {
+                if moved {
+                    let after = Box::new(self.scene.animation.clone());
+                    let n = self.keys.selected.len();
+                    let what = if scale { "Scale" } else { "Move" };
+                    let label = format!("{what} {n} key{}", if n == 1 { "" } else { "s" });
+                    self.push_applied(
+                        &label,
+                        Command::SetAnimation {
+                            before: base,
+                            after,
+                        },
+                    );
+                    self.set_status(&label, false);
+                } else if let Some(ks) = narrow_to {
+                    self.set_key_selection(ks);
+                }
+            }
+        }
+        true
+    }
+
+    /// Esc during a strip drag: puts back what it changed.
+    fn cancel_strip_drag(&mut self) {
+        match self.keys.drag.take() {
+            Some(StripDrag::Keys { base, keys, .. }) => {
+                self.scene.animation = *base;
+                self.scene_rev += 1;
+                self.keys.selected = keys;
+            }
+            Some(StripDrag::Box { before, .. }) => self.keys.selected = before,
+            None => {}
+        }
+    }
+
+    // ----- keyboard -----
+
+    /// Keys the strip handles (returns true when it used the key): Esc
+    /// cancels a strip drag or clears the key selection, Delete removes
+    /// selected keys, Ctrl+C copies them, Ctrl+V pastes at the current frame.
+    pub(super) fn key_strip_key(&mut self, key: KeyName, m: Mods) -> bool {
+        if self.keys.drag.is_some() {
+            if key == KeyName::Escape {
+                self.cancel_strip_drag();
+            }
+            return true;
+        }
+        let has = !self.selected_keys().is_empty();
+        match (key, m.ctrl) {
+            (KeyName::Escape, _) if has => {
+                self.keys.selected.clear();
+                true
+            }
+            (KeyName::Delete, _) if has => {
+                self.delete_selected_keys();
+                true
+            }
+            (KeyName::Char('c'), true) if has => {
+                self.keys.clipboard = copy(&self.scene.animation, &self.selected_keys());
+                let n = self.keys.clipboard.keys.len();
+                self.set_status(
+                    &format!("Copied {n} key{}", if n == 1 { "" } else { "s" }),
+                    false,
+                );
+                true
+            }
+            (KeyName::Char('v'), true) if !self.keys.clipboard.keys.is_empty() => {
+                self.paste_keys();
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Replaces the animation with `after` as one undo step.
+    pub(super) fn apply_key_edit(&mut self, label: &str, after: Animation, extra: Vec<Command>) {
+        self.stop_playback();
+        self.pending = None;
+        let c = Command::SetAnimation {
+            before: Box::new(self.scene.animation.clone()),
+            after: Box::new(after),
+        };
+        let c = if extra.is_empty() {
+            c
+        } else {
+            let mut v = vec![c];
+            v.extend(extra);
+            Command::Group(v)
+        };
+        self.execute(label, c);
+        self.set_status(label, false);
+    }
+
+    fn delete_selected_keys(&mut self) {
+        let keys = self.selected_keys();
+        let Some(sel) = self.selection else { return };
+        match delete(&self.scene.animation, &keys) {
+            Ok((after, emptied)) => {
+                // A property that loses its last key keeps the value shown
+                // now (as Blender does when an F-curve goes away).
+                let mut extra = Vec::new();
+                if !emptied.is_empty() {
+                    let shown = self.posed_node(sel);
+                    let before = Box::new(self.scene.node(sel).clone());
+                    let mut node = before.clone();
+                    for t in &emptied {
+                        if let Some(v) = read_property(&shown, t.property) {
+                            write_property(&mut node, t.property, v);
+                        }
+                    }
+                    extra.push(Command::SetNode {
+                        id: sel,
+                        before,
+                        after: node,
+                    });
+                }
+                let n = keys.len();
+                self.keys.selected.clear();
+                let label = format!("Delete {n} key{}", if n == 1 { "" } else { "s" });
+                self.apply_key_edit(&label, after, extra);
+            }
+            Err(e) => self.set_status(&e, true),
+        }
+    }
+
+    fn paste_keys(&mut self) {
+        let Some(sel) = self.selection else {
+            self.set_status("Select something to paste keys onto", false);
+            return;
+        };
+        let node = self.scene.node(sel).clone();
+        let mut anim = self.scene.animation.clone();
+        let mut pasted = Vec::new();
+        let mut skipped = 0;
+        for (p, k) in &self.keys.clipboard.keys {
+            if read_property(&node, *p).is_none() {
+                skipped += 1;
+                continue;
+            }
+            let target = Target {
+                of: TargetRef::Node(sel),
+                property: *p,
+            };
+            let frame = self.frame + k.frame;
+            let key = Key { frame, ..*k };
+            let r = anim
+                .track_or_insert(target, frame, k.value)
+                .and_then(|t| t.insert_key(key));
+            match r {
+                Ok(_) => pasted.push(KeyRef {
+                    node: sel,
+                    property: *p,
+                    frame,
+                }),
+                Err(e) => {
+                    self.set_status(&format!("cannot paste {}: {e}", row_name(*p)), true);
+                    return;
+                }
+            }
+        }
+        if pasted.is_empty() {
+            self.set_status("The copied keys do not fit the selection", true);
+            return;
+        }
+        let n = pasted.len();
+        let label = format!("Paste {n} key{}", if n == 1 { "" } else { "s" });
+        self.apply_key_edit(&label, anim, Vec::new());
+        self.set_key_selection(pasted);
+        if skipped > 0 {
+            self.set_status(&format!("{label} ({skipped} did not fit)"), false);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    fn anim() -> (Animation, NodeId) {
+        let id = NodeId(0);
+        let mut a = Animation::default();
+        let t = Target {
+            of: TargetRef::Node(id),
+            property: Property::Translation,
+        };
+        for f in [0.0, 10.0, 20.0] {
+            a.set_key(t, f, Value::Vec3(Vec3::splat(f))).unwrap();
+        }
+        (a, id)
+    }
+
+    fn r(id: NodeId, f: f32) -> KeyRef {
+        KeyRef {
+            node: id,
+            property: Property::Translation,
+            frame: f,
+        }
+    }
+
+    #[test]
+    fn moving_onto_a_key_replaces_it() {
+        let (a, id) = anim();
+        let (b, refs) = retime(&a, &[r(id, 10.0)], |f| f + 10.0).unwrap();
+        assert_eq!(refs, vec![r(id, 20.0)]);
+        let frames = track_keys(&b, id, Property::Translation);
+        assert_eq!(frames, vec![r(id, 0.0), r(id, 20.0)]);
+        assert_eq!(
+            r(id, 20.0).get(&b).unwrap().value,
+            Value::Vec3(Vec3::splat(10.0))
+        );
+    }
+
+    #[test]
+    fn squeezing_two_selected_keys_together_is_refused() {
+        let (a, id) = anim();
+        let e = retime(&a, &[r(id, 10.0), r(id, 20.0)], |_| 5.0).unwrap_err();
+        assert!(e.contains("frame 5"), "{e}");
+    }
+
+    #[test]
+    fn deleting_every_key_removes_the_track() {
+        let (a, id) = anim();
+        let (b, emptied) = delete(&a, &[r(id, 0.0)]).unwrap();
+        assert!(emptied.is_empty());
+        assert_eq!(track_keys(&b, id, Property::Translation).len(), 2);
+        let all = track_keys(&a, id, Property::Translation);
+        let (c, emptied) = delete(&a, &all).unwrap();
+        assert_eq!(emptied.len(), 1);
+        assert!(c.tracks.is_empty());
+    }
+}

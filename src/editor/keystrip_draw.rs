@@ -1,0 +1,116 @@
+//! Painting the key strip: row names, a marker per key (diamond for
+//! spline keys, square for stepped ones), selected keys highlighted, the
+//! fold triangle on the summary row and the selection box.
+
+use super::keystrip::{row_name, KeyRef, Row, MARKER_R};
+use super::Editor;
+use crate::anim::Interp;
+use crate::ui::text;
+use crate::ui::{theme, Layout, Painter, Rect};
+
+const MARKER: u32 = 0xc9cbd0;
+const SUMMARY_MARKER: u32 = 0x9a9ca3;
+const ROW_A: u32 = 0x26272b;
+const ROW_B: u32 = 0x2d2f34;
+const SUMMARY_BG: u32 = 0x33363c;
+
+impl Editor {
+    /// Draws the strip's rows under the ruler.
+    pub(super) fn draw_key_strip(&self, p: &mut Painter, l: &Layout) {
+        if l.key_rows.is_empty() {
+            return;
+        }
+        let dur = self.scene.settings.duration;
+        let names_w = l.key_names_w();
+        p.set_clip(Some(l.key_rows));
+        for (i, (row, r)) in self.key_strip_layout().into_iter().enumerate() {
+            let bg = match row {
+                Row::Summary => SUMMARY_BG,
+                _ if i % 2 == 0 => ROW_A,
+                _ => ROW_B,
+            };
+            p.fill_rect(r, bg);
+            let (name_r, _) = r.take_left(names_w);
+            p.fill_rect(name_r, theme::PANEL);
+            p.fill_rect(Rect::new(name_r.right() - 1, r.y, 1, r.h), theme::BORDER);
+            let ty = r.y + (r.h - text::LINE_H) / 2;
+            match row {
+                Row::Summary => {
+                    let (cx, cy) = (r.x as f32 + 7.0, r.y as f32 + r.h as f32 / 2.0);
+                    let tri = if self.keys.collapsed {
+                        [(cx - 2.0, cy - 4.0), (cx + 3.0, cy), (cx - 2.0, cy + 4.0)]
+                    } else {
+                        [(cx - 4.0, cy - 2.0), (cx + 4.0, cy - 2.0), (cx, cy + 3.0)]
+                    };
+                    p.fill_polygon(&tri, theme::TEXT, 255);
+                    let name = self
+                        .selection
+                        .map(|s| super::ops::display_name(&self.scene, s))
+                        .unwrap_or_default();
+                    p.text_clipped(r.x + 14, ty, &name, theme::TEXT, names_w - 16);
+                }
+                Row::Track(prop) => {
+                    p.text_clipped(r.x + 10, ty, row_name(prop), theme::TEXT_DIM, names_w - 12);
+                }
+                Row::More(n) => {
+                    let s = format!("+{n} more");
+                    p.text_clipped(r.x + 10, ty, &s, theme::TEXT_DIM, names_w - 12);
+                }
+            }
+            let keys_r = Rect::new(r.x + names_w, r.y, r.w - names_w, r.h);
+            p.set_clip(Some(keys_r));
+            let cy = r.y as f32 + r.h as f32 / 2.0;
+            for (f, ks) in self.row_markers(row) {
+                let x = l.frame_to_x(f, dur);
+                let sel = ks.iter().filter(|k| self.is_key_selected(k)).count();
+                let step = ks.iter().all(|k| self.key_interp(k) == Some(Interp::Step));
+                let color = match (sel, row) {
+                    (0, Row::Summary) => SUMMARY_MARKER,
+                    (0, _) => MARKER,
+                    _ => theme::SELECTED,
+                };
+                let rr = if row == Row::Summary {
+                    MARKER_R + 0.5
+                } else {
+                    MARKER_R
+                };
+                marker(p, (x, cy), rr, step, color);
+                if sel > 0 && sel < ks.len() {
+                    // Part of a summary marker selected: a dark centre.
+                    marker(p, (x, cy), rr - 2.5, step, SUMMARY_BG);
+                }
+            }
+            p.set_clip(Some(l.key_rows));
+        }
+        if let Some(b) = self.key_box() {
+            p.fill_rect_alpha(b, theme::ACCENT, 50);
+            p.stroke_rect(b, theme::ACCENT);
+        }
+        p.set_clip(None);
+    }
+
+    fn key_interp(&self, k: &KeyRef) -> Option<Interp> {
+        k.get(&self.scene.animation).map(|k| k.interp)
+    }
+}
+
+/// A diamond (or a square for stepped keys) centred at `c`.
+fn marker(p: &mut Painter, c: (f32, f32), r: f32, square: bool, color: u32) {
+    let pts = if square {
+        let s = r * 0.8;
+        [
+            (c.0 - s, c.1 - s),
+            (c.0 + s, c.1 - s),
+            (c.0 + s, c.1 + s),
+            (c.0 - s, c.1 + s),
+        ]
+    } else {
+        [
+            (c.0, c.1 - r),
+            (c.0 + r, c.1),
+            (c.0, c.1 + r),
+            (c.0 - r, c.1),
+        ]
+    };
+    p.fill_polygon(&pts, color, 255);
+}
