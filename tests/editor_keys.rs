@@ -732,3 +732,18 @@ fn key_edits_stop_playback() {
     drag(&mut ed, a, b, Mods::NONE);
     assert!(!ed.is_playing(), "a key drag stopped playback");
 }
+
+#[test]
+fn the_frame_line_in_the_strip_scrubs() {
+    let (mut ed, _) = editor();
+    for _ in 0..5 {
+        key(&mut ed, Key::Right, Mods::NONE);
+    }
+    let (_, y) = marker(&ed, Row::Track(S), 10.0);
+    let a = (frame_x(&ed, 5.0).floor() + 0.5, y);
+    let b = (frame_x(&ed, 40.0), y);
+    drag(&mut ed, a, b, Mods::NONE);
+    assert_eq!(ed.current_frame(), 40.0);
+    assert!(selected(&ed).is_empty(), "no box select");
+    assert!(!ed.is_dirty());
+}
