@@ -623,3 +623,127 @@ fn key_strip_golden() {
     let frame = ed.render_frame();
     golden::check("editor_key_strip", &frame);
 }
+
+#[test]
+fn scripts_aim_at_keys_and_key_fields_by_name() {
+    let (mut ed, bx) = editor();
+    let script = "click-key translation 10\n\
+                  drag-key translation 10 14\n\
+                  click-field Key(Tension)\n\
+                  type 0.5\n\
+                  key enter\n\
+                  click-key summary 30 shift\n";
+    animed::editor::script::run(&mut ed, script, Path::new("keys.txt")).expect("script runs");
+    assert_eq!(frames(&ed, bx, T), vec![0.0, 14.0, 20.0]);
+    let t = ed.scene().animation.track(target(bx, T)).unwrap();
+    assert_eq!(t.key(1).unwrap().tension, 0.5);
+    assert_eq!(selected(&ed), vec![(T, 14.0), (S, 30.0)]);
+    // No key there: the line is named.
+    let e =
+        animed::editor::script::run(&mut ed, "key esc\nclick-key scale 11\n", Path::new("k.txt"))
+            .unwrap_err();
+    assert_eq!((e.line, e.column), (2, 1));
+    assert!(e.message.contains("no key at frame 11"), "{}", e.message);
+    let e = animed::editor::script::run(&mut ed, "click-key wobble 1\n", Path::new("k.txt"))
+        .unwrap_err();
+    assert_eq!((e.line, e.column), (1, 11));
+    assert!(e.message.contains("unknown key strip row"), "{}", e.message);
+    let e = animed::editor::script::run(&mut ed, "click-field Key(Nope)\n", Path::new("k.txt"))
+        .unwrap_err();
+    assert!(e.message.contains("no field"), "{}", e.message);
+}
+
+/// A spot light with keys on eight properties, two keys each.
+fn busy_light() -> (Editor, NodeId) {
+    let mut s = Scene::new();
+    let id = s.add_node(
+        None,
+        Node::new(
+            "Spot",
+            animed::scene::NodeKind::Light(animed::scene::Light::spot()),
+        ),
+    );
+    let vals: [(Property, Value); 8] = [
+        (Property::LightOn, Value::Bool(true)),
+        (Property::LightIntensity, Value::Scalar(0.5)),
+        (Property::LightColor, Value::Vec3(Vec3::ONE)),
+        (Property::LightLocation, Value::Vec3(Vec3::ZERO)),
+        (Property::LightDirection, Value::Vec3(Vec3::NEG_Y)),
+        (Property::LightCutOff, Value::Scalar(0.5)),
+        (Property::LightBeamWidth, Value::Scalar(0.4)),
+        (Property::LightDropOff, Value::Scalar(0.0)),
+    ];
+    for (p, v) in vals {
+        for f in [0.0, 10.0] {
+            s.animation.set_key(target(id, p), f, v).unwrap();
+        }
+    }
+    let mut ed = Editor::new(s, None, 320, 240);
+    ed.select(Some(id));
+    (ed, id)
+}
+
+#[test]
+fn too_many_rows_end_in_a_more_row_and_bool_keys_toggle() {
+    let (mut ed, id) = busy_light();
+    let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
+    let cap = (ed.layout().key_rows.h / animed::ui::layout::KEY_ROW_H) as usize;
+    assert!(cap < 9, "the strip is capped ({cap} rows)");
+    assert_eq!(rows.len(), cap);
+    assert_eq!(rows[0], Row::Summary);
+    assert_eq!(rows[1], Row::Track(Property::LightOn));
+    assert_eq!(*rows.last().unwrap(), Row::More(9 - (cap - 1)));
+    // A taller window fits every row.
+    ed.handle(Event::Resize {
+        width: 640,
+        height: 480,
+    });
+    assert_eq!(ed.key_strip_layout().len(), 9);
+    // A boolean key: the panel's On/Off button flips it.
+    click_marker(&mut ed, Row::Track(Property::LightOn), 10.0, Mods::NONE);
+    let at = find(&ed, "Key(ToggleBool)");
+    click(&mut ed, at);
+    let t = ed
+        .scene()
+        .animation
+        .track(target(id, Property::LightOn))
+        .unwrap();
+    assert_eq!(t.key(1).unwrap().value, Value::Bool(false));
+    assert_eq!(t.key(0).unwrap().value, Value::Bool(true));
+    // Folding leaves the summary row only.
+    let (_, r) = ed.key_strip_layout()[0];
+    click(&mut ed, (r.x as f32 + 6.0, r.y as f32 + 7.0));
+    assert_eq!(ed.key_strip_layout().len(), 1);
+}
+
+#[test]
+fn key_edits_stop_playback() {
+    let (mut ed, bx) = editor();
+    click_marker(&mut ed, Row::Track(T), 10.0, Mods::NONE);
+    key(&mut ed, Key::Space, Mods::NONE);
+    assert!(ed.is_playing());
+    key(&mut ed, Key::Delete, Mods::NONE);
+    assert!(!ed.is_playing(), "Delete stopped playback");
+    assert_eq!(frames(&ed, bx, T), vec![0.0, 20.0]);
+    click_marker(&mut ed, Row::Track(T), 20.0, Mods::NONE);
+    key(&mut ed, Key::Space, Mods::NONE);
+    let a = marker(&ed, Row::Track(T), 20.0);
+    let b = (frame_x(&ed, 25.0), a.1);
+    drag(&mut ed, a, b, Mods::NONE);
+    assert!(!ed.is_playing(), "a key drag stopped playback");
+}
+
+#[test]
+fn the_frame_line_in_the_strip_scrubs() {
+    let (mut ed, _) = editor();
+    for _ in 0..5 {
+        key(&mut ed, Key::Right, Mods::NONE);
+    }
+    let (_, y) = marker(&ed, Row::Track(S), 10.0);
+    let a = (frame_x(&ed, 5.0).floor() + 0.5, y);
+    let b = (frame_x(&ed, 40.0), y);
+    drag(&mut ed, a, b, Mods::NONE);
+    assert_eq!(ed.current_frame(), 40.0);
+    assert!(selected(&ed).is_empty(), "no box select");
+    assert!(!ed.is_dirty());
+}

@@ -181,11 +181,14 @@ x.XFlush(d)
 x.XCloseDisplay(d)
 PY
 }
+# Waits (up to 10 s) for an animed window other than $1 (the closed one).
 find_window() {
+  local old=${1:-}
   wid=""
-  for _ in $(seq 1 50); do
-    wid=$(xdotool search --name '^animed' 2>/dev/null | head -1)
+  for _ in $(seq 1 100); do
+    wid=$(xdotool search --name '^animed' 2>/dev/null | grep -vx "$old" | head -1)
     [ -n "$wid" ] && break
+    kill -0 "$app_pid" 2>/dev/null || break
     sleep 0.1
   done
   [ -n "$wid" ] || fail "no animed window"
@@ -195,10 +198,9 @@ find_window() {
 }
 if command -v python3 >/dev/null 2>&1; then
   wm_close "$wid" || fail "could not send WM_DELETE_WINDOW"
-  sleep 1
+  find_window "$wid"
   kill -0 "$app_pid" 2>/dev/null || { cat "$OUT/animed.log"; fail "closing with unsaved changes did not ask"; }
-  find_window
-  sleep 0.5
+  sleep 1
   shot 5-close-question
   # Esc: back to editing; the change is still there.
   xdotool key Escape
@@ -240,13 +242,17 @@ if command -v python3 >/dev/null 2>&1; then
   sleep 0.3
   xdotool type --delay 50 "5"
   xdotool key Return
-  sleep 0.5
-  wm_close "$wid"
-  sleep 1
-  kill -0 "$app_pid" 2>/dev/null || fail "the first close did not ask"
-  find_window
-  wm_close "$wid"
   for _ in $(seq 1 50); do
+    case "$(xdotool getwindowname "$wid")" in *"*") break ;; esac
+    sleep 0.1
+  done
+  case "$(xdotool getwindowname "$wid")" in *"*") ;; *) fail "second session: typing made no unsaved change" ;; esac
+  wm_close "$wid"
+  find_window "$wid"
+  kill -0 "$app_pid" 2>/dev/null || fail "the first close did not ask"
+  sleep 1
+  wm_close "$wid"
+  for _ in $(seq 1 100); do
     kill -0 "$app_pid" 2>/dev/null || break
     sleep 0.1
   done

@@ -322,6 +322,9 @@ impl Editor {
     fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
         self.keys.selected = keys;
         self.keys.node_panel = false;
+        // The properties section changes size: show the selection's row
+        // in the lists again.
+        self.revealed = None;
     }
 
     /// Whether the key is selected.
@@ -436,6 +439,16 @@ impl Editor {
         })
     }
 
+    /// Whether `x` is on the current-frame line (within 2 px).
+    fn near_cursor(&self, x: f32) -> bool {
+        let l = self.layout();
+        let dur = self.scene.settings.duration;
+        let cx = l
+            .frame_to_x(self.frame.clamp(0.0, dur.max(0.0)), dur)
+            .floor();
+        (x - (cx + 0.5)).abs() <= 2.5
+    }
+
     /// Keys whose markers lie in the box between two window points.
     fn keys_in_box(&self, a: (f32, f32), b: (f32, f32)) -> Vec<KeyRef> {
         let l = self.layout();
@@ -526,6 +539,10 @@ impl Editor {
                         narrow_to,
                     });
                 }
+            }
+            Hit::Empty if self.near_cursor(x) => {
+                // The current-frame line runs through the strip: grab it.
+                self.drag = super::input::Drag::Seek;
             }
             Hit::Empty => {
                 self.keys.drag = Some(StripDrag::Box {
@@ -634,7 +651,7 @@ impl Editor {
                 let tiny = (from.0 - to.0).abs() < 3.0 && (from.1 - to.1).abs() < 3.0;
                 if tiny && !add {
                     // A click on empty strip space clears the key selection.
-                    self.keys.selected.clear();
+                    self.set_key_selection(Vec::new());
                 }
             }
             StripDrag::Keys {
@@ -693,7 +710,7 @@ impl Editor {
         let has = !self.selected_keys().is_empty();
         match (key, m.ctrl) {
             (KeyName::Escape, _) if has => {
-                self.keys.selected.clear();
+                self.set_key_selection(Vec::new());
                 true
             }
             (KeyName::Delete, _) if has => {
@@ -760,7 +777,7 @@ impl Editor {
                     });
                 }
                 let n = keys.len();
-                self.keys.selected.clear();
+                self.set_key_selection(Vec::new());
                 let label = format!("Delete {n} key{}", if n == 1 { "" } else { "s" });
                 self.apply_key_edit(&label, after, extra);
             }

@@ -392,6 +392,7 @@ impl Editor {
         self.history = History::default();
         self.saved_revision = self.history.revision();
         self.selection = None;
+        self.keys = keystrip::KeyStrip::default();
         self.frame = 0.0;
         self.playback = None;
         self.edit = None;

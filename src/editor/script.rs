@@ -15,6 +15,11 @@
 //!                            autosave fires; another process can watch)
 //! resize W H                 window resized
 //! screenshot OUT.png         the window as it looks now, written as a PNG
+//! click-key ROW F [MODS]     click the key strip marker at frame F of ROW
+//!                            (`summary` or a property: `translation`, ...)
+//! drag-key ROW F TO [MODS]   drag that marker to frame TO (`alt` scales)
+//! click-field NAME           click the panel field NAME (`Translation(0)`,
+//!                            `Key(Tension)`, `Key(Frame)`, ...)
 //! ```
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
 //! modifiers: `alt+left`, `shift+middle`.
@@ -72,6 +77,10 @@ pub enum Step {
     /// Saves the current window picture (relative paths: the working
     /// directory, as `--screenshot`).
     Screenshot(PathBuf),
+    /// A key strip marker: row, frame, drag destination frame, modifiers.
+    KeyMarker(super::keystrip::Row, f32, Option<f32>, Mods),
+    /// A side panel field by its `FieldId` debug name.
+    ClickField(String),
 }
 
 /// Parses a whole script; `path` names it in errors.
@@ -210,11 +219,33 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 want(1..=1)?;
                 Step::Screenshot(PathBuf::from(args[0]))
             }
+            "click-key" | "drag-key" => {
+                let n = if cmd == "drag-key" { 3 } else { 2 };
+                want(n..=n + 1)?;
+                let row = parse_row(args[0]).ok_or_else(|| {
+                    err(
+                        col_of(0),
+                        format!("unknown key strip row '{}' (summary or a property)", args[0]),
+                    )
+                })?;
+                let to = if n == 3 { Some(num(2)?) } else { None };
+                let mods = match args.get(n) {
+                    None => Mods::NONE,
+                    Some(a) => parse_mods(&a.split('+').collect::<Vec<_>>()).ok_or_else(|| {
+                        err(col_of(n), format!("unknown modifiers '{a}' (shift, alt, ctrl)"))
+                    })?,
+                };
+                Step::KeyMarker(row, num(1)?, to, mods)
+            }
+            "click-field" => {
+                want(1..=1)?;
+                Step::ClickField(args[0].to_string())
+            }
             _ => {
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field)"
                     ),
                 ))
             }
@@ -222,6 +253,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
         out.push((line, step));
     }
     Ok(out)
+}
+
+/// A key strip row: `summary` or a property name.
+fn parse_row(s: &str) -> Option<super::keystrip::Row> {
+    use super::keystrip::Row;
+    if s.eq_ignore_ascii_case("summary") {
+        return Some(Row::Summary);
+    }
+    crate::anim::Property::parse(s).map(Row::Track)
 }
 
 /// `ctrl+shift+s` → (Char('s'), ctrl+shift).
@@ -392,6 +432,44 @@ impl Runner {
                 frame
                     .save_png(out)
                     .map_err(|e| format!("screenshot {}: {e}", out.display()))?;
+            }
+            Step::KeyMarker(row, frame, to, mods) => {
+                let has = ed
+                    .row_markers(*row)
+                    .iter()
+                    .any(|(f, _)| (f - frame).abs() <= 1e-3);
+                let at = ed
+                    .key_marker_at(*row, *frame)
+                    .filter(|_| has)
+                    .ok_or_else(|| {
+                        format!("no key at frame {frame} in the key strip's {row:?} row")
+                    })?;
+                let b = MouseButton::Left;
+                let step = match to {
+                    None => Step::Click(at.0, at.1, b, *mods),
+                    Some(t) => {
+                        let x = ed.layout().frame_to_x(*t, ed.scene().settings.duration);
+                        Step::Drag(at.0, at.1, x, at.1, b, *mods)
+                    }
+                };
+                self.step(ed, &step)?;
+            }
+            Step::ClickField(name) => {
+                let w = ed
+                    .widgets()
+                    .into_iter()
+                    .find(|w| match &w.kind {
+                        super::panel::WidgetKind::Field(id) => {
+                            format!("{id:?}").eq_ignore_ascii_case(name)
+                        }
+                        _ => false,
+                    })
+                    .ok_or_else(|| format!("no field {name} in the panel now"))?;
+                let (x, y) = (
+                    w.rect.x as f32 + w.rect.w as f32 / 2.0,
+                    w.rect.y as f32 + w.rect.h as f32 / 2.0,
+                );
+                self.step(ed, &Step::Click(x, y, MouseButton::Left, Mods::NONE))?;
             }
         }
         Ok(())
