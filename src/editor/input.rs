@@ -52,6 +52,7 @@ const DRAG_SLOP: f32 = 3.0;
 impl Editor {
     /// Feeds one event; returns true when the picture needs redrawing.
     pub fn handle(&mut self, ev: Event) -> bool {
+        self.autosave.note_input(&ev);
         let redraw = self.dispatch(ev);
         self.reveal_selection();
         redraw

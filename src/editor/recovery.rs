@@ -17,7 +17,7 @@
 //!   every second, scripts with `wait-frames` / `sleep-ms`.
 
 use super::command::Command;
-use super::event::Key;
+use super::event::{Event, Key, MouseButton};
 use super::panel::Action;
 use super::{After, Dialog, Editor};
 use std::path::{Path, PathBuf};
@@ -131,6 +131,10 @@ pub struct Autosave {
     offer: Option<PathBuf>,
     /// How long the last autosave took, in milliseconds.
     last_ms: Option<f64>,
+    /// Mouse buttons held: a drag may be previewing into the scene.
+    buttons: u8,
+    /// Tick time the buttons were first seen held.
+    held_since: Option<f64>,
 }
 
 impl Default for Autosave {
@@ -142,7 +146,38 @@ impl Default for Autosave {
             written: None,
             offer: None,
             last_ms: None,
+            buttons: 0,
+            held_since: None,
         }
+    }
+}
+
+impl Autosave {
+    /// Follows the mouse buttons (every event passes here).
+    pub(super) fn note_input(&mut self, ev: &Event) {
+        let bit = |b: &MouseButton| match b {
+            MouseButton::Left => 1,
+            MouseButton::Middle => 2,
+            MouseButton::Right => 4,
+        };
+        match ev {
+            Event::MouseDown { button, .. } => self.buttons |= bit(button),
+            Event::MouseUp { button, .. } => self.buttons &= !bit(button),
+            _ => {}
+        }
+        if self.buttons == 0 {
+            self.held_since = None;
+        }
+    }
+
+    /// Whether a drag (any kind: handles, fields, keys) may hold a live
+    /// preview: a button is down, for less than an interval (a release
+    /// the window never reported must not stop autosave for good).
+    fn dragging(&mut self, now: f64, interval: f64) -> bool {
+        if self.buttons == 0 {
+            return false;
+        }
+        now - *self.held_since.get_or_insert(now) < interval
     }
 }
 
@@ -201,11 +236,9 @@ impl Editor {
             return false;
         }
         let since = *self.autosave.since.get_or_insert(now);
-        // Not in the middle of a drag (the scene holds a preview) or while
-        // the recovery question is open.
-        let busy = !matches!(self.drag, super::input::Drag::None)
-            || self.handle_dragging()
-            || self.autosave.offer.is_some();
+        // Not in the middle of a drag (the scene may hold a preview) or
+        // while the recovery question is open.
+        let busy = self.autosave.dragging(now, interval) || self.autosave.offer.is_some();
         if now - since < interval || busy {
             return false;
         }
@@ -520,6 +553,49 @@ mod tests {
         ed.save_to(&scene).unwrap();
         assert!(!copy.exists(), "a save deletes the copy");
         assert_eq!(ed.autosaved_to(), None);
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn no_autosave_while_a_button_is_held_unless_it_is_stuck() {
+        let d = tmp_dir("held");
+        let scene = d.join("s.wrl");
+        let mut ed = Editor::new(boxes(), None, 320, 240);
+        ed.save_to(&scene).unwrap();
+        ed.set_autosave_interval(Some(10.0));
+        let id = crate::scene::NodeId(0);
+        let mut after = Box::new(ed.scene().node(id).clone());
+        after.transform.translation.z = 3.0;
+        let before = Box::new(ed.scene().node(id).clone());
+        ed.execute("move", Command::SetNode { id, before, after });
+        let (x, y, mods) = (-5.0, -5.0, crate::editor::Mods::NONE);
+        ed.autosave_tick(0.0);
+        ed.handle(Event::MouseDown {
+            button: MouseButton::Middle,
+            x,
+            y,
+            mods,
+        });
+        ed.autosave_tick(5.0);
+        ed.autosave_tick(12.0);
+        assert!(!recovery_path(&scene).exists(), "held: wait");
+        // Held for a whole interval: a lost release; save anyway.
+        ed.autosave_tick(15.5);
+        assert!(recovery_path(&scene).exists());
+        std::fs::remove_file(recovery_path(&scene)).unwrap();
+        ed.handle(Event::MouseUp {
+            button: MouseButton::Middle,
+            x,
+            y,
+            mods,
+        });
+        let before = Box::new(ed.scene().node(id).clone());
+        let mut after = before.clone();
+        after.transform.translation.z = 4.0;
+        ed.execute("move", Command::SetNode { id, before, after });
+        ed.autosave_tick(30.0);
+        ed.autosave_tick(40.0);
+        assert!(recovery_path(&scene).exists(), "released: saved");
         std::fs::remove_dir_all(&d).unwrap();
     }
 
