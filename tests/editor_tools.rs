@@ -221,6 +221,58 @@ fn view_ring_turns_about_the_view_direction() {
     assert!(q.angle_between(want) < 0.01, "{q} want {want}");
 }
 
+/// A pixel inside the rotate rings that is neither a ring nor `id`'s body.
+fn trackball_pixel(ed: &mut Editor, id: NodeId) -> (f32, f32) {
+    let c = ed.handle_points().unwrap()[0];
+    for r in [30, 36, 24, 42] {
+        for k in 0..16 {
+            let a = k as f32 / 16.0 * std::f32::consts::TAU;
+            let p = (c.0 + a.cos() * r as f32, c.1 + a.sin() * r as f32);
+            if ed.pick_at(p.0, p.1) != Some(id) && ed.handle_at(p.0, p.1).is_none() {
+                return p;
+            }
+        }
+    }
+    panic!("no free pixel inside the rings")
+}
+
+#[test]
+fn dragging_inside_the_rings_turns_freely_and_a_click_there_picks() {
+    let mut ed = stage();
+    let pyr = node(&ed, "Pyramid");
+    ed.select(Some(pyr));
+    key(&mut ed, Key::Char('e'), Mods::NONE);
+    let a = trackball_pixel(&mut ed, pyr);
+    let picked = ed.pick_at(a.0, a.1);
+    // A click without motion picks what is there, as always.
+    down(&mut ed, a, Mods::NONE);
+    up(&mut ed, a, Mods::NONE);
+    assert_eq!(ed.selection(), picked);
+    assert!(labels(&ed).is_empty());
+    // A drag turns the selection about an axis in the view plane (the
+    // mouse moved sideways: the turn axis is about screen-vertical).
+    ed.select(Some(pyr));
+    drag_via(&mut ed, &[a, (a.0 + 25.0, a.1)], Mods::NONE);
+    let q = rotation(&ed, pyr);
+    assert!(q.angle_between(Quat::IDENTITY) > 0.2, "turned: {q}");
+    let (axis, _) = q.to_axis_angle();
+    let back = ed.camera().back();
+    assert!(
+        axis.dot(back).abs() < 0.5,
+        "axis {axis} mostly in the view plane"
+    );
+    assert_eq!(ed.selection(), Some(pyr));
+    assert_eq!(labels(&ed), vec!["Rotate Pyramid"]);
+    // Ctrl: a multiple of 15°.
+    drag_via(&mut ed, &[a, (a.0 - 10.0, a.1 + 25.0)], Mods::ctrl());
+    let (_, turned) = (rotation(&ed, pyr) * q.inverse()).to_axis_angle();
+    let steps = turned / (PI / 12.0);
+    assert!(
+        (steps - steps.round()).abs() < 1e-3 && steps.round() >= 1.0,
+        "{turned}"
+    );
+}
+
 #[test]
 fn rotating_an_animated_object_without_record_is_pending() {
     let mut ed = stage();
@@ -464,6 +516,11 @@ fn esc_cancels_every_kind_of_drag() {
         cancelled(&mut ed, a, b);
         assert_eq!(*ed.scene().node(pyr), n0, "{h:?}");
     }
+    // Trackball.
+    let a = trackball_pixel(&mut ed, pyr);
+    cancelled(&mut ed, a, (a.0 + 20.0, a.1 + 10.0));
+    assert_eq!(*ed.scene().node(pyr), n0);
+    assert_eq!(ed.selection(), Some(pyr), "a cancelled drag does not pick");
     // Scale axis, uniform.
     key(&mut ed, Key::Char('t'), Mods::NONE);
     let p = ed.scale_points().unwrap();

@@ -1,7 +1,8 @@
 //! Handles on the selected object or light, one file per kind: translate
 //! arrows and plane squares (`translate`), rotate rings (`rotate`), scale
 //! boxes (`scale`), and dragging the object's body in the view plane
-//! (`body`). This file holds the tool choice, hover and drag state, and
+//! (`body`). With the rotate tool a drag inside the rings (not on a ring
+//! or the body) turns freely (trackball). This file holds the tool choice, hover and drag state, and
 //! dispatches mouse events to the kind under the mouse.
 //!
 //! Tools: W move, E rotate, T scale (R is record mode), or the toolbar's
@@ -81,6 +82,9 @@ pub enum Handle {
     ScaleAxis(u8),
     /// The centre box of the scale handles.
     Uniform,
+    /// Inside the rotate rings (not on a ring or the body): free rotation
+    /// on the sphere the rings outline.
+    Trackball,
     /// The selected object's own pixels (moves in the view plane).
     Body,
 }
@@ -89,7 +93,7 @@ impl Handle {
     /// The undo label's verb.
     fn verb(self) -> &'static str {
         match self {
-            Handle::Ring(_) | Handle::ViewRing => "Rotate",
+            Handle::Ring(_) | Handle::ViewRing | Handle::Trackball => "Rotate",
             Handle::ScaleAxis(_) | Handle::Uniform => "Scale",
             _ => "Move",
         }
@@ -102,9 +106,9 @@ pub struct Manip {
     pub tool: Tool,
     pub hover: Option<Handle>,
     drag: Option<HandleDrag>,
-    /// A press on the selection's body: where, until it becomes a drag or
-    /// a click.
-    body_armed: Option<(f32, f32)>,
+    /// A press on the selection's body (or inside the rotate rings): what
+    /// it would drag and where, until it becomes a drag or a click.
+    armed: Option<(Handle, (f32, f32))>,
 }
 
 /// What the handles of a tool act on.
@@ -276,6 +280,13 @@ impl Editor {
                 _ => return false,
             },
             Handle::Uniform => {}
+            Handle::Trackball => {
+                let r = proj.world_per_px(t.pivot) * rotate::RING_PX;
+                let Some(g) = rotate::sphere_point(&proj, t.pivot, r, x, y) else {
+                    return false;
+                };
+                grab = g;
+            }
             Handle::Body => {
                 let Some(g) = body::grab_point(&proj, t.pivot, back, x, y) else {
                     return false;
@@ -295,7 +306,7 @@ impl Editor {
             ring_axis,
             angle: 0.0,
         });
-        self.manip.hover = (h != Handle::Body).then_some(h);
+        self.manip.hover = (h != Handle::Body && h != Handle::Trackball).then_some(h);
         true
     }
 
@@ -303,7 +314,7 @@ impl Editor {
     /// (true), or arms a body drag when the press is on the selection
     /// (false: the click still picks on release unless the mouse moves).
     pub(super) fn handles_press(&mut self, x: f32, y: f32) -> bool {
-        self.manip.body_armed = None;
+        self.manip.armed = None;
         let tool = self.manip.tool;
         if let Some(h) = self.handle_at(x, y) {
             if let Some(t) = self.target(tool) {
@@ -312,7 +323,14 @@ impl Editor {
         }
         let sel = self.selection;
         if sel.is_some() && self.pick_at(x, y) == sel && self.target(Tool::Translate).is_some() {
-            self.manip.body_armed = Some((x, y));
+            self.manip.armed = Some((Handle::Body, (x, y)));
+        } else if tool == Tool::Rotate && self.mode == super::Mode::Select {
+            if let Some(t) = self.target(Tool::Rotate) {
+                let proj = self.projector();
+                if rotate::in_trackball(&proj, t.pivot, x, y) {
+                    self.manip.armed = Some((Handle::Trackball, (x, y)));
+                }
+            }
         }
         false
     }
@@ -321,14 +339,19 @@ impl Editor {
     /// `Some(redraw)` when the handles took the event.
     pub(super) fn handles_move(&mut self, x: f32, y: f32, mods: Mods) -> Option<bool> {
         if self.manip.drag.is_none() {
-            if let Some(at) = self.manip.body_armed {
+            if let Some((h, at)) = self.manip.armed {
                 if !matches!(self.drag, Drag::Pick { .. }) || !body::past_slop(at, x, y) {
                     return None;
                 }
-                // Past the slop: the press becomes a body drag, not a click.
-                self.manip.body_armed = None;
-                let t = self.target(Tool::Translate)?;
-                if !self.start_drag(Handle::Body, t, at.0, at.1) {
+                // Past the slop: the press becomes a drag, not a click.
+                self.manip.armed = None;
+                let tool = if h == Handle::Body {
+                    Tool::Translate
+                } else {
+                    Tool::Rotate
+                };
+                let t = self.target(tool)?;
+                if !self.start_drag(h, t, at.0, at.1) {
                     return None;
                 }
                 self.drag = Drag::None;
@@ -388,6 +411,17 @@ impl Editor {
                 };
                 rotate::turned(&d.shown, d.ring_axis, shown, &t.to_local)
             }
+            Handle::Trackball => {
+                let r = proj.world_per_px(t.pivot) * rotate::RING_PX;
+                let now = rotate::sphere_point(&proj, t.pivot, r, x, y)?;
+                let (axis, angle) = rotate::arc(d.grab - t.pivot, now - t.pivot);
+                let angle = if mods.ctrl {
+                    snap(angle, rotate::SNAP)
+                } else {
+                    angle
+                };
+                rotate::turned(&d.shown, axis, angle, &t.to_local)
+            }
             Handle::ScaleAxis(i) => {
                 let now = scale::along(&proj, t.pivot, t.frame[i as usize], x, y)?;
                 Some(scale::scaled_axis(&d.shown, i, d.along, now, mods.ctrl))
@@ -418,7 +452,7 @@ impl Editor {
     /// Mouse up: ends a handle drag as one undo step (with a key in record
     /// mode). False when no handle drag was running.
     pub(super) fn handles_release(&mut self) -> bool {
-        self.manip.body_armed = None;
+        self.manip.armed = None;
         let Some(d) = self.manip.drag.take() else {
             return false;
         };
@@ -431,7 +465,7 @@ impl Editor {
             before: after.clone(),
             after: d.stored.clone(),
         });
-        if d.handle == Handle::Body {
+        if matches!(d.handle, Handle::Body | Handle::Trackball) {
             self.manip.hover = None;
         }
         if *after == *d.stored || *after == *d.shown {
@@ -502,7 +536,7 @@ impl Editor {
             .drag
             .as_ref()
             .map(|d| d.handle)
-            .filter(|&h| h != Handle::Body);
+            .filter(|&h| h != Handle::Body && h != Handle::Trackball);
         let hot = active.or(self.manip.hover);
         p.set_clip(Some(self.layout().viewport));
         match tool {

@@ -6,6 +6,10 @@
 //! current vector about the ring's axis, so the grabbed point stays on the
 //! line from the pivot through the mouse. Ctrl snaps the angle to 15°.
 //!
+//! Inside the rings a drag turns freely: the grabbed point of the sphere
+//! the rings outline is turned along the shortest arc onto the point under
+//! the mouse (trackball).
+//!
 //! Objects: the world-axis turn is taken into the node's parent space
 //! (axis through the inverse parent matrix) and composed before the posed
 //! rotation, so it is right for parented nodes. Lights: the turn is applied
@@ -123,6 +127,43 @@ pub fn grab_point(
     ray_plane(pivot, n, ro, rd)
 }
 
+/// Whether pixel (x, y) is inside the disc the axis rings outline (where a
+/// drag turns freely).
+pub fn in_trackball(proj: &Projector, pivot: Vec3, x: f32, y: f32) -> bool {
+    proj.point(pivot)
+        .is_some_and(|c| ((x - c.0).powi(2) + (y - c.1).powi(2)).sqrt() < RING_PX - GRAB_PX)
+}
+
+/// The trackball point under pixel (x, y): where the mouse ray first meets
+/// the sphere of radius `r` about the pivot, or when it misses, the point
+/// of the sphere's rim nearest the ray (so the drag continues outside).
+pub fn sphere_point(proj: &Projector, pivot: Vec3, r: f32, x: f32, y: f32) -> Option<Vec3> {
+    let (ro, rd) = pixel_ray(proj, x, y);
+    let oc = ro - pivot;
+    let b = oc.dot(rd);
+    let disc = b * b - (oc.dot(oc) - r * r);
+    if disc >= 0.0 {
+        let t = -b - disc.sqrt();
+        if t >= 0.0 {
+            return Some(ro + rd * t);
+        }
+    }
+    let p = ro + rd * (-b).max(0.0);
+    let v = (p - pivot).normalize_or_zero();
+    (v != Vec3::ZERO).then(|| pivot + v * r)
+}
+
+/// Axis and angle of the shortest turn taking direction `a` onto `b`
+/// (the arcball of Shoemake, "ARCBALL", Graphics Interface 1992, without
+/// its angle doubling: the grabbed point follows the mouse).
+pub fn arc(a: Vec3, b: Vec3) -> (Vec3, f32) {
+    let axis = a.cross(b).normalize_or_zero();
+    if axis == Vec3::ZERO {
+        return (Vec3::X, 0.0);
+    }
+    (axis, angle_about(axis, a, b))
+}
+
 /// The angle from grab point `a` to current point `b` about ring axis `n`.
 pub fn drag_angle(n: Vec3, pivot: Vec3, a: Vec3, b: Vec3) -> f32 {
     angle_about(n, a - pivot, b - pivot)
@@ -234,6 +275,32 @@ mod tests {
                 "{h:?}: grabbed point at {seen:?}, mouse at {m1:?}"
             );
         }
+    }
+
+    #[test]
+    fn trackball_turns_the_grabbed_sphere_point_under_the_mouse() {
+        let p = projector();
+        let pivot = Vec3::new(0.2, 0.1, 0.3);
+        let r = 0.8;
+        let eye = Vec3::new(4.0, 3.0, 6.0);
+        // Two points of the sphere's front (facing the eye).
+        let front = |d: Vec3| pivot + (d + (eye - pivot).normalize() * 1.5).normalize() * r;
+        let g0 = front(Vec3::new(0.3, 0.2, -0.1));
+        let g1 = front(Vec3::new(-0.4, -0.1, 0.3));
+        let m0 = p.point(g0).unwrap();
+        let m1 = p.point(g1).unwrap();
+        let a = sphere_point(&p, pivot, r, m0.0, m0.1).unwrap();
+        let b = sphere_point(&p, pivot, r, m1.0, m1.1).unwrap();
+        assert!((a - g0).length() < 1e-3 && (b - g1).length() < 1e-3);
+        let (axis, angle) = arc(a - pivot, b - pivot);
+        let turned = pivot + Quat::from_axis_angle(axis, angle) * (a - pivot);
+        let seen = p.point(turned).unwrap();
+        assert!((seen.0 - m1.0).abs() < 0.05 && (seen.1 - m1.1).abs() < 0.05);
+        // Off the sphere: the nearest rim point, still at radius r.
+        let far = sphere_point(&p, pivot, r, 10.0, 20.0).unwrap();
+        assert!(((far - pivot).length() - r).abs() < 1e-4);
+        // No motion, no turn.
+        assert_eq!(arc(a, a).1, 0.0);
     }
 
     #[test]
