@@ -32,6 +32,7 @@ impl Editor {
         self.draw_timeline(&mut p, &l);
         self.draw_panels(&mut p, &l);
         self.draw_modal(&mut p);
+        self.draw_help(&mut p);
         p.end(frame);
         self.painter = p;
     }

@@ -68,6 +68,11 @@ impl Editor {
             }
             Event::Tick { time } => self.tick(time),
             Event::MouseMove { x, y, mods } => self.mouse_move(x, y, mods),
+            Event::MouseDown { .. } | Event::KeyDown { .. } if self.help_shown() => {
+                // Any key or click closes the help.
+                self.set_help(false);
+                true
+            }
             Event::MouseDown { button, x, y, mods } => {
                 self.mouse = (x, y);
                 self.mouse_down(button, x, y, mods);
@@ -587,6 +592,7 @@ impl Editor {
             }
             (Key::Char('p'), true, _) | (Key::Space, false, _) => self.run_action(Action::Play),
             (Key::Char('g'), false, _) => self.run_action(Action::Grid),
+            (Key::F(1), _, _) => self.set_help(true),
             (Key::Char('f'), false, _) => self.frame_selection(),
             (Key::Home, _, _) => self.frame_all(),
             (Key::Escape, _, _) => self.run_action(Action::Mode),

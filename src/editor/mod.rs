@@ -23,6 +23,7 @@ mod draw;
 pub mod event;
 pub mod fields;
 pub mod gizmo;
+pub mod help;
 mod input;
 pub mod keyprops;
 pub mod keystrip;
@@ -150,6 +151,8 @@ pub struct Editor {
     dialog: Option<Dialog>,
     status: Status,
     quit: bool,
+    /// The F1 key reference is shown.
+    help: bool,
     /// First visible row of the objects and lights lists.
     scroll: [usize; 2],
     /// The selection the lists were last scrolled to show.
@@ -194,6 +197,7 @@ impl Editor {
             dialog: None,
             status: Status::default(),
             quit: false,
+            help: false,
             scroll: [0, 0],
             revealed: None,
             start_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
