@@ -747,3 +747,54 @@ fn the_frame_line_in_the_strip_scrubs() {
     assert!(selected(&ed).is_empty(), "no box select");
     assert!(!ed.is_dirty());
 }
+
+#[test]
+fn tcb_on_a_linear_key_makes_it_a_spline_key() {
+    let mut ed = stage();
+    let ball = ed.scene().find_node("Ball").expect("Ball in the stage");
+    ed.select(Some(ball));
+    let f = ed.row_markers(Row::Track(T))[1].0;
+    let t0 = ed.scene().animation.track(target(ball, T)).unwrap().clone();
+    assert_eq!(
+        t0.key(1).unwrap().interp,
+        Interp::Linear,
+        "VRML keys are linear"
+    );
+    click_marker(&mut ed, Row::Track(T), f, Mods::NONE);
+    type_into(&mut ed, "Field(Key(Continuity))", "0.5");
+    let t = ed.scene().animation.track(target(ball, T)).unwrap();
+    assert_eq!(t.key(1).unwrap().interp, Interp::Tcb);
+    assert_eq!(t.key(1).unwrap().continuity, 0.5);
+    let mid = f + 6.0;
+    assert_ne!(
+        t.sample(mid),
+        t0.sample(mid),
+        "the path bends after the key"
+    );
+    // Ease does not change the interpolation.
+    type_into(&mut ed, "Field(Key(EaseOut))", "0.5");
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    click_marker(&mut ed, Row::Track(T), f, Mods::NONE);
+    type_into(&mut ed, "Field(Key(EaseOut))", "0.5");
+    let t = ed.scene().animation.track(target(ball, T)).unwrap();
+    assert_eq!(t.key(1).unwrap().interp, Interp::Linear);
+    assert_eq!(t.key(1).unwrap().ease_out, 0.5);
+}
+
+#[test]
+fn script_select_step_uses_the_list() {
+    let mut ed = stage();
+    animed::editor::script::run(
+        &mut ed,
+        "select Spinner\nclick-key rotation 24\n",
+        Path::new("s.txt"),
+    )
+    .expect("script runs");
+    let sp = ed.scene().find_node("Spinner").unwrap();
+    assert_eq!(ed.selection(), Some(sp));
+    assert_eq!(selected(&ed), vec![(Property::Rotation, 24.0)]);
+    let e =
+        animed::editor::script::run(&mut ed, "select Nobody\n", Path::new("s.txt")).unwrap_err();
+    assert!(e.message.contains("no node named Nobody"), "{}", e.message);
+}

@@ -3,7 +3,8 @@
 //! panel's properties section while keys are selected (its "Object" button
 //! shows the node's properties again, their "Keys" button comes back).
 //!
-//! Values show the *primary* key (the first selected); an edit sets the
+//! Editing T, C or B of a step or linear key switches it to TCB (they
+//! shape nothing else). Values show the *primary* key (the first selected); an edit sets the
 //! parameter on every selected key (a value only on keys of the primary's
 //! property, a frame moves them all by the same offset). Typing records at
 //! Enter, dragging previews live and records one step at release, so the
@@ -155,9 +156,17 @@ pub fn set_field(
         let Some(track) = out.track_mut(k.target()) else {
             continue;
         };
-        track
-            .insert_key(write(field, key, v))
-            .map_err(|e| e.to_string())?;
+        let mut new = write(field, key, v);
+        // T, C and B shape TCB segments only: editing them on a step or
+        // linear key makes it a TCB key, so the change shows.
+        let tcb = matches!(
+            field,
+            KeyField::Tension | KeyField::Continuity | KeyField::Bias
+        );
+        if tcb && !matches!(new.value, Value::Bool(_)) {
+            new.interp = Interp::Tcb;
+        }
+        track.insert_key(new).map_err(|e| e.to_string())?;
     }
     Ok((out, keys.to_vec()))
 }

@@ -20,6 +20,8 @@
 //! drag-key ROW F TO [MODS]   drag that marker to frame TO (`alt` scales)
 //! click-field NAME           click the panel field NAME (`Translation(0)`,
 //!                            `Key(Tension)`, `Key(Frame)`, ...)
+//! select NAME                click the object's or light's list row (DEF
+//!                            name; selected directly when scrolled away)
 //! ```
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
 //! modifiers: `alt+left`, `shift+middle`.
@@ -81,6 +83,8 @@ pub enum Step {
     KeyMarker(super::keystrip::Row, f32, Option<f32>, Mods),
     /// A side panel field by its `FieldId` debug name.
     ClickField(String),
+    /// A node by name, through its list row.
+    Select(String),
 }
 
 /// Parses a whole script; `path` names it in errors.
@@ -241,11 +245,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 want(1..=1)?;
                 Step::ClickField(args[0].to_string())
             }
+            "select" => {
+                want(1..=1)?;
+                Step::Select(args[0].to_string())
+            }
             _ => {
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field, select)"
                     ),
                 ))
             }
@@ -470,6 +478,28 @@ impl Runner {
                     w.rect.y as f32 + w.rect.h as f32 / 2.0,
                 );
                 self.step(ed, &Step::Click(x, y, MouseButton::Left, Mods::NONE))?;
+            }
+            Step::Select(name) => {
+                let id = ed
+                    .scene()
+                    .find_node(name)
+                    .ok_or_else(|| format!("no node named {name}"))?;
+                let row = ed.widgets().into_iter().find(
+                    |w| matches!(w.kind, super::panel::WidgetKind::Row { node, .. } if node == id),
+                );
+                match row {
+                    Some(w) => {
+                        let (x, y) = (
+                            w.rect.x as f32 + 8.0,
+                            w.rect.y as f32 + w.rect.h as f32 / 2.0,
+                        );
+                        self.step(ed, &Step::Click(x, y, MouseButton::Left, Mods::NONE))?;
+                    }
+                    None => ed.select(Some(id)),
+                }
+                if ed.selection() != Some(id) {
+                    return Err(format!("{name} could not be selected"));
+                }
             }
         }
         Ok(())
