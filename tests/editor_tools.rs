@@ -661,3 +661,36 @@ fn onion_skin_golden() {
     key(&mut ed, Key::Char('o'), Mods::NONE);
     golden::check("editor_onion_skin", &ed.render_frame());
 }
+
+#[test]
+fn scripts_drag_handles_by_name() {
+    let mut ed = stage();
+    let pyr = node(&ed, "Pyramid");
+    let script = "select Pyramid\nkey e\ndrag-handle y 30 0\nkey t\ndrag-handle uniform 70 0\nkey w\ndrag-handle body 10 5\n";
+    animed::editor::script::run(&mut ed, script, Path::new("s.txt")).expect("the script runs");
+    let n = ed.scene().node(pyr);
+    let (axis, angle) = n.transform.rotation.to_axis_angle();
+    assert!(
+        angle > 0.1 && axis.y.abs() > 0.999,
+        "turned about y: {axis} {angle}"
+    );
+    assert!((n.transform.scale - Vec3::splat(2.0)).length() < 1e-4);
+    assert_ne!(n.transform.translation, Vec3::new(1.1, 0.0, 2.1));
+    assert_eq!(
+        labels(&ed),
+        vec!["Rotate Pyramid", "Scale Pyramid", "Move Pyramid"]
+    );
+    // A handle the tool does not have stops the session at its line.
+    let e = animed::editor::script::run(
+        &mut ed,
+        "key e\n\ndrag-handle uniform 5 5\n",
+        Path::new("s.txt"),
+    )
+    .unwrap_err();
+    assert_eq!((e.line, e.column), (3, 1));
+    assert!(
+        e.to_string()
+            .contains("no handle 'uniform' of the Rotate tool"),
+        "{e}"
+    );
+}

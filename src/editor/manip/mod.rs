@@ -12,6 +12,7 @@
 //! change (shown over its tracks); the release records one command, with a
 //! key in record mode on the changed property.
 
+mod aim;
 mod body;
 pub mod geom;
 pub mod rotate;
