@@ -205,6 +205,8 @@ fn ctrl_snaps_the_angle_to_15_degrees() {
     let q = rotation(&ed, pyr);
     let want = Quat::from_rotation_y(PI / 6.0);
     assert!(q.angle_between(want) < 1e-4, "{q} is not 30° about y");
+    // The status line read the angle out during the drag.
+    assert_eq!(ed.status().text, "Rotate Pyramid: 30° about y");
 }
 
 #[test]
@@ -323,6 +325,7 @@ fn scale_axis_drag_doubles_at_twice_the_distance() {
     let s = ed.scene().node(pyr).transform.scale;
     assert!((s.x - 2.0).abs() < 1e-3, "x scale {s}");
     assert_eq!((s.y, s.z), (1.0, 1.0));
+    assert_eq!(ed.status().text, "Scale Pyramid: scale 2 1 1");
     assert_eq!(labels(&ed), vec!["Scale Pyramid"]);
     // Ctrl: steps of 0.1 (z: 1 × 2.26 = 2.26 → 2.3).
     let a = ed.pixel_of(pivot + Vec3::Z * 1.5).unwrap();

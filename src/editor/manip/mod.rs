@@ -368,10 +368,57 @@ impl Editor {
         };
         match self.dragged_node(&d, x, y, mods) {
             Some(n) => {
+                let text = self.readout(&d, &n, mods);
+                self.set_status(&text, false);
                 self.show_moved(d.t.id, d.t.property, n);
                 Some(true)
             }
             None => Some(false),
+        }
+    }
+
+    /// The status line during a drag: the moved value, the angle turned or
+    /// the new scale.
+    fn readout(&self, d: &HandleDrag, n: &Node, mods: Mods) -> String {
+        use super::fields::format_number as f;
+        let name = ops::display_name(&self.scene, d.t.id);
+        let v3 = |v: Vec3| format!("{} {} {}", f(v.x), f(v.y), f(v.z));
+        let verb = d.handle.verb();
+        match d.handle {
+            Handle::Ring(_) | Handle::ViewRing => {
+                let live = self.manip.drag.as_ref().map_or(d.angle, |l| l.angle);
+                let a = if mods.ctrl {
+                    snap(live, rotate::SNAP)
+                } else {
+                    live
+                };
+                let about = match d.handle {
+                    Handle::Ring(i) => ["x", "y", "z"][i.min(2) as usize],
+                    _ => "the view",
+                };
+                format!("{verb} {name}: {}° about {about}", f(a.to_degrees()))
+            }
+            Handle::Trackball => {
+                let a = match (&n.kind, &d.shown.kind) {
+                    (NodeKind::Light(l), NodeKind::Light(l0)) => {
+                        l0.direction.angle_between(l.direction)
+                    }
+                    _ => n
+                        .transform
+                        .rotation
+                        .angle_between(d.shown.transform.rotation),
+                };
+                format!("{verb} {name}: {}°", f(a.to_degrees()))
+            }
+            Handle::ScaleAxis(_) | Handle::Uniform => {
+                format!("{verb} {name}: scale {}", v3(n.transform.scale))
+            }
+            _ => match &n.kind {
+                NodeKind::Light(l) if d.t.property == Property::LightLocation => {
+                    format!("{verb} {name}: location {}", v3(l.location))
+                }
+                _ => format!("{verb} {name}: {}", v3(n.transform.translation)),
+            },
         }
     }
 
