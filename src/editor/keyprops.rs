@@ -12,7 +12,8 @@
 
 use super::command::Command;
 use super::fields::{euler_degrees, format_fit, from_euler_degrees, FieldId};
-use super::keystrip::{retime, row_name, KeyRef};
+use super::keyedit::retime;
+use super::keystrip::{row_name, KeyRef};
 use super::panel::{Action, Widget, WidgetKind};
 use super::Editor;
 use crate::anim::{Animation, Interp, Key, Property, Value, ValueKind};

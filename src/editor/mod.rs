@@ -24,6 +24,7 @@ pub mod event;
 pub mod fields;
 pub mod gizmo;
 mod input;
+pub mod keyedit;
 pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
