@@ -206,7 +206,7 @@ fn ctrl_snaps_the_angle_to_15_degrees() {
     let want = Quat::from_rotation_y(PI / 6.0);
     assert!(q.angle_between(want) < 1e-4, "{q} is not 30° about y");
     // The status line read the angle out during the drag.
-    assert_eq!(ed.status().text, "Rotate Pyramid: 30° about y");
+    assert_eq!(ed.status().text, "Rotate Pyramid: 30 deg about y");
 }
 
 #[test]

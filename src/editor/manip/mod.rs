@@ -379,7 +379,7 @@ impl Editor {
     }
 
     /// The status line during a drag: the moved value, the angle turned or
-    /// the new scale.
+    /// the new scale ("deg": the UI font has no degree sign).
     fn readout(&self, d: &HandleDrag, n: &Node, mods: Mods) -> String {
         use super::fields::format_number as f;
         let name = ops::display_name(&self.scene, d.t.id);
@@ -397,7 +397,7 @@ impl Editor {
                     Handle::Ring(i) => ["x", "y", "z"][i.min(2) as usize],
                     _ => "the view",
                 };
-                format!("{verb} {name}: {}° about {about}", f(a.to_degrees()))
+                format!("{verb} {name}: {} deg about {about}", f(a.to_degrees()))
             }
             Handle::Trackball => {
                 let a = match (&n.kind, &d.shown.kind) {
@@ -409,7 +409,7 @@ impl Editor {
                         .rotation
                         .angle_between(d.shown.transform.rotation),
                 };
-                format!("{verb} {name}: {}°", f(a.to_degrees()))
+                format!("{verb} {name}: {} deg", f(a.to_degrees()))
             }
             Handle::ScaleAxis(_) | Handle::Uniform => {
                 format!("{verb} {name}: scale {}", v3(n.transform.scale))
