@@ -194,6 +194,29 @@ fn ring_drag_on_a_parented_node_turns_it_about_the_world_axis() {
 }
 
 #[test]
+fn an_edge_on_ring_turns_by_the_mouse_motion_along_it() {
+    let mut ed = stage();
+    let pyr = node(&ed, "Pyramid");
+    // Alt-drag orbits: yaw 0.6 → 0 and pitch 0.45 → 0 (0.01 rad per pixel):
+    // the camera looks along −z and the y ring is seen edge-on.
+    drag_via(&mut ed, &[(150.0, 150.0), (210.0, 105.0)], Mods::alt());
+    let back = ed.camera().back();
+    assert!((back - Vec3::Z).length() < 1e-4, "looking along -z: {back}");
+    ed.select(Some(pyr));
+    key(&mut ed, Key::Char('e'), Mods::NONE);
+    let t0 = grabbable(&mut ed, Handle::Ring(1), 0.2);
+    let a = ed.ring_pixel(Handle::Ring(1), t0).unwrap();
+    // The front of the ring moves towards +x (screen right) as y turns; a
+    // few pixels off the ring's line (where ray–plane hits run away) do
+    // not matter.
+    drag_via(&mut ed, &[a, (a.0 + 30.0, a.1 + 4.0)], Mods::NONE);
+    let (axis, angle) = rotation(&ed, pyr).to_axis_angle();
+    assert!((axis - Vec3::Y).length() < 1e-3, "about +y: {axis}");
+    // 30 px along a ring about 60 px in radius: about half a radian.
+    assert!(angle > 0.3 && angle < 0.7, "angle {angle}");
+}
+
+#[test]
 fn ctrl_snaps_the_angle_to_15_degrees() {
     let mut ed = stage();
     let pyr = node(&ed, "Pyramid");

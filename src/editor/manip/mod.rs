@@ -144,6 +144,9 @@ struct HandleDrag {
     /// continuous across half turns).
     ring_axis: Vec3,
     angle: f32,
+    /// Rotate, ring seen edge-on: screen direction and pixel radius the
+    /// mouse motion is measured along (see [`rotate::edge_on_drag`]).
+    edge_on: Option<((f32, f32), f32)>,
 }
 
 impl Editor {
@@ -261,7 +264,7 @@ impl Editor {
     fn start_drag(&mut self, h: Handle, t: Target, x: f32, y: f32) -> bool {
         let proj = self.projector();
         let back = self.camera.back();
-        let (mut grab, mut along, mut ring_axis) = (t.pivot, 0.0, Vec3::Z);
+        let (mut grab, mut along, mut ring_axis, mut edge_on) = (t.pivot, 0.0, Vec3::Z, None);
         match h {
             Handle::Axis(_) | Handle::Plane(_) => {
                 let Some(g) = translate::grab_point(&proj, h, t.pivot, x, y) else {
@@ -270,11 +273,14 @@ impl Editor {
                 grab = g;
             }
             Handle::Ring(_) | Handle::ViewRing => {
-                let Some(g) = rotate::grab_point(&proj, h, t.pivot, back, x, y) else {
-                    return false;
-                };
-                grab = g;
                 ring_axis = rotate::basis(h, back).map_or(Vec3::Z, |b| b.0);
+                edge_on = rotate::edge_on_drag(&proj, h, t.pivot, back);
+                if edge_on.is_none() {
+                    let Some(g) = rotate::grab_point(&proj, h, t.pivot, back, x, y) else {
+                        return false;
+                    };
+                    grab = g;
+                }
             }
             Handle::ScaleAxis(i) => match scale::along(&proj, t.pivot, t.frame[i as usize], x, y) {
                 Some(s) if s.abs() > proj.world_per_px(t.pivot) * 2.0 => along = s,
@@ -306,6 +312,7 @@ impl Editor {
             along,
             ring_axis,
             angle: 0.0,
+            edge_on,
         });
         self.manip.hover = (h != Handle::Body && h != Handle::Trackball).then_some(h);
         true
@@ -446,9 +453,14 @@ impl Editor {
                 Some(translate::moved_by(&d.shown, t.property, delta))
             }
             Handle::Ring(_) | Handle::ViewRing => {
-                let now = rotate::grab_point(&proj, d.handle, t.pivot, back, x, y)?;
-                let raw = rotate::drag_angle(d.ring_axis, t.pivot, d.grab, now);
-                let angle = geom::unwrap_angle(raw, d.angle);
+                let angle = match d.edge_on {
+                    Some((dir, r)) => ((x - d.press.0) * dir.0 + (y - d.press.1) * dir.1) / r,
+                    None => {
+                        let now = rotate::grab_point(&proj, d.handle, t.pivot, back, x, y)?;
+                        let raw = rotate::drag_angle(d.ring_axis, t.pivot, d.grab, now);
+                        geom::unwrap_angle(raw, d.angle)
+                    }
+                };
                 if let Some(live) = &mut self.manip.drag {
                     live.angle = angle;
                 }
