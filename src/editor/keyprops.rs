@@ -257,7 +257,7 @@ impl Editor {
         match set_field(&self.scene.animation, &keys, f, x) {
             Ok((anim, refs)) => {
                 self.apply_key_edit(&format!("Set key {f:?}"), anim, Vec::new());
-                self.keys.selected = refs;
+                self.set_key_selection(refs);
             }
             Err(e) => self.set_status(&e, true),
         }

@@ -100,7 +100,13 @@ pub struct KeyStrip {
     pub node_panel: bool,
     pub(super) clipboard: Clipboard,
     drag: Option<StripDrag>,
+    /// Recent (animation, key selection) pairs, newest last: undo and redo
+    /// bring back the selection that went with the animation they restore.
+    memo: Vec<(Animation, Vec<KeyRef>)>,
 }
+
+/// Pairs kept in [`KeyStrip::memo`].
+const MEMO: usize = 8;
 
 /// Half size of a marker in pixels (also the click tolerance).
 pub const MARKER_R: f32 = 4.5;
@@ -200,10 +206,60 @@ impl Editor {
 
     pub(super) fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
         self.keys.selected = keys;
+        self.remember_key_selection();
         self.keys.node_panel = false;
         // The properties section changes size: show the selection's row
         // in the lists again.
         self.revealed = None;
+    }
+
+    /// Notes the key selection for the current animation (nothing for an
+    /// empty selection).
+    fn remember_key_selection(&mut self) {
+        if self.keys.selected.is_empty() {
+            return;
+        }
+        let anim = &self.scene.animation;
+        let sel = self.keys.selected.clone();
+        let memo = &mut self.keys.memo;
+        match memo.iter().position(|(a, _)| a == anim) {
+            Some(i) => {
+                memo.remove(i);
+            }
+            None if memo.len() >= MEMO => {
+                memo.remove(0);
+            }
+            None => {}
+        }
+        memo.push((anim.clone(), sel));
+    }
+
+    /// After any change to the scene (edits, undo, redo): a key selection
+    /// that still exists is remembered with the animation; one whose keys
+    /// went away is replaced by the selection remembered with the animation
+    /// now shown (undo of a move selects the keys where they were), else
+    /// the missing keys are dropped.
+    pub(super) fn key_selection_after_change(&mut self) {
+        let anim = &self.scene.animation;
+        if self.keys.selected.iter().all(|k| k.get(anim).is_some()) {
+            self.remember_key_selection();
+            return;
+        }
+        let found = self
+            .keys
+            .memo
+            .iter()
+            .rev()
+            .find(|(a, _)| a == anim)
+            .map(|(_, s)| s.clone());
+        self.keys.selected = match found {
+            Some(s) => s,
+            None => {
+                let mut s = std::mem::take(&mut self.keys.selected);
+                s.retain(|k| k.get(anim).is_some());
+                s
+            }
+        };
     }
 
     /// Whether the key is selected.

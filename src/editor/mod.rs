@@ -368,6 +368,7 @@ impl Editor {
         if self.selection.is_some_and(|s| s.0 as usize >= n) {
             self.selection = None;
         }
+        self.key_selection_after_change();
     }
 
     pub fn undo(&mut self) {
