@@ -6,8 +6,8 @@
 //! the pose, lights kept so it is shaded as usual) rendered by the normal
 //! renderer with the viewport's camera, then blended at [`ALPHA`] with a
 //! tint (outline firmer) over the viewport where it is not behind what the viewport shows.
-//! The copies are cached until the scene, frame, camera, size, style or
-//! selection change, and only made while the onion skin is on.
+//! The copies are cached until the scene, the neighbouring keys, camera,
+//! size, style or selection change, and only made while the onion skin is on.
 
 use super::record::key_frames;
 use super::{ops, Editor};
@@ -78,7 +78,9 @@ fn covered(g: &Frame, tint: u32, out: &mut Vec<GhostPixel>) {
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct OnionKey {
     rev: u64,
-    frame: f32,
+    /// The key frames shown (not the current frame: the copies stay
+    /// while the frame moves between the same two keys).
+    keys: (Option<f32>, Option<f32>),
     camera: super::camera::OrbitCamera,
     w: u32,
     h: u32,
@@ -137,7 +139,7 @@ impl Editor {
         };
         let key = OnionKey {
             rev: self.scene_rev,
-            frame: self.frame,
+            keys: self.onion_frames(),
             camera: self.camera,
             w,
             h,
@@ -170,7 +172,7 @@ impl Editor {
         for id in ops::subtree(&self.scene, sel) {
             mine[id.0 as usize] = true;
         }
-        let (before, after) = self.onion_frames();
+        let (before, after) = key.keys;
         let fps = self.scene.settings.fps.max(1e-6);
         for (f, tint) in [(before, BEFORE), (after, AFTER)] {
             let Some(f) = f else { continue };
