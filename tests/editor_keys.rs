@@ -593,7 +593,7 @@ fn rotation_keys_offer_slerp_and_squad_and_euler_values() {
 }
 
 #[test]
-fn selection_drops_keys_that_undo_takes_away() {
+fn undo_and_redo_bring_back_the_key_selection_or_drop_missing_keys() {
     let (mut ed, bx) = editor();
     click_marker(&mut ed, Row::Track(S), 30.0, Mods::NONE);
     let a = marker(&ed, Row::Track(S), 30.0);
@@ -602,7 +602,29 @@ fn selection_drops_keys_that_undo_takes_away() {
     assert_eq!(selected(&ed), vec![(S, 40.0)]);
     key(&mut ed, Key::Char('z'), Mods::ctrl());
     assert_eq!(frames(&ed, bx, S), vec![10.0, 30.0]);
-    assert!(selected(&ed).is_empty(), "the key at 40 is gone");
+    assert_eq!(selected(&ed), vec![(S, 30.0)], "the key where it was");
+    key(&mut ed, Key::Char('y'), Mods::ctrl());
+    assert_eq!(selected(&ed), vec![(S, 40.0)], "and where it went");
+    // The frame field: same.
+    type_into(&mut ed, "Field(Key(Frame))", "45");
+    assert_eq!(selected(&ed), vec![(S, 45.0)]);
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(selected(&ed), vec![(S, 40.0)]);
+    key(&mut ed, Key::Char('y'), Mods::ctrl());
+    assert_eq!(selected(&ed), vec![(S, 45.0)]);
+    // A key made outside the strip, selected, then undone: dropped (no
+    // selection went with the animation before it).
+    let (mut ed, bx) = editor();
+    key(&mut ed, Key::Char('r'), Mods::NONE);
+    for _ in 0..5 {
+        key(&mut ed, Key::Right, Mods::NONE);
+    }
+    type_into(&mut ed, "Field(Scale(0))", "3");
+    assert_eq!(frames(&ed, bx, S), vec![5.0, 10.0, 30.0]);
+    click_marker(&mut ed, Row::Track(S), 5.0, Mods::NONE);
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(frames(&ed, bx, S), vec![10.0, 30.0]);
+    assert!(selected(&ed).is_empty(), "the key at 5 is gone");
     assert!(!ed.key_panel_shown());
     // Selecting another object hides the keys of the first.
     click_marker(&mut ed, Row::Track(S), 30.0, Mods::NONE);

@@ -194,6 +194,29 @@ fn ring_drag_on_a_parented_node_turns_it_about_the_world_axis() {
 }
 
 #[test]
+fn an_edge_on_ring_turns_by_the_mouse_motion_along_it() {
+    let mut ed = stage();
+    let pyr = node(&ed, "Pyramid");
+    // Alt-drag orbits: yaw 0.6 → 0 and pitch 0.45 → 0 (0.01 rad per pixel):
+    // the camera looks along −z and the y ring is seen edge-on.
+    drag_via(&mut ed, &[(150.0, 150.0), (210.0, 105.0)], Mods::alt());
+    let back = ed.camera().back();
+    assert!((back - Vec3::Z).length() < 1e-4, "looking along -z: {back}");
+    ed.select(Some(pyr));
+    key(&mut ed, Key::Char('e'), Mods::NONE);
+    let t0 = grabbable(&mut ed, Handle::Ring(1), 0.2);
+    let a = ed.ring_pixel(Handle::Ring(1), t0).unwrap();
+    // The front of the ring moves towards +x (screen right) as y turns; a
+    // few pixels off the ring's line (where ray–plane hits run away) do
+    // not matter.
+    drag_via(&mut ed, &[a, (a.0 + 30.0, a.1 + 4.0)], Mods::NONE);
+    let (axis, angle) = rotation(&ed, pyr).to_axis_angle();
+    assert!((axis - Vec3::Y).length() < 1e-3, "about +y: {axis}");
+    // 30 px along a ring about 60 px in radius: about half a radian.
+    assert!(angle > 0.3 && angle < 0.7, "angle {angle}");
+}
+
+#[test]
 fn ctrl_snaps_the_angle_to_15_degrees() {
     let mut ed = stage();
     let pyr = node(&ed, "Pyramid");
@@ -205,6 +228,8 @@ fn ctrl_snaps_the_angle_to_15_degrees() {
     let q = rotation(&ed, pyr);
     let want = Quat::from_rotation_y(PI / 6.0);
     assert!(q.angle_between(want) < 1e-4, "{q} is not 30° about y");
+    // The status line read the angle out during the drag.
+    assert_eq!(ed.status().text, "Rotate Pyramid: 30 deg about y");
 }
 
 #[test]
@@ -323,6 +348,7 @@ fn scale_axis_drag_doubles_at_twice_the_distance() {
     let s = ed.scene().node(pyr).transform.scale;
     assert!((s.x - 2.0).abs() < 1e-3, "x scale {s}");
     assert_eq!((s.y, s.z), (1.0, 1.0));
+    assert_eq!(ed.status().text, "Scale Pyramid: scale 2 1 1");
     assert_eq!(labels(&ed), vec!["Scale Pyramid"]);
     // Ctrl: steps of 0.1 (z: 1 × 2.26 = 2.26 → 2.3).
     let a = ed.pixel_of(pivot + Vec3::Z * 1.5).unwrap();
@@ -657,4 +683,37 @@ fn onion_skin_golden() {
     zoom_to_frame_36(&mut ed);
     key(&mut ed, Key::Char('o'), Mods::NONE);
     golden::check("editor_onion_skin", &ed.render_frame());
+}
+
+#[test]
+fn scripts_drag_handles_by_name() {
+    let mut ed = stage();
+    let pyr = node(&ed, "Pyramid");
+    let script = "select Pyramid\nkey e\ndrag-handle y 30 0\nkey t\ndrag-handle uniform 70 0\nkey w\ndrag-handle body 10 5\n";
+    animed::editor::script::run(&mut ed, script, Path::new("s.txt")).expect("the script runs");
+    let n = ed.scene().node(pyr);
+    let (axis, angle) = n.transform.rotation.to_axis_angle();
+    assert!(
+        angle > 0.1 && axis.y.abs() > 0.999,
+        "turned about y: {axis} {angle}"
+    );
+    assert!((n.transform.scale - Vec3::splat(2.0)).length() < 1e-4);
+    assert_ne!(n.transform.translation, Vec3::new(1.1, 0.0, 2.1));
+    assert_eq!(
+        labels(&ed),
+        vec!["Rotate Pyramid", "Scale Pyramid", "Move Pyramid"]
+    );
+    // A handle the tool does not have stops the session at its line.
+    let e = animed::editor::script::run(
+        &mut ed,
+        "key e\n\ndrag-handle uniform 5 5\n",
+        Path::new("s.txt"),
+    )
+    .unwrap_err();
+    assert_eq!((e.line, e.column), (3, 1));
+    assert!(
+        e.to_string()
+            .contains("no handle 'uniform' of the Rotate tool"),
+        "{e}"
+    );
 }

@@ -12,7 +12,8 @@
 
 use super::command::Command;
 use super::fields::{euler_degrees, format_fit, from_euler_degrees, FieldId};
-use super::keystrip::{retime, row_name, KeyRef};
+use super::keyedit::retime;
+use super::keystrip::{row_name, KeyRef};
 use super::panel::{Action, Widget, WidgetKind};
 use super::Editor;
 use crate::anim::{Animation, Interp, Key, Property, Value, ValueKind};
@@ -256,7 +257,7 @@ impl Editor {
         match set_field(&self.scene.animation, &keys, f, x) {
             Ok((anim, refs)) => {
                 self.apply_key_edit(&format!("Set key {f:?}"), anim, Vec::new());
-                self.keys.selected = refs;
+                self.set_key_selection(refs);
             }
             Err(e) => self.set_status(&e, true),
         }

@@ -2,20 +2,17 @@
 //! the selected node, one row per animated property below it (collapsible),
 //! key selection (click, Shift+click, box), and the edits made there: move
 //! (drag, whole-frame steps), scale timing (Alt+drag, about the current
-//! frame), delete, copy and paste. Every edit is one
-//! [`Command::SetAnimation`] (plus node values for deleted tracks).
-//!
-//! A key moved or pasted onto another key of the same track replaces it,
-//! as in Blender; two *selected* keys of one track landing on one frame (a
-//! timing scale squeezing them) is refused and the drag keeps its last
-//! valid state. Drawing is in `keystrip_draw.rs`, the key properties panel
-//! in `keyprops.rs`.
+//! frame), delete, copy and paste. A drag previews live and records one
+//! [`Command::SetAnimation`] at release; a refused step (two selected keys
+//! squeezed onto one frame) keeps the drag's last valid state. The edits
+//! themselves are in `keyedit.rs`, drawing in `keystrip_draw.rs`, the key
+//! properties panel in `keyprops.rs`.
 
 use super::command::Command;
 use super::event::{Key as KeyName, Mods};
-use super::record::{read_property, write_property};
+use super::keyedit::{copy, retime, Clipboard};
 use super::Editor;
-use crate::anim::{Animation, Key, Keys, Property, Target, TargetRef, Value, KEY_EPS};
+use crate::anim::{Animation, Key, Property, Target, TargetRef, Value, KEY_EPS};
 use crate::scene::NodeId;
 use crate::ui::layout::KEY_ROW_H;
 use crate::ui::Rect;
@@ -71,12 +68,6 @@ pub enum Hit {
     Empty,
 }
 
-/// Keys copied with Ctrl+C: frames relative to the earliest.
-#[derive(Clone, Debug, Default)]
-struct Clipboard {
-    keys: Vec<(Property, Key<Value>)>,
-}
-
 /// A mouse drag that started in the strip.
 #[derive(Clone, Debug)]
 enum StripDrag {
@@ -107,9 +98,15 @@ pub struct KeyStrip {
     /// Show the node's properties instead of the key panel while keys are
     /// selected.
     pub node_panel: bool,
-    clipboard: Clipboard,
+    pub(super) clipboard: Clipboard,
     drag: Option<StripDrag>,
+    /// Recent (animation, key selection) pairs, newest last: undo and redo
+    /// bring back the selection that went with the animation they restore.
+    memo: Vec<(Animation, Vec<KeyRef>)>,
 }
+
+/// Pairs kept in [`KeyStrip::memo`].
+const MEMO: usize = 8;
 
 /// Half size of a marker in pixels (also the click tolerance).
 pub const MARKER_R: f32 = 4.5;
@@ -180,124 +177,12 @@ pub fn node_keys(anim: &Animation, id: NodeId) -> Vec<KeyRef> {
         .collect()
 }
 
-fn typed(kind: crate::anim::ValueKind, keys: &[Key<Value>]) -> Result<Keys, String> {
-    Keys::from_values(kind, keys).map_err(|e| e.to_string())
-}
-
-/// `anim` with the keys `keys` moved to `map(frame)`. A key already at a
-/// destination (not itself moving) is replaced; two moving keys of one
-/// track meeting on a frame is an error. Returns the moved keys' new refs.
-pub fn retime(
-    anim: &Animation,
-    keys: &[KeyRef],
-    map: impl Fn(f32) -> f32,
-) -> Result<(Animation, Vec<KeyRef>), String> {
-    let mut out = anim.clone();
-    let mut moved_refs = Vec::new();
-    let mut targets: Vec<Target> = keys.iter().map(KeyRef::target).collect();
-    targets.dedup();
-    let mut seen = Vec::new();
-    for t in targets {
-        if seen.contains(&t) {
-            continue;
-        }
-        seen.push(t);
-        let Some(track) = out.track_mut(t) else {
-            continue;
-        };
-        let all: Vec<Key<Value>> = (0..track.key_count())
-            .filter_map(|i| track.key(i))
-            .collect();
-        let is_moving = |f: f32| {
-            keys.iter()
-                .any(|k| k.target() == t && (k.frame - f).abs() <= KEY_EPS)
-        };
-        let mut moving: Vec<Key<Value>> = Vec::new();
-        for k in all.iter().filter(|k| is_moving(k.frame)) {
-            let to = map(k.frame);
-            if !to.is_finite() {
-                return Err("a key would leave the timeline".into());
-            }
-            if moving.iter().any(|m| (m.frame - to).abs() <= KEY_EPS) {
-                return Err(format!(
-                    "two {} keys would land on frame {}",
-                    row_name(t.property),
-                    super::fields::format_number(to)
-                ));
-            }
-            moving.push(Key { frame: to, ..*k });
-        }
-        let mut list: Vec<Key<Value>> = all
-            .iter()
-            .filter(|k| !is_moving(k.frame))
-            .filter(|k| !moving.iter().any(|m| (m.frame - k.frame).abs() <= KEY_EPS))
-            .copied()
-            .collect();
-        for m in &moving {
-            moved_refs.push(KeyRef {
-                node: match t.of {
-                    TargetRef::Node(n) => n,
-                    TargetRef::Material(_) => continue,
-                },
-                property: t.property,
-                frame: m.frame,
-            });
-        }
-        list.extend(moving);
-        track.keys = typed(t.property.kind(), &list)?;
-    }
-    Ok((out, moved_refs))
-}
-
-/// `anim` without `keys`; tracks left without keys are removed and
-/// returned (their node keeps a value the caller chooses).
-pub fn delete(anim: &Animation, keys: &[KeyRef]) -> Result<(Animation, Vec<Target>), String> {
-    let mut out = anim.clone();
-    let mut emptied = Vec::new();
-    for k in keys {
-        let t = k.target();
-        let Some(track) = out.track_mut(t) else {
-            continue;
-        };
-        if track.key_index_at(k.frame).is_none() {
-            continue;
-        }
-        if track.key_count() == 1 {
-            out.remove_tracks(t);
-            emptied.push(t);
-        } else {
-            track.remove_key(k.frame).map_err(|e| e.to_string())?;
-        }
-    }
-    Ok((out, emptied))
-}
-
 /// Appends the keys of `ks` not already in `v`.
 fn add_unique(v: &mut Vec<KeyRef>, ks: impl IntoIterator<Item = KeyRef>) {
     for k in ks {
         if !v.iter().any(|o| o.same(&k)) {
             v.push(k);
         }
-    }
-}
-
-/// The keys `keys` with frames relative to the earliest.
-fn copy(anim: &Animation, keys: &[KeyRef]) -> Clipboard {
-    let f0 = keys.iter().map(|k| k.frame).fold(f32::INFINITY, f32::min);
-    Clipboard {
-        keys: keys
-            .iter()
-            .filter_map(|k| {
-                let key = k.get(anim)?;
-                Some((
-                    k.property,
-                    Key {
-                        frame: key.frame - f0,
-                        ..key
-                    },
-                ))
-            })
-            .collect(),
     }
 }
 
@@ -319,12 +204,62 @@ impl Editor {
         out
     }
 
-    fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
+    pub(super) fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
         self.keys.selected = keys;
+        self.remember_key_selection();
         self.keys.node_panel = false;
         // The properties section changes size: show the selection's row
         // in the lists again.
         self.revealed = None;
+    }
+
+    /// Notes the key selection for the current animation (nothing for an
+    /// empty selection).
+    fn remember_key_selection(&mut self) {
+        if self.keys.selected.is_empty() {
+            return;
+        }
+        let anim = &self.scene.animation;
+        let sel = self.keys.selected.clone();
+        let memo = &mut self.keys.memo;
+        match memo.iter().position(|(a, _)| a == anim) {
+            Some(i) => {
+                memo.remove(i);
+            }
+            None if memo.len() >= MEMO => {
+                memo.remove(0);
+            }
+            None => {}
+        }
+        memo.push((anim.clone(), sel));
+    }
+
+    /// After any change to the scene (edits, undo, redo): a key selection
+    /// that still exists is remembered with the animation; one whose keys
+    /// went away is replaced by the selection remembered with the animation
+    /// now shown (undo of a move selects the keys where they were), else
+    /// the missing keys are dropped.
+    pub(super) fn key_selection_after_change(&mut self) {
+        let anim = &self.scene.animation;
+        if self.keys.selected.iter().all(|k| k.get(anim).is_some()) {
+            self.remember_key_selection();
+            return;
+        }
+        let found = self
+            .keys
+            .memo
+            .iter()
+            .rev()
+            .find(|(a, _)| a == anim)
+            .map(|(_, s)| s.clone());
+        self.keys.selected = match found {
+            Some(s) => s,
+            None => {
+                let mut s = std::mem::take(&mut self.keys.selected);
+                s.retain(|k| k.get(anim).is_some());
+                s
+            }
+        };
     }
 
     /// Whether the key is selected.
@@ -732,163 +667,5 @@ impl Editor {
             }
             _ => false,
         }
-    }
-
-    /// Replaces the animation with `after` as one undo step.
-    pub(super) fn apply_key_edit(&mut self, label: &str, after: Animation, extra: Vec<Command>) {
-        self.stop_playback();
-        self.pending = None;
-        let c = Command::SetAnimation {
-            before: Box::new(self.scene.animation.clone()),
-            after: Box::new(after),
-        };
-        let c = if extra.is_empty() {
-            c
-        } else {
-            let mut v = vec![c];
-            v.extend(extra);
-            Command::Group(v)
-        };
-        self.execute(label, c);
-        self.set_status(label, false);
-    }
-
-    fn delete_selected_keys(&mut self) {
-        let keys = self.selected_keys();
-        let Some(sel) = self.selection else { return };
-        match delete(&self.scene.animation, &keys) {
-            Ok((after, emptied)) => {
-                // A property that loses its last key keeps the value shown
-                // now (as Blender does when an F-curve goes away).
-                let mut extra = Vec::new();
-                if !emptied.is_empty() {
-                    let shown = self.posed_node(sel);
-                    let before = Box::new(self.scene.node(sel).clone());
-                    let mut node = before.clone();
-                    for t in &emptied {
-                        if let Some(v) = read_property(&shown, t.property) {
-                            write_property(&mut node, t.property, v);
-                        }
-                    }
-                    extra.push(Command::SetNode {
-                        id: sel,
-                        before,
-                        after: node,
-                    });
-                }
-                let n = keys.len();
-                self.set_key_selection(Vec::new());
-                let label = format!("Delete {n} key{}", if n == 1 { "" } else { "s" });
-                self.apply_key_edit(&label, after, extra);
-            }
-            Err(e) => self.set_status(&e, true),
-        }
-    }
-
-    fn paste_keys(&mut self) {
-        let Some(sel) = self.selection else {
-            self.set_status("Select something to paste keys onto", false);
-            return;
-        };
-        let node = self.scene.node(sel).clone();
-        let mut anim = self.scene.animation.clone();
-        let mut pasted = Vec::new();
-        let mut skipped = 0;
-        for (p, k) in &self.keys.clipboard.keys {
-            if read_property(&node, *p).is_none() {
-                skipped += 1;
-                continue;
-            }
-            let target = Target {
-                of: TargetRef::Node(sel),
-                property: *p,
-            };
-            let frame = self.frame + k.frame;
-            let key = Key { frame, ..*k };
-            let r = anim
-                .track_or_insert(target, frame, k.value)
-                .and_then(|t| t.insert_key(key));
-            match r {
-                Ok(_) => pasted.push(KeyRef {
-                    node: sel,
-                    property: *p,
-                    frame,
-                }),
-                Err(e) => {
-                    self.set_status(&format!("cannot paste {}: {e}", row_name(*p)), true);
-                    return;
-                }
-            }
-        }
-        if pasted.is_empty() {
-            self.set_status("The copied keys do not fit the selection", true);
-            return;
-        }
-        let n = pasted.len();
-        let label = format!("Paste {n} key{}", if n == 1 { "" } else { "s" });
-        self.apply_key_edit(&label, anim, Vec::new());
-        self.set_key_selection(pasted);
-        if skipped > 0 {
-            self.set_status(&format!("{label} ({skipped} did not fit)"), false);
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use glam::Vec3;
-
-    fn anim() -> (Animation, NodeId) {
-        let id = NodeId(0);
-        let mut a = Animation::default();
-        let t = Target {
-            of: TargetRef::Node(id),
-            property: Property::Translation,
-        };
-        for f in [0.0, 10.0, 20.0] {
-            a.set_key(t, f, Value::Vec3(Vec3::splat(f))).unwrap();
-        }
-        (a, id)
-    }
-
-    fn r(id: NodeId, f: f32) -> KeyRef {
-        KeyRef {
-            node: id,
-            property: Property::Translation,
-            frame: f,
-        }
-    }
-
-    #[test]
-    fn moving_onto_a_key_replaces_it() {
-        let (a, id) = anim();
-        let (b, refs) = retime(&a, &[r(id, 10.0)], |f| f + 10.0).unwrap();
-        assert_eq!(refs, vec![r(id, 20.0)]);
-        let frames = track_keys(&b, id, Property::Translation);
-        assert_eq!(frames, vec![r(id, 0.0), r(id, 20.0)]);
-        assert_eq!(
-            r(id, 20.0).get(&b).unwrap().value,
-            Value::Vec3(Vec3::splat(10.0))
-        );
-    }
-
-    #[test]
-    fn squeezing_two_selected_keys_together_is_refused() {
-        let (a, id) = anim();
-        let e = retime(&a, &[r(id, 10.0), r(id, 20.0)], |_| 5.0).unwrap_err();
-        assert!(e.contains("frame 5"), "{e}");
-    }
-
-    #[test]
-    fn deleting_every_key_removes_the_track() {
-        let (a, id) = anim();
-        let (b, emptied) = delete(&a, &[r(id, 0.0)]).unwrap();
-        assert!(emptied.is_empty());
-        assert_eq!(track_keys(&b, id, Property::Translation).len(), 2);
-        let all = track_keys(&a, id, Property::Translation);
-        let (c, emptied) = delete(&a, &all).unwrap();
-        assert_eq!(emptied.len(), 1);
-        assert!(c.tracks.is_empty());
     }
 }

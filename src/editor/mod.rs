@@ -25,6 +25,7 @@ pub mod fields;
 pub mod gizmo;
 pub mod help;
 mod input;
+pub mod keyedit;
 pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
@@ -371,6 +372,7 @@ impl Editor {
         if self.selection.is_some_and(|s| s.0 as usize >= n) {
             self.selection = None;
         }
+        self.key_selection_after_change();
     }
 
     pub fn undo(&mut self) {

@@ -6,8 +6,8 @@
 //! the pose, lights kept so it is shaded as usual) rendered by the normal
 //! renderer with the viewport's camera, then blended at [`ALPHA`] with a
 //! tint (outline firmer) over the viewport where it is not behind what the viewport shows.
-//! The copies are cached until the scene, frame, camera, size, style or
-//! selection change, and only made while the onion skin is on.
+//! The copies are cached until the scene, the neighbouring keys, camera,
+//! size, style or selection change, and only made while the onion skin is on.
 
 use super::record::key_frames;
 use super::{ops, Editor};
@@ -29,14 +29,58 @@ pub const AFTER: u32 = 0xe060d0;
 pub(super) struct Onion {
     pub on: bool,
     key: Option<OnionKey>,
-    /// Rendered copies with their tints.
-    ghosts: Vec<(u32, Frame)>,
+    /// The covered pixels of the rendered copies, ready to blend.
+    ghosts: Vec<GhostPixel>,
+}
+
+/// One pixel a copy covers: index in the viewport layer, the colour to
+/// blend in (tinted) with its strength, and its depth.
+#[derive(Clone, Copy, Debug)]
+struct GhostPixel {
+    index: u32,
+    color: u32,
+    alpha: f32,
+    depth: f32,
+}
+
+/// The pixels `g` covers, tinted; its silhouette firmer so the shape reads.
+fn covered(g: &Frame, tint: u32, out: &mut Vec<GhostPixel>) {
+    let (w, h) = (g.width as usize, g.height as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            if g.ids[i] == 0 {
+                continue;
+            }
+            let edge = x == 0
+                || y == 0
+                || x + 1 == w
+                || y + 1 == h
+                || g.ids[i - 1] == 0
+                || g.ids[i + 1] == 0
+                || g.ids[i - w] == 0
+                || g.ids[i + w] == 0;
+            let (color, alpha) = if edge {
+                (tint, EDGE_ALPHA)
+            } else {
+                (mix(g.color[i], tint, 0.5), ALPHA)
+            };
+            out.push(GhostPixel {
+                index: i as u32,
+                color,
+                alpha,
+                depth: g.depth[i],
+            });
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct OnionKey {
     rev: u64,
-    frame: f32,
+    /// The key frames shown (not the current frame: the copies stay
+    /// while the frame moves between the same two keys).
+    keys: (Option<f32>, Option<f32>),
     camera: super::camera::OrbitCamera,
     w: u32,
     h: u32,
@@ -95,7 +139,7 @@ impl Editor {
         };
         let key = OnionKey {
             rev: self.scene_rev,
-            frame: self.frame,
+            keys: self.onion_frames(),
             camera: self.camera,
             w,
             h,
@@ -128,7 +172,7 @@ impl Editor {
         for id in ops::subtree(&self.scene, sel) {
             mine[id.0 as usize] = true;
         }
-        let (before, after) = self.onion_frames();
+        let (before, after) = key.keys;
         let fps = self.scene.settings.fps.max(1e-6);
         for (f, tint) in [(before, BEFORE), (after, AFTER)] {
             let Some(f) = f else { continue };
@@ -140,7 +184,7 @@ impl Editor {
             }
             let ghost = render::render(&self.scene, &pose, &view, &opts);
             if ghost.width == w && ghost.height == h {
-                self.onion.ghosts.push((tint, ghost));
+                covered(&ghost, tint, &mut self.onion.ghosts);
             }
         }
     }
@@ -154,32 +198,15 @@ impl Editor {
         let fw = frame.width as usize;
         let rows = (vp.h.max(0) as usize).min(h as usize);
         let cols = (vp.w.max(0) as usize).min(w as usize);
-        for (tint, g) in &self.onion.ghosts {
-            for y in 0..rows {
-                for x in 0..cols {
-                    let i = y * w as usize + x;
-                    // Hidden where the viewport shows something nearer.
-                    if g.ids[i] == 0 || g.depth[i] > depth[i] + 1e-6 {
-                        continue;
-                    }
-                    let o = (vp.y as usize + y) * fw + vp.x as usize + x;
-                    // The copy's silhouette is drawn firmer so its shape reads.
-                    let (wu, hu) = (w as usize, h as usize);
-                    let edge = x == 0
-                        || y == 0
-                        || x + 1 == wu
-                        || y + 1 == hu
-                        || g.ids[i - 1] == 0
-                        || g.ids[i + 1] == 0
-                        || g.ids[i - wu] == 0
-                        || g.ids[i + wu] == 0;
-                    frame.color[o] = if edge {
-                        mix(frame.color[o], *tint, EDGE_ALPHA)
-                    } else {
-                        mix(frame.color[o], mix(g.color[i], *tint, 0.5), ALPHA)
-                    };
-                }
+        for g in &self.onion.ghosts {
+            let i = g.index as usize;
+            let (x, y) = (i % w as usize, i / w as usize);
+            // Hidden where the viewport shows something nearer.
+            if x >= cols || y >= rows || g.depth > depth[i] + 1e-6 {
+                continue;
             }
+            let o = (vp.y as usize + y) * fw + vp.x as usize + x;
+            frame.color[o] = mix(frame.color[o], g.color, g.alpha);
         }
     }
 }

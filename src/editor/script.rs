@@ -22,6 +22,9 @@
 //!                            `Key(Tension)`, `Key(Frame)`, ...)
 //! select NAME                click the object's or light's list row (DEF
 //!                            name; selected directly when scrolled away)
+//! drag-handle H DX DY [MODS] drag handle H of the current tool (W/E/T) by
+//!                            DX DY pixels: `x` `y` `z`, `xy` `xz` `yz`,
+//!                            `view`, `uniform`, `body`
 //! ```
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
 //! modifiers: `alt+left`, `shift+middle`.
@@ -85,6 +88,8 @@ pub enum Step {
     ClickField(String),
     /// A node by name, through its list row.
     Select(String),
+    /// A handle of the current tool by name, dragged by (dx, dy) pixels.
+    DragHandle(String, f32, f32, Mods),
 }
 
 /// Parses a whole script; `path` names it in errors.
@@ -249,11 +254,21 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 want(1..=1)?;
                 Step::Select(args[0].to_string())
             }
+            "drag-handle" => {
+                want(3..=4)?;
+                let mods = match args.get(3) {
+                    None => Mods::NONE,
+                    Some(a) => parse_mods(&a.split('+').collect::<Vec<_>>()).ok_or_else(|| {
+                        err(col_of(3), format!("unknown modifiers '{a}' (shift, alt, ctrl)"))
+                    })?,
+                };
+                Step::DragHandle(args[0].to_string(), num(1)?, num(2)?, mods)
+            }
             _ => {
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field, select)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field, select, drag-handle)"
                     ),
                 ))
             }
@@ -500,6 +515,16 @@ impl Runner {
                 if ed.selection() != Some(id) {
                     return Err(format!("{name} could not be selected"));
                 }
+            }
+            Step::DragHandle(name, dx, dy, mods) => {
+                let (x, y) = ed.handle_pixel(name).ok_or_else(|| {
+                    format!(
+                        "no handle '{name}' of the {} tool on the selection in view",
+                        ed.tool().name()
+                    )
+                })?;
+                let b = MouseButton::Left;
+                self.step(ed, &Step::Drag(x, y, x + dx, y + dy, b, *mods))?;
             }
         }
         Ok(())

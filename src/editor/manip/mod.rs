@@ -12,6 +12,7 @@
 //! change (shown over its tracks); the release records one command, with a
 //! key in record mode on the changed property.
 
+mod aim;
 mod body;
 pub mod geom;
 pub mod rotate;
@@ -143,6 +144,9 @@ struct HandleDrag {
     /// continuous across half turns).
     ring_axis: Vec3,
     angle: f32,
+    /// Rotate, ring seen edge-on: screen direction and pixel radius the
+    /// mouse motion is measured along (see [`rotate::edge_on_drag`]).
+    edge_on: Option<((f32, f32), f32)>,
 }
 
 impl Editor {
@@ -260,7 +264,7 @@ impl Editor {
     fn start_drag(&mut self, h: Handle, t: Target, x: f32, y: f32) -> bool {
         let proj = self.projector();
         let back = self.camera.back();
-        let (mut grab, mut along, mut ring_axis) = (t.pivot, 0.0, Vec3::Z);
+        let (mut grab, mut along, mut ring_axis, mut edge_on) = (t.pivot, 0.0, Vec3::Z, None);
         match h {
             Handle::Axis(_) | Handle::Plane(_) => {
                 let Some(g) = translate::grab_point(&proj, h, t.pivot, x, y) else {
@@ -269,11 +273,14 @@ impl Editor {
                 grab = g;
             }
             Handle::Ring(_) | Handle::ViewRing => {
-                let Some(g) = rotate::grab_point(&proj, h, t.pivot, back, x, y) else {
-                    return false;
-                };
-                grab = g;
                 ring_axis = rotate::basis(h, back).map_or(Vec3::Z, |b| b.0);
+                edge_on = rotate::edge_on_drag(&proj, h, t.pivot, back);
+                if edge_on.is_none() {
+                    let Some(g) = rotate::grab_point(&proj, h, t.pivot, back, x, y) else {
+                        return false;
+                    };
+                    grab = g;
+                }
             }
             Handle::ScaleAxis(i) => match scale::along(&proj, t.pivot, t.frame[i as usize], x, y) {
                 Some(s) if s.abs() > proj.world_per_px(t.pivot) * 2.0 => along = s,
@@ -305,6 +312,7 @@ impl Editor {
             along,
             ring_axis,
             angle: 0.0,
+            edge_on,
         });
         self.manip.hover = (h != Handle::Body && h != Handle::Trackball).then_some(h);
         true
@@ -368,10 +376,57 @@ impl Editor {
         };
         match self.dragged_node(&d, x, y, mods) {
             Some(n) => {
+                let text = self.readout(&d, &n, mods);
+                self.set_status(&text, false);
                 self.show_moved(d.t.id, d.t.property, n);
                 Some(true)
             }
             None => Some(false),
+        }
+    }
+
+    /// The status line during a drag: the moved value, the angle turned or
+    /// the new scale ("deg": the UI font has no degree sign).
+    fn readout(&self, d: &HandleDrag, n: &Node, mods: Mods) -> String {
+        use super::fields::format_number as f;
+        let name = ops::display_name(&self.scene, d.t.id);
+        let v3 = |v: Vec3| format!("{} {} {}", f(v.x), f(v.y), f(v.z));
+        let verb = d.handle.verb();
+        match d.handle {
+            Handle::Ring(_) | Handle::ViewRing => {
+                let live = self.manip.drag.as_ref().map_or(d.angle, |l| l.angle);
+                let a = if mods.ctrl {
+                    snap(live, rotate::SNAP)
+                } else {
+                    live
+                };
+                let about = match d.handle {
+                    Handle::Ring(i) => ["x", "y", "z"][i.min(2) as usize],
+                    _ => "the view",
+                };
+                format!("{verb} {name}: {} deg about {about}", f(a.to_degrees()))
+            }
+            Handle::Trackball => {
+                let a = match (&n.kind, &d.shown.kind) {
+                    (NodeKind::Light(l), NodeKind::Light(l0)) => {
+                        l0.direction.angle_between(l.direction)
+                    }
+                    _ => n
+                        .transform
+                        .rotation
+                        .angle_between(d.shown.transform.rotation),
+                };
+                format!("{verb} {name}: {} deg", f(a.to_degrees()))
+            }
+            Handle::ScaleAxis(_) | Handle::Uniform => {
+                format!("{verb} {name}: scale {}", v3(n.transform.scale))
+            }
+            _ => match &n.kind {
+                NodeKind::Light(l) if d.t.property == Property::LightLocation => {
+                    format!("{verb} {name}: location {}", v3(l.location))
+                }
+                _ => format!("{verb} {name}: {}", v3(n.transform.translation)),
+            },
         }
     }
 
@@ -398,9 +453,14 @@ impl Editor {
                 Some(translate::moved_by(&d.shown, t.property, delta))
             }
             Handle::Ring(_) | Handle::ViewRing => {
-                let now = rotate::grab_point(&proj, d.handle, t.pivot, back, x, y)?;
-                let raw = rotate::drag_angle(d.ring_axis, t.pivot, d.grab, now);
-                let angle = geom::unwrap_angle(raw, d.angle);
+                let angle = match d.edge_on {
+                    Some((dir, r)) => ((x - d.press.0) * dir.0 + (y - d.press.1) * dir.1) / r,
+                    None => {
+                        let now = rotate::grab_point(&proj, d.handle, t.pivot, back, x, y)?;
+                        let raw = rotate::drag_angle(d.ring_axis, t.pivot, d.grab, now);
+                        geom::unwrap_angle(raw, d.angle)
+                    }
+                };
                 if let Some(live) = &mut self.manip.drag {
                     live.angle = angle;
                 }

@@ -4,7 +4,9 @@
 //! A ring drag intersects the mouse ray with the ring's plane; the angle
 //! turned is the signed angle (atan2) between the grab vector and the
 //! current vector about the ring's axis, so the grabbed point stays on the
-//! line from the pivot through the mouse. Ctrl snaps the angle to 15°.
+//! line from the pivot through the mouse. A ring seen (nearly) edge-on
+//! turns instead by the mouse motion along its screen line over its pixel
+//! radius (ray–plane hits run away there). Ctrl snaps the angle to 15°.
 //!
 //! Inside the rings a drag turns freely: the grabbed point of the sphere
 //! the rings outline is turned along the shortest arc onto the point under
@@ -125,6 +127,34 @@ pub fn grab_point(
     let (n, _, _) = basis(h, back)?;
     let (ro, rd) = pixel_ray(proj, x, y);
     ray_plane(pivot, n, ro, rd)
+}
+
+/// Below this |cos| between a ring's axis and the view direction the ring
+/// is seen (nearly) edge-on, where ray–plane hits run away to infinity.
+pub const EDGE_ON: f32 = 0.2;
+
+/// For a ring seen edge-on: the unit screen direction in which the ring's
+/// front point moves when the angle grows (the projection of axis × view)
+/// and the ring's radius in pixels along it. The drag then turns by the
+/// mouse's motion along that direction over the radius, so the front of
+/// the ring follows the mouse. `None` when the ring faces the eye enough
+/// for ray–plane dragging.
+pub fn edge_on_drag(
+    proj: &Projector,
+    h: Handle,
+    pivot: Vec3,
+    back: Vec3,
+) -> Option<((f32, f32), f32)> {
+    let (n, _, _) = basis(h, back)?;
+    if n.dot(back).abs() >= EDGE_ON {
+        return None;
+    }
+    let t = n.cross(back).normalize_or_zero();
+    let a = proj.point(pivot)?;
+    let b = proj.point(pivot + t * radius(proj, h, pivot))?;
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l = (dx * dx + dy * dy).sqrt();
+    (l > 1.0).then(|| ((dx / l, dy / l), l))
 }
 
 /// Whether pixel (x, y) is inside the disc the axis rings outline (where a
