@@ -7,13 +7,12 @@
 //! Every change to the scene goes through [`command::History`] so it can be
 //! undone; a drag previews live and records one command at release.
 //!
-//! Where the animating tools plug in: `ui::Layout::new(w, h, key_rows)`
-//! reserves key strip rows under the ruler (`layout.key_rows`, clicks there
-//! already seek); `input::Drag` takes new variants for handle and key drags
-//! (press captures a `Base`, moves call `preview`, release `push_applied`);
-//! keys change through `Command::SetAnimation` (grouped with `SetNode` for a
-//! record-mode drag); `record` is the R / toolbar flag; `viewport.rs` draws
-//! overlays with a `camera::Projector` and picks with `pick_at`.
+//! The animating tools: `record.rs` (record mode, K, pending changes),
+//! `manip/` (handles, one file per kind), `keystrip.rs` + `keyedit.rs` +
+//! `keystrip_draw.rs` (the key strip under the ruler), `keyprops.rs` (the
+//! key panel), `motion_path.rs`, `onion.rs`, `recovery.rs` (autosave). A
+//! new drag previews with `preview` and records one command at release
+//! with `push_applied`/`execute`; both stop playback.
 
 pub mod bench;
 pub mod browser;
