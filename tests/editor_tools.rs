@@ -470,6 +470,24 @@ fn body_drag_in_record_mode_keys_the_translation() {
 }
 
 #[test]
+fn ctrl_body_drag_snaps_the_pivot_to_the_grid() {
+    let mut ed = stage();
+    let pyr = node(&ed, "Pyramid");
+    ed.select(Some(pyr));
+    let t0 = ed.scene().node(pyr).transform.translation;
+    let a = body_pixel(&mut ed, pyr);
+    drag_via(&mut ed, &[a, (a.0 + 23.0, a.1 - 17.0)], Mods::ctrl());
+    let t1 = ed.scene().node(pyr).transform.translation;
+    assert!((t1 - t0).length() > 0.1, "moved {t0} -> {t1}");
+    // The stage's grid step (scene radius ~5) is 1: every coordinate of
+    // the (top-level) pyramid lands on a whole number.
+    for c in t1.to_array() {
+        assert!((c - c.round()).abs() < 1e-4, "{t1} on the grid");
+    }
+    assert_eq!(labels(&ed), vec!["Move Pyramid"]);
+}
+
+#[test]
 fn spot_rings_turn_its_direction_and_record_a_key() {
     let mut ed = stage();
     let spot = node(&ed, "SpotLamp");

@@ -449,7 +449,19 @@ impl Editor {
             }
             Handle::Body => {
                 let now = body::grab_point(&proj, t.pivot, back, x, y)?;
-                let delta = t.to_local.transform_vector3(now - d.grab);
+                let mut pivot = t.pivot + (now - d.grab);
+                if mods.ctrl {
+                    // Snapping leaves the view plane: the pivot lands on
+                    // grid points in all three world axes, as in Blender.
+                    let pose = self.pose().clone();
+                    let step = grid_step(ops::sphere(ops::scene_bounds(&self.scene, &pose)).1);
+                    pivot = Vec3::new(
+                        snap(pivot.x, step),
+                        snap(pivot.y, step),
+                        snap(pivot.z, step),
+                    );
+                }
+                let delta = t.to_local.transform_vector3(pivot - t.pivot);
                 Some(translate::moved_by(&d.shown, t.property, delta))
             }
             Handle::Ring(_) | Handle::ViewRing => {
