@@ -5,53 +5,12 @@
 #[path = "common/golden.rs"]
 mod golden;
 
+#[path = "common/ui_input.rs"]
+mod ui_input;
 use animed::anim::{Property, Target, TargetRef};
 use animed::editor::manip::Handle;
 use animed::editor::{Editor, Event, Key, Mods, MouseButton};
-use animed::scene::NodeId;
-use std::path::{Path, PathBuf};
-
-fn stage() -> Editor {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
-    Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), 480, 320)
-}
-
-fn node(ed: &Editor, name: &str) -> NodeId {
-    ed.scene().find_node(name).expect("node in the stage")
-}
-
-fn key(ed: &mut Editor, k: Key, mods: Mods) {
-    ed.handle(Event::KeyDown { key: k, mods });
-    ed.handle(Event::KeyUp { key: k, mods });
-}
-
-/// Press at `a`, move in 8 steps, release at `b`, holding `mods`.
-fn drag(ed: &mut Editor, a: (f32, f32), b: (f32, f32), mods: Mods) {
-    let button = MouseButton::Left;
-    ed.handle(Event::MouseMove {
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    ed.handle(Event::MouseDown {
-        button,
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    for i in 1..=8 {
-        let t = i as f32 / 8.0;
-        let (x, y) = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
-        ed.handle(Event::MouseMove { x, y, mods });
-    }
-    ed.handle(Event::MouseUp {
-        button,
-        x: b.0,
-        y: b.1,
-        mods,
-    });
-}
+use ui_input::*;
 
 /// A point `at` of the way along arrow `axis` (1..=3) and the screen
 /// direction of that arrow (unit).

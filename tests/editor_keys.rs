@@ -6,12 +6,15 @@
 #[path = "common/golden.rs"]
 mod golden;
 
+#[path = "common/ui_input.rs"]
+mod ui_input;
 use animed::anim::{Interp, Property, Target, TargetRef, Value};
 use animed::editor::keystrip::{KeyRef, Row};
 use animed::editor::{Editor, Event, Key, Mods, MouseButton};
 use animed::scene::{Node, NodeId, Scene, Transform};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
+use ui_input::*;
 
 /// Two groups: "Box" with translation keys at 0, 10, 20 (x = 0, 4, 0) and
 /// scale keys at 10 and 30; "Other" without keys. 60 frames.
@@ -50,71 +53,6 @@ fn target(id: NodeId, p: Property) -> Target {
         of: TargetRef::Node(id),
         property: p,
     }
-}
-
-fn key(ed: &mut Editor, k: Key, mods: Mods) {
-    ed.handle(Event::KeyDown { key: k, mods });
-    ed.handle(Event::KeyUp { key: k, mods });
-}
-
-fn click_with(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
-    let button = MouseButton::Left;
-    ed.handle(Event::MouseMove { x, y, mods });
-    ed.handle(Event::MouseDown { button, x, y, mods });
-    ed.handle(Event::MouseUp { button, x, y, mods });
-}
-
-fn click(ed: &mut Editor, at: (f32, f32)) {
-    click_with(ed, at, Mods::NONE);
-}
-
-/// Press at `a`, move in 8 steps, release at `b`, holding `mods`.
-fn drag(ed: &mut Editor, a: (f32, f32), b: (f32, f32), mods: Mods) {
-    let button = MouseButton::Left;
-    ed.handle(Event::MouseMove {
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    ed.handle(Event::MouseDown {
-        button,
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    for i in 1..=8 {
-        let t = i as f32 / 8.0;
-        let (x, y) = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
-        ed.handle(Event::MouseMove { x, y, mods });
-    }
-    ed.handle(Event::MouseUp {
-        button,
-        x: b.0,
-        y: b.1,
-        mods,
-    });
-}
-
-/// Centre of the widget whose debug text contains `needle`.
-fn find(ed: &Editor, needle: &str) -> (f32, f32) {
-    let w = ed
-        .widgets()
-        .into_iter()
-        .find(|w| format!("{:?}", w.kind).contains(needle))
-        .unwrap_or_else(|| panic!("no widget {needle}"));
-    (
-        w.rect.x as f32 + w.rect.w as f32 / 2.0,
-        w.rect.y as f32 + w.rect.h as f32 / 2.0,
-    )
-}
-
-/// Types `text` into the field whose debug name contains `field`.
-fn type_into(ed: &mut Editor, field: &str, text: &str) {
-    let at = find(ed, field);
-    click(ed, at);
-    assert!(ed.text_edit().is_some(), "{field} starts typing");
-    ed.handle(Event::Text(text.into()));
-    key(ed, Key::Enter, Mods::NONE);
 }
 
 fn sample_x(ed: &Editor, id: NodeId, frame: f32) -> f32 {

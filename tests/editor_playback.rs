@@ -1,10 +1,13 @@
 //! Playback stops on any edit (issue 7 item 6): typed values, K, handle
 //! and field drags, delete and undo all stop it; looking around does not.
 
+#[path = "common/ui_input.rs"]
+mod ui_input;
 use animed::editor::panel::WidgetKind;
 use animed::editor::{Editor, Event, Key, Mods, MouseButton};
 use animed::scene::NodeId;
 use std::path::{Path, PathBuf};
+use ui_input::*;
 
 fn stage() -> (Editor, NodeId) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
@@ -13,11 +16,6 @@ fn stage() -> (Editor, NodeId) {
     let pyr = ed.scene().find_node("Pyramid").expect("node in the stage");
     ed.select(Some(pyr));
     (ed, pyr)
-}
-
-fn key(ed: &mut Editor, k: Key, mods: Mods) {
-    ed.handle(Event::KeyDown { key: k, mods });
-    ed.handle(Event::KeyUp { key: k, mods });
 }
 
 /// Starts playback and lets it run a few ticks.
@@ -30,32 +28,6 @@ fn play(ed: &mut Editor, t: &mut f64) {
     }
     assert!(ed.is_playing());
     assert!(ed.current_frame() > 0.0, "playback advanced");
-}
-
-fn drag(ed: &mut Editor, a: (f32, f32), b: (f32, f32)) {
-    let (button, mods) = (MouseButton::Left, Mods::NONE);
-    ed.handle(Event::MouseMove {
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    ed.handle(Event::MouseDown {
-        button,
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    for i in 1..=8 {
-        let s = i as f32 / 8.0;
-        let (x, y) = (a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s);
-        ed.handle(Event::MouseMove { x, y, mods });
-    }
-    ed.handle(Event::MouseUp {
-        button,
-        x: b.0,
-        y: b.1,
-        mods,
-    });
 }
 
 fn field(ed: &Editor, name: &str) -> (f32, f32) {
@@ -116,7 +88,7 @@ fn a_handle_drag_stops_playback() {
     let a = (c.0 + (tip.0 - c.0) * 0.6, c.1 + (tip.1 - c.1) * 0.6);
     let b = (a.0 + (tip.0 - c.0) * 0.5, a.1 + (tip.1 - c.1) * 0.5);
     let before = ed.scene().node(pyr).transform.translation;
-    drag(&mut ed, a, b);
+    drag(&mut ed, a, b, Mods::NONE);
     assert!(!ed.is_playing(), "a handle drag stopped playback");
     assert_ne!(ed.scene().node(pyr).transform.translation, before);
 }
@@ -154,7 +126,7 @@ fn delete_and_undo_stop_playback_but_looking_around_does_not() {
         y: cy,
         mods: Mods::NONE,
     });
-    drag(&mut ed, (cx, cy), (cx + 30.0, cy + 10.0));
+    drag(&mut ed, (cx, cy), (cx + 30.0, cy + 10.0), Mods::NONE);
     key(&mut ed, Key::Char('g'), Mods::NONE);
     assert!(
         ed.is_playing(),

@@ -5,11 +5,14 @@
 #[path = "common/golden.rs"]
 mod golden;
 
+#[path = "common/ui_input.rs"]
+mod ui_input;
 use animed::anim::{Property, Target, TargetRef, Value};
-use animed::editor::{Editor, Event, Key, Mods, MouseButton};
+use animed::editor::{Editor, Key, Mods};
 use animed::scene::{Light, LightKind, Node, NodeId, NodeKind, Scene, Transform};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
+use ui_input::*;
 
 /// A group "Box" at (1, 0, 0) and a point light "Lamp".
 fn scene() -> Scene {
@@ -22,39 +25,6 @@ fn scene() -> Scene {
     l.location = Vec3::new(0.0, 3.0, 0.0);
     s.add_node(None, Node::new("Lamp", NodeKind::Light(l)));
     s
-}
-
-fn key(ed: &mut Editor, k: Key, mods: Mods) {
-    ed.handle(Event::KeyDown { key: k, mods });
-    ed.handle(Event::KeyUp { key: k, mods });
-}
-
-fn click(ed: &mut Editor, (x, y): (f32, f32)) {
-    let (button, mods) = (MouseButton::Left, Mods::NONE);
-    ed.handle(Event::MouseMove { x, y, mods });
-    ed.handle(Event::MouseDown { button, x, y, mods });
-    ed.handle(Event::MouseUp { button, x, y, mods });
-}
-
-fn find(ed: &Editor, needle: &str) -> (f32, f32) {
-    let w = ed
-        .widgets()
-        .into_iter()
-        .find(|w| format!("{:?}", w.kind).contains(needle))
-        .unwrap_or_else(|| panic!("no widget {needle}"));
-    (
-        w.rect.x as f32 + w.rect.w as f32 / 2.0,
-        w.rect.y as f32 + w.rect.h as f32 / 2.0,
-    )
-}
-
-/// Types `text` into the field whose debug name contains `field`.
-fn type_into(ed: &mut Editor, field: &str, text: &str) {
-    let at = find(ed, field);
-    click(ed, at);
-    assert!(ed.text_edit().is_some(), "{field} starts typing");
-    ed.handle(Event::Text(text.into()));
-    key(ed, Key::Enter, Mods::NONE);
 }
 
 fn target(id: NodeId, p: Property) -> Target {

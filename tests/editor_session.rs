@@ -1,10 +1,13 @@
 //! Drives the editor through events (as the window and scripts do) and
 //! checks its state: selection, commands and undo, fields, modal boxes.
 
+#[path = "common/ui_input.rs"]
+mod ui_input;
 use animed::editor::{script, Editor, Event, Key, Mode, Mods, MouseButton};
 use animed::scene::{Light, LightKind, Material, Mesh, Node, NodeId, NodeKind, Scene, Shape};
 use glam::Vec3;
 use std::path::Path;
+use ui_input::*;
 
 /// Two named boxes and a point light, built by hand so these tests do not
 /// depend on the readers.
@@ -49,11 +52,6 @@ fn editor() -> Editor {
     Editor::new(scene(), None, 480, 320)
 }
 
-fn key(ed: &mut Editor, k: Key, mods: Mods) {
-    ed.handle(Event::KeyDown { key: k, mods });
-    ed.handle(Event::KeyUp { key: k, mods });
-}
-
 fn click(ed: &mut Editor, x: f32, y: f32) {
     ed.handle(Event::MouseMove {
         x,
@@ -72,19 +70,6 @@ fn click(ed: &mut Editor, x: f32, y: f32) {
 
 fn run(ed: &mut Editor, s: &str) {
     script::run(ed, s, Path::new("test.txt")).expect("script parses");
-}
-
-/// Centre of the first widget whose debug text contains `needle`.
-fn find(ed: &Editor, needle: &str) -> (f32, f32) {
-    let w = ed
-        .widgets()
-        .into_iter()
-        .find(|w| format!("{:?}", w.kind).contains(needle))
-        .unwrap_or_else(|| panic!("no widget {needle}"));
-    (
-        w.rect.x as f32 + w.rect.w as f32 / 2.0,
-        w.rect.y as f32 + w.rect.h as f32 / 2.0,
-    )
 }
 
 #[test]

@@ -6,28 +6,16 @@
 #[path = "common/golden.rs"]
 mod golden;
 
+#[path = "common/ui_input.rs"]
+mod ui_input;
 use animed::anim::{Property, Target, TargetRef, Value};
 use animed::editor::manip::{Handle, Tool, ARROW_PX};
 use animed::editor::{Editor, Event, Key, Mods, MouseButton};
 use animed::scene::{NodeId, NodeKind};
 use glam::{Quat, Vec3};
 use std::f32::consts::PI;
-use std::path::{Path, PathBuf};
-
-fn stage() -> Editor {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
-    Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), 480, 320)
-}
-
-fn node(ed: &Editor, name: &str) -> NodeId {
-    ed.scene().find_node(name).expect("node in the stage")
-}
-
-fn key(ed: &mut Editor, k: Key, mods: Mods) {
-    ed.handle(Event::KeyDown { key: k, mods });
-    ed.handle(Event::KeyUp { key: k, mods });
-}
+use std::path::Path;
+use ui_input::*;
 
 fn down(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
     ed.handle(Event::MouseMove { x, y, mods });
