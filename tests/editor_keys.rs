@@ -10,7 +10,7 @@ mod golden;
 mod ui_input;
 use animed::anim::{Interp, Property, Target, TargetRef, Value};
 use animed::editor::keystrip::{KeyRef, Row};
-use animed::editor::{Editor, Event, Key, Mods, MouseButton};
+use animed::editor::{Editor, Event, Key, Mods};
 use animed::scene::{Node, NodeId, Scene, Transform};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
@@ -221,29 +221,12 @@ fn moving_a_key_onto_another_replaces_it_and_esc_cancels_a_drag() {
     );
     // Esc in the middle of a drag puts the keys back.
     let a = marker(&ed, Row::Track(S), 30.0);
-    let button = MouseButton::Left;
-    let m = Mods::NONE;
-    ed.handle(Event::MouseMove {
-        x: a.0,
-        y: a.1,
-        mods: m,
-    });
-    ed.handle(Event::MouseDown {
-        button,
-        x: a.0,
-        y: a.1,
-        mods: m,
-    });
+    down(&mut ed, a, Mods::NONE);
     let x = frame_x(&ed, 40.0);
-    ed.handle(Event::MouseMove { x, y: a.1, mods: m });
+    move_to(&mut ed, (x, a.1), Mods::NONE);
     assert_eq!(frames(&ed, bx, S), vec![10.0, 40.0], "previewed live");
     key(&mut ed, Key::Escape, Mods::NONE);
-    ed.handle(Event::MouseUp {
-        button,
-        x,
-        y: a.1,
-        mods: m,
-    });
+    up(&mut ed, (x, a.1), Mods::NONE);
     assert_eq!(frames(&ed, bx, S), vec![10.0, 30.0]);
 }
 
@@ -412,34 +395,17 @@ fn dragging_a_key_param_previews_live_and_is_one_undo_step() {
     click_marker(&mut ed, Row::Track(T), 10.0, Mods::NONE);
     let steps = ed.history().labels().count();
     let a = find(&ed, "Field(Key(Tension))");
-    let button = MouseButton::Left;
-    let m = Mods::NONE;
-    ed.handle(Event::MouseMove {
-        x: a.0,
-        y: a.1,
-        mods: m,
-    });
-    ed.handle(Event::MouseDown {
-        button,
-        x: a.0,
-        y: a.1,
-        mods: m,
-    });
+    down(&mut ed, a, Mods::NONE);
     let mut last = 0.0;
     for i in 1..=6 {
         let x = a.0 + i as f32 * 10.0;
-        ed.handle(Event::MouseMove { x, y: a.1, mods: m });
+        move_to(&mut ed, (x, a.1), Mods::NONE);
         let t = ed.scene().animation.track(target(bx, T)).unwrap();
         let now = t.key(1).unwrap().tension;
         assert!(now > last, "previewed live at step {i}: {now}");
         last = now;
     }
-    ed.handle(Event::MouseUp {
-        button,
-        x: a.0 + 60.0,
-        y: a.1,
-        mods: m,
-    });
+    up(&mut ed, (a.0 + 60.0, a.1), Mods::NONE);
     assert!((last - 0.6).abs() < 1e-4, "60 px at 0.01 per px: {last}");
     assert_eq!(ed.history().labels().count(), steps + 1);
     key(&mut ed, Key::Char('z'), Mods::ctrl());

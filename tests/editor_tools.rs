@@ -10,48 +10,12 @@ mod golden;
 mod ui_input;
 use animed::anim::{Property, Target, TargetRef, Value};
 use animed::editor::manip::{Handle, Tool, ARROW_PX};
-use animed::editor::{Editor, Event, Key, Mods, MouseButton};
+use animed::editor::{Editor, Event, Key, Mods};
 use animed::scene::{NodeId, NodeKind};
 use glam::{Quat, Vec3};
 use std::f32::consts::PI;
 use std::path::Path;
 use ui_input::*;
-
-fn down(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
-    ed.handle(Event::MouseMove { x, y, mods });
-    ed.handle(Event::MouseDown {
-        button: MouseButton::Left,
-        x,
-        y,
-        mods,
-    });
-}
-
-fn up(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
-    ed.handle(Event::MouseUp {
-        button: MouseButton::Left,
-        x,
-        y,
-        mods,
-    });
-}
-
-/// Press at `path[0]`, move through the rest (8 steps between points),
-/// release at the last, holding `mods`.
-fn drag_via(ed: &mut Editor, path: &[(f32, f32)], mods: Mods) {
-    down(ed, path[0], mods);
-    for w in path.windows(2) {
-        for i in 1..=8 {
-            let t = i as f32 / 8.0;
-            let (x, y) = (
-                w[0].0 + (w[1].0 - w[0].0) * t,
-                w[0].1 + (w[1].1 - w[0].1) * t,
-            );
-            ed.handle(Event::MouseMove { x, y, mods });
-        }
-    }
-    up(ed, *path.last().expect("a path"), mods);
-}
 
 /// Drags along ring `h` from angle `t0` to `t1` through points on the ring
 /// (the mouse follows the arc as a user's would).

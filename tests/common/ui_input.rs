@@ -20,31 +20,52 @@ pub fn click(ed: &mut Editor, at: (f32, f32)) {
     click_with(ed, at, Mods::NONE);
 }
 
+/// Mouse to (x, y), left button down (a drag's start).
+pub fn down(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
+    ed.handle(Event::MouseMove { x, y, mods });
+    ed.handle(Event::MouseDown {
+        button: MouseButton::Left,
+        x,
+        y,
+        mods,
+    });
+}
+
+/// Left button up at (x, y).
+pub fn up(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
+    ed.handle(Event::MouseUp {
+        button: MouseButton::Left,
+        x,
+        y,
+        mods,
+    });
+}
+
+/// Mouse moved to (x, y) with the button state unchanged.
+pub fn move_to(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
+    ed.handle(Event::MouseMove { x, y, mods });
+}
+
+/// Press at `path[0]`, move through the rest (8 steps between points),
+/// release at the last, holding `mods`.
+pub fn drag_via(ed: &mut Editor, path: &[(f32, f32)], mods: Mods) {
+    down(ed, path[0], mods);
+    for w in path.windows(2) {
+        for i in 1..=8 {
+            let t = i as f32 / 8.0;
+            let p = (
+                w[0].0 + (w[1].0 - w[0].0) * t,
+                w[0].1 + (w[1].1 - w[0].1) * t,
+            );
+            move_to(ed, p, mods);
+        }
+    }
+    up(ed, *path.last().expect("a path"), mods);
+}
+
 /// Press at `a`, move in 8 steps, release at `b`, holding `mods`.
 pub fn drag(ed: &mut Editor, a: (f32, f32), b: (f32, f32), mods: Mods) {
-    let button = MouseButton::Left;
-    ed.handle(Event::MouseMove {
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    ed.handle(Event::MouseDown {
-        button,
-        x: a.0,
-        y: a.1,
-        mods,
-    });
-    for i in 1..=8 {
-        let t = i as f32 / 8.0;
-        let (x, y) = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
-        ed.handle(Event::MouseMove { x, y, mods });
-    }
-    ed.handle(Event::MouseUp {
-        button,
-        x: b.0,
-        y: b.1,
-        mods,
-    });
+    drag_via(ed, &[a, b], mods);
 }
 
 /// Centre of the widget whose debug text contains `needle`.
