@@ -12,7 +12,7 @@
 use super::record::key_frames;
 use super::{ops, Editor};
 use crate::anim::KEY_EPS;
-use crate::render::{self, Frame, RenderOptions, View};
+use crate::render::{self, Frame, View};
 use crate::scene::{NodeId, NodeKind, RenderStyle};
 use crate::ui::Rect;
 
@@ -160,14 +160,7 @@ impl Editor {
             proj: proj.proj,
             eye: self.camera.eye(),
         };
-        let opts = RenderOptions {
-            width: w,
-            height: h,
-            threads: 0,
-            style_override: self.view_style,
-            headlight: self.scene.settings.headlight.unwrap_or(true),
-            background: self.scene.settings.background,
-        };
+        let opts = self.layer_options(w, h);
         let mut mine = vec![false; self.scene.nodes.len()];
         for id in ops::subtree(&self.scene, sel) {
             mine[id.0 as usize] = true;

@@ -28,6 +28,20 @@ impl Editor {
         Projector::new(&v, vp.x as f32, vp.y as f32, vp.w as f32, vp.h as f32)
     }
 
+    /// How the viewport draws the scene (the onion copies too, so they
+    /// line up with it): the view style override, the headlight unless the
+    /// scene turns it off.
+    pub(super) fn layer_options(&self, w: u32, h: u32) -> RenderOptions {
+        RenderOptions {
+            width: w,
+            height: h,
+            threads: 0,
+            style_override: self.view_style,
+            headlight: self.scene.settings.headlight.unwrap_or(true),
+            background: self.scene.settings.background,
+        }
+    }
+
     /// Re-renders the viewport layer when its inputs changed.
     pub(super) fn update_layer(&mut self) {
         let vp = self.layout().viewport;
@@ -46,14 +60,7 @@ impl Editor {
         }
         let (_, radius) = self.scene_radius();
         let view = self.camera.view(w, h, radius);
-        let opts = RenderOptions {
-            width: w,
-            height: h,
-            threads: 0,
-            style_override: self.view_style,
-            headlight: self.scene.settings.headlight.unwrap_or(true),
-            background: self.scene.settings.background,
-        };
+        let opts = self.layer_options(w, h);
         let pose = self.pose().clone();
         let mut frame = render::render(&self.scene, &pose, &view, &opts);
         if frame.width != w || frame.height != h {
