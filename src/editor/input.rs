@@ -680,8 +680,7 @@ impl Editor {
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::AddLight(which) => {
-                let pose = self.pose().clone();
-                let (c, r) = ops::sphere(ops::scene_bounds(&self.scene, &pose));
+                let (c, r) = self.scene_radius();
                 let before = Box::new(self.scene.clone());
                 let mut after = self.scene.clone();
                 let id = ops::add_light(&mut after, which, c, r);

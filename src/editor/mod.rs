@@ -160,6 +160,9 @@ pub struct Editor {
     /// Folder the file browser starts in when no file is open.
     start_dir: PathBuf,
     pose: Option<(u64, f32, Pose)>,
+    /// Bounding sphere of the shown scene, cached like `pose` (handles ask
+    /// for it on every mouse move; it walks every vertex).
+    sphere: Option<(u64, f32, (glam::Vec3, f32))>,
     /// Recovery copies of unsaved work.
     autosave: recovery::Autosave,
     layer: SceneLayer,
@@ -202,6 +205,7 @@ impl Editor {
             revealed: None,
             start_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
             pose: None,
+            sphere: None,
             autosave: recovery::Autosave::default(),
             layer: SceneLayer {
                 key: None,

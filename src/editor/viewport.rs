@@ -15,10 +15,18 @@ const GIZMO_PX: f32 = 18.0;
 const LIGHT_PICK_PX: f32 = 10.0;
 
 impl Editor {
-    /// Scene radius used for depth range and grid size.
-    fn scene_radius(&mut self) -> (Vec3, f32) {
+    /// Bounding sphere of the shown scene (depth range, grid size, snap
+    /// step, where new lights go), cached per scene revision and frame.
+    pub(super) fn scene_radius(&mut self) -> (Vec3, f32) {
+        if let Some((rev, f, s)) = self.sphere {
+            if rev == self.scene_rev && f == self.frame {
+                return s;
+            }
+        }
         let pose = self.pose().clone();
-        ops::sphere(ops::scene_bounds(&self.scene, &pose))
+        let s = ops::sphere(ops::scene_bounds(&self.scene, &pose));
+        self.sphere = Some((self.scene_rev, self.frame, s));
+        s
     }
 
     pub(super) fn projector(&mut self) -> Projector {

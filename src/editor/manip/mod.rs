@@ -439,10 +439,7 @@ impl Editor {
         match d.handle {
             Handle::Axis(_) | Handle::Plane(_) => {
                 let now = translate::grab_point(&proj, d.handle, t.pivot, x, y)?;
-                let step = mods.ctrl.then(|| {
-                    let pose = self.pose().clone();
-                    grid_step(ops::sphere(ops::scene_bounds(&self.scene, &pose)).1)
-                });
+                let step = mods.ctrl.then(|| grid_step(self.scene_radius().1));
                 let pivot = translate::moved_pivot(d.handle, t.pivot, d.grab, now, step);
                 let delta = t.to_local.transform_vector3(pivot - t.pivot);
                 Some(translate::moved_by(&d.shown, t.property, delta))
@@ -453,8 +450,7 @@ impl Editor {
                 if mods.ctrl {
                     // Snapping leaves the view plane: the pivot lands on
                     // grid points in all three world axes, as in Blender.
-                    let pose = self.pose().clone();
-                    let step = grid_step(ops::sphere(ops::scene_bounds(&self.scene, &pose)).1);
+                    let step = grid_step(self.scene_radius().1);
                     pivot = Vec3::new(
                         snap(pivot.x, step),
                         snap(pivot.y, step),
