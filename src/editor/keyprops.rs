@@ -14,7 +14,7 @@ use super::command::Command;
 use super::fields::{euler_degrees, format_fit, from_euler_degrees, FieldId};
 use super::keyedit::retime;
 use super::keystrip::{row_name, KeyRef};
-use super::panel::{Action, Widget, WidgetKind};
+use super::panel::{self, button, label, w as widget, Action, Widget, WidgetKind};
 use super::Editor;
 use crate::anim::{Animation, Interp, Key, Property, Value, ValueKind};
 use crate::ui::layout::ROW;
@@ -452,44 +452,10 @@ impl Editor {
     }
 }
 
-fn widget(rect: Rect, kind: WidgetKind) -> Widget {
-    Widget { rect, kind }
-}
-
-fn label(rect: Rect, text: &str, dim: bool) -> Widget {
-    widget(
-        rect,
-        WidgetKind::Label {
-            text: text.into(),
-            dim,
-        },
-    )
-}
-
-fn button(rect: Rect, text: &str, action: Action, on: bool) -> Widget {
-    widget(
-        rect,
-        WidgetKind::Button {
-            label: text.into(),
-            action,
-            on,
-        },
-    )
-}
-
-/// A label then equal fields for `ids`.
+/// A label then equal fields for `ids` (the panel's row of key fields).
 fn field_row(out: &mut Vec<Widget>, r: Rect, name: &str, label_w: i32, ids: &[KeyField]) {
-    let (l, rest) = r.take_left(label_w);
-    out.push(label(l, name, true));
-    let n = ids.len() as i32;
-    let fw = (rest.w - (n - 1)) / n;
-    for (i, id) in ids.iter().enumerate() {
-        let x = rest.x + i as i32 * (fw + 1);
-        out.push(widget(
-            Rect::new(x, r.y + 1, fw, r.h - 2),
-            WidgetKind::Field(FieldId::Key(*id)),
-        ));
-    }
+    let ids: Vec<FieldId> = ids.iter().map(|k| FieldId::Key(*k)).collect();
+    panel::field_row(out, r, name, label_w, &ids);
 }
 
 impl Editor {

@@ -85,11 +85,11 @@ pub struct Widget {
     pub kind: WidgetKind,
 }
 
-fn w(rect: Rect, kind: WidgetKind) -> Widget {
+pub(super) fn w(rect: Rect, kind: WidgetKind) -> Widget {
     Widget { rect, kind }
 }
 
-fn button(rect: Rect, label: &str, action: Action, on: bool) -> Widget {
+pub(super) fn button(rect: Rect, label: &str, action: Action, on: bool) -> Widget {
     w(
         rect,
         WidgetKind::Button {
@@ -100,7 +100,7 @@ fn button(rect: Rect, label: &str, action: Action, on: bool) -> Widget {
     )
 }
 
-fn label(rect: Rect, text: &str, dim: bool) -> Widget {
+pub(super) fn label(rect: Rect, text: &str, dim: bool) -> Widget {
     w(
         rect,
         WidgetKind::Label {
@@ -111,7 +111,7 @@ fn label(rect: Rect, text: &str, dim: bool) -> Widget {
 }
 
 /// Lays out `n` equal fields after a label of `label_w` pixels.
-fn field_row(out: &mut Vec<Widget>, r: Rect, name: &str, label_w: i32, ids: &[FieldId]) {
+pub(super) fn field_row(out: &mut Vec<Widget>, r: Rect, name: &str, label_w: i32, ids: &[FieldId]) {
     let (l, rest) = r.take_left(label_w);
     out.push(label(l.inset(0), name, true));
     let n = ids.len() as i32;
