@@ -492,22 +492,22 @@ impl Editor {
 
     /// Mouse move during a strip drag (`None` when no strip drag runs).
     pub(super) fn key_strip_move(&mut self, x: f32, y: f32) -> Option<bool> {
-        let drag = self.keys.drag.take()?;
-        let redraw = match drag {
+        // Taken out so `self` can be borrowed; put back changed in place.
+        let mut drag = self.keys.drag.take()?;
+        let redraw = match &mut drag {
             StripDrag::Box {
-                from, add, before, ..
+                from,
+                to,
+                add,
+                before,
             } => {
-                let mut now = if add { before.clone() } else { Vec::new() };
-                add_unique(&mut now, self.keys_in_box(from, (x, y)));
+                let mut now = if *add { before.clone() } else { Vec::new() };
+                add_unique(&mut now, self.keys_in_box(*from, (x, y)));
                 self.keys.selected = now;
-                self.keys.drag = Some(StripDrag::Box {
-                    from,
-                    to: (x, y),
-                    add,
-                    before,
-                });
+                *to = (x, y);
                 true
             }
+            StripDrag::Keys { x0, moved, .. } if !*moved && (x - *x0).abs() < 3.0 => false,
             StripDrag::Keys {
                 x0,
                 base,
@@ -516,33 +516,17 @@ impl Editor {
                 moved,
                 narrow_to,
             } => {
-                if !moved && (x - x0).abs() < 3.0 {
-                    self.keys.drag = Some(StripDrag::Keys {
-                        x0,
-                        base,
-                        keys,
-                        scale,
-                        moved,
-                        narrow_to,
-                    });
-                    return Some(false);
-                }
-                if !moved {
+                if !*moved {
                     self.stop_playback();
                     self.pending = None;
                 }
-                self.retime_preview(x0, x, &base, &keys, scale);
-                self.keys.drag = Some(StripDrag::Keys {
-                    x0,
-                    base,
-                    keys,
-                    scale,
-                    moved: true,
-                    narrow_to: None,
-                });
+                self.retime_preview(*x0, x, base, keys, *scale);
+                *moved = true;
+                *narrow_to = None;
                 true
             }
         };
+        self.keys.drag = Some(drag);
         Some(redraw)
     }
 
