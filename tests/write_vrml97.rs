@@ -131,3 +131,45 @@ fn hidden_node_plays_as_scale_zero() {
         .unwrap();
     assert!(block.contains("0 0 0,"));
 }
+
+#[test]
+fn textures_are_written_as_image_and_pixel_textures_with_coordinates() {
+    let dir = std::env::temp_dir().join(format!("animed-wtex-{}", std::process::id()));
+    let tex_dir = dir.join("tex");
+    std::fs::create_dir_all(&tex_dir).unwrap();
+    let brick = tex_dir.join("brick.png");
+    let scene = writers_common::textured_scene(&brick);
+    // Saved into another folder: the url climbs to the file that was read.
+    let out = dir.join("out").join("scene.wrl");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    let report = animed::format::save(&scene, &out, &WriteOptions::default()).unwrap();
+    let text = std::fs::read_to_string(&out).unwrap();
+    for needle in [
+        "texture ImageTexture {\n",
+        "url \"../tex/brick.png\"",
+        "repeatT FALSE",
+        "textureTransform TextureTransform {",
+        "center 0.5 0.5",
+        "rotation 0.5",
+        "scale 2 2",
+        "texCoord TextureCoordinate {",
+        "2 0,",
+        "texture PixelTexture {",
+        "image 2 1 4",
+        "0xFF0000FF 0x0000FF80",
+    ] {
+        assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+    }
+    assert!(!text.contains("repeatS FALSE"), "{text}");
+    // The untextured cube has no texture and no coordinates of its own.
+    assert_eq!(text.matches("texCoord TextureCoordinate").count(), 2);
+    // DECAL cannot be said in VRML97: the writer says so.
+    assert!(
+        report.warnings.iter().any(|w| w.contains("Decal")),
+        "{:?}",
+        report.warnings
+    );
+    // Written without a folder (to_bytes), the url stays as authored.
+    assert!(vrml(&scene).contains("url \"brick.png\""));
+    std::fs::remove_dir_all(&dir).ok();
+}
