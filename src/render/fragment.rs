@@ -76,7 +76,9 @@ unsafe fn shade_visible_avx(
 
 #[inline(always)]
 fn lanes8<T>(s: &[T], i: usize) -> &[T; 8] {
-    s[i..i + 8].try_into().expect("tile rows are multiples of 8")
+    s[i..i + 8]
+        .try_into()
+        .expect("tile rows are multiples of 8")
 }
 
 #[inline(always)]
@@ -143,8 +145,8 @@ fn shade_visible_in<V: V8>(
             while todo != 0 {
                 let item_ix = p.opaque[win[todo.trailing_zeros() as usize] as usize].item;
                 let mut group = 0u32;
-                for k in 0..8 {
-                    if todo >> k & 1 == 1 && p.opaque[win[k] as usize].item == item_ix {
+                for (k, &t) in win.iter().enumerate() {
+                    if todo >> k & 1 == 1 && p.opaque[t as usize].item == item_ix {
                         group |= 1 << k;
                     }
                 }
@@ -359,5 +361,108 @@ impl Tri {
             ],
             q: [grad(INV_W, 0), grad(INV_W, 1)],
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::clip::ATTRS;
+    use crate::render::prepare::planes;
+
+    /// Screen positions, 1/w and texture coordinates of three vertices.
+    type Corners = ([(f32, f32); 3], [f32; 3], [[f32; 2]; 3]);
+
+    /// A triangle with texture coordinates and very different depths at
+    /// its corners, in a one-triangle `Prepared`.
+    fn textured() -> (Prepared, Corners) {
+        let xy = [(2.0, 3.0), (60.0, 10.0), (12.0, 50.0)];
+        let inv_w = [1.0, 0.25, 0.5];
+        let uv = [[0.0, 0.0], [4.0, 1.0], [1.0, 3.0]];
+        let mut attr = [[0.0; ATTRS]; 3];
+        for k in 0..3 {
+            attr[k][A_UV] = uv[k][0];
+            attr[k][A_UV + 1] = uv[k][1];
+        }
+        let (base, d1, d2) = planes(&attr, &inv_w);
+        let fx = |v: f32| (v * SUBPIXEL as f32) as i64;
+        let tri = Tri {
+            x: xy.map(|p| fx(p.0)),
+            y: xy.map(|p| fx(p.1)),
+            z: [0.5; 3],
+            base,
+            d1,
+            d2,
+            item: 0,
+            bbox: [0, 0, 64, 64],
+        };
+        let p = Prepared {
+            opaque: vec![tri],
+            ..Prepared::default()
+        };
+        (p, (xy, inv_w, uv))
+    }
+
+    /// Perspective-correct uv at a screen point, from the vertices.
+    fn exact_uv(
+        xy: &[(f32, f32); 3],
+        inv_w: &[f32; 3],
+        uv: &[[f32; 2]; 3],
+        x: f64,
+        y: f64,
+    ) -> [f64; 2] {
+        let p = xy.map(|(a, b)| (a as f64, b as f64));
+        let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[1].1 - p[0].1) * (p[2].0 - p[0].0);
+        let b1 = ((x - p[0].0) * (p[2].1 - p[0].1) - (y - p[0].1) * (p[2].0 - p[0].0)) / area;
+        let b2 = ((p[1].0 - p[0].0) * (y - p[0].1) - (p[1].1 - p[0].1) * (x - p[0].0)) / area;
+        let w = [1.0 - b1 - b2, b1, b2];
+        let q: f64 = (0..3).map(|k| w[k] * inv_w[k] as f64).sum();
+        let f = |c: usize| {
+            (0..3)
+                .map(|k| w[k] * inv_w[k] as f64 * uv[k][c] as f64)
+                .sum::<f64>()
+                / q
+        };
+        [f(0), f(1)]
+    }
+
+    #[test]
+    fn texture_coordinates_and_derivatives_are_perspective_correct() {
+        let (p, (xy, inv_w, uv)) = textured();
+        let t = &p.opaque[0];
+        let mut checked = 0;
+        crate::render::raster::for_each_pixel(t, [0, 0, 64, 64], |x, y, b1, b2| {
+            let q = t.base[INV_W] + b1 * t.d1[INV_W] + b2 * t.d2[INV_W];
+            let lanes = UvLanes::new(
+                &p,
+                &[0; 8],
+                0xFF,
+                Sse8::splat(b1),
+                Sse8::splat(b2),
+                Sse8::splat(1.0) / Sse8::splat(q),
+            );
+            let get = |v: Sse8| {
+                let mut a = [0.0; 8];
+                v.store(&mut a);
+                a[0] as f64
+            };
+            let (cx, cy) = (x as f64 + 0.5, y as f64 + 0.5);
+            let want = exact_uv(&xy, &inv_w, &uv, cx, cy);
+            assert!((get(lanes.u) - want[0]).abs() < 1e-4, "u at {x},{y}");
+            assert!((get(lanes.v) - want[1]).abs() < 1e-4, "v at {x},{y}");
+            // Central differences of the exact mapping.
+            let h = 1e-3;
+            let dx = exact_uv(&xy, &inv_w, &uv, cx + h, cy);
+            let dx0 = exact_uv(&xy, &inv_w, &uv, cx - h, cy);
+            let dy = exact_uv(&xy, &inv_w, &uv, cx, cy + h);
+            let dy0 = exact_uv(&xy, &inv_w, &uv, cx, cy - h);
+            let close = |a: f64, b: f64| (a - b).abs() < 1e-3 * (1.0 + b.abs());
+            assert!(close(get(lanes.du_dx), (dx[0] - dx0[0]) / (2.0 * h)));
+            assert!(close(get(lanes.dv_dx), (dx[1] - dx0[1]) / (2.0 * h)));
+            assert!(close(get(lanes.du_dy), (dy[0] - dy0[0]) / (2.0 * h)));
+            assert!(close(get(lanes.dv_dy), (dy[1] - dy0[1]) / (2.0 * h)));
+            checked += 1;
+        });
+        assert!(checked > 500);
     }
 }

@@ -3,7 +3,7 @@
 //! and snap to the fixed-point grid. Everything here is per primitive and
 //! order-preserving, so it can run in parallel without changing the result.
 
-use super::clip::{self, ClipVert, A_NORMAL, ATTRS};
+use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::shade::{ShadeMaterial, WorldLight};
 use super::{RenderOptions, View};
 use crate::anim::Pose;
@@ -288,8 +288,8 @@ fn transform_vertices(
             ClipVert {
                 clip: mvp * p.extend(1.0),
                 // Texture coordinates (slots A_UV..A_UV + 2) stay zero until
-            // meshes carry them.
-            attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z, 0.0, 0.0],
+                // meshes carry them.
+                attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z, 0.0, 0.0],
             }
         })
         .collect()

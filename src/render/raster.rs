@@ -231,15 +231,18 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, bufs: &mut DepthBufs) {
                     let w2 = V::load(&e2) * inv_area;
                     let z = z0 + w1 * dz1 + w2 * dz2;
                     let i0 = row + c;
-                    let depth: &mut [f32; 8] = (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
+                    let depth: &mut [f32; 8] =
+                        (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
                     let old = V::load(depth);
                     let nearer = old.gt(z).and(zero.le(z)).and(V::from_bits(mask));
                     let m = nearer.bits();
                     if m != 0 {
                         store_masked(depth, z, m);
-                        let b1: &mut [f32; 8] = (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                        let b1: &mut [f32; 8] =
+                            (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
                         store_masked(b1, w1, m);
-                        let b2: &mut [f32; 8] = (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                        let b2: &mut [f32; 8] =
+                            (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
                         store_masked(b2, w2, m);
                         for (l, w) in bufs.winner[i0..i0 + 8].iter_mut().enumerate() {
                             if m >> l & 1 == 1 {

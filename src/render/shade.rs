@@ -205,8 +205,8 @@ pub fn shade8<V: V8>(
                 let loc: [V; 3] = splat3(location);
                 let (to_light, dist) = normalize([loc[0] - p[0], loc[1] - p[1], loc[2] - p[2]]);
                 let a = l.attenuation;
-                let denom = (V::splat(a.x) + V::splat(a.y) * dist + V::splat(a.z) * (dist * dist))
-                    .max(one);
+                let denom =
+                    (V::splat(a.x) + V::splat(a.y) * dist + V::splat(a.z) * (dist * dist)).max(one);
                 let reach = dist.le(V::splat(radius)).and(dist.gt(zero));
                 let mut factor = V::select(reach, one / denom, zero);
                 if let WorldLightKind::Spot { axis, .. } = l.kind {
@@ -291,6 +291,8 @@ fn spot<V: V8>(kind: &WorldLightKind, factor: V, cos: V) -> V {
 /// 0. Only + − × √, so every machine gives the same bits.
 #[inline(always)]
 fn acos<V: V8>(x: V) -> V {
+    // a0 is A&S's coefficient (one f32 ulp below π/2), not π/2 itself.
+    #[allow(clippy::approx_constant)]
     const A: [f32; 8] = [
         1.570_796_3,
         -0.214_598_8,

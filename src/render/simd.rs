@@ -202,7 +202,6 @@ impl Mul for F4 {
     }
 }
 
-
 /// Eight f32 lanes. A mask is a value whose lanes are all-ones or all-zero
 /// bits (what the comparisons return), as in SSE/AVX.
 pub trait V8:
@@ -443,7 +442,10 @@ mod tests {
         assert_eq!(sse[0][0], 1.5f32 + 0.3);
         assert_eq!(sse[3][1], -2.25f32 / 4.0);
         assert_eq!(sse[4][1], 2.0);
-        assert_eq!(sse[7], [1.5, 16.0, 3.0e-3, 49.0, 0.7f32 * 0.7, 9.0, 4.0, 81.0]);
+        assert_eq!(
+            sse[7],
+            [1.5, 16.0, 3.0e-3, 49.0, 0.7f32 * 0.7, 9.0, 4.0, 81.0]
+        );
         #[cfg(target_arch = "x86_64")]
         if avx() {
             // SAFETY: avx() checked the CPU.
@@ -459,7 +461,6 @@ mod tests {
     unsafe fn avx_ops() -> Vec<[f32; 8]> {
         eight_lane_ops::<Avx8>()
     }
-
 
     #[test]
     fn lanes_match_scalar_arithmetic() {
