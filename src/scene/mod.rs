@@ -5,6 +5,7 @@
 //! place in the tree is `parent` + `children`. Meshes and materials are shared
 //! by id (images too, [`ImageId`]) so that DEF/USE in the files maps onto sharing here.
 
+mod clips;
 mod image;
 mod light;
 mod material;
@@ -15,6 +16,7 @@ pub mod primitives;
 mod texture;
 mod transform;
 
+pub use clips::{Clip, ClipRef, Clips};
 pub use image::{
     check_size as check_image_size, Image, ImageError, ImageId, ImageSource, MipLevel,
     MAX_IMAGE_PIXELS, MAX_IMAGE_SIDE, MAX_SCENE_IMAGE_PIXELS,
@@ -88,7 +90,10 @@ pub struct Scene {
     /// Decoded images shared by the materials' textures (one copy each).
     pub images: Vec<Image>,
     pub settings: Settings,
+    /// The playing clip's tracks (see [`Clips`] for the others).
     pub animation: Animation,
+    /// Clip names and order, and the clips that are not playing.
+    pub clips: Clips,
     pub format: SourceFormat,
     /// Free text from WorldInfo/Info nodes that is not animed's own key note.
     pub info: Vec<String>,
