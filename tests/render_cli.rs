@@ -82,3 +82,54 @@ fn unknown_viewpoint_and_missing_file_are_errors() {
     let (code, _) = animed(&["render", "--size", "0x10"]);
     assert_ne!(code, 0);
 }
+
+/// The view-all camera against Coin 4.0's `SoCamera::viewAll` (Debian's
+/// libcoin80 through pivy, 640x480 viewport, probed 2026-11-30 with these
+/// four scenes): rotated, non-uniformly scaled, moved and two-part scenes.
+/// Coin bounds each shape by its local box carried through the transform,
+/// as `scene_bounds` does, so the cameras agree.
+#[test]
+fn view_all_matches_coin_for_rotated_and_scaled_scenes() {
+    let cases = [
+        (
+            "Separator { Transform { rotation 0 0 1 0.785398 scaleFactor 2 1 1 } Sphere { radius 1 } }",
+            [0.0, 0.0, 7.63441],
+            (4.47214, 10.79669),
+        ),
+        (
+            "Separator { Transform { rotation 1 1 0 0.6 } Cube { width 2 height 1 depth 3 } }",
+            [0.0, 0.0, 6.43213],
+            (3.76786, 9.09641),
+        ),
+        (
+            "Separator { Transform { translation 3 -1 2 scaleFactor 1 3 0.5 } Cone { } }",
+            [3.0, -1.0, 9.72925],
+            (4.52769, 10.93082),
+        ),
+        (
+            "Separator { Cube {} Transform { translation 5 0 0 rotation 0 1 0 1.2 } Cylinder { radius 0.5 height 4 } }",
+            [2.32360, 0.0, 9.67082],
+            (5.66504, 13.67661),
+        ),
+    ];
+    for (body, pos, (near, far)) in cases {
+        let text = format!("#Inventor V2.1 ascii\n{body}\n");
+        let loaded =
+            animed::format::load_bytes(text.as_bytes(), std::path::Path::new("probe.iv")).unwrap();
+        let pose = animed::anim::evaluate(&loaded.scene, 0.0);
+        let (_, cam) = animed::render::View::view_all_camera(&loaded.scene, &pose, 640.0 / 480.0);
+        let close = |a: f32, b: f32| (a - b).abs() <= 2e-3 * b.abs().max(1.0);
+        assert!(
+            close(cam.position.x, pos[0])
+                && close(cam.position.y, pos[1])
+                && close(cam.position.z, pos[2]),
+            "{body}: camera at {} vs Coin's {pos:?}",
+            cam.position
+        );
+        let (n, f) = (cam.near.unwrap(), cam.far.unwrap());
+        assert!(
+            close(n, near) && close(f, far),
+            "{body}: near/far {n} {f} vs Coin's {near} {far}"
+        );
+    }
+}
