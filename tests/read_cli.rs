@@ -136,3 +136,41 @@ fn animation_flag_on_a_one_clip_file() {
         assert!(err.contains("there is no animation"), "{cmd:?}: {err}");
     }
 }
+
+/// OpenVRML's invalid VRML97 files: each is flagged with a warning at the
+/// line and column of the offending statement, and `info --strict` turns
+/// that into exit status 3. (Expected rule and position per file.)
+#[test]
+fn openvrml_bad_files_are_flagged_with_locations() {
+    let cases = [
+        ("exposedfield-in-script.wrl", "3:3", "exposedField"),
+        ("is-outside-proto.wrl", "3:3", "outside a PROTO body"),
+        ("is-value-type-mismatch.wrl", "3:11", "val is SFBool"),
+        ("proto-eventin-conflict.wrl", "2:7", "'set_foo' clashes"),
+        (
+            "proto-eventout-conflict.wrl",
+            "2:7",
+            "'foo_changed' clashes",
+        ),
+        ("unrecognized-field.wrl", "3:8", "no field 'wrong'"),
+        (
+            "value-for-eventin-in-proto.wrl",
+            "3:11",
+            "'set_children' is an event",
+        ),
+    ];
+    for (file, at, what) in cases {
+        let path = format!("tests/data/vrml97_bad/{file}");
+        let (code, out, err) = animed(&["info", "--strict", &path]);
+        assert_eq!(code, 3, "{file}: {out}{err}");
+        let want = format!("{path}:{at}: ");
+        assert!(
+            out.lines().any(|l| l.contains(&want) && l.contains(what)),
+            "{file}: no warning '{want}…{what}' in\n{out}"
+        );
+        assert!(err.contains("--strict"), "{err}");
+    }
+    // A valid file passes --strict.
+    let (code, out, err) = animed(&["info", "--strict", "assets/demo.wrl"]);
+    assert_eq!(code, 0, "{out}{err}");
+}

@@ -14,6 +14,11 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Validate: exit with status 3 when the reader had any warning (an
+    /// unknown node, a spec violation such as IS outside a PROTO…), after
+    /// printing the report. For people who check files before publishing.
+    #[arg(long)]
+    pub strict: bool,
     #[command(flatten)]
     pub clip: super::clip_arg::ClipArg,
 }
@@ -343,6 +348,14 @@ pub fn run(args: Args) -> i32 {
         println!("{}", serde_json::to_string_pretty(&d).unwrap_or_default());
     } else {
         print_text(&args.file, &d);
+    }
+    if args.strict && !loaded.warnings.is_empty() {
+        eprintln!(
+            "animed info --strict: {} warning(s) in {}",
+            loaded.warnings.len(),
+            args.file.display()
+        );
+        return 3;
     }
     0
 }

@@ -5,6 +5,7 @@
 //! readers convert them when they know what a node's field means, so one
 //! parser serves all three dialects and unknown nodes cost nothing.
 
+mod checks;
 mod parser;
 mod proto;
 

@@ -5,6 +5,7 @@
 //! number of nodes (PROTO expansion included) have limits. A syntax error
 //! stops parsing but keeps every node read so far (see [`Parsed::error`]).
 
+use super::checks;
 use super::proto::{instantiate, ProtoDef};
 use super::{AstNode, Field, NodeRef, Parsed, Route, Value};
 use crate::format::lexer::{LexError, Lexer, Pos, Tok};
@@ -41,6 +42,8 @@ fn lex_err(e: LexError) -> (Pos, String) {
 struct Scope {
     defs: HashMap<String, NodeRef>,
     protos: HashMap<String, Rc<ProtoDef>>,
+    /// EXTERNPROTO name → its interface's field names.
+    externs: HashMap<String, Vec<String>>,
     routes: Vec<Route>,
 }
 
@@ -49,6 +52,7 @@ impl Scope {
         Scope {
             defs: HashMap::new(),
             protos: HashMap::new(),
+            externs: HashMap::new(),
             routes: Vec::new(),
         }
     }
@@ -60,6 +64,9 @@ pub(super) struct Parser<'a> {
     depth: usize,
     pub(super) nodes: usize,
     scopes: Vec<Scope>,
+    /// Interfaces (keyword, type, name) of the PROTOs whose bodies are being
+    /// read, innermost last: what an IS may name.
+    ifaces: Vec<Vec<(String, String, String)>>,
     warnings: Vec<(Pos, String)>,
 }
 
@@ -71,6 +78,7 @@ pub fn parse(src: &[u8], opts: Options) -> Parsed {
         depth: 0,
         nodes: 0,
         scopes: vec![Scope::new()],
+        ifaces: Vec::new(),
         warnings: Vec::new(),
     };
     let mut roots = Vec::new();
@@ -225,6 +233,23 @@ impl Parser<'_> {
             pos,
             proto: None,
         };
+        if self.opts.vrml97 {
+            let interface: Option<Vec<String>> = match &proto {
+                Some(def) => Some(def.fields.iter().map(|(n, _)| n.clone()).collect()),
+                None => self
+                    .scopes
+                    .iter()
+                    .rev()
+                    .find_map(|s| s.externs.get(&node.kind).cloned()),
+            };
+            for f in interface
+                .iter()
+                .flat_map(|i| node.fields.iter().filter(move |f| !i.contains(&f.name)))
+            {
+                let msg = format!("{} has no field '{}' in its interface", node.kind, f.name);
+                self.warn(f.pos, msg);
+            }
+        }
         if let Some(def) = proto {
             let (inst, routes) = instantiate(&def, &node, self)?;
             node.proto = Some(inst);
@@ -308,6 +333,7 @@ impl Parser<'_> {
                     if self.peek_is_ident("IS") {
                         self.next()?;
                         let (other, _) = self.ident("an interface name after IS")?;
+                        self.check_field(kind, &n, &Value::Is(other.clone()), npos);
                         fields.push(Field {
                             name: n,
                             value: Value::Is(other),
@@ -317,9 +343,16 @@ impl Parser<'_> {
                     continue;
                 }
                 "field" | "exposedField" | "initializeOnly" | "inputOutput" => {
+                    if self.opts.vrml97 && kind == "Script" && name == "exposedField" {
+                        self.warn(
+                            fpos,
+                            "a VRML97 Script cannot declare an exposedField (§6.40: field, eventIn and eventOut only)",
+                        );
+                    }
                     self.ident("a field type")?;
                     let (n, npos) = self.ident("a field name")?;
                     let value = self.value()?;
+                    self.check_field(kind, &n, &value, npos);
                     fields.push(Field {
                         name: n,
                         value,
@@ -330,12 +363,48 @@ impl Parser<'_> {
                 _ => {}
             }
             let value = self.value()?;
+            self.check_field(kind, &name, &value, fpos);
             fields.push(Field {
                 name,
                 value,
                 pos: fpos,
             });
         }
+    }
+
+    /// VRML97 rules for one field of a node body (see `checks`): IS only
+    /// inside a PROTO body, naming a field of its interface of a matching
+    /// type; events take no value.
+    fn check_field(&mut self, kind: &str, field: &str, value: &Value, pos: Pos) {
+        if !self.opts.vrml97 {
+            return;
+        }
+        let msg = match value {
+            Value::Is(iface) => match self.ifaces.last() {
+                None => Some(format!(
+                    "'{field} IS {iface}' outside a PROTO body (§4.8.3: IS belongs in PROTO bodies)"
+                )),
+                Some(decls) => match decls.iter().find(|d| d.2 == *iface) {
+                    None => Some(format!(
+                        "'{field} IS {iface}': the PROTO interface declares no '{iface}'"
+                    )),
+                    Some((_, ty, _)) => checks::is_type_mismatch(field, iface, ty),
+                },
+            },
+            _ if checks::is_event_name(field) && !self.is_proto_name(kind) => Some(format!(
+                "'{field}' is an event and takes no value in a node body (§4.10.2)"
+            )),
+            _ => None,
+        };
+        if let Some(m) = msg {
+            self.warn(pos, m);
+        }
+    }
+
+    fn is_proto_name(&self, kind: &str) -> bool {
+        self.scopes
+            .iter()
+            .any(|s| s.protos.contains_key(kind) || s.externs.contains_key(kind))
     }
 
     /// One untyped field value, plus Inventor's trailing `~` (ignore flag)
@@ -596,6 +665,7 @@ impl Parser<'_> {
         let (name, pos) = self.ident("a PROTO name")?;
         self.expect(Tok::LBracket, "'[' after the PROTO name")?;
         let mut fields = Vec::new();
+        let mut decls: Vec<(String, String, String)> = Vec::new();
         loop {
             let (t, p) = self.next()?;
             let kw = match t {
@@ -611,8 +681,9 @@ impl Parser<'_> {
                     ))
                 }
             };
-            self.ident("a field type")?;
+            let (ftype, _) = self.ident("a field type")?;
             let (fname, _) = self.ident("a field name")?;
+            decls.push((kw.clone(), ftype, fname.clone()));
             match kw.as_str() {
                 "field" | "exposedField" | "initializeOnly" | "inputOutput" => {
                     let v = self.value()?;
@@ -627,6 +698,13 @@ impl Parser<'_> {
                 }
             }
         }
+        let pairs: Vec<(String, String)> = decls
+            .iter()
+            .map(|(k, _, n)| (k.clone(), n.clone()))
+            .collect();
+        for m in checks::interface_conflicts(&pairs) {
+            self.warn(pos, format!("PROTO {name}: {m}"));
+        }
         self.expect(Tok::LBrace, "'{' to open the PROTO body")?;
         self.depth += 1;
         if self.depth > self.opts.max_depth {
@@ -634,8 +712,10 @@ impl Parser<'_> {
         }
         // The body is its own DEF scope; PROTOs declared outside stay visible.
         self.scopes.push(Scope::new());
+        self.ifaces.push(decls);
         let mut body = Vec::new();
         let r = self.statements(&mut body, false);
+        self.ifaces.pop();
         let scope = self.scopes.pop().unwrap_or_else(Scope::new);
         self.depth -= 1;
         r?;
@@ -662,10 +742,12 @@ impl Parser<'_> {
     fn externproto_after_keyword(&mut self, pos: Pos) -> PResult<()> {
         let (name, _) = self.ident("an EXTERNPROTO name")?;
         self.expect(Tok::LBracket, "'[' after the EXTERNPROTO name")?;
+        // Declarations are `keyword type name` triples.
+        let mut words: Vec<String> = Vec::new();
         loop {
             match self.next()? {
                 (Tok::RBracket, _) => break,
-                (Tok::Ident(_), _) => {}
+                (Tok::Ident(w), _) => words.push(w),
                 (t, p) => {
                     return Err((
                         p,
@@ -675,6 +757,15 @@ impl Parser<'_> {
             }
         }
         self.value()?; // the URL(s)
+        let pairs: Vec<(String, String)> = words
+            .chunks_exact(3)
+            .map(|d| (d[0].clone(), d[2].clone()))
+            .collect();
+        for m in checks::interface_conflicts(&pairs) {
+            self.warn(pos, format!("EXTERNPROTO {name}: {m}"));
+        }
+        let names = pairs.into_iter().map(|(_, n)| n).collect();
+        self.scope().externs.insert(name.clone(), names);
         self.warn(
             pos,
             format!("EXTERNPROTO {name} is not supported; its instances are skipped"),
