@@ -26,6 +26,16 @@ pub struct Bin {
     pub points: Vec<u32>,
 }
 
+impl Bin {
+    /// Empties the lists, keeping their memory.
+    pub fn clear(&mut self) {
+        self.opaque.clear();
+        self.transparent.clear();
+        self.lines.clear();
+        self.points.clear();
+    }
+}
+
 const TILE_PIXELS: usize = (TILE * TILE) as usize;
 
 /// Per-thread working buffers for one tile, `TILE` pixels per row whatever
