@@ -46,6 +46,21 @@ pub struct RenderOptions {
     /// A directional light at the camera looking along the view direction.
     pub headlight: bool,
     pub background: Vec3,
+    /// Multisample anti-aliasing: 1 (off), 4 or 8 samples per pixel (other
+    /// values round down to one of these). Depth and coverage per sample,
+    /// shading once per pixel per triangle, box-filter resolve.
+    pub aa: u32,
+}
+
+impl RenderOptions {
+    /// Samples per pixel: 1, 4 or 8.
+    pub fn samples(&self) -> usize {
+        match self.aa {
+            0..=3 => 1,
+            4..=7 => 4,
+            _ => 8,
+        }
+    }
 }
 
 impl Default for RenderOptions {
@@ -57,6 +72,7 @@ impl Default for RenderOptions {
             style_override: None,
             headlight: true,
             background: Vec3::ZERO,
+            aa: 1,
         }
     }
 }
@@ -168,12 +184,9 @@ fn draw(
     bin_all(bins, tiles_x, p.opaque.iter().map(|t| t.bbox), |b| {
         &mut b.opaque
     });
-    bin_all(
-        bins,
-        tiles_x,
-        p.transparent.iter().map(|t| t.bbox),
-        |b| &mut b.transparent,
-    );
+    bin_all(bins, tiles_x, p.transparent.iter().map(|t| t.bbox), |b| {
+        &mut b.transparent
+    });
     bin_all(bins, tiles_x, p.lines.iter().map(|l| l.bbox), |b| {
         &mut b.lines
     });
@@ -193,7 +206,16 @@ fn draw(
         .enumerate()
         .for_each(|(ty, ((color, depth), ids))| {
             let ty = ty as i32;
-            let mut scratch = raster::Scratch::default();
+            // Tile buffers are kept per worker thread between bands and
+            // frames (all their contents are reset or overwritten per tile).
+            thread_local! {
+                static SCRATCH: std::cell::RefCell<Option<raster::Scratch>> =
+                    const { std::cell::RefCell::new(None) };
+            }
+            let mut scratch = SCRATCH
+                .with(|s| s.borrow_mut().take())
+                .filter(|s| s.samples() == opts.samples())
+                .unwrap_or_else(|| raster::Scratch::new(opts.samples()));
             let mut target = raster::Target {
                 color,
                 depth,
@@ -211,6 +233,7 @@ fn draw(
                 let bin = &bins[(ty * tiles_x + tx) as usize];
                 raster::draw_tile(p, bin, rect, background, eye, &mut scratch, &mut target);
             }
+            SCRATCH.with(|s| *s.borrow_mut() = Some(scratch));
         });
 }
 

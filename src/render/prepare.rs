@@ -90,6 +90,8 @@ pub struct Line {
 /// A screen-space point (drawn as a small square).
 #[derive(Clone, Debug)]
 pub struct Point {
+    /// Screen position of the centre (pixels).
+    pub c: [f32; 2],
     pub z: f32,
     pub attr: [f32; ATTRS],
     pub item: u32,
@@ -120,6 +122,8 @@ struct Screen {
     w: f32,
     h: f32,
     guard: f32,
+    /// Multisampling: lines and points reach a little further.
+    aa: bool,
 }
 
 impl Screen {
@@ -141,6 +145,7 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
         w: opts.width as f32,
         h: opts.height as f32,
         guard: MAX_SCREEN / opts.width.max(opts.height).max(1) as f32,
+        aa: opts.samples() > 1,
     };
     let view_proj = view.proj * view.view;
     let lights = gather_lights(scene, pose);
@@ -545,7 +550,19 @@ fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], item: u32,
         if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
             continue;
         }
+        let bbox = if s.aa {
+            // Anti-aliased: the square may touch one more pixel each way.
+            [
+                (x0 - 1).max(0),
+                (y0 - 1).max(0),
+                (x0 + POINT_SIZE + 1).min(s.w as i32),
+                (y0 + POINT_SIZE + 1).min(s.h as i32),
+            ]
+        } else {
+            bbox
+        };
         out.push(Point {
+            c: [x, y],
             z,
             attr: v.attr,
             item,
