@@ -224,6 +224,7 @@ impl Viewer {
     }
 }
 
+#[cfg(feature = "window")]
 impl crate::app::Screen for Viewer {
     fn size(&self) -> (u32, u32) {
         Viewer::size(self)
