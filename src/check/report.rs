@@ -114,8 +114,8 @@ impl Report {
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "{:<name_w$}  {:<7}  {:>17}  {:>5}  {:>7}  {}",
-            "SHOT", "RESULT", "DIFFERING/ALLOWED", "WORST", "SSIM", "SEE"
+            "{:<name_w$}  {:<7}  {:>17}  {:>5}  {:>7}  SEE",
+            "SHOT", "RESULT", "DIFFERING/ALLOWED", "WORST", "SSIM"
         );
         for r in &self.results {
             let (counts, worst, ssim) = match &r.comparison {
