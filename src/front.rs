@@ -72,8 +72,9 @@ pub struct RenderSpec {
     pub height: u32,
     /// Animation time in seconds.
     pub time: f32,
-    /// Animation clip to play, by name. Scenes read today have one
-    /// animation, so this must be `None`; named clips (glTF) are planned.
+    /// Animation clip to play: its name, or its 0-based index as
+    /// `animed info` lists them. `None` = the clip the scene plays (the
+    /// file's first).
     pub clip: Option<String>,
     /// Camera to look through: a viewpoint description or camera node name.
     /// `None` = the scene's first camera, or a view of the whole scene
@@ -149,7 +150,7 @@ impl RenderSpec {
         self
     }
 
-    /// Playing the named clip.
+    /// Playing the clip with this name (or 0-based index).
     pub fn clip(mut self, name: impl Into<String>) -> Self {
         self.clip = Some(name.into());
         self
@@ -194,11 +195,6 @@ impl RenderSpec {
                 self.aa
             ));
         }
-        if let Some(c) = &self.clip {
-            return bad(format!(
-                "clip {c:?}: this scene has one unnamed animation (named clips are not supported yet)"
-            ));
-        }
         if let Some(bg) = self.background {
             if bg.iter().any(|v| !v.is_finite()) {
                 return bad(format!("background {bg:?} is not finite"));
@@ -233,7 +229,73 @@ pub fn render(scene: &Scene, spec: &RenderSpec) -> Result<Image> {
         headlight: spec.headlight,
         threads: spec.threads,
     };
-    let frame = job::render_at(scene, &frame_spec, spec.time)
-        .map_err(|m| Error::new(ErrorKind::Invalid, m))?;
+    let invalid = |m: String| Error::new(ErrorKind::Invalid, m);
+    // Another clip than the playing one: draw a copy that plays it (the
+    // scene itself is never changed).
+    let switched;
+    let scene = match &spec.clip {
+        Some(name) if scene.find_clip(name).map_err(invalid)? != scene.clips.active() => {
+            let mut copy = scene.clone();
+            copy.play_clip(name).map_err(invalid)?;
+            switched = copy;
+            &switched
+        }
+        _ => scene,
+    };
+    let frame = job::render_at(scene, &frame_spec, spec.time).map_err(invalid)?;
     Ok(Image::from(&frame))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Clip;
+
+    /// The demo with two clips: "moving" (the demo's animation, playing)
+    /// and "still" (no tracks).
+    fn two_clips() -> Scene {
+        let mut scene = demo_scene();
+        let moving = Clip {
+            name: "moving".into(),
+            animation: scene.animation.clone(),
+            duration: scene.settings.duration,
+        };
+        let still = Clip {
+            name: "still".into(),
+            ..Clip::default()
+        };
+        scene.set_clips(vec![moving, still], 0);
+        scene
+    }
+
+    #[test]
+    fn a_spec_picks_the_clip_without_changing_the_scene() {
+        let scene = two_clips();
+        let spec = RenderSpec::new(64, 48).at(1.0);
+        let default = render(&scene, &spec).unwrap();
+        let moving = render(&scene, &spec.clone().clip("moving")).unwrap();
+        let by_index = render(&scene, &spec.clone().clip("1")).unwrap();
+        let still = render(&scene, &spec.clone().clip("still")).unwrap();
+        assert_eq!(default, moving);
+        assert_eq!(by_index, still);
+        assert_ne!(default, still, "the still clip must not animate");
+        assert_eq!(scene.clips.active_name(), Some("moving"));
+        let err = render(&scene, &spec.clip("run")).unwrap_err();
+        assert_eq!(err.kind(), ErrorKind::Invalid);
+    }
+
+    #[test]
+    fn bad_specs_are_errors_not_panics() {
+        let scene = demo_scene();
+        for spec in [
+            RenderSpec::new(0, 10),
+            RenderSpec::new(20_000, 10),
+            RenderSpec::new(10, 10).at(f32::NAN),
+            RenderSpec::new(10, 10).aa(4),
+            RenderSpec::new(10, 10).background([f32::INFINITY, 0.0, 0.0]),
+        ] {
+            let err = render(&scene, &spec).unwrap_err();
+            assert_eq!(err.kind(), ErrorKind::Invalid, "{spec:?}");
+        }
+    }
 }

@@ -555,3 +555,89 @@ pub fn parse_style(s: &str) -> Option<Style> {
         _ => None,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SUITE: &str = r#"
+goldens = "pics"
+size = "100x50"
+tolerance = { channel = 3, pixels = 7 }
+
+[[case]]
+name = "a"
+file = "a.wrl"
+frames = [0, 12]
+tolerance = { fraction = 0.5 }
+
+[[case]]
+name = "b"
+file = "sub/b.iv"
+golden = "b-golden.png"
+time = 1.5
+size = "20x10"
+style = "lines"
+headlight = false
+tolerance = { ssim = 0.95 }
+"#;
+
+    #[test]
+    fn suite_defaults_merge_into_cases_and_name_the_shots() {
+        let s = Suite::parse(SUITE, Path::new("dir/suite.toml")).unwrap();
+        assert_eq!(s.cases.len(), 2);
+        let (a, b) = (&s.cases[0], &s.cases[1]);
+        assert_eq!((a.spec.width, a.spec.height), (100, 50));
+        assert_eq!((b.spec.width, b.spec.height), (20, 10));
+        assert_eq!(b.spec.style, Some(Style::Lines));
+        assert_eq!(b.spec.headlight, Headlight::Off);
+        assert_eq!(a.file, Path::new("dir/a.wrl"));
+        // Tolerance keys override one by one.
+        assert_eq!(a.tolerance.channel, 3);
+        assert_eq!(a.tolerance.pixels, Allowance::Fraction(0.5));
+        assert_eq!(b.tolerance.pixels, Allowance::Count(7));
+        assert_eq!(b.tolerance.ssim, Some(0.95));
+        let shots = s.shots();
+        let names: Vec<&str> = shots.iter().map(|s| s.name.as_str()).collect();
+        assert_eq!(names, ["a@f0", "a@f12", "b"]);
+        assert_eq!(shots[1].golden, Path::new("dir/pics/a@f12.png"));
+        assert!(shots[1].frame);
+        assert_eq!(shots[2].golden, Path::new("dir/b-golden.png"));
+        assert_eq!(shots[2].at, 1.5);
+    }
+
+    #[test]
+    fn mistakes_point_at_their_line_and_column() {
+        let err = |text: &str| {
+            Suite::parse(text, Path::new("s.toml"))
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            err("[[case]]\nname = \"a\"\nfile = \"f\"\ntime = 1\ntimes = [2]\n"),
+            "s.toml:5:9: give only one of time, times, frame, frames (also has time)"
+        );
+        assert_eq!(
+            err("[[case]]\nname = \"a b\"\nfile = \"f\"\n"),
+            "s.toml:2:8: case name \"a b\": use letters, digits, '_', '-', '.' (it names files)"
+        );
+        assert_eq!(
+            err("[[case]]\nname = \"a\"\nfile = \"f\"\n[[case]]\nname = \"a\"\nfile = \"g\"\n"),
+            "s.toml:5:8: a second case named \"a\""
+        );
+        assert!(err("x = 1\n").starts_with("s.toml:1:1: unknown key \"x\" in the suite"));
+        assert!(err("size = \"1x1\"\n").contains("no cases"));
+        assert!(
+            err("[[case]]\nname = \"a\"\nfile = \"f\"\ntimes = [1, 1]\n")
+                .starts_with("s.toml:4:13: 1 is listed twice")
+        );
+    }
+
+    #[test]
+    fn time_labels_are_short() {
+        assert_eq!(time_label(0.0), "0");
+        assert_eq!(time_label(0.5), "0.5");
+        assert_eq!(time_label(12.25), "12.25");
+        assert_eq!(time_label(-1.0), "-1");
+    }
+}

@@ -2,6 +2,7 @@
 
 pub mod bench;
 pub mod check;
+pub mod clip_arg;
 pub mod convert;
 pub mod edit;
 pub mod info;
