@@ -55,6 +55,10 @@ pub struct Args {
     /// With --golden: worker threads (0 = all cores); never changes the picture.
     #[arg(long)]
     pub threads: Option<usize>,
+    /// With --golden: the animation clip to play, by name or 0-based index
+    /// (default: the file's first).
+    #[arg(long, value_name = "NAME|INDEX")]
+    pub animation: Option<String>,
     /// With --golden: time in seconds (default 0).
     #[arg(long, conflicts_with = "frame")]
     pub time: Option<f32>,
@@ -93,6 +97,7 @@ impl Args {
         flag(self.bg.is_some(), "--bg");
         flag(self.headlight.is_some(), "--headlight");
         flag(self.threads.is_some(), "--threads");
+        flag(self.animation.is_some(), "--animation");
         flag(self.time.is_some(), "--time");
         flag(self.frame.is_some(), "--frame");
         flag(self.channel.is_some(), "--channel");
@@ -119,6 +124,7 @@ fn single_case(args: &Args, golden: &Path) -> Result<Suite, String> {
     spec.background = args.bg.map(|c| c.to_array());
     spec.headlight = args.headlight.unwrap_or_default();
     spec.threads = args.threads.unwrap_or(0);
+    spec.clip = args.animation.clone();
     let mut tolerance = Tolerance::exact();
     if let Some(c) = args.channel {
         tolerance.channel = c;
@@ -196,8 +202,9 @@ pub fn run_cli(args: Args) -> i32 {
     }
     if code == 1 && !options.update {
         println!(
-            "look at the .diff.png files; if the new pictures are right, accept them with \
-             --update (or ANIMED_UPDATE=1)"
+            "look at the .diff.png (and .actual.png) files in {}; if the new pictures are \
+             right, accept them with --update (or ANIMED_UPDATE=1)",
+            options.out_dir.display()
         );
     }
     code

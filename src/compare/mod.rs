@@ -40,9 +40,10 @@ pub struct Tolerance {
     pub channel: u8,
     /// How many pixels may exceed `channel`.
     pub pixels: Allowance,
-    /// Perceptual mode: when set, the pictures match when their mean SSIM
-    /// (0..1, 1 = identical) is at least this, and `channel`/`pixels` are
-    /// only reported, not enforced.
+    /// Perceptual mode: when set, the pictures match when their SSIM
+    /// (0..1, 1 = identical; the lowest of the mean SSIMs of R, G and B) is
+    /// at least this, and `channel`/`pixels` are only reported, not
+    /// enforced.
     pub ssim: Option<f64>,
 }
 
@@ -107,7 +108,8 @@ pub struct Comparison {
     pub allowed: u64,
     /// The largest channel difference anywhere (0..255).
     pub worst: u8,
-    /// Mean SSIM (0..1); `None` when the sizes differ.
+    /// SSIM (0..1, the lowest of the R, G and B means); `None` when the
+    /// sizes differ.
     pub ssim: Option<f64>,
     /// The tolerance used.
     pub tolerance: Tolerance,
@@ -199,12 +201,7 @@ pub fn compare(actual: &Image, golden: &Image, tolerance: &Tolerance) -> Compari
     let ssim = if changed == 0 {
         Some(1.0)
     } else {
-        Some(ssim::mean(&ssim::ssim_map(
-            actual.as_rgb(),
-            golden.as_rgb(),
-            w,
-            h,
-        )))
+        Some(ssim::score(actual.as_rgb(), golden.as_rgb(), w, h))
     };
     let passed = match tolerance.ssim {
         Some(min) => ssim.is_some_and(|s| s >= min),
