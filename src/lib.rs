@@ -24,18 +24,24 @@
 //! any thread count, debug or release, and with or without
 //! `-C target-cpu=x86-64-v3` on x86-64 (see README, "Determinism").
 //!
-//! The other public modules are the application's internals (scene model,
-//! readers, renderer stages, editor); they work but may change between
-//! versions. See README.md ("Architecture") for how they fit together.
+//! Everything else (scene model, readers, renderer stages, editor) is in
+//! [`internals`]: it works, but may change between versions. See README.md
+//! ("Architecture") for how the modules fit together.
 //!
 //! Cargo features: `cli` (the `animed` binary, clap) and `window` (the
 //! minifb window of the editor and viewer) are on by default;
 //! `default-features = false` gives the library without either.
 
+// The front door: every public item documented (the lint keeps it so).
+#[deny(missing_docs)]
 pub mod check;
+#[deny(missing_docs)]
 mod compare;
+#[deny(missing_docs)]
 mod error;
+#[deny(missing_docs)]
 mod front;
+#[deny(missing_docs)]
 mod picture;
 
 pub use compare::{compare, Allowance, Comparison, Tolerance};
@@ -45,16 +51,49 @@ pub use picture::Image;
 pub use render::job::Headlight;
 pub use scene::Scene;
 
+// The application's modules. The binary, the tests and the benches use
+// them by these root paths, so they stay public, but hidden from the docs:
+// a user finds them under [`internals`], whose name says what they are.
+#[doc(hidden)]
 pub mod anim;
 #[cfg(feature = "window")]
+#[doc(hidden)]
 pub mod app;
 #[cfg(feature = "cli")]
+#[doc(hidden)]
 pub mod cli;
+#[doc(hidden)]
 pub mod editor;
+#[doc(hidden)]
 pub mod format;
+#[doc(hidden)]
 pub mod input;
+#[doc(hidden)]
 pub mod output;
+#[doc(hidden)]
 pub mod render;
+#[doc(hidden)]
 pub mod scene;
+#[doc(hidden)]
 pub mod ui;
+#[doc(hidden)]
 pub mod viewer;
+
+/// The application's internals: the scene model, the animation maths, the
+/// readers and writers, the renderer's stages, the editor, the viewer and
+/// the command line. They work and are tested, but they are shaped for the
+/// application and change between versions without notice; build on the
+/// crate root ([`load`], [`render()`], [`compare()`], [`check`], [`Error`])
+/// where you can. Reaching into them is fine for tools that track animed
+/// closely. (Their old paths at the crate root, `animed::scene` and so on,
+/// still work but are hidden and may go away.)
+pub mod internals {
+    #[cfg(feature = "window")]
+    #[doc(inline)]
+    pub use crate::app;
+    #[cfg(feature = "cli")]
+    #[doc(inline)]
+    pub use crate::cli;
+    #[doc(inline)]
+    pub use crate::{anim, editor, format, input, output, render, scene, ui, viewer};
+}
