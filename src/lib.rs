@@ -1,14 +1,99 @@
 //! animed: a keyframe animation editor and viewer for 3D scenes that needs
-//! no GPU. See README.md ("Architecture") for how the modules fit together.
+//! no GPU, and a library for deterministic screenshot tests.
+//!
+//! # The front door
+//!
+//! Everything a screenshot test needs is at the crate root:
+//! [`load`] a scene, [`render`] it as a [`RenderSpec`] says into an
+//! [`Image`], [`compare`] that with a golden within a [`Tolerance`] (the
+//! [`Comparison`] carries a diff picture), and [`check::verify`] to do the
+//! golden-file bookkeeping (write `NAME.actual.png` / `NAME.diff.png` on
+//! failure, accept with `update`). Every fallible function returns the one
+//! [`Error`] type.
+//!
+//! ```
+//! use animed::{compare, render, RenderSpec, Tolerance};
+//! let scene = animed::load("assets/demo.wrl")?;
+//! let picture = render(&scene, &RenderSpec::new(80, 60).at(0.5))?;
+//! let same = render(&scene, &RenderSpec::new(80, 60).at(0.5).threads(1))?;
+//! assert!(compare(&picture, &same, &Tolerance::exact()).passed);
+//! # Ok::<(), animed::Error>(())
+//! ```
+//!
+//! The rendering is deterministic: the same input gives the same pixels for
+//! any thread count, debug or release, and with or without
+//! `-C target-cpu=x86-64-v3` on x86-64 (see README, "Determinism").
+//!
+//! Everything else (scene model, readers, renderer stages, editor) is in
+//! [`internals`]: it works, but may change between versions. See README.md
+//! ("Architecture") for how the modules fit together.
+//!
+//! Cargo features: `cli` (the `animed` binary, clap) and `window` (the
+//! minifb window of the editor and viewer) are on by default;
+//! `default-features = false` gives the library without either.
 
+// The front door: every public item documented (the lint keeps it so).
+#[deny(missing_docs)]
+pub mod check;
+#[deny(missing_docs)]
+mod compare;
+#[deny(missing_docs)]
+mod error;
+#[deny(missing_docs)]
+mod front;
+#[deny(missing_docs)]
+mod picture;
+
+pub use compare::{compare, Allowance, Comparison, Tolerance};
+pub use error::{Error, ErrorKind, Location, Result};
+pub use front::{demo_scene, load, load_with_warnings, render, RenderSpec, Style};
+pub use picture::Image;
+pub use render::job::Headlight;
+pub use scene::Scene;
+
+// The application's modules. The binary, the tests and the benches use
+// them by these root paths, so they stay public, but hidden from the docs:
+// a user finds them under [`internals`], whose name says what they are.
+#[doc(hidden)]
 pub mod anim;
+#[cfg(feature = "window")]
+#[doc(hidden)]
 pub mod app;
+#[cfg(feature = "cli")]
+#[doc(hidden)]
 pub mod cli;
+#[doc(hidden)]
 pub mod editor;
+#[doc(hidden)]
 pub mod format;
+#[doc(hidden)]
 pub mod input;
+#[doc(hidden)]
 pub mod output;
+#[doc(hidden)]
 pub mod render;
+#[doc(hidden)]
 pub mod scene;
+#[doc(hidden)]
 pub mod ui;
+#[doc(hidden)]
 pub mod viewer;
+
+/// The application's internals: the scene model, the animation maths, the
+/// readers and writers, the renderer's stages, the editor, the viewer and
+/// the command line. They work and are tested, but they are shaped for the
+/// application and change between versions without notice; build on the
+/// crate root ([`load`], [`render()`], [`compare()`], [`check`], [`Error`])
+/// where you can. Reaching into them is fine for tools that track animed
+/// closely. (Their old paths at the crate root, `animed::scene` and so on,
+/// still work but are hidden and may go away.)
+pub mod internals {
+    #[cfg(feature = "window")]
+    #[doc(inline)]
+    pub use crate::app;
+    #[cfg(feature = "cli")]
+    #[doc(inline)]
+    pub use crate::cli;
+    #[doc(inline)]
+    pub use crate::{anim, editor, format, input, output, render, scene, ui, viewer};
+}
