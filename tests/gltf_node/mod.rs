@@ -49,7 +49,7 @@ pub fn floats(doc: &serde_json::Value, bin: &[u8], accessor: usize) -> Vec<f32> 
 pub fn cubic_at(times: &[f32], values: &[f32], t: f32) -> Vec3 {
     let v = |k: usize, part: usize| {
         let at = (3 * k + part) * 3;
-        Vec3::new(values[at] as f32, values[at + 1], values[at + 2])
+        Vec3::new(values[at], values[at + 1], values[at + 2])
     };
     let last = times.len() - 1;
     if t <= times[0] {
@@ -204,6 +204,7 @@ fn three_js_plays_written_files_like_animed() {
                     let Some(id) = s.find_node(name) else {
                         continue;
                     };
+                    compared += 1;
                     let ours = pose.transforms[id.0 as usize];
                     let get = |k: &str| -> Vec<f32> {
                         tr[k]
