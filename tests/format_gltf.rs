@@ -3,6 +3,7 @@
 //! of exported TCB curves, and checks against independent implementations
 //! (the Khronos validator and three.js under node; see `gltf_node.rs`).
 
+mod gltf_corpus;
 mod gltf_node;
 
 use animed::anim::{

@@ -99,6 +99,46 @@ fn script(name: &str) -> PathBuf {
         .join(name)
 }
 
+/// three.js's node transforms for `file`, clip `clip`, at `times`
+/// (`tests/gltf/three_sample.mjs`).
+pub fn three_sample(npm: &Path, file: &Path, clip: usize, times: &[f32]) -> serde_json::Value {
+    let list: Vec<String> = times.iter().map(|t| t.to_string()).collect();
+    let (ok, out, err) = node(
+        npm,
+        &[
+            script("three_sample.mjs").to_str().unwrap(),
+            file.to_str().unwrap(),
+            &clip.to_string(),
+            &list.join(","),
+        ],
+    );
+    assert!(ok, "three.js on {}: {err}", file.display());
+    serde_json::from_str(&out).unwrap()
+}
+
+/// animed's local transform equals three.js's within 1e-4 relative
+/// (rotations: 1e-4 rad).
+pub fn assert_same_trs(ours: &animed::scene::Transform, tr: &serde_json::Value, what: &str) {
+    let get = |k: &str| -> Vec<f32> {
+        tr[k]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap() as f32)
+            .collect()
+    };
+    let (t3, r3, s3) = (get("t"), get("r"), get("s"));
+    let near = |a: f32, b: f32| (a - b).abs() <= 1e-4 * a.abs().max(b.abs()).max(1.0);
+    let q = glam::Quat::from_xyzw(r3[0], r3[1], r3[2], r3[3]);
+    let same_rot =
+        ours.rotation.dot(q).abs() >= 1.0 - 1e-7 || ours.rotation.angle_between(q) < 1e-4;
+    assert!(
+        (0..3).all(|k| near(ours.translation[k], t3[k]) && near(ours.scale[k], s3[k])) && same_rot,
+        "{what} {}: animed {ours:?} three.js {tr}",
+        tr["name"]
+    );
+}
+
 fn node(npm: &Path, args: &[&str]) -> (bool, String, String) {
     let out = Command::new("node")
         .args(args)
@@ -186,46 +226,18 @@ fn three_js_plays_written_files_like_animed() {
             let times: Vec<f32> = (0..8)
                 .map(|_| (next() * seconds * 1000.0).round() / 1000.0)
                 .collect();
-            let list: Vec<String> = times.iter().map(|t| t.to_string()).collect();
-            let (ok, out, err) = node(
-                &npm,
-                &[
-                    script("three_sample.mjs").to_str().unwrap(),
-                    file.to_str().unwrap(),
-                    &clip_index.to_string(),
-                    &list.join(","),
-                ],
-            );
-            assert!(ok, "{err}");
-            let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+            let v = three_sample(&npm, file, clip_index, &times);
             for (i, &t) in times.iter().enumerate() {
                 let pose = animed::anim::evaluate(&s, t);
-                for (name, tr) in v[i]["nodes"].as_object().unwrap() {
-                    let Some(id) = s.find_node(name) else {
+                for tr in v[i]["nodes"].as_object().unwrap().values() {
+                    let Some(id) = s.find_node(tr["name"].as_str().unwrap()) else {
                         continue;
                     };
                     compared += 1;
-                    let ours = pose.transforms[id.0 as usize];
-                    let get = |k: &str| -> Vec<f32> {
-                        tr[k]
-                            .as_array()
-                            .unwrap()
-                            .iter()
-                            .map(|x| x.as_f64().unwrap() as f32)
-                            .collect()
-                    };
-                    let (t3, r3, s3) = (get("t"), get("r"), get("s"));
-                    let near =
-                        |a: f32, b: f32| (a - b).abs() <= 1e-4 * a.abs().max(b.abs()).max(1.0);
-                    let q = glam::Quat::from_xyzw(r3[0], r3[1], r3[2], r3[3]);
-                    let same_rot = ours.rotation.dot(q).abs() >= 1.0 - 1e-7
-                        || ours.rotation.angle_between(q) < 1e-4;
-                    assert!(
-                        (0..3)
-                            .all(|k| near(ours.translation[k], t3[k]) && near(ours.scale[k], s3[k]))
-                            && same_rot,
-                        "{} clip {clip_index} t={t} {name}: animed {ours:?} three.js {tr}",
-                        file.display()
+                    assert_same_trs(
+                        &pose.transforms[id.0 as usize],
+                        tr,
+                        &format!("{} clip {clip_index} t={t}", file.display()),
                     );
                 }
             }

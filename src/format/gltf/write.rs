@@ -101,7 +101,7 @@ fn phong_extras(m: &Material) -> Json {
     })
 }
 
-fn material_json(m: &Material, double_sided: bool, white: bool) -> Json {
+fn material_json(m: &Material, name: Option<&str>, double_sided: bool, white: bool) -> Json {
     let mut p = pbr_from_phong(m);
     if white {
         // Vertex colours carry the diffuse colour; glTF multiplies them by
@@ -116,8 +116,8 @@ fn material_json(m: &Material, double_sided: bool, white: bool) -> Json {
         },
         "extras": { "animed": phong_extras(m) },
     });
-    if !m.name.is_empty() {
-        o["name"] = json!(m.name);
+    if let Some(name) = name.filter(|n| !n.is_empty()) {
+        o["name"] = json!(name);
     }
     if p.emissive != Vec3::ZERO {
         o["emissiveFactor"] = nums(&p.emissive.to_array());
@@ -138,6 +138,9 @@ fn material_json(m: &Material, double_sided: bool, white: bool) -> Json {
 pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, WriteReport) {
     let mut report = WriteReport::default();
     let names = node_names(scene);
+    // Material names as the key note spells them (unique, made for
+    // animated or shared materials).
+    let material_names = WritePlan::new(scene).materials;
     let order = scene.walk();
     let n = scene.nodes.len();
     let reference = scene_diagonal(scene) / 2.0;
@@ -240,7 +243,10 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                     .get(sh.material.0 as usize)
                                     .cloned()
                                     .unwrap_or_default();
-                                materials.push(material_json(&src, !mesh.solid, colored));
+                                let name = material_names
+                                    .get(sh.material.0 as usize)
+                                    .and_then(|n| n.as_deref());
+                                materials.push(material_json(&src, name, !mesh.solid, colored));
                                 material_cache.insert(key, materials.len() - 1);
                                 materials.len() - 1
                             }
@@ -403,11 +409,6 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     plan.content = names
         .iter()
         .map(|s| (!s.is_empty()).then(|| s.clone()))
-        .collect();
-    plan.materials = scene
-        .materials
-        .iter()
-        .map(|m| (!m.name.is_empty()).then(|| m.name.clone()))
         .collect();
     let notes: Vec<Json> = clips
         .iter()
