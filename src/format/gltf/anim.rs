@@ -188,8 +188,36 @@ pub fn read_clips(
     Ok(clips)
 }
 
+/// Key frames for times in seconds: `t · fps`, kept strictly increasing
+/// (two times a few ulps apart, as a jump in a sampled curve is written,
+/// may land on one frame number after the multiplication).
+fn frames_of(times: impl IntoIterator<Item = f32>, fps: f32) -> Vec<f32> {
+    let mut out: Vec<f32> = Vec::new();
+    for t in times {
+        let mut f = t * fps;
+        if let Some(&last) = out.last() {
+            if f <= last {
+                f = next_up(last);
+            }
+        }
+        out.push(f);
+    }
+    out
+}
+
+/// The next f32 above `x` (finite `x`).
+fn next_up(x: f32) -> f32 {
+    if x == 0.0 {
+        f32::from_bits(1)
+    } else if x > 0.0 {
+        f32::from_bits(x.to_bits() + 1)
+    } else {
+        f32::from_bits(x.to_bits() - 1)
+    }
+}
+
 fn direct_keys(times: &[f32], values: &[f32], rotation: bool, fps: f32, interp: Interp) -> Keys {
-    let frames = times.iter().map(|t| t * fps);
+    let frames = frames_of(times.iter().copied(), fps).into_iter();
     if rotation {
         Keys::Rotation(
             frames
@@ -282,25 +310,25 @@ fn cubic_keys(times: &[f32], values: &[f32], rotation: bool, fps: f32) -> Keys {
     if let Some(k) = times.len().checked_sub(1) {
         out.push((times[k], get(k, 1)));
     }
+    let frames = frames_of(out.iter().map(|(t, _)| *t), fps);
+    let out = frames.into_iter().zip(out.into_iter().map(|(_, v)| v));
     if rotation {
         Keys::Rotation(
-            out.into_iter()
-                .map(|(t, v)| {
-                    let q = Quat::from_vec4(v);
-                    let l = q.length();
-                    let q = if l > 1e-12 && l.is_finite() {
-                        q / l
-                    } else {
-                        Quat::IDENTITY
-                    };
-                    Key::new(t * fps, q).with_interp(Interp::Linear)
-                })
-                .collect(),
+            out.map(|(f, v)| {
+                let q = Quat::from_vec4(v);
+                let l = q.length();
+                let q = if l > 1e-12 && l.is_finite() {
+                    q / l
+                } else {
+                    Quat::IDENTITY
+                };
+                Key::new(f, q).with_interp(Interp::Linear)
+            })
+            .collect(),
         )
     } else {
         Keys::Vec3(
-            out.into_iter()
-                .map(|(t, v)| Key::new(t * fps, v.truncate()).with_interp(Interp::Linear))
+            out.map(|(f, v)| Key::new(f, v.truncate()).with_interp(Interp::Linear))
                 .collect(),
         )
     }

@@ -180,6 +180,8 @@ fn asset_notes(doc: &gltf::Document) -> Option<Vec<(String, String)>> {
 fn apply_notes(scene: &mut Scene, notes: &[(String, String)]) -> std::result::Result<(), String> {
     use crate::format::export::keynote;
     let mut work = scene.clone();
+    // The note says whether the scene had a headlight setting.
+    work.settings.headlight = None;
     let mut clips = Vec::with_capacity(notes.len());
     for (name, text) in notes {
         let note = keynote::parse(text).map_err(|e| e.to_string())?;
@@ -233,8 +235,9 @@ struct Builder<'a, 'b> {
     warnings: Vec<String>,
     /// glTF material index (None = the default material) → ours.
     materials: HashMap<Option<usize>, MaterialId>,
-    /// (mesh, primitive) → ours (None: skipped primitive).
-    meshes: HashMap<(usize, usize), Option<MeshId>>,
+    /// What a primitive reads (accessors, mode, sidedness, colour base) →
+    /// ours (None: skipped primitive).
+    meshes: HashMap<String, Option<MeshId>>,
     node_ids: Vec<Option<NodeId>>,
     /// glTF placement nodes folded into their parent's light or camera.
     part_of: Vec<Option<NodeId>>,
@@ -306,17 +309,32 @@ impl<'a> Builder<'a, '_> {
     /// The mesh of one primitive (made once, shared by every node using it).
     fn primitive(&mut self, mesh: &gltf::Mesh, prim: &gltf::Primitive) -> Result<Option<Shape>> {
         let material = self.material(prim.material().index());
-        let key = (mesh.index(), prim.index());
+        let base = match prim.material().index() {
+            Some(_) => {
+                let c = prim.material().pbr_metallic_roughness().base_color_factor();
+                Vec3::new(c[0], c[1], c[2])
+            }
+            None => Vec3::ONE,
+        };
+        // Primitives reading the same accessors the same way share one mesh
+        // (what animed's writer makes of one mesh under several materials).
+        let mut attrs: Vec<(String, usize)> = prim
+            .attributes()
+            .map(|(sem, acc)| (sem.to_string(), acc.index()))
+            .collect();
+        attrs.sort();
+        let colored = prim.get(&gltf::Semantic::Colors(0)).is_some();
+        let key = format!(
+            "{attrs:?} {:?} {:?} {} {:?} {}",
+            prim.indices().map(|a| a.index()),
+            prim.mode(),
+            prim.material().double_sided(),
+            colored.then(|| base.to_array().map(f32::to_bits)),
+            prim.morph_targets().next().is_some(),
+        );
         let id = match self.meshes.get(&key) {
             Some(&id) => id,
             None => {
-                let base = match prim.material().index() {
-                    Some(_) => {
-                        let c = prim.material().pbr_metallic_roughness().base_color_factor();
-                        Vec3::new(c[0], c[1], c[2])
-                    }
-                    None => Vec3::ONE,
-                };
                 if prim.morph_targets().next().is_some() && !self.warned_morph {
                     self.warned_morph = true;
                     self.warnings.push(format!(

@@ -31,8 +31,9 @@ use glam::{Quat, Vec3};
 use serde_json::{json, Map, Value as Json};
 use std::collections::{BTreeMap, HashSet};
 
-/// Unique names: the scene's own where it has one; a generated one only
-/// for unnamed nodes the key note must address.
+/// Unique names: the scene's own where it has one (white space made `_`,
+/// as the key note needs single words); a generated one only for unnamed
+/// nodes the key note must address.
 fn node_names(scene: &Scene) -> Vec<String> {
     let mut needs = vec![false; scene.nodes.len()];
     for clip in scene.clip_refs() {
@@ -51,7 +52,11 @@ fn node_names(scene: &Scene) -> Vec<String> {
         let node = scene.node(id);
         let hidden = !node.visible || node.style != crate::scene::RenderStyle::Filled;
         let base = if !node.name.is_empty() {
-            node.name.clone()
+            // The key note separates words with spaces.
+            node.name
+                .chars()
+                .map(|c| if c.is_whitespace() { '_' } else { c })
+                .collect()
         } else if needs[i] || hidden {
             format!("node_{i}")
         } else {
@@ -211,8 +216,10 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     let mut cameras: Vec<Json> = Vec::new();
     let mut mesh_cache: BTreeMap<(u32, u32), usize> = BTreeMap::new();
     let mut material_cache: BTreeMap<(u32, bool, bool), usize> = BTreeMap::new();
-    // Attributes of a scene mesh, shared by every glTF mesh made from it.
+    // Attributes and index accessors of a scene mesh, shared by every glTF
+    // mesh made from it.
     let mut attr_cache: BTreeMap<u32, Json> = BTreeMap::new();
+    let mut index_cache: BTreeMap<u32, Vec<(usize, u32)>> = BTreeMap::new();
 
     for id in &order {
         let i = id.0 as usize;
@@ -277,21 +284,26 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                 a
                             })
                             .clone();
-                        let mut prims = Vec::new();
-                        let tri: Vec<u32> = mesh.triangles.iter().flatten().copied().collect();
-                        let lines: Vec<u32> = mesh.lines.iter().flatten().copied().collect();
-                        for (data, mode) in [(tri, 4), (lines, 1), (mesh.points.clone(), 0)] {
-                            if data.is_empty() {
-                                continue;
-                            }
-                            let idx = bin.indices(&data);
-                            prims.push(json!({
-                                "attributes": attrs.clone(),
-                                "indices": idx,
-                                "material": mat,
-                                "mode": mode,
-                            }));
-                        }
+                        let indexed = index_cache.entry(sh.mesh.0).or_insert_with(|| {
+                            let tri: Vec<u32> = mesh.triangles.iter().flatten().copied().collect();
+                            let lines: Vec<u32> = mesh.lines.iter().flatten().copied().collect();
+                            [(tri, 4), (lines, 1), (mesh.points.clone(), 0)]
+                                .into_iter()
+                                .filter(|(data, _)| !data.is_empty())
+                                .map(|(data, mode)| (bin.indices(&data), mode))
+                                .collect()
+                        });
+                        let prims: Vec<Json> = indexed
+                            .iter()
+                            .map(|&(idx, mode)| {
+                                json!({
+                                    "attributes": attrs.clone(),
+                                    "indices": idx,
+                                    "material": mat,
+                                    "mode": mode,
+                                })
+                            })
+                            .collect();
                         if prims.is_empty() {
                             continue;
                         }
