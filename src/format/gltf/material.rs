@@ -199,6 +199,7 @@ pub fn phong_from_extras(m: &gltf::Material, read: &Pbr) -> Option<Material> {
         emissive: v3("emissive")?,
         shininess: f("shininess")?,
         transparency: f("transparency")?,
+        texture: None,
     };
     let mut want = pbr_from_phong(&phong);
     want.name = read.name.clone();
@@ -254,6 +255,7 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
             emissive: srgb_from_linear(base),
             shininess: 0.0,
             transparency,
+            texture: None,
         };
     }
     let metallic = p.metallic.clamp(0.0, 1.0);
@@ -267,6 +269,7 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
         emissive: srgb_from_linear(p.emissive),
         shininess: shininess_from_roughness(roughness),
         transparency,
+        texture: None,
     }
 }
 
