@@ -20,7 +20,7 @@ globalThis.ProgressEvent ??= class extends Event {
 // External files through a small fetch shim for file: URLs.
 const realFetch = globalThis.fetch;
 globalThis.fetch = async (url, opts) => {
-  const u = String(url);
+  const u = typeof url === 'string' ? url : (url.url ?? String(url));
   if (u.startsWith('file://')) {
     const data = fs.readFileSync(new URL(u));
     return new Response(data);

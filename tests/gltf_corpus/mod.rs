@@ -15,9 +15,13 @@ use animed::scene::Scene;
 use std::path::{Path, PathBuf};
 
 fn corpus() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus-next");
-    if dir.is_dir() {
-        return Some(dir);
+    // `shared/` sits beside the clone (CI) or beside the worktrees' folder.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = root.join("../shared/corpus-next");
+    for d in [&dir, &root.join("../../shared/corpus-next")] {
+        if d.is_dir() {
+            return Some(d.clone());
+        }
     }
     eprintln!(
         "\n==================== glTF corpus checks: NOT RUN ====================\n\
@@ -47,11 +51,8 @@ fn spec(width: u32, height: u32) -> FrameSpec {
     FrameSpec {
         width,
         height,
-        viewpoint: None,
-        style: None,
-        background: None,
         headlight: Headlight::Auto,
-        threads: 0,
+        ..FrameSpec::default()
     }
 }
 

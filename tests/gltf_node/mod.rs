@@ -130,8 +130,10 @@ pub fn assert_same_trs(ours: &animed::scene::Transform, tr: &serde_json::Value, 
     let (t3, r3, s3) = (get("t"), get("r"), get("s"));
     let near = |a: f32, b: f32| (a - b).abs() <= 1e-4 * a.abs().max(b.abs()).max(1.0);
     let q = glam::Quat::from_xyzw(r3[0], r3[1], r3[2], r3[3]);
-    let same_rot =
-        ours.rotation.dot(q).abs() >= 1.0 - 1e-7 || ours.rotation.angle_between(q) < 1e-4;
+    // q and −q are one rotation; components within 1e-4 (f32 acos near 1
+    // is too coarse to compare angles this small).
+    let (a, b) = (glam::Vec4::from(ours.rotation), glam::Vec4::from(q));
+    let same_rot = (a - b).abs().max_element() <= 1e-4 || (a + b).abs().max_element() <= 1e-4;
     assert!(
         (0..3).all(|k| near(ours.translation[k], t3[k]) && near(ours.scale[k], s3[k])) && same_rot,
         "{what} {}: animed {ours:?} three.js {tr}",
