@@ -1,9 +1,9 @@
-//! `animed convert`: convert between .iv, .wrl, .wrl.gz (and from .obj), keeping every key.
+//! `animed convert`: convert between .iv, .wrl, .wrl.gz, .gltf, .glb (and from .obj), keeping every key.
 
 use crate::format::{self, InventorVersion, OutputFormat, WriteOptions};
 use std::path::PathBuf;
 
-/// Convert between .iv, .wrl, .wrl.gz (and from .obj), keeping every key.
+/// Convert between .iv, .wrl, .wrl.gz, .gltf, .glb (and from .obj), keeping every key.
 ///
 /// The output format follows OUT's extension. Animation is written twice:
 /// as interpolators/engines other viewers play, and as the animed key note
@@ -12,7 +12,7 @@ use std::path::PathBuf;
 pub struct Args {
     /// Input scene (.wrl, .wrl.gz, .iv, .obj, …; detected by content).
     pub input: PathBuf,
-    /// Output file: .wrl, .wrl.gz (or .wrz) or .iv.
+    /// Output file: .wrl, .wrl.gz (or .wrz), .iv, .gltf or .glb.
     pub output: PathBuf,
     /// Position tolerance of the sampled interpolators, as a fraction of the
     /// scene's bounding-box diagonal (also the relative scale tolerance).
@@ -45,7 +45,7 @@ pub fn run(args: Args) -> i32 {
     }
     if OutputFormat::from_path(&args.output).is_none() {
         eprintln!(
-            "animed convert: {}: cannot tell the output format from the name (use .wrl, .wrl.gz or .iv)",
+            "animed convert: {}: cannot tell the output format from the name (use .wrl, .wrl.gz, .iv, .gltf or .glb)",
             args.output.display()
         );
         return 2;

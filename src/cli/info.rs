@@ -59,6 +59,7 @@ fn format_name(f: SourceFormat) -> &'static str {
         SourceFormat::Vrml1 => "VRML 1.0",
         SourceFormat::Vrml97 => "VRML97",
         SourceFormat::Obj => "Wavefront OBJ",
+        SourceFormat::Gltf => "glTF 2.0",
     }
 }
 
@@ -332,7 +333,7 @@ fn print_text(path: &std::path::Path, d: &Json) {
 }
 
 pub fn run(args: Args) -> i32 {
-    let mut loaded = match format::load(&args.file) {
+    let mut loaded = match args.clip.load(&args.file) {
         Ok(l) => l,
         Err(e) => {
             eprintln!("{e}");

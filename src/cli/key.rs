@@ -184,7 +184,7 @@ fn load(path: &Path, clip: &super::clip_arg::ClipArg) -> Result<Scene, String> {
             path.display()
         ));
     }
-    let loaded = format::load(path).map_err(|e| e.to_string())?;
+    let loaded = clip.load(path).map_err(|e| e.to_string())?;
     for w in &loaded.warnings {
         eprintln!("warning: {w}");
     }

@@ -87,7 +87,11 @@ pub fn load_scene(file: Option<&Path>) -> Result<Loaded, LoadError> {
 /// Loads the scene and resolves the arguments; warnings go to stderr.
 /// Errors are ready to print (`path:line:column: message` for bad files).
 pub fn prepare(args: &Args) -> Result<Job, String> {
-    let loaded = load_scene(args.file.as_deref()).map_err(|e| e.to_string())?;
+    let loaded = match args.file.as_deref() {
+        Some(p) => args.clip.load(p),
+        None => format::demo(),
+    }
+    .map_err(|e| e.to_string())?;
     for w in &loaded.warnings {
         eprintln!("warning: {w}");
     }

@@ -6,7 +6,6 @@
 
 use super::info::short;
 use crate::anim::{evaluate, Pose, Property};
-use crate::format;
 use crate::scene::{CameraKind, LightKind, MaterialId, NodeId, Scene};
 use glam::{Quat, Vec3};
 use serde_json::json;
@@ -166,7 +165,7 @@ pub fn value(pose: &Pose, owner: Owner, p: Property) -> Option<Vec<f32>> {
 }
 
 pub fn run(args: Args) -> i32 {
-    let loaded = match format::load(&args.file) {
+    let loaded = match args.clip.load(&args.file) {
         Ok(l) => l,
         Err(e) => {
             eprintln!("{e}");

@@ -48,7 +48,7 @@ pub fn run(args: Args) -> i32 {
 
 fn view(args: Args) -> Result<(), String> {
     let mut loaded = match &args.file {
-        Some(p) => crate::format::load(p),
+        Some(p) => args.clip.load(p),
         None => crate::format::demo(),
     }
     .map_err(|e| e.to_string())?;

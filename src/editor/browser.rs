@@ -40,9 +40,11 @@ pub struct Entry {
 /// File kinds the browser shows.
 pub fn is_known_file(name: &str) -> bool {
     let l = name.to_ascii_lowercase();
-    [".iv", ".wrl", ".wrl.gz", ".wrz", ".vrml", ".obj", ".gz"]
-        .iter()
-        .any(|e| l.ends_with(e))
+    [
+        ".iv", ".wrl", ".wrl.gz", ".wrz", ".vrml", ".obj", ".gz", ".gltf", ".glb",
+    ]
+    .iter()
+    .any(|e| l.ends_with(e))
 }
 
 /// Browser state.

@@ -10,6 +10,7 @@
 
 mod error;
 pub mod export;
+pub mod gltf;
 pub mod gzip;
 pub mod hsv;
 pub mod inline;
@@ -59,6 +60,9 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
             .map_err(|m| LoadError::new(path, 0, 0, m))?;
         return load_bytes_nested(&plain, path, depth);
     }
+    if gltf::is_gltf(bytes, path) {
+        return gltf::read(bytes, path, &gltf::ReadOptions::default(), &read_beside);
+    }
     // OBJ has no header line to detect it by: go by the name.
     if obj::is_obj_path(path) {
         return obj::read(bytes, path);
@@ -72,6 +76,49 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
             iv::read_nested(bytes, path, depth, false)
         }
     }
+}
+
+/// Largest file a glTF may reference (buffers beside a .gltf).
+const MAX_REFERENCED: u64 = 1 << 31;
+
+/// Reads a file a scene file references, refusing very large ones.
+fn read_beside(path: &Path) -> Result<Vec<u8>, String> {
+    let len = std::fs::metadata(path).map_err(|e| e.to_string())?.len();
+    if len > MAX_REFERENCED {
+        return Err(format!(
+            "{len} bytes is more than animed reads ({MAX_REFERENCED})"
+        ));
+    }
+    std::fs::read(path).map_err(|e| e.to_string())
+}
+
+/// What the caller may choose about a load (`--scene`).
+#[derive(Clone, Debug, Default)]
+pub struct LoadOptions {
+    /// glTF: which of the file's scenes to load (default: its `scene`).
+    pub scene: Option<usize>,
+}
+
+/// [`load`] with options; `scene` applies to glTF files only.
+pub fn load_with(path: &Path, opts: &LoadOptions) -> Result<Loaded, LoadError> {
+    let Some(scene) = opts.scene else {
+        return load(path);
+    };
+    let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
+    if !gltf::is_gltf(&bytes, path) {
+        return Err(LoadError::new(
+            path,
+            0,
+            0,
+            "--scene applies to glTF files only",
+        ));
+    }
+    gltf::read(
+        &bytes,
+        path,
+        &gltf::ReadOptions { scene: Some(scene) },
+        &read_beside,
+    )
 }
 
 /// The demo scene bundled in the binary (`assets/demo.wrl`).

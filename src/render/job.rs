@@ -38,7 +38,9 @@ impl Headlight {
             // Only VRML97 readers set `settings.headlight` (NavigationInfo);
             // other formats leave it `None` and get the examiner headlight.
             Headlight::Auto => match scene.format {
-                SourceFormat::Vrml97 => scene.settings.headlight.unwrap_or(true),
+                SourceFormat::Vrml97 | SourceFormat::Gltf => {
+                    scene.settings.headlight.unwrap_or(true)
+                }
                 _ => true,
             },
         }

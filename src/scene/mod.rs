@@ -78,6 +78,7 @@ pub enum SourceFormat {
     Vrml1,
     Vrml97,
     Obj,
+    Gltf,
 }
 
 /// A whole scene: node tree, shared resources, settings and animation.

@@ -5,7 +5,7 @@
 //! `.wrl` → VRML97, `.wrl.gz` / `.wrz` → gzip'd VRML97, `.iv` → Inventor.
 
 use super::options::{WriteOptions, WriteReport};
-use crate::format::{iv, vrml97};
+use crate::format::{gltf, iv, vrml97};
 use crate::scene::Scene;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -16,6 +16,10 @@ pub enum OutputFormat {
     Vrml97,
     Vrml97Gz,
     Inventor,
+    /// glTF 2.0 JSON with the buffer embedded as a data: URI.
+    Gltf,
+    /// Binary glTF.
+    Glb,
 }
 
 impl OutputFormat {
@@ -28,6 +32,10 @@ impl OutputFormat {
             Some(OutputFormat::Vrml97)
         } else if name.ends_with(".iv") {
             Some(OutputFormat::Inventor)
+        } else if name.ends_with(".gltf") {
+            Some(OutputFormat::Gltf)
+        } else if name.ends_with(".glb") {
+            Some(OutputFormat::Glb)
         } else {
             None
         }
@@ -46,7 +54,7 @@ impl std::fmt::Display for SaveError {
         match self {
             SaveError::UnknownExtension(p) => write!(
                 f,
-                "{}: cannot tell the format from the name (use .wrl, .wrl.gz or .iv)",
+                "{}: cannot tell the format from the name (use .wrl, .wrl.gz, .iv, .gltf or .glb)",
                 p.display()
             ),
             SaveError::Io(p, e) => write!(f, "{}: {e}", p.display()),
@@ -62,7 +70,9 @@ pub fn to_bytes(
     format: OutputFormat,
     opts: &WriteOptions,
 ) -> (Vec<u8>, WriteReport) {
-    match format {
+    let (bytes, mut report) = match format {
+        OutputFormat::Gltf => return gltf::to_bytes(scene, opts, false),
+        OutputFormat::Glb => return gltf::to_bytes(scene, opts, true),
         OutputFormat::Vrml97 => {
             let (text, report) = vrml97::write::write(scene, opts);
             (text.into_bytes(), report)
@@ -75,7 +85,16 @@ pub fn to_bytes(
             let (text, report) = iv::write::write(scene, opts);
             (text.into_bytes(), report)
         }
+    };
+    if scene.clips.len() > 1 {
+        report.warnings.push(format!(
+            "only the playing animation `{}` is written; {} other clip(s) are left out \
+             (.gltf/.glb keep every clip)",
+            scene.clips.active_name().unwrap_or(""),
+            scene.clips.len() - 1
+        ));
     }
+    (bytes, report)
 }
 
 /// Gzip with a fixed header (no name, time 0), so output is reproducible.

@@ -1,0 +1,36 @@
+//! glTF 2.0: `.gltf` (JSON with external or `data:` buffers) and `.glb`.
+//!
+//! The `gltf` crate parses and validates the JSON; the mapping onto
+//! animed's scene model is ours, one job per file: `container` (GLB
+//! chunks, parse, validation, buffers), `uri` (data: URIs, files beside),
+//! `accessor` (typed, bounds-checked reads), `mesh` (primitives),
+//! `material` (metallic-roughness ⇄ Phong, colour space), `lights` (light
+//! units, cameras), `anim` (animations → clips), `read` (the node tree and
+//! the entry point). Errors name the JSON pointer of the offending part.
+
+mod accessor;
+mod anim;
+mod bin;
+mod container;
+mod lights;
+mod material;
+mod mesh;
+mod pointer;
+mod read;
+mod uri;
+mod write;
+mod write_anim;
+
+pub use container::SUPPORTED_EXTENSIONS;
+pub use material::{linear_from_srgb, pbr_from_phong, phong_from_pbr, srgb_from_linear, Pbr};
+pub use read::{is_gltf, read, ReadOptions};
+
+/// The scene as glTF JSON (`binary == false`, buffer embedded as a data:
+/// URI) or as a .glb, and what the writer did (`convert --verbose`).
+pub fn to_bytes(
+    scene: &crate::scene::Scene,
+    opts: &crate::format::WriteOptions,
+    binary: bool,
+) -> (Vec<u8>, crate::format::WriteReport) {
+    write::write(scene, opts, binary)
+}

@@ -1,0 +1,182 @@
+#!/usr/bin/env python3
+"""Writes the hand-made glTF test files in this folder (run: python3 make.py).
+
+Every number is chosen by hand so the tests can check values exactly:
+see tests/format_gltf.rs for what each file exercises.
+"""
+import base64, json, struct, os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+class Buf:
+    def __init__(self):
+        self.data = bytearray()
+        self.views = []
+        self.accessors = []
+
+    def add(self, fmt, values, comp, typ, count, normalized=False, target=None, minmax=None):
+        while len(self.data) % 4:
+            self.data.append(0)
+        raw = struct.pack("<" + fmt * len(values), *values)
+        view = {"buffer": 0, "byteOffset": len(self.data), "byteLength": len(raw)}
+        if target:
+            view["target"] = target
+        self.data += raw
+        self.views.append(view)
+        acc = {"bufferView": len(self.views) - 1, "componentType": comp, "count": count, "type": typ}
+        if normalized:
+            acc["normalized"] = True
+        if minmax:
+            acc["min"], acc["max"] = minmax
+        self.accessors.append(acc)
+        return len(self.accessors) - 1
+
+    def f32(self, values, typ, n, **kw):
+        return self.add("f", values, 5126, typ, len(values) // n, **kw)
+
+    def uri(self):
+        return "data:application/octet-stream;base64," + base64.b64encode(bytes(self.data)).decode()
+
+
+def bounds(flat, n):
+    cols = [flat[i::n] for i in range(n)]
+    return [min(c) for c in cols], [max(c) for c in cols]
+
+
+def write(name, doc, buf=None):
+    if buf is not None:
+        doc["buffers"] = [{"byteLength": len(buf.data), "uri": buf.uri()}]
+        doc["bufferViews"] = buf.views
+        doc["accessors"] = buf.accessors
+    with open(os.path.join(HERE, name), "w") as f:
+        json.dump(doc, f, indent=1)
+
+
+def glb(name, doc, buf):
+    doc["buffers"] = [{"byteLength": len(buf.data)}]
+    doc["bufferViews"] = buf.views
+    doc["accessors"] = buf.accessors
+    js = json.dumps(doc).encode()
+    js += b" " * (-len(js) % 4)
+    bin_ = bytes(buf.data) + b"\0" * (-len(buf.data) % 4)
+    total = 12 + 8 + len(js) + 8 + len(bin_)
+    out = struct.pack("<4sII", b"glTF", 2, total)
+    out += struct.pack("<I4s", len(js), b"JSON") + js
+    out += struct.pack("<I4s", len(bin_), b"BIN\0") + bin_
+    with open(os.path.join(HERE, name), "wb") as f:
+        f.write(out)
+
+
+def animated():
+    """A box-ish quad 'Box' with two clips, a camera and a point light."""
+    b = Buf()
+    pos = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]
+    p = b.f32(pos, "VEC3", 3, target=34962, minmax=bounds(pos, 3))
+    nrm = b.f32([0, 0, 1] * 4, "VEC3", 3, target=34962)
+    idx = b.add("H", [0, 1, 2, 0, 2, 3], 5123, "SCALAR", 6, target=34963)
+    # Walk: translation LINEAR 0 s (0,0,0) → 1 s (2,0,0) → 2 s (2,4,0);
+    #       rotation STEP 0 s identity, 1 s 90° about z.
+    t_in = b.f32([0, 1, 2], "SCALAR", 1, minmax=([0], [2]))
+    t_out = b.f32([0, 0, 0, 2, 0, 0, 2, 4, 0], "VEC3", 3)
+    r_in = b.f32([0, 1], "SCALAR", 1, minmax=([0], [1]))
+    h = 0.7071067811865476
+    r_out = b.f32([0, 0, 0, 1, 0, 0, h, h], "VEC4", 4)
+    # Spin: scale CUBICSPLINE 0 s → 2 s, value 1 → 3, tangents (in, out)
+    # per second; rotation LINEAR 0 → 180° about y in two 90° steps.
+    s_in = b.f32([0, 2], "SCALAR", 1, minmax=([0], [2]))
+    s_out = b.f32([0, 0, 0, 1, 1, 1, 2, 2, 2, 0, 0, 0, 3, 3, 3, 0, 0, 0], "VEC3", 3)
+    y_in = b.f32([0, 1, 2], "SCALAR", 1, minmax=([0], [2]))
+    y_out = b.f32([0, 0, 0, 1, 0, h, 0, h, 0, 1, 0, 0], "VEC4", 4)
+    doc = {
+        "asset": {"version": "2.0", "generator": "tests/data/gltf/make.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "point", "color": [1, 0.5, 0.5], "intensity": 100, "range": 20}]}},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2]}, {"nodes": [3]}],
+        "nodes": [
+            {"name": "Box", "mesh": 0, "translation": [0, 0, 0]},
+            {"name": "Cam", "camera": 0, "translation": [0, 0, 10]},
+            {"name": "Lamp", "translation": [3, 3, 3],
+             "extensions": {"KHR_lights_punctual": {"light": 0}}},
+            {"name": "Other", "mesh": 0},
+        ],
+        "cameras": [{"name": "Front", "type": "perspective",
+                     "perspective": {"yfov": 0.8, "znear": 0.5, "zfar": 100}}],
+        "materials": [{"name": "Red", "pbrMetallicRoughness": {
+            "baseColorFactor": [0.5, 0, 0, 1], "metallicFactor": 0, "roughnessFactor": 0.5}}],
+        "meshes": [{"name": "Quad", "primitives": [
+            {"attributes": {"POSITION": p, "NORMAL": nrm}, "indices": idx, "material": 0}]}],
+        "animations": [
+            {"name": "Walk", "samplers": [
+                {"input": t_in, "output": t_out, "interpolation": "LINEAR"},
+                {"input": r_in, "output": r_out, "interpolation": "STEP"}],
+             "channels": [
+                {"sampler": 0, "target": {"node": 0, "path": "translation"}},
+                {"sampler": 1, "target": {"node": 0, "path": "rotation"}}]},
+            {"name": "Spin", "samplers": [
+                {"input": s_in, "output": s_out, "interpolation": "CUBICSPLINE"},
+                {"input": y_in, "output": y_out, "interpolation": "LINEAR"}],
+             "channels": [
+                {"sampler": 0, "target": {"node": 0, "path": "scale"}},
+                {"sampler": 1, "target": {"node": 0, "path": "rotation"}}]},
+        ],
+    }
+    write("animated.gltf", json.loads(json.dumps(doc)), b)
+    glb("animated.glb", doc, b)
+
+
+def topologies():
+    """Strips, fans, lines, loops, points; u8-normalised colours; no normals
+    (flat normals are computed); a sparse accessor; a matrix node."""
+    b = Buf()
+    pos = [0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]
+    p = b.f32(pos, "VEC3", 3, target=34962, minmax=bounds(pos, 3))
+    col = b.add("B", [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255],
+                5121, "VEC4", 4, normalized=True, target=34962)
+    # Sparse: base all zero (no view), vertex 2 replaced by (0, 2, 0).
+    sp_idx = len(b.views)
+    b.data += b"\0" * (-len(b.data) % 4)
+    b.views.append({"buffer": 0, "byteOffset": len(b.data), "byteLength": 1})
+    b.data += bytes([2])
+    b.data += b"\0" * (-len(b.data) % 4)
+    b.views.append({"buffer": 0, "byteOffset": len(b.data), "byteLength": 12})
+    b.data += struct.pack("<3f", 0, 2, 0)
+    b.accessors.append({"componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [0, 2, 0],
+                        "sparse": {"count": 1, "indices": {"bufferView": sp_idx, "componentType": 5121},
+                                   "values": {"bufferView": sp_idx + 1}}})
+    sparse = len(b.accessors) - 1
+    prims = [{"attributes": {"POSITION": p, "COLOR_0": col}, "mode": m} for m in (0, 1, 2, 3, 5, 6)]
+    prims.append({"attributes": {"POSITION": sparse}, "mode": 0})
+    doc = {
+        "asset": {"version": "2.0"},
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "Shapes", "mesh": 0,
+                   "matrix": [2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1]}],
+        "meshes": [{"primitives": prims}],
+    }
+    write("topologies.gltf", doc, b)
+
+
+def bad_files():
+    write("requires_meshopt.gltf", {
+        "asset": {"version": "2.0"},
+        "extensionsUsed": ["EXT_meshopt_compression"],
+        "extensionsRequired": ["EXT_meshopt_compression"],
+    })
+    b = Buf()
+    p = b.f32([0, 0, 0, 1, 0, 0, 0, 1, 0], "VEC3", 3, minmax=([0, 0, 0], [1, 1, 0]))
+    b.accessors[p]["count"] = 30  # runs past the end of its view
+    write("accessor_overrun.gltf", {
+        "asset": {"version": "2.0"},
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": p}}]}],
+    }, b)
+
+
+if __name__ == "__main__":
+    animated()
+    topologies()
+    bad_files()

@@ -1,0 +1,461 @@
+//! glTF 2.0 reading and writing (issue 14): hand-made files in
+//! `tests/data/gltf/` (made by `make.py` there), round trips, the exactness
+//! of exported TCB curves, and checks against independent implementations
+//! (the Khronos validator and three.js under node; see `gltf_node.rs`).
+
+mod gltf_corpus;
+mod gltf_node;
+
+use animed::anim::{
+    evaluate, Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value,
+};
+use animed::format::gltf::{read, to_bytes, ReadOptions};
+use animed::format::{self, WriteOptions};
+use animed::scene::{Clip, LightKind, Node, NodeKind, Scene};
+use glam::{Quat, Vec3};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn data(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/gltf")
+        .join(name)
+}
+
+fn load(name: &str) -> format::Loaded {
+    format::load(&data(name)).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn read_with(name: &str, opts: &ReadOptions) -> Result<format::Loaded, format::LoadError> {
+    let p = data(name);
+    let bytes = std::fs::read(&p).unwrap();
+    read(&bytes, &p, opts, &|q: &Path| {
+        std::fs::read(q).map_err(|e| e.to_string())
+    })
+}
+
+fn animed(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_animed"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run animed");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn translation(s: &Scene, name: &str, t: f32) -> Vec3 {
+    evaluate(s, t).transforms[s.find_node(name).unwrap().0 as usize].translation
+}
+
+fn close(a: Vec3, b: Vec3) -> bool {
+    (a - b).abs().max_element() < 1e-5
+}
+
+#[test]
+fn gltf_and_glb_read_the_same_scene() {
+    let a = load("animated.gltf").scene;
+    let b = load("animated.glb").scene;
+    let names: Vec<&str> = a.nodes.iter().map(|n| n.name.as_str()).collect();
+    assert_eq!(names, ["Box", "Cam", "Lamp"], "the default scene only");
+    assert_eq!(a.nodes, b.nodes);
+    assert_eq!(a.meshes, b.meshes);
+    assert_eq!(a.materials, b.materials);
+    assert_eq!(a.clips_owned(), b.clips_owned());
+}
+
+#[test]
+fn every_animation_is_a_clip_and_the_first_plays() {
+    let mut s = load("animated.gltf").scene;
+    let names: Vec<&str> = s.clips.names().collect();
+    assert_eq!(names, ["Walk", "Spin"]);
+    assert_eq!(s.settings.fps, 24.0, "key times on whole frames at 24 fps");
+    assert_eq!(s.settings.duration, 48.0);
+    // Walk: LINEAR translation, STEP rotation.
+    assert!(close(translation(&s, "Box", 0.5), Vec3::new(1.0, 0.0, 0.0)));
+    assert!(close(translation(&s, "Box", 1.5), Vec3::new(2.0, 2.0, 0.0)));
+    let box_ = s.find_node("Box").unwrap().0 as usize;
+    let rot = |s: &Scene, t: f32| evaluate(s, t).transforms[box_].rotation;
+    assert_eq!(
+        rot(&s, 0.99),
+        Quat::IDENTITY,
+        "step holds until the next key"
+    );
+    assert!(rot(&s, 1.0).angle_between(Quat::from_rotation_z(std::f32::consts::FRAC_PI_2)) < 1e-5);
+    // Spin: CUBICSPLINE scale (1 → 3, out-tangent 2/s, in-tangent 0, Δt 2 s):
+    // at s = 1/2, p = ½·1 + ⅛·2·2 + ½·3 − ⅛·2·0 = 2.5; slerp rotation.
+    s.play_clip("Spin").unwrap();
+    let scale = evaluate(&s, 1.0).transforms[box_].scale;
+    assert!(close(scale, Vec3::splat(2.5)), "{scale}");
+    assert!(rot(&s, 0.5).angle_between(Quat::from_rotation_y(std::f32::consts::FRAC_PI_4)) < 1e-5);
+}
+
+#[test]
+fn materials_lights_and_cameras_map_as_documented() {
+    let s = load("animated.gltf").scene;
+    let red = &s.materials[s.find_material("Red").unwrap().0 as usize];
+    // sRGB(0.5) = 0.7354; roughness 0.5 → Blinn-Phong 30 → shininess 30/128.
+    assert!((red.diffuse.x - 0.735_36).abs() < 1e-4 && red.diffuse.y == 0.0);
+    assert!((red.shininess - 30.0 / 128.0).abs() < 1e-6);
+    let lamp = s.node(s.find_node("Lamp").unwrap()).light().unwrap();
+    assert_eq!(lamp.kind, LightKind::Point);
+    // 100 cd: 1/max(π/100·d², 1).
+    assert!((lamp.attenuation.z - std::f32::consts::PI / 100.0).abs() < 1e-7);
+    assert_eq!(lamp.radius, 20.0);
+    let cam = s.node(s.find_node("Cam").unwrap()).camera().unwrap();
+    assert_eq!(cam.description, "Front");
+    assert_eq!(cam.near, Some(0.5));
+    assert!(
+        matches!(cam.kind, animed::scene::CameraKind::Perspective { height_angle } if height_angle == 0.8)
+    );
+    assert_eq!(
+        s.settings.headlight,
+        Some(false),
+        "the file brings its own light"
+    );
+}
+
+#[test]
+fn scene_option_picks_another_scene_and_rejects_missing_ones() {
+    let l = read_with("animated.gltf", &ReadOptions { scene: Some(1) }).unwrap();
+    let names: Vec<&str> = l.scene.nodes.iter().map(|n| n.name.as_str()).collect();
+    assert_eq!(names, ["Other"]);
+    let e = read_with("animated.gltf", &ReadOptions { scene: Some(5) }).unwrap_err();
+    assert!(e.to_string().contains("no scene 5"), "{e}");
+}
+
+#[test]
+fn topologies_colours_sparse_and_matrix() {
+    let s = load("topologies.gltf").scene;
+    let root = s.node(s.find_node("Shapes").unwrap());
+    let t = root.transform;
+    assert_eq!(
+        (t.translation, t.scale),
+        (Vec3::new(1.0, 2.0, 3.0), Vec3::splat(2.0))
+    );
+    let meshes: Vec<_> = s
+        .nodes
+        .iter()
+        .filter_map(|n| match &n.kind {
+            NodeKind::Shape(sh) => Some(&s.meshes[sh.mesh.0 as usize]),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(meshes.len(), 7);
+    let counts: Vec<(usize, usize, usize)> = meshes
+        .iter()
+        .map(|m| (m.points.len(), m.lines.len(), m.triangles.len()))
+        .collect();
+    // POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLE_STRIP, TRIANGLE_FAN, sparse POINTS.
+    assert_eq!(
+        counts,
+        [
+            (4, 0, 0),
+            (0, 2, 0),
+            (0, 4, 0),
+            (0, 3, 0),
+            (0, 0, 2),
+            (0, 0, 2),
+            (4, 0, 0)
+        ]
+    );
+    // Strip triangle 1 is (v1, v3, v2) (§3.7.2.1: every other one
+    // reversed so all keep the first one's winding).
+    let strip = meshes[4];
+    // No normals in the file: flat ones, the triangles unwelded.
+    assert_eq!(strip.positions.len(), 6);
+    assert!(
+        strip.normals.iter().all(|n| *n == Vec3::Z),
+        "{:?}",
+        strip.normals
+    );
+    assert_eq!(
+        strip.positions[3..6],
+        [Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::Y]
+    );
+    // u8-normalised RGBA colours (alpha dropped): red, green, blue, white.
+    assert_eq!(meshes[0].colors, [Vec3::X, Vec3::Y, Vec3::Z, Vec3::ONE]);
+    // Sparse: zeros with vertex 2 replaced.
+    assert_eq!(
+        meshes[6].positions,
+        [Vec3::ZERO, Vec3::ZERO, Vec3::new(0.0, 2.0, 0.0), Vec3::ZERO]
+    );
+}
+
+#[test]
+fn errors_name_the_json_pointer() {
+    let e = format::load(&data("requires_meshopt.gltf"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("/extensionsRequired/0") && e.contains("EXT_meshopt_compression"),
+        "{e}"
+    );
+    let e = format::load(&data("accessor_overrun.gltf"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("/meshes/0/primitives/0/attributes/POSITION"),
+        "{e}"
+    );
+    assert!(e.contains("past the end"), "{e}");
+    for bad in [
+        &b"glTF\x02\0\0\0\xff\xff\xff\x7f"[..],
+        b"glTF\x01\0\0\0\x0c\0\0\0",
+        b"{\"asset\":{}}",
+        b"{",
+    ] {
+        let r = format::load_bytes(bad, Path::new("bad.glb"));
+        assert!(r.is_err(), "{bad:?}");
+    }
+}
+
+#[test]
+fn cli_takes_gltf_with_animation_names() {
+    let f = data("animated.gltf");
+    let f = f.to_str().unwrap();
+    let (code, out, err) = animed(&["info", f, "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["format"], "glTF 2.0");
+    assert_eq!(v["animations"][1]["name"], "Spin");
+    let (code, out, err) = animed(&[
+        "sample",
+        f,
+        "--target",
+        "Box.scale",
+        "--times",
+        "1",
+        "--animation",
+        "Spin",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.trim(), "1\t2.5 2.5 2.5");
+    let (code, _, err) = animed(&[
+        "sample",
+        f,
+        "--target",
+        "Box.scale",
+        "--times",
+        "1",
+        "--animation",
+        "Run",
+    ]);
+    assert_ne!(code, 0);
+    assert!(err.contains("0 `Walk`, 1 `Spin`"), "{err}");
+}
+
+/// A little scene with TCB, linear, step and squad keys in two clips.
+fn authored() -> Scene {
+    let mut s = format::demo().unwrap().scene;
+    let ball = s.find_node("Ball").unwrap();
+    let t = |p| Target {
+        of: TargetRef::Node(ball),
+        property: p,
+    };
+    let tcb = Keys::Vec3(vec![
+        Key::new(0.0, Vec3::ZERO).with_tcb(0.3, -0.2, 0.5),
+        Key::new(7.0, Vec3::new(1.0, 2.0, 0.5)).with_tcb(-0.5, 0.4, 0.1),
+        Key::new(20.0, Vec3::new(-1.0, 0.5, 2.0)),
+        Key::new(31.0, Vec3::new(0.0, 1.0, -1.0)).with_interp(Interp::Linear),
+        Key::new(40.0, Vec3::new(2.0, 0.0, 0.0)),
+    ]);
+    let hop = Clip {
+        name: "Hop".into(),
+        animation: animed::anim::Animation {
+            tracks: vec![
+                Track::new(t(Property::Translation), Repeat::Constant, tcb).unwrap(),
+                Track::new(
+                    t(Property::Scale),
+                    Repeat::Constant,
+                    Keys::Vec3(vec![
+                        Key::new(0.0, Vec3::ONE).with_interp(Interp::Step),
+                        Key::new(12.0, Vec3::splat(2.0)).with_interp(Interp::Step),
+                    ]),
+                )
+                .unwrap(),
+            ],
+        },
+        duration: 48.0,
+    };
+    let mut clips = vec![Clip {
+        name: "Demo".into(),
+        animation: s.animation.clone(),
+        duration: s.settings.duration,
+    }];
+    clips.push(hop);
+    s.set_clips(clips, 0);
+    s
+}
+
+#[test]
+fn export_import_export_is_byte_identical_with_every_key() {
+    let s = authored();
+    for binary in [false, true] {
+        let (a, _) = to_bytes(&s, &WriteOptions::default(), binary);
+        let path = Path::new(if binary { "x.glb" } else { "x.gltf" });
+        let back = format::load_bytes(&a, path).unwrap_or_else(|e| panic!("{e}"));
+        assert!(back.warnings.is_empty(), "{:?}", back.warnings);
+        assert_eq!(
+            back.scene.clips_owned(),
+            s.clips_owned(),
+            "every key bit for bit"
+        );
+        let (b, _) = to_bytes(&back.scene, &WriteOptions::default(), binary);
+        assert!(
+            a == b,
+            "binary={binary}: the second export differs from the first"
+        );
+    }
+}
+
+/// The written CUBICSPLINE curve (evaluated here from the file's own
+/// numbers, Appendix C) equals the authored TCB track at random times.
+#[test]
+fn tcb_tracks_export_exactly_as_cubicsplines() {
+    let s = authored();
+    let (bytes, report) = to_bytes(&s, &WriteOptions::default(), true);
+    assert!(
+        report
+            .channels
+            .iter()
+            .any(|c| c.name == "Ball.translation (CUBICSPLINE exact)"),
+        "{:?}",
+        report.channels
+    );
+    let (json, bin) = gltf_node::split_glb(&bytes);
+    let doc: serde_json::Value = serde_json::from_slice(json).unwrap();
+    let hop = doc["animations"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|a| a["name"] == "Hop")
+        .unwrap();
+    let ch = hop["channels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["target"]["path"] == "translation")
+        .unwrap();
+    let sampler = &hop["samplers"][ch["sampler"].as_u64().unwrap() as usize];
+    assert_eq!(sampler["interpolation"], "CUBICSPLINE");
+    let times = gltf_node::floats(&doc, bin, sampler["input"].as_u64().unwrap() as usize);
+    let values = gltf_node::floats(&doc, bin, sampler["output"].as_u64().unwrap() as usize);
+    let mut s = s;
+    s.play_clip("Hop").unwrap();
+    let ball = s.find_node("Ball").unwrap().0 as usize;
+    let mut rng = 0x2545_f491_4f6c_dd1du64;
+    for _ in 0..500 {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        let t = (rng >> 11) as f32 / (1u64 << 53) as f32 * 40.0 / 24.0;
+        let ours = evaluate(&s, t).transforms[ball].translation;
+        let theirs = gltf_node::cubic_at(&times, &values, t);
+        assert!(
+            (ours - theirs).abs().max_element() < 2e-5,
+            "t={t}: {ours} vs {theirs}"
+        );
+    }
+}
+
+#[test]
+fn convert_writes_gltf_and_glb() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_convert");
+    std::fs::create_dir_all(&dir).unwrap();
+    for ext in ["gltf", "glb"] {
+        let out = dir.join(format!("demo.{ext}"));
+        let (code, table, err) = animed(&[
+            "convert",
+            "assets/demo.wrl",
+            out.to_str().unwrap(),
+            "--verbose",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        assert!(table.contains("Ball.translation"), "{table}");
+        let back = format::load(&out).unwrap();
+        let demo = format::demo().unwrap().scene;
+        assert_eq!(
+            back.scene.animation, demo.animation,
+            "keys come back from the note"
+        );
+        for t in [0.0, 0.7, 1.9, 3.3] {
+            assert!(close(
+                translation(&back.scene, "Ball", t),
+                translation(&demo, "Ball", t)
+            ));
+        }
+    }
+}
+
+#[test]
+fn a_static_light_and_camera_keep_their_placement() {
+    let mut s = Scene::new();
+    let mut light = animed::scene::Light::new(LightKind::Point);
+    light.location = Vec3::new(1.0, 2.0, 3.0);
+    s.add_node(None, Node::new("Bulb", NodeKind::Light(light.clone())));
+    let cam = animed::scene::Camera {
+        position: Vec3::new(0.0, 1.0, 5.0),
+        orientation: Quat::from_rotation_x(-0.3),
+        ..Default::default()
+    };
+    s.add_node(None, Node::new("View", NodeKind::Camera(cam.clone())));
+    let (bytes, _) = to_bytes(&s, &WriteOptions::default(), false);
+    let back = format::load_bytes(&bytes, Path::new("p.gltf"))
+        .unwrap()
+        .scene;
+    assert_eq!(back.nodes.len(), 2, "placement nodes fold back");
+    assert_eq!(
+        back.node(back.find_node("Bulb").unwrap()).light(),
+        Some(&light)
+    );
+    let c = back.node(back.find_node("View").unwrap()).camera().unwrap();
+    assert_eq!((c.position, c.orientation), (cam.position, cam.orientation));
+    let _ = Value::Scalar(0.0);
+}
+
+/// Hostile inputs: every hand-made file with bytes flipped, cut short or
+/// numbers swapped for huge ones loads or fails with a message (the fuzz
+/// target `fuzz/fuzz_targets/gltf.rs` does the same without end).
+#[test]
+fn mangled_files_never_panic() {
+    let mut rng = 0x1234_5678_9abc_def1u64;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        rng
+    };
+    for name in ["animated.gltf", "animated.glb", "topologies.gltf"] {
+        let bytes = std::fs::read(data(name)).unwrap();
+        let path = Path::new(name);
+        for round in 0..300 {
+            let mut b = bytes.clone();
+            match round % 3 {
+                0 => {
+                    for _ in 0..1 + next() % 8 {
+                        let i = (next() as usize) % b.len();
+                        b[i] = next() as u8;
+                    }
+                }
+                1 => b.truncate((next() as usize) % b.len()),
+                _ => {
+                    let text = String::from_utf8_lossy(&b).replace(
+                        [
+                            "\"count\": 4",
+                            "\"count\": 6",
+                            "\"byteOffset\": 0",
+                            "\"count\": 3",
+                        ][(next() % 4) as usize],
+                        "\"count\": 4294967295",
+                    );
+                    b = text.into_bytes();
+                }
+            }
+            let _ = format::load_bytes(&b, path);
+        }
+    }
+}
