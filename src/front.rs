@@ -87,8 +87,9 @@ pub struct RenderSpec {
     /// The light at the camera ([`Headlight::Auto`]: VRML97 files decide
     /// through NavigationInfo, others get it on).
     pub headlight: Headlight,
-    /// Anti-aliasing samples per pixel. Only 1 (no anti-aliasing) is
-    /// supported today; other values are an error.
+    /// Anti-aliasing: samples per pixel, 1 (off), 4 or 8 (multisampling:
+    /// depth and coverage per sample, shading once per pixel per triangle,
+    /// box-filter resolve; as deterministic as 1). Other values are an error.
     pub aa: u32,
     /// Worker threads, 0 = one per core. Never changes the picture.
     pub threads: usize,
@@ -189,9 +190,9 @@ impl RenderSpec {
         if !self.time.is_finite() {
             return bad(format!("time {} is not a finite number", self.time));
         }
-        if self.aa != 1 {
+        if ![1, 4, 8].contains(&self.aa) {
             return bad(format!(
-                "aa {}: only 1 sample per pixel is supported in this version",
+                "aa {}: samples per pixel are 1 (off), 4 or 8",
                 self.aa
             ));
         }
@@ -220,8 +221,8 @@ impl RenderSpec {
 /// ```
 pub fn render(scene: &Scene, spec: &RenderSpec) -> Result<Image> {
     spec.validate()?;
-    // `..default()`: FrameSpec grows fields (anti-aliasing is on its way);
-    // until they are wired here they keep their defaults.
+    // `..default()`: fields FrameSpec may grow keep their defaults until
+    // they are wired here.
     #[allow(clippy::needless_update)]
     let frame_spec = FrameSpec {
         width: spec.width,
@@ -231,6 +232,7 @@ pub fn render(scene: &Scene, spec: &RenderSpec) -> Result<Image> {
         background: spec.background.map(glam::Vec3::from),
         headlight: spec.headlight,
         threads: spec.threads,
+        aa: spec.aa,
         ..FrameSpec::default()
     };
     let invalid = |m: String| Error::new(ErrorKind::Invalid, m);
@@ -289,13 +291,23 @@ mod tests {
     }
 
     #[test]
+    fn aa_is_the_command_lines_anti_aliasing() {
+        let scene = demo_scene();
+        let plain = render(&scene, &RenderSpec::new(64, 48)).unwrap();
+        let aa4 = render(&scene, &RenderSpec::new(64, 48).aa(4)).unwrap();
+        assert_ne!(plain, aa4, "4 samples must smooth some edge");
+        let again = render(&scene, &RenderSpec::new(64, 48).aa(4).threads(1)).unwrap();
+        assert_eq!(aa4, again);
+    }
+
+    #[test]
     fn bad_specs_are_errors_not_panics() {
         let scene = demo_scene();
         for spec in [
             RenderSpec::new(0, 10),
             RenderSpec::new(20_000, 10),
             RenderSpec::new(10, 10).at(f32::NAN),
-            RenderSpec::new(10, 10).aa(4),
+            RenderSpec::new(10, 10).aa(3),
             RenderSpec::new(10, 10).background([f32::INFINITY, 0.0, 0.0]),
         ] {
             let err = render(&scene, &spec).unwrap_err();

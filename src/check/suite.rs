@@ -421,7 +421,10 @@ impl Parser<'_> {
             spec.background = Some(rgb);
         }
         if let Some(v) = t.get("aa") {
-            spec.aa = self.integer(v, "aa", 1, 64)? as u32;
+            spec.aa = self.integer(v, "aa", 1, 8)? as u32;
+            if ![1, 4, 8].contains(&spec.aa) {
+                return Err(self.err(v.span(), "aa is 1 (off), 4 or 8 samples per pixel"));
+            }
         }
         if let Some(v) = t.get("threads") {
             spec.threads = self.integer(v, "threads", 0, 1024)? as usize;

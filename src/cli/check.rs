@@ -4,7 +4,7 @@
 //! the table, write the reports, exit 0 / 1 / 2.
 
 use crate::check::{run, Case, Options, Suite, When};
-use crate::cli::render::{parse_headlight, parse_rgb, parse_size, parse_style};
+use crate::cli::render::{parse_aa, parse_headlight, parse_rgb, parse_size, parse_style};
 use crate::compare::{Allowance, Tolerance};
 use crate::front::RenderSpec;
 use crate::render::job::Headlight;
@@ -59,6 +59,9 @@ pub struct Args {
     /// (default: the file's first).
     #[arg(long, value_name = "NAME|INDEX")]
     pub animation: Option<String>,
+    /// With --golden: anti-aliasing samples per pixel, 1 (off), 4 or 8.
+    #[arg(long, value_parser = parse_aa)]
+    pub aa: Option<u32>,
     /// With --golden: time in seconds (default 0).
     #[arg(long, conflicts_with = "frame")]
     pub time: Option<f32>,
@@ -98,6 +101,7 @@ impl Args {
         flag(self.headlight.is_some(), "--headlight");
         flag(self.threads.is_some(), "--threads");
         flag(self.animation.is_some(), "--animation");
+        flag(self.aa.is_some(), "--aa");
         flag(self.time.is_some(), "--time");
         flag(self.frame.is_some(), "--frame");
         flag(self.channel.is_some(), "--channel");
@@ -125,6 +129,7 @@ fn single_case(args: &Args, golden: &Path) -> Result<Suite, String> {
     spec.headlight = args.headlight.unwrap_or_default();
     spec.threads = args.threads.unwrap_or(0);
     spec.clip = args.animation.clone();
+    spec.aa = args.aa.unwrap_or(1);
     let mut tolerance = Tolerance::exact();
     if let Some(c) = args.channel {
         tolerance.channel = c;
