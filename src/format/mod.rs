@@ -14,6 +14,7 @@ pub mod vrml97;
 pub use error::LoadError;
 
 pub mod keynote;
+pub mod limits;
 pub mod sampling;
 pub mod save;
 pub mod write_anim;
@@ -36,33 +37,53 @@ pub struct Loaded {
     pub warnings: Vec<String>,
 }
 
-/// Loads any supported file from disk, detecting the format by content.
+/// Loads any supported file from disk, detecting the format by content,
+/// within the default input budget ([`limits::defaults`]).
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
-    let mut loaded = load_nested(path, 0)?;
-    // animed's own key note, if the file has one, replaces the sampled tracks.
-    keynote::apply_to_loaded(&mut loaded, path);
-    Ok(loaded)
+    load_with(path, limits::defaults())
+}
+
+/// [`load`] within the given limits.
+pub fn load_with(path: &Path, lim: limits::Limits) -> Result<Loaded, LoadError> {
+    limits::scope_with(lim, || {
+        let mut loaded = load_nested(path, 0)?;
+        // animed's own key note, if the file has one, replaces the sampled tracks.
+        keynote::apply_to_loaded(&mut loaded, path);
+        Ok(loaded)
+    })
 }
 
 /// Loads a file included `depth` levels deep (Inline / File / WWWInline).
 pub(crate) fn load_nested(path: &Path, depth: usize) -> Result<Loaded, LoadError> {
-    let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
+    let bytes = limits::read_file(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
     load_bytes_nested(&bytes, path, depth)
 }
 
 /// Loads a file's contents; `path` names it in messages and resolves
 /// relative references (Inline, File, mtllib).
 pub fn load_bytes(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
-    let mut loaded = load_bytes_nested(bytes, path, 0)?;
-    // animed's own key note, if the file has one, replaces the sampled tracks.
-    keynote::apply_to_loaded(&mut loaded, path);
-    Ok(loaded)
+    load_bytes_with(bytes, path, limits::defaults())
+}
+
+/// [`load_bytes`] within the given limits.
+pub fn load_bytes_with(
+    bytes: &[u8],
+    path: &Path,
+    lim: limits::Limits,
+) -> Result<Loaded, LoadError> {
+    limits::scope_with(lim, || {
+        limits::charge_bytes(bytes.len() as u64)
+            .map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
+        let mut loaded = load_bytes_nested(bytes, path, 0)?;
+        // animed's own key note, if the file has one, replaces the sampled tracks.
+        keynote::apply_to_loaded(&mut loaded, path);
+        Ok(loaded)
+    })
 }
 
 fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
     if gzip::is_gzip(bytes) {
-        let plain = gzip::decompress(bytes, gzip::MAX_DECOMPRESSED)
-            .map_err(|m| LoadError::new(path, 0, 0, m))?;
+        let plain = gzip::decompress(bytes).map_err(|m| LoadError::new(path, 0, 0, m))?;
         return load_bytes_nested(&plain, path, depth);
     }
     // OBJ has no header line to detect it by: go by the name.
