@@ -6,6 +6,7 @@ pub mod app;
 pub mod cli;
 pub mod editor;
 pub mod format;
+pub mod input;
 pub mod output;
 pub mod render;
 pub mod scene;

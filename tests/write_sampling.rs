@@ -4,8 +4,8 @@
 mod writers_common;
 
 use animed::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value};
+use animed::format::export::channels::channels;
 use animed::format::sampling::{angle_between, slerp_shortest, Tolerances};
-use animed::format::write_anim::channels;
 use animed::scene::{Node, Scene};
 use glam::{Quat, Vec3};
 use proptest::prelude::*;

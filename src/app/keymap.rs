@@ -1,6 +1,6 @@
-//! minifb keys → editor keys.
+//! minifb keys → input keys.
 
-use crate::editor::Key;
+use crate::input::Key;
 use minifb::Key as K;
 
 pub fn key(k: K) -> Option<Key> {
@@ -65,6 +65,13 @@ pub fn key(k: K) -> Option<Key> {
         K::F3 => Key::F(3),
         K::F4 => Key::F(4),
         K::F5 => Key::F(5),
+        K::F6 => Key::F(6),
+        K::F7 => Key::F(7),
+        K::F8 => Key::F(8),
+        K::F9 => Key::F(9),
+        K::F10 => Key::F(10),
+        K::F11 => Key::F(11),
+        K::F12 => Key::F(12),
         _ => return None,
     })
 }

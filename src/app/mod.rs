@@ -4,11 +4,10 @@
 //! to no CPU.
 
 mod keymap;
-mod screen;
 
-pub use screen::Screen;
+pub use crate::input::Screen;
 
-use crate::editor::{Event, Mods, MouseButton};
+use crate::input::{Event, Mods, MouseButton};
 use crate::render::Frame;
 use minifb::{MouseMode, Window, WindowOptions};
 use std::cell::RefCell;

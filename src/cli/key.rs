@@ -227,7 +227,7 @@ fn new(a: NewArgs) -> Result<(), String> {
         if n.is_empty() || !names.insert(n.clone()) {
             return Err(format!("node name `{n}` is empty or given twice"));
         }
-        if crate::format::write_plan::sanitize(n) != *n {
+        if crate::format::export::plan::sanitize(n) != *n {
             return Err(format!(
                 "node name `{n}` must be letters, digits and `_`, not starting with a digit"
             ));

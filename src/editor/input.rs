@@ -3,11 +3,11 @@
 
 use super::browser::Purpose;
 use super::command::Command;
-use super::event::{Event, Key, Mods, MouseButton};
 use super::fields::{parse_number, FieldId, FieldValue};
 use super::ops;
 use super::panel::{Action, WidgetKind};
 use super::{After, Dialog, Editor, Mode, Playback, TextEdit};
+use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::{Node, NodeId, RenderStyle, Settings};
 
 /// State kept between mouse down and up.

@@ -9,10 +9,10 @@
 //! properties panel in `keyprops.rs`.
 
 use super::command::Command;
-use super::event::{Key as KeyName, Mods};
 use super::keyedit::{copy, retime, Clipboard};
 use super::Editor;
 use crate::anim::{Animation, Key, Property, Target, TargetRef, Value, KEY_EPS};
+use crate::input::{Key as KeyName, Mods};
 use crate::scene::NodeId;
 use crate::ui::layout::KEY_ROW_H;
 use crate::ui::Rect;

@@ -16,10 +16,8 @@
 
 pub mod bench;
 pub mod browser;
-pub mod camera;
 pub mod command;
 mod draw;
-pub mod event;
 pub mod fields;
 pub mod gizmo;
 pub mod help;
@@ -35,17 +33,18 @@ pub mod ops;
 pub mod panel;
 pub mod record;
 pub mod recovery;
+mod screen;
 pub mod script;
 mod viewport;
 
-pub use event::{Event, Key, Mods, MouseButton};
+pub use crate::input::{Event, Key, Mods, MouseButton};
 
 use crate::anim::Pose;
+use crate::input::OrbitCamera;
 use crate::render::Frame;
 use crate::scene::{NodeId, RenderStyle, Scene};
 use crate::ui::{Layout, Painter};
 use browser::{Browser, Purpose};
-use camera::OrbitCamera;
 use command::{Command, History};
 use fields::FieldId;
 use std::path::{Path, PathBuf};

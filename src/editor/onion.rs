@@ -81,7 +81,7 @@ struct OnionKey {
     /// The key frames shown (not the current frame: the copies stay
     /// while the frame moves between the same two keys).
     keys: (Option<f32>, Option<f32>),
-    camera: super::camera::OrbitCamera,
+    camera: crate::input::OrbitCamera,
     w: u32,
     h: u32,
     sel: NodeId,

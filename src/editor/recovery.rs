@@ -17,9 +17,9 @@
 //!   every second, scripts with `wait-frames` / `sleep-ms`.
 
 use super::command::Command;
-use super::event::{Event, Key, MouseButton};
 use super::panel::Action;
 use super::{After, Dialog, Editor};
+use crate::input::{Event, Key, MouseButton};
 use std::path::{Path, PathBuf};
 use std::time::{Instant, SystemTime};
 

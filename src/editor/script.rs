@@ -29,8 +29,8 @@
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
 //! modifiers: `alt+left`, `shift+middle`.
 
-use super::event::{Event, Key, Mods, MouseButton};
 use super::Editor;
+use crate::input::{Event, Key, Mods, MouseButton};
 use std::fmt;
 use std::path::{Path, PathBuf};
 

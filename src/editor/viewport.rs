@@ -2,8 +2,8 @@
 //! it changes), the ground grid behind it, the selection outline, light
 //! gizmos, and picking.
 
-use super::camera::Projector;
 use super::{gizmo, ops, Editor, LayerKey};
+use crate::input::camera::Projector;
 use crate::render::{self, Frame, RenderOptions};
 use crate::scene::{NodeId, NodeKind};
 use crate::ui::{line, theme, Painter, Rect};
@@ -180,7 +180,7 @@ impl Editor {
 
     /// A small xyz tripod in the viewport's lower-left corner.
     fn draw_axes(&self, p: &mut Painter, vp: Rect) {
-        let v = crate::editor::camera::look_at(self.camera.back(), Vec3::ZERO, Vec3::Y);
+        let v = crate::input::camera::look_at(self.camera.back(), Vec3::ZERO, Vec3::Y);
         let c = (vp.x as f32 + 22.0, vp.bottom() as f32 - 22.0);
         for (axis, color, name) in [
             (Vec3::X, 0xe05050, "x"),

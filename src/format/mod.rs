@@ -1,41 +1,34 @@
 //! Readers and writers for scene files. Every reader reports errors as
 //! `path:line:column: message` and never panics.
 
+//!
+//! Layout: one folder per format, each owning its reader and writer
+//! (`iv/` Inventor + VRML 1.0, `vrml97/`, `obj`), the shared reading pieces
+//! (`limits`: the input budget every read goes through; `lexer`, `syntax/` with PROTO expansion, `polygons`, `inline`, `gzip`,
+//! `hsv`) and the shared export code (`export/`: write plan, channels,
+//! sampling, key note, options, atomic save) beside them.
+
 mod error;
+pub mod export;
 pub mod gzip;
+pub mod hsv;
 pub mod inline;
 pub mod iv;
 pub mod lexer;
+pub mod limits;
+mod loaded;
 pub mod obj;
 pub mod polygons;
 pub mod syntax;
 pub mod vrml97;
 
 pub use error::LoadError;
+pub use export::{
+    keynote, sampling, save, InventorVersion, OutputFormat, SaveError, WriteOptions, WriteReport,
+};
+pub use loaded::Loaded;
 
-pub mod keynote;
-pub mod limits;
-pub mod sampling;
-pub mod save;
-pub mod write_anim;
-mod write_iv;
-pub mod write_plan;
-mod write_text;
-mod write_vrml97;
-
-pub use save::{save, InventorVersion, OutputFormat, SaveError, WriteOptions, WriteReport};
-
-use crate::scene::Scene;
 use std::path::Path;
-
-/// A loaded scene plus what the reader could not fully use.
-#[derive(Debug, Default)]
-pub struct Loaded {
-    pub scene: Scene,
-    /// Non-fatal problems (unknown node, unsupported feature), each already
-    /// formatted as `path:line:column: message`.
-    pub warnings: Vec<String>,
-}
 
 /// Loads any supported file from disk, detecting the format by content,
 /// within the default input budget ([`limits::defaults`]).

@@ -3,7 +3,7 @@
 //! camera once the user drags.
 
 use crate::anim::Pose;
-use crate::editor::camera::OrbitCamera;
+use crate::input::camera::OrbitCamera;
 use crate::render::job::view_for;
 use crate::render::View;
 use crate::scene::{NodeId, Scene};

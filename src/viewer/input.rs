@@ -4,7 +4,7 @@
 
 use super::draw::{bar_rect, time_at_x, viewport_rect};
 use super::{Drag, Eye, Viewer};
-use crate::editor::{Event, Key, Mods, MouseButton};
+use crate::input::{Event, Key, Mods, MouseButton};
 
 impl Viewer {
     /// Feeds one event; returns true when the picture needs redrawing.
@@ -86,7 +86,7 @@ impl Viewer {
     }
 
     /// The orbit camera, turning the current view into one first.
-    fn orbit_camera(&mut self) -> &mut crate::editor::camera::OrbitCamera {
+    fn orbit_camera(&mut self) -> &mut crate::input::camera::OrbitCamera {
         if !matches!(self.eye, Eye::Orbit(_)) {
             self.eye = Eye::Orbit(self.orbit_from_current());
         }

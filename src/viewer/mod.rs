@@ -3,8 +3,8 @@
 //! `app::run` (the same window loop as the editor), and driven directly by
 //! tests.
 //!
-//! It shares the editor's input events, its orbit camera
-//! (`editor::camera::OrbitCamera`) and the overlay painter (`ui`); what is
+//! It shares the input events, the orbit camera
+//! (`input::OrbitCamera`) and the overlay painter (`ui`); what is
 //! its own is the playback [`clock::Clock`] (real time, dropping frames,
 //! looping), the viewpoint cycle and the scrub bar.
 
@@ -16,7 +16,7 @@ mod input;
 pub use clock::Clock;
 pub use eye::Eye;
 
-use crate::editor::camera::OrbitCamera;
+use crate::input::camera::OrbitCamera;
 use crate::render::job::{find_camera, Headlight};
 use crate::render::Frame;
 use crate::scene::{NodeId, Scene};
@@ -224,11 +224,11 @@ impl Viewer {
     }
 }
 
-impl crate::app::Screen for Viewer {
+impl crate::input::Screen for Viewer {
     fn size(&self) -> (u32, u32) {
         Viewer::size(self)
     }
-    fn handle(&mut self, ev: crate::editor::Event) -> bool {
+    fn handle(&mut self, ev: crate::input::Event) -> bool {
         Viewer::handle(self, ev)
     }
     fn draw(&mut self, frame: &mut Frame) {

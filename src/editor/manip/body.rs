@@ -7,7 +7,7 @@
 //! on release) stays in charge until the mouse moves past a few pixels.
 
 use super::geom::{pixel_ray, ray_plane};
-use crate::editor::camera::Projector;
+use crate::input::camera::Projector;
 use glam::Vec3;
 
 /// Pixels the mouse may move before a press on the body becomes a drag

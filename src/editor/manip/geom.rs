@@ -1,7 +1,7 @@
 //! The maths every handle shares: the mouse ray, closest points of two
 //! lines, ray–plane intersection, screen-space hit tests and snapping.
 
-use crate::editor::camera::Projector;
+use crate::input::camera::Projector;
 use glam::{Vec3, Vec4};
 
 /// Unit vector of world axis `i`.
@@ -132,7 +132,7 @@ pub fn grid_step(radius: f32) -> f32 {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::editor::camera::{look_at, perspective};
+    use crate::input::camera::{look_at, perspective};
     use crate::render::View;
 
     /// A perspective projector looking at the origin from (4, 3, 6).

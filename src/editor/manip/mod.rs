@@ -22,11 +22,11 @@ pub mod translate;
 pub use geom::{axis, closest_on_line, grid_step, pixel_ray, ray_plane, snap};
 
 use super::command::Command;
-use super::event::{Key, Mods};
 use super::input::Drag;
 use super::record::Pending;
 use super::{ops, Editor};
 use crate::anim::Property;
+use crate::input::{Key, Mods};
 use crate::scene::{LightKind, Node, NodeId, NodeKind};
 use crate::ui::Painter;
 use glam::{Mat4, Quat, Vec3};

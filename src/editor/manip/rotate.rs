@@ -19,7 +19,7 @@
 
 use super::geom::{angle_about, axis, pixel_ray, ray_plane, seg_dist};
 use super::{Handle, ARROW_PX, AXIS_COLORS, GRAB_PX, HOT};
-use crate::editor::camera::Projector;
+use crate::input::camera::Projector;
 use crate::scene::{Node, NodeKind};
 use crate::ui::Painter;
 use glam::{Mat4, Quat, Vec3};

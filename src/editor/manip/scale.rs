@@ -11,7 +11,7 @@
 
 use super::geom::{closest_on_line, in_box, pixel_ray, seg_dist, snap};
 use super::{Handle, ARROW_PX, AXIS_COLORS, GRAB_PX, HOT};
-use crate::editor::camera::Projector;
+use crate::input::camera::Projector;
 use crate::scene::Node;
 use crate::ui::Painter;
 use glam::Vec3;

@@ -10,7 +10,7 @@
 use super::geom::{axis, closest_on_line, in_quad, pixel_ray, ray_plane, seg_dist, snap};
 use super::{Handle, ARROW_PX, AXIS_COLORS, GRAB_PX, HOT};
 use crate::anim::Property;
-use crate::editor::camera::Projector;
+use crate::input::camera::Projector;
 use crate::scene::{Node, NodeKind};
 use crate::ui::Painter;
 use glam::Vec3;

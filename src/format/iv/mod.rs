@@ -6,6 +6,7 @@ mod animated;
 mod build;
 mod shapes;
 mod state;
+pub mod write;
 
 use super::syntax::{self, Options};
 use super::vrml97::fmt_warning;

@@ -8,6 +8,7 @@
 
 use super::build::Builder;
 use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
+use crate::format::hsv::{hsv_to_rgb, lerp_hsv, rgb_to_hsv};
 use crate::format::syntax::{AstNode, NodeRef, Route};
 use crate::scene::{NodeKind, Settings};
 use glam::{Quat, Vec3};
@@ -425,7 +426,7 @@ fn hsv_resample(fractions: &[f64], colors: &[Vec3]) -> (Vec<f64>, Vec<Vec3>) {
             let (a, b) = (rgb_to_hsv(colors[i]), rgb_to_hsv(colors[i + 1]));
             let rgb_path_differs = (1..HSV_STEPS).any(|s| {
                 let t = s as f32 / HSV_STEPS as f32;
-                (hsv_to_rgb(hsv_lerp(a, b, t)) - colors[i].lerp(colors[i + 1], t))
+                (hsv_to_rgb(lerp_hsv(a, b, t)) - colors[i].lerp(colors[i + 1], t))
                     .abs()
                     .max_element()
                     > 1e-3
@@ -434,68 +435,10 @@ fn hsv_resample(fractions: &[f64], colors: &[Vec3]) -> (Vec<f64>, Vec<Vec3>) {
                 for s in 1..HSV_STEPS {
                     let t = s as f32 / HSV_STEPS as f32;
                     f.push(fractions[i] + (fractions[i + 1] - fractions[i]) * t as f64);
-                    c.push(hsv_to_rgb(hsv_lerp(a, b, t)));
+                    c.push(hsv_to_rgb(lerp_hsv(a, b, t)));
                 }
             }
         }
     }
     (f, c)
-}
-
-/// Hue in [0, 6), saturation, value.
-pub(crate) fn rgb_to_hsv(c: Vec3) -> Vec3 {
-    let max = c.max_element();
-    let min = c.min_element();
-    let d = max - min;
-    let h = if d <= 0.0 {
-        0.0
-    } else if max == c.x {
-        ((c.y - c.z) / d).rem_euclid(6.0)
-    } else if max == c.y {
-        (c.z - c.x) / d + 2.0
-    } else {
-        (c.x - c.y) / d + 4.0
-    };
-    let s = if max > 0.0 { d / max } else { 0.0 };
-    Vec3::new(h, s, max)
-}
-
-pub(crate) fn hsv_to_rgb(hsv: Vec3) -> Vec3 {
-    let (h, s, v) = (hsv.x.rem_euclid(6.0), hsv.y, hsv.z);
-    let i = h.floor();
-    let f = h - i;
-    let p = v * (1.0 - s);
-    let q = v * (1.0 - s * f);
-    let t = v * (1.0 - s * (1.0 - f));
-    match i as i32 {
-        0 => Vec3::new(v, t, p),
-        1 => Vec3::new(q, v, p),
-        2 => Vec3::new(p, v, t),
-        3 => Vec3::new(p, q, v),
-        4 => Vec3::new(t, p, v),
-        _ => Vec3::new(v, p, q),
-    }
-}
-
-/// Blends two HSV colours the short way round the hue circle; a grey end
-/// takes the other end's hue.
-fn hsv_lerp(a: Vec3, b: Vec3, t: f32) -> Vec3 {
-    let (mut ha, mut hb) = (a.x, b.x);
-    if a.y == 0.0 {
-        ha = hb;
-    }
-    if b.y == 0.0 {
-        hb = ha;
-    }
-    let mut dh = hb - ha;
-    if dh > 3.0 {
-        dh -= 6.0;
-    } else if dh < -3.0 {
-        dh += 6.0;
-    }
-    Vec3::new(
-        (ha + dh * t).rem_euclid(6.0),
-        a.y + (b.y - a.y) * t,
-        a.z + (b.z - a.z) * t,
-    )
 }

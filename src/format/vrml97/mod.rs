@@ -5,6 +5,7 @@
 mod animation;
 mod build;
 mod geometry;
+pub mod write;
 
 use super::lexer::Pos;
 use super::syntax::{self, Options};

@@ -5,6 +5,7 @@
 //! written as the axis-angle that reads back to a quaternion which writes
 //! the same axis-angle again (so export → import → export is stable).
 
+use crate::scene::Transform;
 use glam::{Quat, Vec3};
 use std::fmt::Write as _;
 
@@ -49,6 +50,21 @@ impl Out {
     fn open_list(&mut self, name: &str) {
         self.line(&format!("{name} ["));
         self.depth += 1;
+    }
+}
+
+/// The `scaleOrientation` and `center` lines of a transform when they are
+/// not the default: VRML97 and Inventor transforms name them alike.
+pub fn pivot_fields(out: &mut Out, t: &Transform) {
+    let d = Transform::default();
+    if t.scale_orientation != d.scale_orientation {
+        out.line(&format!(
+            "scaleOrientation {}",
+            rotation(t.scale_orientation)
+        ));
+    }
+    if t.center != d.center {
+        out.line(&format!("center {}", vec3(t.center)));
     }
 }
 

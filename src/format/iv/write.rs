@@ -29,13 +29,13 @@
 //! and vertex colours need a per-vertex Material. The key note (an `Info`
 //! node) keeps every authored key, fps, duration, background and headlight.
 
-use super::keynote;
-use super::sampling::{per_frame_keys, slerp_shortest, Sample, Tolerances};
-use super::save::{ChannelReport, InventorVersion, WriteOptions, WriteReport};
-use super::write_anim::{channels, scene_diagonal, Channel};
-use super::write_plan::WritePlan;
-use super::write_text::{num, quoted, rotation, rows, vec3, Out};
 use crate::anim::{Property, TargetRef, Value};
+use crate::format::export::channels::{channels, scene_diagonal, Channel};
+use crate::format::export::keynote;
+use crate::format::export::options::{ChannelReport, InventorVersion, WriteOptions, WriteReport};
+use crate::format::export::plan::WritePlan;
+use crate::format::export::sampling::{per_frame_keys, slerp_shortest, Sample, Tolerances};
+use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
 use crate::scene::{
     Camera, CameraKind, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene, Shape, Transform,
 };
@@ -482,15 +482,7 @@ impl Writer<'_> {
         if t.scale != d.scale || anim(self, Property::Scale) {
             self.field(of, Property::Scale, "scaleFactor", &vec3(t.scale));
         }
-        if t.scale_orientation != d.scale_orientation {
-            self.out.line(&format!(
-                "scaleOrientation {}",
-                rotation(t.scale_orientation)
-            ));
-        }
-        if t.center != d.center {
-            self.out.line(&format!("center {}", vec3(t.center)));
-        }
+        pivot_fields(&mut self.out, t);
     }
 
     fn content(&mut self, id: NodeId) {

@@ -3,23 +3,23 @@
 //! the authored keys in a WorldInfo key note (see `keynote`).
 //!
 //! * Each scene node is a `Transform` (or just its content when the
-//!   transform is the identity and nothing animates it; see `write_plan`).
+//!   transform is the identity and nothing animates it; see `export::plan`).
 //! * Shapes: `IndexedFaceSet` with per-vertex normals and colours,
 //!   `IndexedLineSet`, `PointSet`; shared meshes and materials are DEF/USE.
 //! * The clock: `TimeSensor { cycleInterval = duration / fps, loop TRUE }`;
 //!   key fractions are `frame / duration`.
 //! * Interpolators are sampled adaptively (`sampling`), visibility and light
-//!   `on` are folded into scale and intensity (`write_anim`).
+//!   `on` are folded into scale and intensity (`export::channels`).
 //! * Not in VRML97, so kept only in the key note: spot `dropOffRate`,
 //!   render styles, orthographic cameras (written as a Viewpoint).
 
-use super::keynote;
-use super::sampling::{per_frame_keys, Tolerances};
-use super::save::{ChannelReport, WriteOptions, WriteReport};
-use super::write_anim::{channels, scene_diagonal, Channel};
-use super::write_plan::WritePlan;
-use super::write_text::{num, quoted, rotation, rows, vec3, Out};
 use crate::anim::{Property, TargetRef, Value};
+use crate::format::export::channels::{channels, scene_diagonal, Channel};
+use crate::format::export::keynote;
+use crate::format::export::options::{ChannelReport, WriteOptions, WriteReport};
+use crate::format::export::plan::WritePlan;
+use crate::format::export::sampling::{per_frame_keys, Tolerances};
+use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
 use crate::scene::{
     Camera, CameraKind, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene, Shape, Transform,
 };
@@ -171,15 +171,7 @@ impl Writer<'_> {
         if t.scale != d.scale {
             self.out.line(&format!("scale {}", vec3(t.scale)));
         }
-        if t.scale_orientation != d.scale_orientation {
-            self.out.line(&format!(
-                "scaleOrientation {}",
-                rotation(t.scale_orientation)
-            ));
-        }
-        if t.center != d.center {
-            self.out.line(&format!("center {}", vec3(t.center)));
-        }
+        pivot_fields(&mut self.out, t);
     }
 
     fn content(&mut self, id: NodeId) {

@@ -27,9 +27,9 @@
 //! * Lines after `end` are ignored; blank lines and lines starting with `#`
 //!   are skipped.
 
-use super::write_plan::WritePlan;
-use super::Loaded;
+use super::plan::WritePlan;
 use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, ValueKind};
+use crate::format::Loaded;
 use crate::scene::{NodeKind, RenderStyle, Scene};
 use glam::{Quat, Vec3};
 use std::fmt::Write as _;

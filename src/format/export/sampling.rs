@@ -17,7 +17,8 @@
 //! 0.1°, colours and other 0..1 values 0.002.
 
 use crate::anim::{Property, Value};
-use glam::{Quat, Vec3};
+use crate::format::hsv::hsv_lerp_rgb;
+use glam::Quat;
 
 /// How far the played curve may stray from the authored one.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -215,7 +216,7 @@ fn played_error(metric: Metric, authored: Value, a: Value, b: Value, f: f32) -> 
     let e = error(metric, authored, played(a, b, f));
     match (metric, a, b) {
         (Metric::Color(_), Value::Vec3(x), Value::Vec3(y)) => {
-            e.max(error(metric, authored, Value::Vec3(hsv_lerp(x, y, f))))
+            e.max(error(metric, authored, Value::Vec3(hsv_lerp_rgb(x, y, f))))
         }
         _ => e,
     }
@@ -241,63 +242,6 @@ pub fn slerp_shortest(a: Quat, b: Quat, f: f32) -> Quat {
     (a * wa + b * wb).normalize()
 }
 
-/// RGB → HSV (h in [0, 6), s, v in [0, 1]).
-fn rgb_to_hsv(c: Vec3) -> Vec3 {
-    let max = c.max_element();
-    let min = c.min_element();
-    let d = max - min;
-    let h = if d <= 0.0 {
-        0.0
-    } else if max == c.x {
-        ((c.y - c.z) / d).rem_euclid(6.0)
-    } else if max == c.y {
-        (c.z - c.x) / d + 2.0
-    } else {
-        (c.x - c.y) / d + 4.0
-    };
-    let s = if max <= 0.0 { 0.0 } else { d / max };
-    Vec3::new(h, s, max)
-}
-
-fn hsv_to_rgb(hsv: Vec3) -> Vec3 {
-    let (h, s, v) = (hsv.x.rem_euclid(6.0), hsv.y, hsv.z);
-    let c = v * s;
-    let x = c * (1.0 - ((h % 2.0) - 1.0).abs());
-    let (r, g, b) = match h as u32 {
-        0 => (c, x, 0.0),
-        1 => (x, c, 0.0),
-        2 => (0.0, c, x),
-        3 => (0.0, x, c),
-        4 => (x, 0.0, c),
-        _ => (c, 0.0, x),
-    };
-    Vec3::new(r, g, b) + Vec3::splat(v - c)
-}
-
-/// Colour interpolation in HSV along the shorter way round the hue circle
-/// (VRML97 §6.10 ColorInterpolator). Greys take the other colour's hue.
-pub fn hsv_lerp(a: Vec3, b: Vec3, f: f32) -> Vec3 {
-    let mut x = rgb_to_hsv(a);
-    let mut y = rgb_to_hsv(b);
-    if x.y == 0.0 {
-        x.x = y.x;
-    }
-    if y.y == 0.0 {
-        y.x = x.x;
-    }
-    let mut dh = y.x - x.x;
-    if dh > 3.0 {
-        dh -= 6.0;
-    } else if dh < -3.0 {
-        dh += 6.0;
-    }
-    hsv_to_rgb(Vec3::new(
-        x.x + dh * f,
-        x.y + (y.y - x.y) * f,
-        x.z + (y.z - x.z) * f,
-    ))
-}
-
 /// Keys a per-frame bake of `duration` frames would need (frames 0..=duration).
 pub fn per_frame_keys(duration: f32) -> usize {
     if duration.is_finite() && duration > 0.0 {
@@ -310,6 +254,7 @@ pub fn per_frame_keys(duration: f32) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::Vec3;
 
     fn max_err(curve: &Curve, s: &[Sample], duration: f32) -> f32 {
         let mut worst = 0.0f32;
@@ -399,10 +344,10 @@ mod tests {
     fn hsv_lerp_goes_the_short_way_round() {
         let red = Vec3::new(1.0, 0.0, 0.0);
         let magenta = Vec3::new(1.0, 0.0, 1.0);
-        let m = hsv_lerp(red, magenta, 0.5);
+        let m = hsv_lerp_rgb(red, magenta, 0.5);
         assert!((m - Vec3::new(1.0, 0.0, 0.5)).length() < 1e-6, "{m}");
-        assert!((hsv_lerp(red, magenta, 0.0) - red).length() < 1e-6);
-        assert!((hsv_lerp(red, magenta, 1.0) - magenta).length() < 1e-6);
+        assert!((hsv_lerp_rgb(red, magenta, 0.0) - red).length() < 1e-6);
+        assert!((hsv_lerp_rgb(red, magenta, 1.0) - magenta).length() < 1e-6);
     }
 
     #[test]

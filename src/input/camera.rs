@@ -1,4 +1,4 @@
-//! The editor's viewport camera: an orbit camera around a target point,
+//! The orbit camera the editor viewport and the viewer turn with the mouse,
 //! plus projection of world points to viewport pixels for the overlay.
 
 use crate::render::View;

@@ -4,73 +4,11 @@
 //!
 //! `.wrl` → VRML97, `.wrl.gz` / `.wrz` → gzip'd VRML97, `.iv` → Inventor.
 
-use super::{write_iv, write_vrml97};
+use super::options::{WriteOptions, WriteReport};
+use crate::format::{iv, vrml97};
 use crate::scene::Scene;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
-
-/// Which Inventor text version to write.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum InventorVersion {
-    /// `#Inventor V2.1 ascii`: scene plus engine-driven animation.
-    #[default]
-    V2_1,
-    /// `#Inventor V1.0 ascii`: the still scene (for 1.0-only readers such
-    /// as view3dscene); the animation survives only in the key note.
-    V1_0,
-}
-
-/// Writer settings.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct WriteOptions {
-    /// Position tolerance as a fraction of the scene's bounding-box diagonal
-    /// (also the relative scale tolerance).
-    pub tolerance: f32,
-    /// Rotation/direction/angle tolerance in degrees.
-    pub angle_tolerance: f32,
-    pub inventor_version: InventorVersion,
-}
-
-impl Default for WriteOptions {
-    fn default() -> Self {
-        WriteOptions {
-            tolerance: 0.001,
-            angle_tolerance: 0.1,
-            inventor_version: InventorVersion::V2_1,
-        }
-    }
-}
-
-/// Per animated field: how many keys went into the file.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ChannelReport {
-    /// `NAME.field` as written.
-    pub name: String,
-    pub authored_keys: usize,
-    pub written_keys: usize,
-    /// What a per-frame bake of the same field would need.
-    pub per_frame_keys: usize,
-}
-
-/// What a writer did, for `convert --verbose` and the tests.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct WriteReport {
-    pub channels: Vec<ChannelReport>,
-    /// Things the format cannot hold, each a sentence.
-    pub warnings: Vec<String>,
-}
-
-impl WriteReport {
-    pub fn written_keys(&self) -> usize {
-        self.channels.iter().map(|c| c.written_keys).sum()
-    }
-    pub fn per_frame_keys(&self) -> usize {
-        self.channels.iter().map(|c| c.per_frame_keys).sum()
-    }
-    pub fn authored_keys(&self) -> usize {
-        self.channels.iter().map(|c| c.authored_keys).sum()
-    }
-}
 
 /// A file format the writers produce.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -126,15 +64,15 @@ pub fn to_bytes(
 ) -> (Vec<u8>, WriteReport) {
     match format {
         OutputFormat::Vrml97 => {
-            let (text, report) = write_vrml97::write(scene, opts);
+            let (text, report) = vrml97::write::write(scene, opts);
             (text.into_bytes(), report)
         }
         OutputFormat::Vrml97Gz => {
-            let (text, report) = write_vrml97::write(scene, opts);
+            let (text, report) = vrml97::write::write(scene, opts);
             (gzip(text.as_bytes()), report)
         }
         OutputFormat::Inventor => {
-            let (text, report) = write_iv::write(scene, opts);
+            let (text, report) = iv::write::write(scene, opts);
             (text.into_bytes(), report)
         }
     }

@@ -1,4 +1,4 @@
-//! Input events the editor understands. The window (`app/`) and headless
+//! Input events every screen understands. The window (`app/`) and headless
 //! scripts (`script.rs`) both translate their input into these.
 
 /// Modifier keys held during an event.
