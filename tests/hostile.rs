@@ -13,3 +13,5 @@ mod gen;
 mod memory;
 #[path = "hostile/reading.rs"]
 mod reading;
+#[path = "hostile/writing.rs"]
+mod writing;

@@ -136,3 +136,25 @@ pub fn inline_many(name: &str, n: usize) -> Vec<u8> {
     }
     s.into_bytes()
 }
+
+/// `n` nested Separators, each with a Translation (Inventor).
+pub fn nested_separators(n: usize) -> Vec<u8> {
+    let mut s = String::from("#Inventor V2.1 ascii\n");
+    for _ in 0..n {
+        s += "Separator { Translation { translation 0.1 0 0 }\n";
+    }
+    s += "Cube {}\n";
+    s += &"}\n".repeat(n);
+    s.into_bytes()
+}
+
+/// VRML 1.0 with `n` sibling DEF'd Groups: state leaks from each into the
+/// next, so the scene nests n deep though the file nests 3.
+pub fn vrml1_sibling_groups(n: usize) -> Vec<u8> {
+    let mut s = String::from("#VRML V1.0 ascii\nSeparator {\n");
+    for i in 0..n {
+        s += &format!("DEF G{i} Group {{ Translation {{ translation 0.1 0 0 }} Cube {{}} }}\n");
+    }
+    s += "}\n";
+    s.into_bytes()
+}

@@ -39,6 +39,13 @@ impl OutputFormat {
 pub enum SaveError {
     UnknownExtension(PathBuf),
     Io(PathBuf, std::io::Error),
+    /// The written file would nest deeper than animed's reader reads:
+    /// refused rather than written unreadable.
+    TooDeep {
+        path: PathBuf,
+        depth: usize,
+        max: u64,
+    },
 }
 
 impl std::fmt::Display for SaveError {
@@ -50,6 +57,14 @@ impl std::fmt::Display for SaveError {
                 p.display()
             ),
             SaveError::Io(p, e) => write!(f, "{}: {e}", p.display()),
+            SaveError::TooDeep { path, depth, max } => write!(
+                f,
+                "{}: not written: the file would nest {depth} levels deep and animed reads \
+                 at most {max} (raise it with --max-depth N or ANIMED_MAX_DEPTH=N, up to {}, \
+                 when writing and when reading)",
+                path.display(),
+                crate::format::limits::DEPTH_CEILING
+            ),
         }
     }
 }
@@ -62,19 +77,22 @@ pub fn to_bytes(
     format: OutputFormat,
     opts: &WriteOptions,
 ) -> (Vec<u8>, WriteReport) {
+    let (text, report) = to_text(scene, format, opts);
+    (encode(text, format), report)
+}
+
+/// The text of `scene` in `format` (before any gzip).
+fn to_text(scene: &Scene, format: OutputFormat, opts: &WriteOptions) -> (String, WriteReport) {
     match format {
-        OutputFormat::Vrml97 => {
-            let (text, report) = vrml97::write::write(scene, opts);
-            (text.into_bytes(), report)
-        }
-        OutputFormat::Vrml97Gz => {
-            let (text, report) = vrml97::write::write(scene, opts);
-            (gzip(text.as_bytes()), report)
-        }
-        OutputFormat::Inventor => {
-            let (text, report) = iv::write::write(scene, opts);
-            (text.into_bytes(), report)
-        }
+        OutputFormat::Vrml97 | OutputFormat::Vrml97Gz => vrml97::write::write(scene, opts),
+        OutputFormat::Inventor => iv::write::write(scene, opts),
+    }
+}
+
+fn encode(text: String, format: OutputFormat) -> Vec<u8> {
+    match format {
+        OutputFormat::Vrml97Gz => gzip(text.as_bytes()),
+        _ => text.into_bytes(),
     }
 }
 
@@ -93,7 +111,18 @@ pub fn gzip(data: &[u8]) -> Vec<u8> {
 pub fn save(scene: &Scene, path: &Path, opts: &WriteOptions) -> Result<WriteReport, SaveError> {
     let format =
         OutputFormat::from_path(path).ok_or_else(|| SaveError::UnknownExtension(path.into()))?;
-    let (bytes, report) = to_bytes(scene, format, opts);
+    let (text, report) = to_text(scene, format, opts);
+    // Never write what our own reader would refuse.
+    let depth = super::text::nesting(&text);
+    let max = crate::format::limits::current().max_depth;
+    if depth as u64 > max {
+        return Err(SaveError::TooDeep {
+            path: path.into(),
+            depth,
+            max,
+        });
+    }
+    let bytes = encode(text, format);
     write_atomic(path, &bytes).map_err(|e| SaveError::Io(path.into(), e))?;
     Ok(report)
 }
