@@ -14,6 +14,8 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 /// The name `info` shows for a node and `sample` accepts: its DEF name, or
@@ -134,10 +136,29 @@ pub fn describe(loaded: &format::Loaded) -> Json {
         "cameras": cameras,
         "fps": short(s.settings.fps),
         "duration": short(s.duration_seconds()),
+        "animations": clips_json(s),
+        "animation": s.clips.active(),
         "tracks": tracks,
         "info": s.info,
         "warnings": loaded.warnings,
     })
+}
+
+/// Every clip: name, length and track count, the playing one marked.
+fn clips_json(s: &Scene) -> Json {
+    let fps = s.settings.fps.max(1e-6);
+    s.clip_refs()
+        .iter()
+        .map(|c| {
+            json!({
+                "index": c.index,
+                "name": c.name,
+                "duration": short(c.duration / fps),
+                "tracks": c.animation.tracks.len(),
+                "playing": c.playing,
+            })
+        })
+        .collect()
 }
 
 fn print_text(path: &std::path::Path, d: &Json) {
@@ -179,6 +200,24 @@ fn print_text(path: &std::path::Path, d: &Json) {
             }
         );
     }
+    let clips = list("animations");
+    if clips.len() > 1 || clips.iter().any(|c| c["name"] != json!("")) {
+        println!("animations: {}", clips.len());
+        for c in &clips {
+            println!(
+                "  {}{} `{}`: {} tracks, {:.3} s",
+                if c["playing"] == json!(true) {
+                    "*"
+                } else {
+                    " "
+                },
+                c["index"],
+                c["name"].as_str().unwrap_or(""),
+                c["tracks"],
+                c["duration"].as_f64().unwrap_or(0.0)
+            );
+        }
+    }
     let tracks = list("tracks");
     println!(
         "tracks:     {}   ({} fps, {:.3} s)",
@@ -208,13 +247,17 @@ fn print_text(path: &std::path::Path, d: &Json) {
 }
 
 pub fn run(args: Args) -> i32 {
-    let loaded = match format::load(&args.file) {
+    let mut loaded = match format::load(&args.file) {
         Ok(l) => l,
         Err(e) => {
             eprintln!("{e}");
             return 1;
         }
     };
+    if let Err(e) = args.clip.apply(&mut loaded.scene) {
+        eprintln!("animed info: {e}");
+        return 2;
+    }
     let d = describe(&loaded);
     if args.json {
         println!("{}", serde_json::to_string_pretty(&d).unwrap_or_default());

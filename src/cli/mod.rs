@@ -1,6 +1,7 @@
 //! The command line: one file per subcommand, each with its `Args` and `run`.
 
 pub mod bench;
+pub mod clip_arg;
 pub mod convert;
 pub mod edit;
 pub mod info;

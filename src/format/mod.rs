@@ -4,7 +4,8 @@
 //!
 //! Layout: one folder per format, each owning its reader and writer
 //! (`iv/` Inventor + VRML 1.0, `vrml97/`, `obj`), the shared reading pieces
-//! (`limits`: the input budget every read goes through; `lexer`, `syntax/` with PROTO expansion, `polygons`, `inline`, `gzip`,
+//! (`limits`: the input budget every read goes through; `lexer`, `syntax/`
+//! with PROTO expansion, `polygons`, `inline`, `gzip`, `sgi_image`,
 //! `hsv`) and the shared export code (`export/`: write plan, channels,
 //! sampling, key note, options, atomic save) beside them.
 
@@ -19,6 +20,7 @@ pub mod limits;
 mod loaded;
 pub mod obj;
 pub mod polygons;
+pub mod sgi_image;
 pub mod syntax;
 pub mod vrml97;
 

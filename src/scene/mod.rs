@@ -5,6 +5,7 @@
 //! place in the tree is `parent` + `children`. Meshes and materials are shared
 //! by id so that DEF/USE in the files maps onto sharing here.
 
+mod clips;
 mod light;
 mod material;
 mod mesh;
@@ -13,6 +14,7 @@ pub mod normals;
 pub mod primitives;
 mod transform;
 
+pub use clips::{Clip, ClipRef, Clips};
 pub use light::{Camera, CameraKind, Light, LightKind};
 pub use material::Material;
 pub use mesh::Mesh;
@@ -79,7 +81,10 @@ pub struct Scene {
     pub meshes: Vec<Mesh>,
     pub materials: Vec<Material>,
     pub settings: Settings,
+    /// The playing clip's tracks (see [`Clips`] for the others).
     pub animation: Animation,
+    /// Clip names and order, and the clips that are not playing.
+    pub clips: Clips,
     pub format: SourceFormat,
     /// Free text from WorldInfo/Info nodes that is not animed's own key note.
     pub info: Vec<String>,
