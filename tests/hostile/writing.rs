@@ -50,7 +50,10 @@ fn a_scene_too_deep_to_read_back_is_refused_not_written() {
     match save(&src.scene, &f, &WriteOptions::default()) {
         Err(e @ SaveError::TooDeep { .. }) => {
             let m = e.to_string();
-            assert!(m.contains("--max-depth") && m.contains("levels deep"), "{m}");
+            assert!(
+                m.contains("--max-depth") && m.contains("levels deep"),
+                "{m}"
+            );
         }
         Err(e) => panic!("{e}"),
         // Written: then it must read back.
