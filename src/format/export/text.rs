@@ -142,42 +142,6 @@ pub fn rows<T>(items: &[T], per_row: usize, item: impl Fn(&T) -> String, sep: &s
         .collect()
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn numbers_round_trip_exactly() {
-        for x in [0.1f32, 1.0 / 3.0, 1e-7, 123456.79, -0.0, 3.4e38] {
-            assert_eq!(num(x).parse::<f32>().unwrap().to_bits(), x.to_bits());
-        }
-        assert_eq!(num(f32::NAN), "0");
-    }
-
-    #[test]
-    fn rotation_text_is_a_fixed_point() {
-        for (axis, angle) in [
-            (Vec3::new(1.0, 2.0, 3.0), 0.7f32),
-            (Vec3::Y, 3.0),
-            (Vec3::new(-0.3, 0.1, 0.9), 5.9),
-            (Vec3::X, 0.0),
-        ] {
-            let q = Quat::from_axis_angle(axis.normalize(), angle);
-            let text = rotation(q);
-            let n: Vec<f32> = text.split(' ').map(|w| w.parse().unwrap()).collect();
-            let back =
-                Quat::from_axis_angle(Vec3::new(n[0], n[1], n[2]).normalize_or(Vec3::X), n[3]);
-            assert_eq!(rotation(back), text);
-            assert!(back.dot(q).abs() > 0.99999);
-        }
-    }
-
-    #[test]
-    fn strings_are_escaped() {
-        assert_eq!(quoted(r#"a "b" \c"#), r#""a \"b\" \\c""#);
-    }
-}
-
 /// How deep the nodes of a written file nest: the deepest `{` outside
 /// strings and comments (each node of our output opens one). Checked on
 /// save against the reader's depth limit.
@@ -213,4 +177,40 @@ pub fn nesting(text: &str) -> usize {
         }
     }
     deepest
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_round_trip_exactly() {
+        for x in [0.1f32, 1.0 / 3.0, 1e-7, 123456.79, -0.0, 3.4e38] {
+            assert_eq!(num(x).parse::<f32>().unwrap().to_bits(), x.to_bits());
+        }
+        assert_eq!(num(f32::NAN), "0");
+    }
+
+    #[test]
+    fn rotation_text_is_a_fixed_point() {
+        for (axis, angle) in [
+            (Vec3::new(1.0, 2.0, 3.0), 0.7f32),
+            (Vec3::Y, 3.0),
+            (Vec3::new(-0.3, 0.1, 0.9), 5.9),
+            (Vec3::X, 0.0),
+        ] {
+            let q = Quat::from_axis_angle(axis.normalize(), angle);
+            let text = rotation(q);
+            let n: Vec<f32> = text.split(' ').map(|w| w.parse().unwrap()).collect();
+            let back =
+                Quat::from_axis_angle(Vec3::new(n[0], n[1], n[2]).normalize_or(Vec3::X), n[3]);
+            assert_eq!(rotation(back), text);
+            assert!(back.dot(q).abs() > 0.99999);
+        }
+    }
+
+    #[test]
+    fn strings_are_escaped() {
+        assert_eq!(quoted(r#"a "b" \c"#), r#""a \"b\" \\c""#);
+    }
 }

@@ -118,7 +118,7 @@ impl Writer<'_> {
             return;
         }
         let mut closes = 0;
-        let mut own = node.transform.clone();
+        let mut own = node.transform;
         // A raw matrix on a node with no transform of its own, not driven
         // by a track, becomes that node's Transform: no extra level (a
         // chain of Inventor Translations would otherwise nest twice as deep).
