@@ -13,5 +13,7 @@ mod gen;
 mod memory;
 #[path = "hostile/reading.rs"]
 mod reading;
+#[path = "hostile/saving.rs"]
+mod saving;
 #[path = "hostile/writing.rs"]
 mod writing;

@@ -4,6 +4,7 @@
 //!
 //! `.wrl` → VRML97, `.wrl.gz` / `.wrz` → gzip'd VRML97, `.iv` → Inventor.
 
+use super::atomic::Replace;
 use super::options::{WriteOptions, WriteReport};
 use crate::format::{iv, vrml97};
 use crate::scene::Scene;
@@ -109,6 +110,16 @@ pub fn gzip(data: &[u8]) -> Vec<u8> {
 
 /// Saves `scene` to `path`, the format chosen by its extension.
 pub fn save(scene: &Scene, path: &Path, opts: &WriteOptions) -> Result<WriteReport, SaveError> {
+    save_with(scene, path, opts, Replace::default())
+}
+
+/// [`save`], `how` saying whether a read-only file may be replaced.
+pub fn save_with(
+    scene: &Scene,
+    path: &Path,
+    opts: &WriteOptions,
+    how: Replace,
+) -> Result<WriteReport, SaveError> {
     let format =
         OutputFormat::from_path(path).ok_or_else(|| SaveError::UnknownExtension(path.into()))?;
     let (text, report) = to_text(scene, format, opts);
@@ -123,43 +134,17 @@ pub fn save(scene: &Scene, path: &Path, opts: &WriteOptions) -> Result<WriteRepo
         });
     }
     let bytes = encode(text, format);
-    write_atomic(path, &bytes).map_err(|e| SaveError::Io(path.into(), e))?;
+    super::atomic::write_atomic_with(path, &bytes, how)
+        .map_err(|e| SaveError::Io(path.into(), e))?;
     Ok(report)
 }
 
-/// Writes `bytes` to a temporary file beside `path`, syncs it, and renames
-/// it over `path`. On failure the temporary file is removed and `path` is
-/// untouched.
+/// Writes `bytes` over `path` atomically, keeping the file's identity
+/// (see [`atomic`](super::atomic)): symlinks followed, permissions kept,
+/// devices and read-only files refused. On failure `path` is untouched and
+/// no temporary file is left.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let name = path
-        .file_name()
-        .ok_or_else(|| std::io::Error::new(std::io::ErrorKind::InvalidInput, "no file name"))?;
-    let tmp = dir.join(format!(
-        ".{}.animed-{}.tmp",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        drop(f);
-        std::fs::rename(&tmp, path)?;
-        // Make the rename itself durable; not all systems can open a
-        // directory, and the data is already safe, so this may fail quietly.
-        if let Ok(d) = std::fs::File::open(&dir) {
-            let _ = d.sync_all();
-        }
-        Ok(())
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
+    super::atomic::write_atomic_with(path, bytes, Replace::default())
 }
 
 #[cfg(test)]
