@@ -108,7 +108,8 @@ pub fn gzip(data: &[u8]) -> Vec<u8> {
     enc.finish().unwrap_or_default()
 }
 
-/// Saves `scene` to `path`, the format chosen by its extension.
+/// Saves `scene` to `path`, the format chosen by its extension. Texture
+/// files are referenced by their path relative to `path`'s folder.
 pub fn save(scene: &Scene, path: &Path, opts: &WriteOptions) -> Result<WriteReport, SaveError> {
     save_with(scene, path, opts, Replace::default())
 }
@@ -122,7 +123,8 @@ pub fn save_with(
 ) -> Result<WriteReport, SaveError> {
     let format =
         OutputFormat::from_path(path).ok_or_else(|| SaveError::UnknownExtension(path.into()))?;
-    let (text, report) = to_text(scene, format, opts);
+    let scene = super::textures::rebase_urls(scene, path);
+    let (text, report) = to_text(&scene, format, opts);
     // Never write what our own reader would refuse.
     let depth = super::text::nesting(&text);
     let max = crate::format::limits::current().max_depth;
