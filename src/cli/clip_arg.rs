@@ -21,7 +21,7 @@ pub struct ClipArg {
 impl ClipArg {
     /// Loads `path` with `--scene`.
     pub fn load(&self, path: &Path) -> Result<Loaded, LoadError> {
-        format::load_with(path, &LoadOptions { scene: self.scene })
+        format::load_with_options(path, &LoadOptions { scene: self.scene })
     }
 
     /// Makes the chosen clip the playing one; without `--animation` the

@@ -1,5 +1,6 @@
 //! `animed convert`: convert between .iv, .wrl, .wrl.gz, .gltf, .glb (and from .obj), keeping every key.
 
+use crate::format::export::atomic::{EditLock, Replace};
 use crate::format::{self, InventorVersion, OutputFormat, WriteOptions};
 use std::path::PathBuf;
 
@@ -27,6 +28,9 @@ pub struct Args {
     /// Print key counts per animated field and what the format could not hold.
     #[arg(long, short)]
     pub verbose: bool,
+    /// Replace OUTPUT even if it is read-only.
+    #[arg(long)]
+    pub force: bool,
     /// Copy every texture file into DIR (created if missing) and make the
     /// output refer to the copies. Without it, textures are referenced where
     /// they are, by their path relative to OUT; nothing is copied.
@@ -50,6 +54,18 @@ pub fn run(args: Args) -> i32 {
         );
         return 2;
     }
+    // Held from the read to the replace: a `key` or another `convert` on
+    // OUTPUT waits instead of being overwritten.
+    let _lock = match EditLock::acquire(&args.output) {
+        Ok(l) => l,
+        Err(e) => {
+            eprintln!(
+                "animed convert: {}: cannot lock for editing: {e}",
+                args.output.display()
+            );
+            return 1;
+        }
+    };
     let mut loaded = match format::load(&args.input) {
         Ok(l) => l,
         Err(e) => {
@@ -83,7 +99,8 @@ pub fn run(args: Args) -> i32 {
             }
         }
     }
-    let report = match format::save(&loaded.scene, &args.output, &opts) {
+    let how = Replace { force: args.force };
+    let report = match format::save::save_with(&loaded.scene, &args.output, &opts, how) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("animed convert: {e}");

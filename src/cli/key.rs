@@ -26,16 +26,24 @@
 use crate::anim::{
     Interp, Key, KeyParams, Keys, Property, Repeat, Target, TargetRef, Track, Value, ValueKind,
 };
+use crate::format::export::atomic::{EditLock, Replace};
 use crate::format::{self, WriteOptions};
 use crate::scene::{Light, LightKind, Material, Mesh, Node, NodeId, NodeKind, Scene, Shape};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
 
 /// Set, remove and list keys from the command line.
+///
+/// Editing commands hold an advisory lock on the file's folder from the
+/// read to the replace, so two `animed key` (or `convert -o`, or editor
+/// saves) on one file take turns and never lose an update.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(subcommand)]
     pub command: KeyCommand,
+    /// Replace the file even if it is read-only.
+    #[arg(long, global = true)]
+    pub force: bool,
 }
 
 #[derive(clap::Subcommand, Debug)]
@@ -160,6 +168,23 @@ pub struct SettingsArgs {
 }
 
 pub fn run(args: Args) -> i32 {
+    FORCE.store(args.force, std::sync::atomic::Ordering::Relaxed);
+    // The file an editing command replaces: locked from before it is read.
+    let edited = match &args.command {
+        KeyCommand::New(a) => Some(a.output.clone()),
+        KeyCommand::Set(a) => Some(a.output.clone().unwrap_or_else(|| a.file.clone())),
+        KeyCommand::Rm(a) => Some(a.output.clone().unwrap_or_else(|| a.file.clone())),
+        KeyCommand::Settings(a) => Some(a.output.clone().unwrap_or_else(|| a.file.clone())),
+        KeyCommand::List(_) => None,
+    };
+    let _lock = match edited.map(|p| EditLock::acquire(&p).map_err(|e| (p, e))) {
+        Some(Err((p, e))) => {
+            eprintln!("animed key: {}: cannot lock for editing: {e}", p.display());
+            return 1;
+        }
+        Some(Ok(l)) => Some(l),
+        None => None,
+    };
     let result = match args.command {
         KeyCommand::New(a) => new(a),
         KeyCommand::Set(a) => set(a),
@@ -193,8 +218,15 @@ fn load(path: &Path, clip: &super::clip_arg::ClipArg) -> Result<Scene, String> {
     Ok(scene)
 }
 
+/// `--force`, for [`save`].
+static FORCE: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
 fn save(scene: &Scene, path: &Path) -> Result<(), String> {
-    let report = format::save(scene, path, &WriteOptions::default()).map_err(|e| e.to_string())?;
+    let how = Replace {
+        force: FORCE.load(std::sync::atomic::Ordering::Relaxed),
+    };
+    let report = format::save::save_with(scene, path, &WriteOptions::default(), how)
+        .map_err(|e| e.to_string())?;
     for w in &report.warnings {
         eprintln!("warning: {w}");
     }

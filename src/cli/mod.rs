@@ -19,6 +19,54 @@ use clap::{Parser, Subcommand};
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// The input budget of every load (README "Input limits"); each flag
+/// overrides its `ANIMED_MAX_*` environment variable. Counts take K/M/G
+/// (×1000) or Ki/Mi/Gi (×1024) suffixes.
+#[derive(clap::Args, Debug, Default)]
+pub struct LimitArgs {
+    /// Most bytes one load reads: files, inlines, gzip output [default 256Mi]
+    #[arg(long, global = true, value_name = "N", value_parser = amount)]
+    pub max_bytes: Option<u64>,
+    /// Most nodes one load makes, PROTO and USE copies included [default 1M]
+    #[arg(long, global = true, value_name = "N", value_parser = amount)]
+    pub max_nodes: Option<u64>,
+    /// Deepest nesting: syntax, PROTO expansion and Inline files together [default 256, at most 1024]
+    #[arg(long, global = true, value_name = "N", value_parser = amount)]
+    pub max_depth: Option<u64>,
+    /// Most vertices + triangles one load generates, per instance [default 16M]
+    #[arg(long, global = true, value_name = "N", value_parser = amount)]
+    pub max_geometry: Option<u64>,
+    /// Most numbers (and strings) in one load's field values [default 32M]
+    #[arg(long, global = true, value_name = "N", value_parser = amount)]
+    pub max_numbers: Option<u64>,
+}
+
+fn amount(s: &str) -> Result<u64, String> {
+    crate::format::limits::parse_amount(s)
+}
+
+impl LimitArgs {
+    /// The environment's limits with the flags given applied on top.
+    pub fn resolve(&self) -> Result<crate::format::limits::Limits, String> {
+        use crate::format::limits::{Limit, Limits};
+        let mut l = Limits::from_env()?;
+        for (lim, v) in [
+            (Limit::Bytes, self.max_bytes),
+            (Limit::Nodes, self.max_nodes),
+            (Limit::Depth, self.max_depth),
+            (Limit::Geometry, self.max_geometry),
+            (Limit::Numbers, self.max_numbers),
+        ] {
+            if let Some(v) = v {
+                l.set(lim, v);
+            }
+        }
+        Ok(l)
+    }
 }
 
 #[derive(Subcommand, Debug)]
@@ -46,6 +94,13 @@ pub enum Command {
 /// Runs the CLI; returns the process exit code.
 pub fn run() -> i32 {
     let cli = Cli::parse();
+    match cli.limits.resolve() {
+        Ok(l) => crate::format::limits::set_defaults(l),
+        Err(e) => {
+            eprintln!("animed: {e}");
+            return 2;
+        }
+    }
     match cli.command {
         None => edit::run_default(),
         Some(Command::Render(a)) => render::run(a),

@@ -40,6 +40,7 @@ mod viewport;
 pub use crate::input::{Event, Key, Mods, MouseButton};
 
 use crate::anim::Pose;
+use crate::format::export::atomic::Stamp;
 use crate::input::OrbitCamera;
 use crate::render::Frame;
 use crate::scene::{NodeId, RenderStyle, Scene};
@@ -120,6 +121,9 @@ struct LayerKey {
 pub struct Editor {
     scene: Scene,
     path: Option<PathBuf>,
+    /// `path` as read or last saved: a save onto it first checks that
+    /// nobody changed it meanwhile (format::export::atomic).
+    disk_stamp: Option<Stamp>,
     history: History,
     saved_revision: u64,
     /// Bumped on every change to `scene` (commands and live previews).
@@ -175,9 +179,11 @@ pub struct Editor {
 impl Editor {
     /// An editor on `scene` (loaded from `path`, if any) for a `width`×`height` window.
     pub fn new(scene: Scene, path: Option<PathBuf>, width: u32, height: u32) -> Editor {
+        let disk_stamp = path.as_deref().and_then(Stamp::of);
         let mut e = Editor {
             scene,
             path,
+            disk_stamp,
             history: History::default(),
             saved_revision: 0,
             scene_rev: 1,
@@ -422,9 +428,11 @@ impl Editor {
 
     /// Opens a scene file, replacing the current scene.
     pub fn open_file(&mut self, path: &Path) -> Result<(), String> {
+        let stamp = Stamp::of(path);
         let loaded = crate::format::load(path).map_err(|e| e.to_string())?;
         let n = loaded.warnings.len();
         self.replace_scene(loaded.scene, Some(path.to_path_buf()));
+        self.disk_stamp = stamp;
         let msg = match n {
             0 => format!("Opened {}", path.display()),
             _ => format!("Opened {} ({n} warnings)", path.display()),
@@ -460,7 +468,11 @@ impl Editor {
 
     /// Saves to `path` through the writers (format from the extension).
     pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
-        ops::save_scene(&self.scene, path)?;
+        let expect = match self.path.as_deref() {
+            Some(p) if p == path => self.disk_stamp.clone(),
+            _ => None,
+        };
+        self.disk_stamp = ops::save_scene_checked(&self.scene, path, expect.as_ref())?;
         let old = self.path.replace(path.to_path_buf());
         self.saved_revision = self.history.revision();
         self.saved_recovery(old.as_deref());

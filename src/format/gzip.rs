@@ -1,27 +1,18 @@
 //! Gzip detection by content (magic bytes 1f 8b) and bounded decompression.
 
-use std::io::Read;
-
-/// Largest decompressed size accepted (a gzip bomb stops here).
-pub const MAX_DECOMPRESSED: u64 = 512 * 1024 * 1024;
+use super::limits::{self, ReadError};
 
 pub fn is_gzip(bytes: &[u8]) -> bool {
     bytes.len() >= 2 && bytes[0] == 0x1f && bytes[1] == 0x8b
 }
 
-/// Decompresses a gzip stream (all members), failing past `limit` bytes.
-pub fn decompress(bytes: &[u8], limit: u64) -> Result<Vec<u8>, String> {
-    let mut out = Vec::new();
-    let mut dec = flate2::read::MultiGzDecoder::new(bytes).take(limit + 1);
-    dec.read_to_end(&mut out)
-        .map_err(|e| format!("gzip data is corrupt: {e}"))?;
-    if out.len() as u64 > limit {
-        return Err(format!(
-            "decompressed file is larger than {} MiB",
-            limit / (1024 * 1024)
-        ));
-    }
-    Ok(out)
+/// Decompresses a gzip stream (all members); its output counts against the
+/// running load's byte budget, so a gzip bomb stops there.
+pub fn decompress(bytes: &[u8]) -> Result<Vec<u8>, String> {
+    limits::read_all(flate2::read::MultiGzDecoder::new(bytes)).map_err(|e| match e {
+        ReadError::Io(e) => format!("gzip data is corrupt: {e}"),
+        e => format!("gzip output: {e}"),
+    })
 }
 
 #[cfg(test)]
@@ -40,16 +31,24 @@ mod tests {
         let z = gz(b"#VRML V2.0 utf8\n");
         assert!(is_gzip(&z));
         assert!(!is_gzip(b"#VRML"));
-        assert_eq!(decompress(&z, 100).unwrap(), b"#VRML V2.0 utf8\n");
+        assert_eq!(decompress(&z).unwrap(), b"#VRML V2.0 utf8\n");
     }
 
     #[test]
     fn size_limit_and_corruption_are_errors() {
         let z = gz(&[b' '; 10_000]);
-        assert!(decompress(&z, 100).unwrap_err().contains("larger"));
+        let small = limits::Limits {
+            max_bytes: 100,
+            ..Default::default()
+        };
+        let e = limits::scope_with(small, || decompress(&z).unwrap_err());
+        assert!(
+            e.contains("more than 100 bytes read") && e.contains("--max-bytes"),
+            "{e}"
+        );
         let mut bad = z.clone();
         let n = bad.len();
         bad[n - 6] ^= 0xff; // break the CRC
-        assert!(decompress(&bad, 1 << 20).unwrap_err().contains("corrupt"));
+        assert!(decompress(&bad).unwrap_err().contains("corrupt"));
     }
 }

@@ -4,6 +4,7 @@
 
 use crate::anim::{Keys, TargetRef};
 use crate::format::lexer::Pos;
+use crate::format::limits::{self, LimitError};
 use crate::scene::{MaterialId, MeshId, NodeId, NodeKind, Scene};
 use std::path::{Path, PathBuf};
 
@@ -33,7 +34,9 @@ pub fn resolve(base: &Path, urls: &[String]) -> Option<PathBuf> {
 pub type Cache = std::collections::HashMap<PathBuf, Option<Scene>>;
 
 /// Loads the file named by `urls` and adds its scene under `parent`;
-/// problems become warnings (`path:line:column: message`).
+/// problems become warnings (`path:line:column: message`), except a passed
+/// input limit, which ends the whole load. `levels` is the nesting depth of
+/// the Inline node: the included file's nesting counts on top of it.
 #[allow(clippy::too_many_arguments)]
 pub fn load_into(
     scene: &mut Scene,
@@ -44,22 +47,30 @@ pub fn load_into(
     urls: &[String],
     parent: NodeId,
     depth: usize,
-) {
+    levels: usize,
+) -> Result<(), LimitError> {
     let at = |m: String| format!("{}:{}:{}: {m}", base.display(), pos.line, pos.column);
     if depth + 1 > MAX_DEPTH {
         warnings.push(at(format!(
             "inline files nested deeper than {MAX_DEPTH}; skipped"
         )));
-        return;
+        return Ok(());
     }
     let Some(file) = resolve(base, urls) else {
         warnings.push(at(format!(
             "no local file among inline URLs {urls:?}; skipped"
         )));
-        return;
+        return Ok(());
     };
     if !cache.contains_key(&file) {
-        let loaded = match crate::format::load_nested(&file, depth + 1) {
+        let got = limits::deeper(levels as u64 + 1, || {
+            crate::format::load_nested(&file, depth + 1)
+        });
+        // A passed limit is not the included file's fault: stop the load.
+        if let Some(l) = limits::tripped() {
+            return Err(l);
+        }
+        let loaded = match got {
             Ok(mut loaded) => {
                 warnings.append(&mut loaded.warnings);
                 Some(loaded.scene)
@@ -72,12 +83,28 @@ pub fn load_into(
         cache.insert(file.clone(), loaded);
     }
     if let Some(Some(src)) = cache.get(&file) {
-        graft(scene, src, parent);
+        graft(scene, src, parent)?;
     }
+    Ok(())
 }
 
-/// Copies `src`'s nodes, meshes, materials and tracks under `parent`.
-pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) {
+/// Copies `src`'s nodes, meshes, materials and tracks under `parent`; the
+/// copies count against the input budget (an inline used many times costs
+/// as much as its copies).
+pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) -> Result<(), LimitError> {
+    limits::charge_nodes(src.nodes.len() as u64)?;
+    let geometry: u64 = src
+        .nodes
+        .iter()
+        .map(|n| match &n.kind {
+            NodeKind::Shape(s) => src
+                .meshes
+                .get(s.mesh.0 as usize)
+                .map_or(0, |m| (m.positions.len() + m.triangles.len()) as u64),
+            _ => 0,
+        })
+        .sum();
+    limits::charge_geometry(geometry)?;
     let mesh_base = dst.meshes.len() as u32;
     let mat_base = dst.materials.len() as u32;
     dst.meshes.extend(src.meshes.iter().cloned());
@@ -119,4 +146,5 @@ pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) {
             dst.settings.duration = d;
         }
     }
+    Ok(())
 }

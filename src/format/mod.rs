@@ -4,7 +4,8 @@
 //!
 //! Layout: one folder per format, each owning its reader and writer
 //! (`iv/` Inventor + VRML 1.0, `vrml97/`, `obj`), the shared reading pieces
-//! (`lexer`, `syntax/` with PROTO expansion, `polygons`, `inline`, `gzip`, `sgi_image`,
+//! (`limits`: the input budget every read goes through; `lexer`, `syntax/`
+//! with PROTO expansion, `polygons`, `inline`, `gzip`, `sgi_image`,
 //! `hsv`) and the shared export code (`export/`: write plan, channels,
 //! sampling, key note, options, atomic save) beside them.
 
@@ -16,6 +17,7 @@ pub mod hsv;
 pub mod inline;
 pub mod iv;
 pub mod lexer;
+pub mod limits;
 mod loaded;
 pub mod obj;
 pub mod polygons;
@@ -31,33 +33,53 @@ pub use loaded::Loaded;
 
 use std::path::Path;
 
-/// Loads any supported file from disk, detecting the format by content.
+/// Loads any supported file from disk, detecting the format by content,
+/// within the default input budget ([`limits::defaults`]).
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
-    let mut loaded = load_nested(path, 0)?;
-    // animed's own key note, if the file has one, replaces the sampled tracks.
-    keynote::apply_to_loaded(&mut loaded, path);
-    Ok(loaded)
+    load_with(path, limits::defaults())
+}
+
+/// [`load`] within the given limits.
+pub fn load_with(path: &Path, lim: limits::Limits) -> Result<Loaded, LoadError> {
+    limits::scope_with(lim, || {
+        let mut loaded = load_nested(path, 0)?;
+        // animed's own key note, if the file has one, replaces the sampled tracks.
+        keynote::apply_to_loaded(&mut loaded, path);
+        Ok(loaded)
+    })
 }
 
 /// Loads a file included `depth` levels deep (Inline / File / WWWInline).
 pub(crate) fn load_nested(path: &Path, depth: usize) -> Result<Loaded, LoadError> {
-    let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
+    let bytes = limits::read_file(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
     load_bytes_nested(&bytes, path, depth)
 }
 
 /// Loads a file's contents; `path` names it in messages and resolves
 /// relative references (Inline, File, mtllib).
 pub fn load_bytes(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
-    let mut loaded = load_bytes_nested(bytes, path, 0)?;
-    // animed's own key note, if the file has one, replaces the sampled tracks.
-    keynote::apply_to_loaded(&mut loaded, path);
-    Ok(loaded)
+    load_bytes_with(bytes, path, limits::defaults())
+}
+
+/// [`load_bytes`] within the given limits.
+pub fn load_bytes_with(
+    bytes: &[u8],
+    path: &Path,
+    lim: limits::Limits,
+) -> Result<Loaded, LoadError> {
+    limits::scope_with(lim, || {
+        limits::charge_bytes(bytes.len() as u64)
+            .map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
+        let mut loaded = load_bytes_nested(bytes, path, 0)?;
+        // animed's own key note, if the file has one, replaces the sampled tracks.
+        keynote::apply_to_loaded(&mut loaded, path);
+        Ok(loaded)
+    })
 }
 
 fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
     if gzip::is_gzip(bytes) {
-        let plain = gzip::decompress(bytes, gzip::MAX_DECOMPRESSED)
-            .map_err(|m| LoadError::new(path, 0, 0, m))?;
+        let plain = gzip::decompress(bytes).map_err(|m| LoadError::new(path, 0, 0, m))?;
         return load_bytes_nested(&plain, path, depth);
     }
     if gltf::is_gltf(bytes, path) {
@@ -78,18 +100,10 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
     }
 }
 
-/// Largest file a glTF may reference (buffers beside a .gltf).
-const MAX_REFERENCED: u64 = 1 << 31;
-
-/// Reads a file a scene file references, refusing very large ones.
+/// Reads a file a scene file references (glTF buffers and images) through
+/// the input budget.
 fn read_beside(path: &Path) -> Result<Vec<u8>, String> {
-    let len = std::fs::metadata(path).map_err(|e| e.to_string())?.len();
-    if len > MAX_REFERENCED {
-        return Err(format!(
-            "{len} bytes is more than animed reads ({MAX_REFERENCED})"
-        ));
-    }
-    std::fs::read(path).map_err(|e| e.to_string())
+    limits::read_file(path).map_err(|e| e.to_string())
 }
 
 /// What the caller may choose about a load (`--scene`).
@@ -100,11 +114,11 @@ pub struct LoadOptions {
 }
 
 /// [`load`] with options; `scene` applies to glTF files only.
-pub fn load_with(path: &Path, opts: &LoadOptions) -> Result<Loaded, LoadError> {
+pub fn load_with_options(path: &Path, opts: &LoadOptions) -> Result<Loaded, LoadError> {
     let Some(scene) = opts.scene else {
         return load(path);
     };
-    let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
+    let bytes = limits::read_file(path).map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
     if !gltf::is_gltf(&bytes, path) {
         return Err(LoadError::new(
             path,

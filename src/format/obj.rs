@@ -49,7 +49,7 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
     };
     let loaded = tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| {
         let full = dir.join(mtl);
-        match std::fs::read(&full) {
+        match crate::format::limits::read_file(&full) {
             Ok(data) => tobj::load_mtl_buf(&mut std::io::Cursor::new(data)).inspect_err(|e| {
                 warnings
                     .borrow_mut()
@@ -181,6 +181,10 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
                 *default_material.get_or_insert_with(|| scene.add_material(Material::default()))
             }
         };
+        let cost = (mesh.positions.len() + mesh.triangles.len()) as u64;
+        crate::format::limits::charge_geometry(cost)
+            .and_then(|()| crate::format::limits::charge_nodes(1))
+            .map_err(|e| LoadError::new(path, 0, 0, e.to_string()))?;
         let mesh_id = scene.add_mesh(mesh);
         let name = if model.name.is_empty() || model.name == "unnamed_object" {
             format!("object{k}")

@@ -9,6 +9,7 @@
 //! last frame is in, so a reader never sees half a GIF.
 
 use super::palette::Palette;
+use crate::format::export::atomic::{Replace, TempFile};
 use std::fs::File;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
@@ -26,7 +27,8 @@ pub struct GifWriter {
     delay: u16,
     /// The previous frame's source pixels (`0x00RRGGBB`).
     previous: Option<Vec<u32>>,
-    tmp: PathBuf,
+    /// Removed if the writer is dropped before [`GifWriter::finish`].
+    tmp: TempFile,
     path: PathBuf,
 }
 
@@ -38,14 +40,23 @@ fn gif_side(v: u32, what: &str) -> Result<u16, String> {
 }
 
 impl GifWriter {
-    /// Starts `path` (through `path.partial`) with `delay` hundredths of a
-    /// second per frame.
+    /// Starts `path` (through a temporary file beside it, removed on any
+    /// failure) with `delay` hundredths of a second per frame.
     pub fn create(path: &Path, width: u32, height: u32, delay: u16) -> Result<GifWriter, String> {
+        Self::create_with(path, width, height, delay, Replace::default())
+    }
+
+    /// [`GifWriter::create`], `how` saying whether a read-only file may be replaced.
+    pub fn create_with(
+        path: &Path,
+        width: u32,
+        height: u32,
+        delay: u16,
+        how: Replace,
+    ) -> Result<GifWriter, String> {
         let (w, h) = (gif_side(width, "width")?, gif_side(height, "height")?);
-        let mut tmp = path.as_os_str().to_owned();
-        tmp.push(".partial");
-        let tmp = PathBuf::from(tmp);
-        let file = File::create(&tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;
+        let (tmp, file) =
+            TempFile::create(path, how).map_err(|e| format!("{}: {e}", path.display()))?;
         let err = |e: gif::EncodingError| format!("{}: {e}", path.display());
         let mut encoder = gif::Encoder::new(BufWriter::new(file), w, h, &[]).map_err(err)?;
         encoder.set_repeat(gif::Repeat::Infinite).map_err(err)?;
@@ -102,21 +113,18 @@ impl GifWriter {
         Ok(())
     }
 
-    /// Writes the trailer and moves the file into place.
+    /// Writes the trailer, flushes the file to disk and moves it into
+    /// place; on failure the old file stays and the temporary one goes.
     pub fn finish(self) -> Result<(), String> {
-        let path = self.path.clone();
-        let tmp = self.tmp.clone();
-        let result = self
-            .encoder
+        let GifWriter {
+            encoder, tmp, path, ..
+        } = self;
+        let file: Result<File, String> = encoder
             .into_inner()
             .map_err(|e| e.to_string())
-            .and_then(|w| w.into_inner().map_err(|e| e.to_string()))
-            .and_then(|f| f.sync_all().map_err(|e| e.to_string()))
-            .and_then(|_| std::fs::rename(&tmp, &path).map_err(|e| e.to_string()));
-        result.map_err(|e| {
-            let _ = std::fs::remove_file(&tmp);
-            format!("{}: {e}", path.display())
-        })
+            .and_then(|w| w.into_inner().map_err(|e| e.error().to_string()));
+        file.and_then(|f| tmp.commit(f).map_err(|e| e.to_string()))
+            .map_err(|e| format!("{}: {e}", path.display()))
     }
 }
 
@@ -178,7 +186,12 @@ mod tests {
             g.add(colours(f), f, &pal).unwrap();
         }
         g.finish().unwrap();
-        assert!(!dir.join("t.gif.partial").exists());
+        let names: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.contains("t.gif"))
+            .collect();
+        assert_eq!(names, ["t.gif"], "no temporary file is left");
         let dec = image::codecs::gif::GifDecoder::new(std::io::BufReader::new(
             File::open(&path).unwrap(),
         ))

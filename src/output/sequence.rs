@@ -107,7 +107,8 @@ impl SequenceJob {
             let path = self.pattern.expand(i);
             create_parent(&path)?;
             let frame = render(t)?;
-            super::png::save_atomic(&frame, &path)?;
+            super::png::save_atomic(&frame, &path)
+                .map_err(|e| format!("frame {i} (t={t} s) not written, stopping: {e}"))?;
             Ok(format!("frame {i} t={t} s -> {}", path.display()))
         };
         ordered_map(&indices, self.workers, 4 * self.workers, work, |_, r| {

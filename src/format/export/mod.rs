@@ -1,11 +1,14 @@
 //! What every writer shares: the write plan (names, what to write), the
 //! animated channels and their adaptive sampling, the key note, text output
-//! helpers, texture urls and inline images, writer options/reports, and the
-//! atomic save that picks a writer.
+//! helpers, texture urls and inline images, writer options/reports, the
+//! atomic save that picks a writer, and `atomic`: replacing a file safely
+//! (identity kept, full disk caught, no temporary left, advisory edit lock,
+//! changed-since-read stamp).
 //!
 //! Arrows: `save → {iv::write, vrml97::write} → {plan, channels, sampling,
 //! keynote, text, textures, options}`; nothing here imports `save`.
 
+pub mod atomic;
 pub mod channels;
 pub mod keynote;
 pub mod options;

@@ -4,6 +4,7 @@
 //!
 //! `.wrl` → VRML97, `.wrl.gz` / `.wrz` → gzip'd VRML97, `.iv` → Inventor.
 
+use super::atomic::Replace;
 use super::options::{WriteOptions, WriteReport};
 use crate::format::{gltf, iv, vrml97};
 use crate::scene::Scene;
@@ -47,6 +48,13 @@ impl OutputFormat {
 pub enum SaveError {
     UnknownExtension(PathBuf),
     Io(PathBuf, std::io::Error),
+    /// The written file would nest deeper than animed's reader reads:
+    /// refused rather than written unreadable.
+    TooDeep {
+        path: PathBuf,
+        depth: usize,
+        max: u64,
+    },
 }
 
 impl std::fmt::Display for SaveError {
@@ -58,6 +66,14 @@ impl std::fmt::Display for SaveError {
                 p.display()
             ),
             SaveError::Io(p, e) => write!(f, "{}: {e}", p.display()),
+            SaveError::TooDeep { path, depth, max } => write!(
+                f,
+                "{}: not written: the file would nest {depth} levels deep and animed reads \
+                 at most {max} (raise it with --max-depth N or ANIMED_MAX_DEPTH=N, up to {}, \
+                 when writing and when reading)",
+                path.display(),
+                crate::format::limits::DEPTH_CEILING
+            ),
         }
     }
 }
@@ -70,21 +86,33 @@ pub fn to_bytes(
     format: OutputFormat,
     opts: &WriteOptions,
 ) -> (Vec<u8>, WriteReport) {
-    let (bytes, mut report) = match format {
-        OutputFormat::Gltf => return gltf::to_bytes(scene, opts, false),
-        OutputFormat::Glb => return gltf::to_bytes(scene, opts, true),
-        OutputFormat::Vrml97 => {
-            let (text, report) = vrml97::write::write(scene, opts);
-            (text.into_bytes(), report)
-        }
-        OutputFormat::Vrml97Gz => {
-            let (text, report) = vrml97::write::write(scene, opts);
-            (gzip(text.as_bytes()), report)
-        }
-        OutputFormat::Inventor => {
-            let (text, report) = iv::write::write(scene, opts);
-            (text.into_bytes(), report)
-        }
+    if let Some(binary) = gltf_bytes(scene, format, opts) {
+        return binary;
+    }
+    let (text, report) = to_text(scene, format, opts);
+    (encode(text, format), report)
+}
+
+/// glTF output (never nested text, so never depth-checked), or `None` for
+/// the text formats.
+fn gltf_bytes(
+    scene: &Scene,
+    format: OutputFormat,
+    opts: &WriteOptions,
+) -> Option<(Vec<u8>, WriteReport)> {
+    match format {
+        OutputFormat::Gltf => Some(gltf::to_bytes(scene, opts, false)),
+        OutputFormat::Glb => Some(gltf::to_bytes(scene, opts, true)),
+        _ => None,
+    }
+}
+
+/// The text of `scene` in a text `format` (before any gzip). The text
+/// formats hold one clip; the others are named in a warning.
+fn to_text(scene: &Scene, format: OutputFormat, opts: &WriteOptions) -> (String, WriteReport) {
+    let (text, mut report) = match format {
+        OutputFormat::Inventor => iv::write::write(scene, opts),
+        _ => vrml97::write::write(scene, opts),
     };
     if scene.clips.len() > 1 {
         report.warnings.push(format!(
@@ -94,7 +122,14 @@ pub fn to_bytes(
             scene.clips.len() - 1
         ));
     }
-    (bytes, report)
+    (text, report)
+}
+
+fn encode(text: String, format: OutputFormat) -> Vec<u8> {
+    match format {
+        OutputFormat::Vrml97Gz => gzip(text.as_bytes()),
+        _ => text.into_bytes(),
+    }
 }
 
 /// Gzip with a fixed header (no name, time 0), so output is reproducible.
@@ -111,47 +146,47 @@ pub fn gzip(data: &[u8]) -> Vec<u8> {
 /// Saves `scene` to `path`, the format chosen by its extension. Texture
 /// files are referenced by their path relative to `path`'s folder.
 pub fn save(scene: &Scene, path: &Path, opts: &WriteOptions) -> Result<WriteReport, SaveError> {
+    save_with(scene, path, opts, Replace::default())
+}
+
+/// [`save`], `how` saying whether a read-only file may be replaced.
+pub fn save_with(
+    scene: &Scene,
+    path: &Path,
+    opts: &WriteOptions,
+    how: Replace,
+) -> Result<WriteReport, SaveError> {
     let format =
         OutputFormat::from_path(path).ok_or_else(|| SaveError::UnknownExtension(path.into()))?;
     let scene = super::textures::rebase_urls(scene, path);
-    let (bytes, report) = to_bytes(&scene, format, opts);
-    write_atomic(path, &bytes).map_err(|e| SaveError::Io(path.into(), e))?;
+    if let Some((bytes, report)) = gltf_bytes(&scene, format, opts) {
+        super::atomic::write_atomic_with(path, &bytes, how)
+            .map_err(|e| SaveError::Io(path.into(), e))?;
+        return Ok(report);
+    }
+    let (text, report) = to_text(&scene, format, opts);
+    // Never write what our own reader would refuse.
+    let depth = super::text::nesting(&text);
+    let max = crate::format::limits::current().max_depth;
+    if depth as u64 > max {
+        return Err(SaveError::TooDeep {
+            path: path.into(),
+            depth,
+            max,
+        });
+    }
+    let bytes = encode(text, format);
+    super::atomic::write_atomic_with(path, &bytes, how)
+        .map_err(|e| SaveError::Io(path.into(), e))?;
     Ok(report)
 }
 
-/// Writes `bytes` to a temporary file beside `path`, syncs it, and renames
-/// it over `path`. On failure the temporary file is removed and `path` is
-/// untouched.
+/// Writes `bytes` over `path` atomically, keeping the file's identity
+/// (see [`atomic`](super::atomic)): symlinks followed, permissions kept,
+/// devices and read-only files refused. On failure `path` is untouched and
+/// no temporary file is left.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let name = path
-        .file_name()
-        .ok_or_else(|| std::io::Error::new(std::io::ErrorKind::InvalidInput, "no file name"))?;
-    let tmp = dir.join(format!(
-        ".{}.animed-{}.tmp",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        drop(f);
-        std::fs::rename(&tmp, path)?;
-        // Make the rename itself durable; not all systems can open a
-        // directory, and the data is already safe, so this may fail quietly.
-        if let Ok(d) = std::fs::File::open(&dir) {
-            let _ = d.sync_all();
-        }
-        Ok(())
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
+    super::atomic::write_atomic_with(path, bytes, Replace::default())
 }
 
 #[cfg(test)]

@@ -16,10 +16,14 @@ pub struct Out {
     pub depth: usize,
 }
 
+/// Deepest indentation written: past it lines stay at this depth, so a
+/// deep scene's file grows linearly with the scene, not with depth × lines.
+pub const MAX_INDENT: usize = 32;
+
 impl Out {
     /// Writes one line at the current indentation.
     pub fn line(&mut self, s: &str) {
-        for _ in 0..self.depth {
+        for _ in 0..self.depth.min(MAX_INDENT) {
             self.text.push_str("  ");
         }
         self.text.push_str(s);
@@ -136,6 +140,43 @@ pub fn rows<T>(items: &[T], per_row: usize, item: impl Fn(&T) -> String, sep: &s
             s
         })
         .collect()
+}
+
+/// How deep the nodes of a written file nest: the deepest `{` outside
+/// strings and comments (each node of our output opens one). Checked on
+/// save against the reader's depth limit.
+pub fn nesting(text: &str) -> usize {
+    let (mut depth, mut deepest) = (0usize, 0usize);
+    let mut chars = text.chars();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' => {
+                while let Some(c) = chars.next() {
+                    match c {
+                        '\\' => {
+                            chars.next();
+                        }
+                        '"' => break,
+                        _ => {}
+                    }
+                }
+            }
+            '#' => {
+                for c in chars.by_ref() {
+                    if c == '\n' {
+                        break;
+                    }
+                }
+            }
+            '{' => {
+                depth += 1;
+                deepest = deepest.max(depth);
+            }
+            '}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    deepest
 }
 
 #[cfg(test)]

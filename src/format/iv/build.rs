@@ -11,8 +11,10 @@ use super::shapes;
 use super::state::State;
 use crate::format::inline;
 use crate::format::lexer::Pos;
+use crate::format::limits::{self, LimitError};
 use crate::format::syntax::{AstNode, NodeRef, Parsed};
 use crate::format::vrml97::fmt_warning;
+use crate::format::LoadError;
 use crate::format::Loaded;
 use crate::scene::{
     Camera, CameraKind, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId, NodeKind,
@@ -23,8 +25,9 @@ use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
-const MAX_SCENE_NODES: usize = 1_000_000;
-const MAX_BUILD_DEPTH: usize = 512;
+/// Deepest scene tree built: the parser already bounds the expanded
+/// depth by the input budget, whose largest setting this is.
+const MAX_BUILD_DEPTH: usize = limits::DEPTH_CEILING as usize;
 
 /// Nodes read and deliberately ignored (no effect on geometry here).
 const IGNORED: &[&str] = &[
@@ -86,6 +89,8 @@ pub struct Builder {
     build_depth: usize,
     full: bool,
     inlines: inline::Cache,
+    /// The input limit the build passed, if any: the load fails with it.
+    fatal: Option<LoadError>,
 }
 
 impl Builder {
@@ -103,6 +108,7 @@ impl Builder {
             build_depth: 0,
             full: false,
             inlines: inline::Cache::new(),
+            fatal: None,
         }
     }
 
@@ -122,10 +128,46 @@ impl Builder {
         }
     }
 
-    pub fn finish(self) -> Loaded {
-        Loaded {
+    /// The scene, or the input limit the build passed.
+    pub fn finish(self) -> Result<Loaded, LoadError> {
+        if let Some(e) = self.fatal {
+            return Err(e);
+        }
+        Ok(Loaded {
             scene: self.scene,
             warnings: self.warnings,
+        })
+    }
+
+    /// Ends the build with a passed input limit (the first one is kept).
+    fn stop(&mut self, pos: Pos, e: LimitError) {
+        self.full = true;
+        if self.fatal.is_none() {
+            self.fatal = Some(LoadError::new(
+                &self.path,
+                pos.line,
+                pos.column,
+                e.to_string(),
+            ));
+        }
+    }
+
+    /// Counts a new scene node (and its mesh, once per instance).
+    fn charge(&mut self, pos: Pos, node: &Node) -> bool {
+        let geometry = match &node.kind {
+            NodeKind::Shape(s) => self
+                .scene
+                .meshes
+                .get(s.mesh.0 as usize)
+                .map_or(0, |m| (m.positions.len() + m.triangles.len()) as u64),
+            _ => 0,
+        };
+        match limits::charge_nodes(1).and_then(|()| limits::charge_geometry(geometry)) {
+            Ok(()) => true,
+            Err(e) => {
+                self.stop(pos, e);
+                false
+            }
         }
     }
 
@@ -143,14 +185,7 @@ impl Builder {
 
     /// Adds a scene node at the cursor (carrying the pending transforms).
     fn add(&mut self, pos: Pos, cur: &Cursor, mut node: Node) -> Option<NodeId> {
-        if self.scene.nodes.len() >= MAX_SCENE_NODES {
-            if !self.full {
-                self.full = true;
-                self.warn(
-                    pos,
-                    &format!("more than {MAX_SCENE_NODES} scene nodes; the rest is skipped"),
-                );
-            }
+        if self.full || !self.charge(pos, &node) {
             return None;
         }
         if cur.pending != Mat4::IDENTITY {
@@ -244,7 +279,7 @@ impl Builder {
             "File" | "WWWInline" => {
                 if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
                     let urls = n.strings("name");
-                    inline::load_into(
+                    let r = inline::load_into(
                         &mut self.scene,
                         &mut self.warnings,
                         &mut self.inlines,
@@ -253,7 +288,11 @@ impl Builder {
                         &urls,
                         id,
                         self.depth,
+                        self.build_depth,
                     );
+                    if let Err(e) = r {
+                        self.stop(n.pos, e);
+                    }
                 }
             }
             "DirectionalLight" | "PointLight" | "SpotLight" => {

@@ -24,7 +24,8 @@ pub fn read_nested(
     let parsed = syntax::parse(bytes, Options::new(false));
     let mut warnings = Vec::new();
     if let Some((pos, msg)) = &parsed.error {
-        if parsed.roots.is_empty() {
+        // A passed input limit fails the load, as does an error before any node.
+        if parsed.roots.is_empty() || super::limits::tripped().is_some() {
             return Err(LoadError::new(path, pos.line, pos.column, msg.clone()));
         }
         warnings.push(fmt_warning(
@@ -38,7 +39,7 @@ pub fn read_nested(
     }
     let mut b = build::Builder::new(path, depth, vrml1);
     b.build(&parsed);
-    let mut loaded = b.finish();
+    let mut loaded = b.finish()?;
     loaded.scene.format = if vrml1 {
         SourceFormat::Vrml1
     } else {

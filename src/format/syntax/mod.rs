@@ -27,6 +27,9 @@ pub struct AstNode {
     pub pos: Pos,
     /// Set when `kind` names a PROTO: the expanded body.
     pub proto: Option<ProtoInstance>,
+    /// Levels of nodes from this one down (1 for a leaf), PROTO expansion
+    /// included: what following this node costs in recursion.
+    pub height: u32,
 }
 
 /// An expanded PROTO instance.
@@ -82,6 +85,20 @@ pub struct Parsed {
 }
 
 impl AstNode {
+    /// The [`AstNode::height`] of a node with these fields and expansion.
+    pub fn height_of(fields: &[Field], proto: Option<&ProtoInstance>) -> u32 {
+        let below = fields
+            .iter()
+            .filter_map(|f| match &f.value {
+                Value::Nodes(ns) => ns.iter().map(|n| n.height).max(),
+                _ => None,
+            })
+            .chain(proto.map(|p| p.root.height))
+            .max()
+            .unwrap_or(0);
+        below.saturating_add(1)
+    }
+
     pub fn field(&self, name: &str) -> Option<&Field> {
         self.fields.iter().rev().find(|f| f.name == name)
     }

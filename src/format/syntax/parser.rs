@@ -9,26 +9,26 @@ use super::checks;
 use super::proto::{instantiate, ProtoDef};
 use super::{AstNode, Field, NodeRef, Parsed, Route, Value};
 use crate::format::lexer::{LexError, Lexer, Pos, Tok};
+use crate::format::limits::{self, Limit, LimitError};
 use std::collections::HashMap;
 use std::rc::Rc;
 
-/// Dialect switches and limits.
+/// Dialect switches and limits. Nodes and numbers are counted against the
+/// running load's budget ([`limits`]); the depth left for this file is
+/// taken from it when the options are made.
 #[derive(Clone, Debug)]
 pub struct Options {
     /// VRML97: PROTO/EXTERNPROTO/ROUTE statements and interface declarations.
     pub vrml97: bool,
+    /// Levels of nesting this file may use (PROTO expansion included).
     pub max_depth: usize,
-    pub max_numbers_per_field: usize,
-    pub max_nodes: usize,
 }
 
 impl Options {
     pub fn new(vrml97: bool) -> Self {
         Options {
             vrml97,
-            max_depth: 256,
-            max_numbers_per_field: 10_000_000,
-            max_nodes: 2_000_000,
+            max_depth: limits::depth_left() as usize,
         }
     }
 }
@@ -124,6 +124,26 @@ impl Parser<'_> {
         }
     }
 
+    /// The error for a nesting depth past [`Options::max_depth`].
+    fn too_deep(&self, pos: Pos) -> (Pos, String) {
+        let e = limits::trip(LimitError {
+            limit: Limit::Depth,
+            max: limits::current().max_depth,
+        });
+        (pos, e.to_string())
+    }
+
+    /// Counts one more number of a field value.
+    fn count_number(&self, pos: Pos) -> PResult<()> {
+        limits::charge_numbers(1).map_err(|e| (pos, e.to_string()))
+    }
+
+    /// Counts a string or word of a field value by the memory it takes, in
+    /// numbers' worth (8 bytes): its header and allocation, then its bytes.
+    fn count_string(&self, pos: Pos, len: usize) -> PResult<()> {
+        limits::charge_numbers(4 + len as u64 / 8).map_err(|e| (pos, e.to_string()))
+    }
+
     fn warn(&mut self, pos: Pos, msg: impl Into<String>) {
         if self.warnings.len() < 1000 {
             self.warnings.push((pos, msg.into()));
@@ -211,12 +231,10 @@ impl Parser<'_> {
     /// `{ fields }` after a node type name.
     fn node_body(&mut self, kind: String, def: Option<String>, pos: Pos) -> PResult<NodeRef> {
         self.nodes += 1;
-        if self.nodes > self.opts.max_nodes {
-            return Err((pos, format!("more than {} nodes", self.opts.max_nodes)));
-        }
+        limits::charge_nodes(1).map_err(|e| (pos, e.to_string()))?;
         self.depth += 1;
         if self.depth > self.opts.max_depth {
-            return Err((pos, format!("nesting deeper than {}", self.opts.max_depth)));
+            return Err(self.too_deep(pos));
         }
         let r = self.node_fields(&kind, pos);
         self.depth -= 1;
@@ -226,12 +244,14 @@ impl Parser<'_> {
             .iter()
             .rev()
             .find_map(|s| s.protos.get(&kind).cloned());
+        let height = AstNode::height_of(&fields, None);
         let mut node = AstNode {
             kind,
             def,
             fields,
             pos,
             proto: None,
+            height,
         };
         if self.opts.vrml97 {
             let interface: Option<Vec<String>> = match &proto {
@@ -252,8 +272,14 @@ impl Parser<'_> {
         }
         if let Some(def) = proto {
             let (inst, routes) = instantiate(&def, &node, self)?;
+            node.height = AstNode::height_of(&node.fields, Some(&inst));
             node.proto = Some(inst);
             self.scope().routes.extend(routes);
+        }
+        // PROTO expansion can nest far deeper than the text: what counts is
+        // how deep following the node goes, from where it stands.
+        if self.depth + node.height as usize > self.opts.max_depth {
+            return Err(self.too_deep(pos));
         }
         Ok(Rc::new(node))
     }
@@ -410,6 +436,9 @@ impl Parser<'_> {
     /// One untyped field value, plus Inventor's trailing `~` (ignore flag)
     /// and `= Engine.output` connections (read and dropped).
     fn value(&mut self) -> PResult<Value> {
+        // A field costs about 100 bytes before its value's numbers.
+        let pos = self.lx.pos();
+        limits::charge_numbers(12).map_err(|e| (pos, e.to_string()))?;
         let v = self.raw_value()?;
         loop {
             match self.peek()? {
@@ -468,8 +497,9 @@ impl Parser<'_> {
                 Ok(Value::Nums(v))
             }
             Tok::Str(_) => {
-                let (t, _) = self.next()?;
+                let (t, p) = self.next()?;
                 let Tok::Str(s) = t else { unreachable!() };
+                self.count_string(p, s.len())?;
                 Ok(Value::Strs(vec![s]))
             }
             Tok::LBracket => {
@@ -537,16 +567,8 @@ impl Parser<'_> {
     fn numbers(&mut self, v: &mut Vec<f64>) -> PResult<()> {
         while let Ok(t) = self.lx.peek() {
             let Tok::Num(n) = t.tok else { break };
-            if v.len() >= self.opts.max_numbers_per_field {
-                let pos = t.pos;
-                return Err((
-                    pos,
-                    format!(
-                        "more than {} numbers in one field",
-                        self.opts.max_numbers_per_field
-                    ),
-                ));
-            }
+            let pos = t.pos;
+            self.count_number(pos)?;
             v.push(n);
             self.lx.next_token().map_err(lex_err)?;
         }
@@ -575,7 +597,10 @@ impl Parser<'_> {
                 let mut v = Vec::new();
                 loop {
                     match self.next()? {
-                        (Tok::Str(s), _) => v.push(s),
+                        (Tok::Str(s), p) => {
+                            self.count_string(p, s.len())?;
+                            v.push(s)
+                        }
                         (Tok::RBracket, _) => return Ok(Value::Strs(v)),
                         (t, p) => {
                             return Err((
@@ -583,9 +608,6 @@ impl Parser<'_> {
                                 format!("expected a string or ']', found {}", t.describe()),
                             ))
                         }
-                    }
-                    if v.len() > self.opts.max_numbers_per_field {
-                        return Err((self.lx.pos(), "too many strings in one field".into()));
                     }
                 }
             }
@@ -601,15 +623,18 @@ impl Parser<'_> {
                 loop {
                     match self.next()? {
                         (Tok::RBracket, _) => return Ok(Value::Words(words)),
-                        (Tok::Ident(w), _) => words.push(w),
-                        (Tok::Num(n), _) => words.push(format!("{n}")),
+                        (Tok::Ident(w), p) => {
+                            self.count_string(p, w.len())?;
+                            words.push(w)
+                        }
+                        (Tok::Num(n), p) => {
+                            self.count_string(p, 0)?;
+                            words.push(format!("{n}"))
+                        }
                         (Tok::Punct(_), _) => {}
                         (t, p) => {
                             return Err((p, format!("unexpected {} in a list", t.describe())))
                         }
-                    }
-                    if words.len() > self.opts.max_numbers_per_field {
-                        return Err((self.lx.pos(), "too many words in one field".into()));
                     }
                 }
             }
@@ -708,7 +733,7 @@ impl Parser<'_> {
         self.expect(Tok::LBrace, "'{' to open the PROTO body")?;
         self.depth += 1;
         if self.depth > self.opts.max_depth {
-            return Err((pos, format!("nesting deeper than {}", self.opts.max_depth)));
+            return Err(self.too_deep(pos));
         }
         // The body is its own DEF scope; PROTOs declared outside stay visible.
         self.scopes.push(Scope::new());

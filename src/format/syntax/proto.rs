@@ -5,6 +5,7 @@
 use super::parser::Parser;
 use super::{AstNode, Field, NodeRef, ProtoInstance, Route, Value};
 use crate::format::lexer::Pos;
+use crate::format::limits;
 use std::collections::HashMap;
 use std::rc::Rc;
 
@@ -49,10 +50,10 @@ pub(super) fn instantiate(
         count: 0,
     };
     let body: Vec<NodeRef> = def.body.iter().map(|n| b.copy(n)).collect();
-    parser.nodes += b.count;
-    if parser.nodes > 2_000_000 {
-        return Err((inst.pos, "PROTO expansion makes too many nodes".into()));
+    if let Err(e) = limits::charge_nodes(b.count as u64) {
+        return Err((inst.pos, format!("PROTO expansion: {e}")));
     }
+    parser.nodes += b.count;
     let routes = def
         .routes
         .iter()
@@ -74,6 +75,7 @@ pub(super) fn instantiate(
             fields: Vec::new(),
             pos: inst.pos,
             proto: None,
+            height: 1,
         })
     });
     Ok((
@@ -132,12 +134,14 @@ impl Binder<'_> {
                 })
                 .collect(),
         });
+        let height = AstNode::height_of(&fields, proto.as_ref());
         let c = Rc::new(AstNode {
             kind: n.kind.clone(),
             def: n.def.clone(),
             fields,
             pos: n.pos,
             proto,
+            height,
         });
         for (iface, field) in bound {
             self.is_map

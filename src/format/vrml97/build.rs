@@ -5,7 +5,9 @@
 use super::{animation, fmt_warning, geometry};
 use crate::format::inline;
 use crate::format::lexer::Pos;
+use crate::format::limits::{self, LimitError};
 use crate::format::syntax::{AstNode, NodeRef, Parsed};
+use crate::format::LoadError;
 use crate::format::Loaded;
 use crate::scene::{
     Camera, CameraKind, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId, NodeKind,
@@ -16,10 +18,9 @@ use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
-/// Most scene nodes one file may expand into (USE of USE of … multiplies).
-const MAX_SCENE_NODES: usize = 1_000_000;
-/// Deepest scene tree built (the parser bounds the file's own nesting).
-const MAX_BUILD_DEPTH: usize = 512;
+/// Deepest scene tree built: the parser already bounds the expanded
+/// depth by the input budget, whose largest setting this is.
+const MAX_BUILD_DEPTH: usize = limits::DEPTH_CEILING as usize;
 
 /// Nodes that are read but do nothing in animed (warned once per type).
 const IGNORED: &[&str] = &[
@@ -53,6 +54,8 @@ pub struct Builder {
     build_depth: usize,
     full: bool,
     inlines: inline::Cache,
+    /// The input limit the build passed, if any: the load fails with it.
+    fatal: Option<LoadError>,
     /// Non-zero while adding a Switch choice that is not shown: its shapes are
     /// kept (hidden) but its lights, viewpoints and bindable nodes are not.
     hidden: usize,
@@ -76,6 +79,7 @@ impl Builder {
             build_depth: 0,
             full: false,
             inlines: inline::Cache::new(),
+            fatal: None,
             hidden: 0,
         }
     }
@@ -87,10 +91,46 @@ impl Builder {
         animation::import(self, &parsed.routes);
     }
 
-    pub fn finish(self) -> Loaded {
-        Loaded {
+    /// The scene, or the input limit the build passed.
+    pub fn finish(self) -> Result<Loaded, LoadError> {
+        if let Some(e) = self.fatal {
+            return Err(e);
+        }
+        Ok(Loaded {
             scene: self.scene,
             warnings: self.warnings,
+        })
+    }
+
+    /// Ends the build with a passed input limit (the first one is kept).
+    fn stop(&mut self, pos: Pos, e: LimitError) {
+        self.full = true;
+        if self.fatal.is_none() {
+            self.fatal = Some(LoadError::new(
+                &self.path,
+                pos.line,
+                pos.column,
+                e.to_string(),
+            ));
+        }
+    }
+
+    /// Counts a new scene node (and its mesh, once per instance).
+    fn charge(&mut self, pos: Pos, node: &Node) -> bool {
+        let geometry = match &node.kind {
+            NodeKind::Shape(s) => self
+                .scene
+                .meshes
+                .get(s.mesh.0 as usize)
+                .map_or(0, |m| (m.positions.len() + m.triangles.len()) as u64),
+            _ => 0,
+        };
+        match limits::charge_nodes(1).and_then(|()| limits::charge_geometry(geometry)) {
+            Ok(()) => true,
+            Err(e) => {
+                self.stop(pos, e);
+                false
+            }
         }
     }
 
@@ -108,14 +148,7 @@ impl Builder {
     }
 
     fn push(&mut self, ast: &NodeRef, parent: Option<NodeId>, node: Node) -> Option<NodeId> {
-        if self.scene.nodes.len() >= MAX_SCENE_NODES {
-            if !self.full {
-                self.full = true;
-                self.warn(
-                    ast.pos,
-                    &format!("more than {MAX_SCENE_NODES} scene nodes; the rest is skipped"),
-                );
-            }
+        if self.full || !self.charge(ast.pos, &node) {
             return None;
         }
         let id = self.scene.add_node(parent, node);
@@ -200,7 +233,7 @@ impl Builder {
             "Inline" => {
                 if let Some(id) = self.push(&eff, parent, Node::group(name)) {
                     let urls = eff.strings("url");
-                    inline::load_into(
+                    let r = inline::load_into(
                         &mut self.scene,
                         &mut self.warnings,
                         &mut self.inlines,
@@ -209,7 +242,11 @@ impl Builder {
                         &urls,
                         id,
                         self.depth,
+                        self.build_depth,
                     );
+                    if let Err(e) = r {
+                        self.stop(eff.pos, e);
+                    }
                 }
             }
             "Shape" => self.shape(&eff, parent, name),
@@ -309,6 +346,10 @@ impl Builder {
             None => {
                 let mut msgs = Vec::new();
                 let m = geometry::mesh(&geom, &mut msgs).map(|m| self.scene.add_mesh(m));
+                if let Some(e) = limits::tripped() {
+                    self.stop(geom.pos, e);
+                    return;
+                }
                 for (pos, msg) in msgs {
                     let key = format!("{}:{msg}", geom.kind);
                     self.warn_once(&key, pos, &msg);

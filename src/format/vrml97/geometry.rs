@@ -5,6 +5,7 @@
 //! triangulates concave polygons and applies ccw/solid/creaseAngle.
 
 use crate::format::lexer::Pos;
+use crate::format::limits;
 use crate::format::polygons::{self, split_index};
 use crate::format::syntax::AstNode;
 use crate::scene::normals::{mesh_from_points, mesh_from_polylines, Binding, PolyOptions};
@@ -155,6 +156,19 @@ fn point_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
     }
 }
 
+/// Asks the input budget, before allocating, for a grid of `points`
+/// (at most 4 vertices per point once creases split them, 2 triangles).
+/// The builder ends the load when this fails ([`limits::tripped`]).
+fn fits(points: u64, g: &AstNode, msgs: &mut Msgs) -> bool {
+    match limits::check_geometry(points.saturating_mul(6)) {
+        Ok(()) => true,
+        Err(e) => {
+            msgs.push((g.pos, format!("{}: {e}", g.kind)));
+            false
+        }
+    }
+}
+
 fn elevation_grid(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
     let nx = g.num("xDimension").unwrap_or(0.0).max(0.0) as usize;
     let nz = g.num("zDimension").unwrap_or(0.0).max(0.0) as usize;
@@ -165,6 +179,9 @@ fn elevation_grid(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
             g.pos,
             "ElevationGrid needs xDimension, zDimension ≥ 2 and that many heights; skipped".into(),
         ));
+        return None;
+    }
+    if !fits(nx as u64 * nz as u64, g, msgs) {
         return None;
     }
     let mut positions = Vec::with_capacity(nx * nz);
@@ -232,11 +249,14 @@ fn extrusion(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
         })
         .unwrap_or_else(|| vec![Quat::IDENTITY]);
     let (n, m) = (spine.len(), cross.len());
-    if n < 2 || m < 2 || n.saturating_mul(m) > 10_000_000 {
+    if n < 2 || m < 2 {
         msgs.push((
             g.pos,
             "Extrusion needs ≥ 2 spine and cross-section points; skipped".into(),
         ));
+        return None;
+    }
+    if !fits(n as u64 * m as u64, g, msgs) {
         return None;
     }
     let frames = scp_frames(&spine);

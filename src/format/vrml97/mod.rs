@@ -22,7 +22,8 @@ pub(crate) fn read_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loa
     let parsed = syntax::parse(bytes, Options::new(true));
     let mut warnings: Vec<String> = Vec::new();
     if let Some((pos, msg)) = &parsed.error {
-        if parsed.roots.is_empty() {
+        // A passed input limit fails the load, as does an error before any node.
+        if parsed.roots.is_empty() || super::limits::tripped().is_some() {
             return Err(LoadError::new(path, pos.line, pos.column, msg.clone()));
         }
         warnings.push(fmt_warning(
@@ -36,7 +37,7 @@ pub(crate) fn read_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loa
     }
     let mut b = build::Builder::new(path, depth);
     b.build(&parsed);
-    let mut loaded = b.finish();
+    let mut loaded = b.finish()?;
     loaded.scene.format = SourceFormat::Vrml97;
     warnings.append(&mut loaded.warnings);
     loaded.warnings = warnings;

@@ -120,7 +120,28 @@ impl Writer<'_> {
             return;
         }
         let mut closes = 0;
-        if let Some(m) = node.transform.extra {
+        let mut own = node.transform;
+        // A raw matrix on a node with no transform of its own, not driven
+        // by a track, becomes that node's Transform: no extra level (a
+        // chain of Inventor Translations would otherwise nest twice as deep).
+        let merged = match node.transform.extra {
+            Some(m) if self.transform_is_free(id) => {
+                let (s, r, t) = m.to_scale_rotation_translation();
+                self.report.warnings.push(format!(
+                    "node `{}`: a raw matrix was written as translation/rotation/scale (shear, if any, is lost)",
+                    node.name
+                ));
+                own = Transform {
+                    translation: t,
+                    rotation: r,
+                    scale: s,
+                    ..Default::default()
+                };
+                true
+            }
+            _ => false,
+        };
+        if let (Some(m), false) = (node.transform.extra, merged) {
             // VRML97 has no matrix node: an outer Transform with the
             // matrix's scale, rotation and translation (shear is lost).
             let (s, r, t) = m.to_scale_rotation_translation();
@@ -141,7 +162,7 @@ impl Writer<'_> {
         }
         let head = format!("{}Transform", def(&self.plan.wrapper[i]));
         self.out.open(&head);
-        self.transform_fields(&node.transform);
+        self.transform_fields(&own);
         let has_content = !matches!(node.kind, NodeKind::Group);
         if has_content || !node.children.is_empty() {
             self.out.line("children [");
@@ -159,6 +180,21 @@ impl Writer<'_> {
             self.out.close("]");
             self.out.close("}");
         }
+    }
+
+    /// True if `id` has the default transform (besides a raw matrix) and
+    /// no track drives its translation, rotation or scale.
+    fn transform_is_free(&self, id: NodeId) -> bool {
+        let t = &self.scene.node(id).transform;
+        let d = Transform::default();
+        t.translation == d.translation
+            && t.rotation == d.rotation
+            && t.scale == d.scale
+            && t.scale_orientation == d.scale_orientation
+            && t.center == d.center
+            && ![Property::Translation, Property::Rotation, Property::Scale]
+                .into_iter()
+                .any(|p| self.has_track(id, p))
     }
 
     fn transform_fields(&mut self, t: &Transform) {
