@@ -88,15 +88,16 @@ pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) {
         .iter()
         .map(|i| dst.add_image(i.clone()).ok())
         .collect();
-    dst.materials.extend(src.materials.iter().cloned().map(|mut m| {
-        if let Some(t) = &mut m.texture {
-            match images.get(t.image.0 as usize).copied().flatten() {
-                Some(id) => t.image = id,
-                None => m.texture = None,
+    dst.materials
+        .extend(src.materials.iter().cloned().map(|mut m| {
+            if let Some(t) = &mut m.texture {
+                match images.get(t.image.0 as usize).copied().flatten() {
+                    Some(id) => t.image = id,
+                    None => m.texture = None,
+                }
             }
-        }
-        m
-    }));
+            m
+        }));
     let mut map = vec![None; src.nodes.len()];
     for id in src.walk() {
         let n = src.node(id);

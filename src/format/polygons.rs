@@ -98,12 +98,9 @@ pub fn build_textured(
 /// of the bounding box, t along the second longest from 0 to that side's
 /// share of the longest (ties prefer x, then y, then z). One per position.
 pub fn bbox_texcoords(positions: &[Vec3]) -> Vec<Vec2> {
-    let Some((lo, hi)) = positions
-        .iter()
-        .fold(None, |b: Option<(Vec3, Vec3)>, p| {
-            Some(b.map_or((*p, *p), |(lo, hi)| (lo.min(*p), hi.max(*p))))
-        })
-    else {
+    let Some((lo, hi)) = positions.iter().fold(None, |b: Option<(Vec3, Vec3)>, p| {
+        Some(b.map_or((*p, *p), |(lo, hi)| (lo.min(*p), hi.max(*p))))
+    }) else {
         return Vec::new();
     };
     let size = hi - lo;
@@ -111,7 +108,11 @@ pub fn bbox_texcoords(positions: &[Vec3]) -> Vec<Vec2> {
     // Stable sort by decreasing size keeps x before y before z on ties.
     axes.sort_by(|&a, &b| size[b].total_cmp(&size[a]));
     let (s_axis, t_axis) = (axes[0], axes[1]);
-    let scale = if size[s_axis] > 0.0 { 1.0 / size[s_axis] } else { 0.0 };
+    let scale = if size[s_axis] > 0.0 {
+        1.0 / size[s_axis]
+    } else {
+        0.0
+    };
     positions
         .iter()
         .map(|p| {

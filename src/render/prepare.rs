@@ -3,8 +3,10 @@
 //! and snap to the fixed-point grid. Everything here is per primitive and
 //! order-preserving, so it can run in parallel without changing the result.
 
+use super::background::Painter;
 use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::shade::{ShadeMaterial, WorldLight};
+use super::texture::Sampler;
 use super::{RenderOptions, View};
 use crate::anim::Pose;
 use crate::scene::{Material, Mesh, NodeId, NodeKind, RenderStyle, Scene};
@@ -33,6 +35,8 @@ pub struct Item {
     /// vertices then carry them in `clip::A_UV`). Untextured items never
     /// pay for it.
     pub textured: bool,
+    /// The texture of a textured item.
+    pub texture: Option<Sampler>,
 }
 
 /// Index of the 1/w plane in [`Tri::base`] (after the attributes).
@@ -108,6 +112,8 @@ pub struct Prepared {
     pub transparent: Vec<Tri>,
     pub lines: Vec<Line>,
     pub points: Vec<Point>,
+    /// The scene's gradient/panorama background, when drawn.
+    pub sky: Option<Painter>,
 }
 
 struct Screen {
@@ -143,6 +149,11 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) ->
         .then(|| WorldLight::headlight(view.forward()));
 
     let mut out = Prepared::default();
+    if opts.sky {
+        if let Some(bg) = &scene.settings.sky {
+            out.sky = Painter::new(scene, bg, view.view, view.proj, opts.width, opts.height);
+        }
+    }
     for node_id in scene.walk() {
         let i = node_id.0 as usize;
         let node = &scene.nodes[i];
@@ -176,12 +187,20 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) ->
         let has_normals = mesh.normals.len() == mesh.positions.len();
         let smat = ShadeMaterial::new(material);
         let item = out.items.len() as u32;
+        // Textured: the material's texture, when its image exists and the
+        // mesh has coordinates for it.
+        let texture = material.texture.as_ref().and_then(|t| {
+            let image = scene.image(t.image)?;
+            let has_uv = mesh.texcoords.len() == mesh.positions.len() && has_normals;
+            has_uv.then(|| Sampler::new(t, image))
+        });
+        let translucent = texture.as_ref().is_some_and(Sampler::translucent);
 
         let verts = transform_vertices(mesh, world, view_proj, material, has_normals);
         match style {
             RenderStyle::Filled => {
                 let tris = setup_triangles(mesh, &verts, item, &screen, opts);
-                if smat.alpha < 1.0 {
+                if smat.alpha < 1.0 || translucent {
                     out.transparent.extend(tris);
                 } else {
                     out.opaque.extend(tris);
@@ -208,7 +227,8 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) ->
             material: smat,
             lights: item_lights,
             unlit: !has_normals,
-            textured: false,
+            textured: texture.is_some(),
+            texture,
         });
     }
     // Back to front by mean depth; the stable sort keeps scene order on ties.
@@ -267,6 +287,7 @@ fn transform_vertices(
     let mvp = view_proj * world;
     let normal_m = Mat3::from_mat4(world).inverse().transpose();
     let has_colors = mesh.colors.len() == mesh.positions.len();
+    let has_uv = mesh.texcoords.len() == mesh.positions.len();
     // Unlit geometry (lines/points without normals) shows its own colour or
     // the material's emissive colour (VRML97 IndexedLineSet/PointSet).
     let base = if has_normals {
@@ -285,11 +306,14 @@ fn transform_vertices(
                 Vec3::ZERO
             };
             let c = if has_colors { mesh.colors[k] } else { base };
+            let uv = if has_uv {
+                mesh.texcoords[k]
+            } else {
+                glam::Vec2::ZERO
+            };
             ClipVert {
                 clip: mvp * p.extend(1.0),
-                // Texture coordinates (slots A_UV..A_UV + 2) stay zero until
-                // meshes carry them.
-                attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z, 0.0, 0.0],
+                attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z, uv.x, uv.y],
             }
         })
         .collect()

@@ -327,6 +327,11 @@ pub fn draw_tile(
         &Visible { winner, b1, b2 },
         &mut Shaded { r, g, b, ids },
     );
+    // 2b. A gradient or panorama background behind what was drawn.
+    if let Some(sky) = &p.sky {
+        let rgb = [&mut r[..], &mut g[..], &mut b[..]];
+        sky.fill_tile((rect[0], rect[1]), (tw, th), TILE as usize, ids, rgb);
+    }
     fn put(rgb: [&mut [f32]; 3], i: usize, c: Vec3) {
         rgb[0][i] = c.x;
         rgb[1][i] = c.y;
@@ -365,12 +370,17 @@ pub fn draw_tile(
     for &ti in &bin.transparent {
         let t = &p.transparent[ti as usize];
         let item = &p.items[t.item as usize];
-        let alpha = item.material.alpha;
         for_each_pixel(t, rect, |x, y, w1, w2| {
             let z = depth_at(t, w1, w2);
             let i = at(x, y);
             if z < depth[i] && z >= 0.0 {
-                let c = shade_attrs(item, &t.attrs_at(w1, w2), eye);
+                let (c, alpha) = match &item.texture {
+                    Some(s) => fragment::shade_textured(item, s, t, w1, w2, eye),
+                    None => (
+                        shade_attrs(item, &t.attrs_at(w1, w2), eye),
+                        item.material.alpha,
+                    ),
+                };
                 let under = Vec3::new(r[i], g[i], b[i]);
                 put([r, g, b], i, c * alpha + under * (1.0 - alpha));
                 ids[i] = item.id;

@@ -59,7 +59,7 @@ pub struct Settings {
     pub background: Vec3,
     /// A file's sky/ground gradient and panorama (VRML97 Background);
     /// `background` is then its first sky colour, for flat fills.
-    pub sky: Option<Background>,
+    pub sky: Option<Box<Background>>,
     /// `None` = the format's default (VRML97: NavigationInfo.headlight, default on;
     /// Inventor/VRML1/OBJ: on, as examiner viewers do).
     pub headlight: Option<bool>,

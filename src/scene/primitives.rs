@@ -41,7 +41,8 @@ pub fn box_mesh(size: Vec3) -> Mesh {
         for (su, sv) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
             m.positions.push((n + su * u + sv * v) * h);
             m.normals.push(n);
-            m.texcoords.push(Vec2::new((su + 1.0) * 0.5, (sv + 1.0) * 0.5));
+            m.texcoords
+                .push(Vec2::new((su + 1.0) * 0.5, (sv + 1.0) * 0.5));
         }
         m.triangles.push([base, base + 1, base + 2]);
         m.triangles.push([base, base + 2, base + 3]);
@@ -320,9 +321,15 @@ mod tests {
         // back-left corner (−x, −z) is (0, 1) (upright with −z up).
         assert_eq!(uv_near(&b, Vec3::new(-1.0, -1.0, 1.0), Vec3::Z), Vec2::ZERO);
         assert_eq!(uv_near(&b, Vec3::new(1.0, 1.0, 1.0), Vec3::Z), Vec2::ONE);
-        assert_eq!(uv_near(&b, Vec3::new(-1.0, 1.0, -1.0), Vec3::Y), Vec2::new(0.0, 1.0));
+        assert_eq!(
+            uv_near(&b, Vec3::new(-1.0, 1.0, -1.0), Vec3::Y),
+            Vec2::new(0.0, 1.0)
+        );
         // Right face seen from +x: −z is right.
-        assert_eq!(uv_near(&b, Vec3::new(1.0, -1.0, -1.0), Vec3::X), Vec2::new(1.0, 0.0));
+        assert_eq!(
+            uv_near(&b, Vec3::new(1.0, -1.0, -1.0), Vec3::X),
+            Vec2::new(1.0, 0.0)
+        );
 
         let s = sphere_textured(1.0);
         check(&s, Vec3::splat(-1.0), Vec3::splat(1.0));
@@ -339,9 +346,15 @@ mod tests {
         check(&c, Vec3::splat(-1.0), Vec3::splat(1.0));
         assert_eq!(c.texcoords.len(), c.positions.len());
         let top_front = uv_near(&c, Vec3::new(0.0, 1.0, 1.0), Vec3::Y);
-        assert!((top_front - Vec2::new(0.5, 0.0)).length() < 1e-5, "{top_front}");
+        assert!(
+            (top_front - Vec2::new(0.5, 0.0)).length() < 1e-5,
+            "{top_front}"
+        );
         let bottom_front = uv_near(&c, Vec3::new(0.0, -1.0, 1.0), Vec3::NEG_Y);
-        assert!((bottom_front - Vec2::new(0.5, 1.0)).length() < 1e-5, "{bottom_front}");
+        assert!(
+            (bottom_front - Vec2::new(0.5, 1.0)).length() < 1e-5,
+            "{bottom_front}"
+        );
         let k = cone_textured(1.0, 2.0, true, true);
         check(&k, Vec3::splat(-1.0), Vec3::splat(1.0));
         assert_eq!(k.texcoords.len(), k.positions.len());

@@ -50,7 +50,10 @@ pub fn decode(bytes: &[u8], name: &str, source: ImageSource) -> Result<Image, St
     Image::new(name, source, w, h, comps, rgba).map_err(|e| e.to_string())
 }
 
-fn decode_common(bytes: &[u8]) -> Result<(u32, u32, u8, Vec<[u8; 4]>), String> {
+/// Width, height, components and RGBA8 pixels (top row first).
+type Pixels = (u32, u32, u8, Vec<[u8; 4]>);
+
+fn decode_common(bytes: &[u8]) -> Result<Pixels, String> {
     let reader = || {
         image::ImageReader::new(Cursor::new(bytes))
             .with_guessed_format()

@@ -143,9 +143,13 @@ mod tests {
             .unwrap();
         assert_eq!(i.components(), 3);
         assert_eq!(i.base().pixels(), &[[0, 0, 255, 255], [255, 0, 0, 255]]);
-        let i = sf_image(&[1.0, 1.0, 2.0, 0x8040 as f64], "p").unwrap().unwrap();
+        let i = sf_image(&[1.0, 1.0, 2.0, 0x8040 as f64], "p")
+            .unwrap()
+            .unwrap();
         assert_eq!(i.base().texel(0, 0), [0x80, 0x80, 0x80, 0x40]);
-        let i = sf_image(&[1.0, 1.0, 4.0, 0x11223344u32 as f64], "p").unwrap().unwrap();
+        let i = sf_image(&[1.0, 1.0, 4.0, 0x11223344u32 as f64], "p")
+            .unwrap()
+            .unwrap();
         assert_eq!(i.base().texel(0, 0), [0x11, 0x22, 0x33, 0x44]);
     }
 
@@ -153,8 +157,12 @@ mod tests {
     fn sf_image_bad_input() {
         assert_eq!(sf_image(&[0.0, 0.0, 0.0], "p"), Ok(None));
         assert_eq!(sf_image(&[], "p"), Ok(None));
-        assert!(sf_image(&[2.0, 2.0, 3.0, 1.0], "p").unwrap_err().contains("only 1"));
-        assert!(sf_image(&[60000.0, 60000.0, 3.0], "p").unwrap_err().contains("60000x60000"));
+        assert!(sf_image(&[2.0, 2.0, 3.0, 1.0], "p")
+            .unwrap_err()
+            .contains("only 1"));
+        assert!(sf_image(&[60000.0, 60000.0, 3.0], "p")
+            .unwrap_err()
+            .contains("60000x60000"));
         assert!(sf_image(&[1.0, 1.0, 7.0, 1.0], "p").is_err());
         assert!(sf_image(&[1.5, 1.0, 3.0, 1.0], "p").is_err());
     }
@@ -194,15 +202,19 @@ mod tests {
         assert!(e.contains("not a PNG"), "{e}");
         assert!(d(&[]).is_err());
         // Truncated PNG and JPEG.
-        let img = image::RgbImage::from_fn(16, 16, |x, y| image::Rgb([x as u8 * 16, y as u8 * 16, 7]));
+        let img =
+            image::RgbImage::from_fn(16, 16, |x, y| image::Rgb([x as u8 * 16, y as u8 * 16, 7]));
         let mut png = Vec::new();
         img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
             .unwrap();
         assert_eq!(d(&png), Ok((16, 16)));
         assert!(d(&png[..png.len() / 2]).is_err());
         let mut jpg = Vec::new();
-        img.write_to(&mut std::io::Cursor::new(&mut jpg), image::ImageFormat::Jpeg)
-            .unwrap();
+        img.write_to(
+            &mut std::io::Cursor::new(&mut jpg),
+            image::ImageFormat::Jpeg,
+        )
+        .unwrap();
         assert_eq!(d(&jpg), Ok((16, 16)));
         assert!(d(&jpg[..jpg.len() / 3]).is_err());
         // 1x1 works and has a one-level chain.
@@ -246,9 +258,17 @@ mod tests {
         assert_eq!(scene.images.len(), 1);
         let errs = l.load(&mut scene, &urls[..2]).unwrap_err();
         assert_eq!(errs.len(), 2);
-        assert!(errs[0].starts_with("cannot read texture 'missing.png': "), "{errs:?}");
-        assert!(errs[1].starts_with("cannot read texture 'broken.png': "), "{errs:?}");
-        let e = l.load_one(&mut scene, "http://example.com/a.png").unwrap_err();
+        assert!(
+            errs[0].starts_with("cannot read texture 'missing.png': "),
+            "{errs:?}"
+        );
+        assert!(
+            errs[1].starts_with("cannot read texture 'broken.png': "),
+            "{errs:?}"
+        );
+        let e = l
+            .load_one(&mut scene, "http://example.com/a.png")
+            .unwrap_err();
         assert!(e.contains("local"), "{e}");
         std::fs::remove_dir_all(&dir).ok();
     }

@@ -231,7 +231,9 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                 Some(Dest::Material(property)) => {
                     let base = b.materials.get(&Rc::as_ptr(&t)).copied();
                     let copies = b.material_copies.get(&Rc::as_ptr(&t));
-                    let ids = base.into_iter().chain(copies.into_iter().flatten().copied());
+                    let ids = base
+                        .into_iter()
+                        .chain(copies.into_iter().flatten().copied());
                     for id in ids.collect::<Vec<_>>() {
                         pending.push(Pending {
                             interp: interp.clone(),

@@ -3,10 +3,10 @@
 //! world settings (NavigationInfo, Background, WorldInfo).
 
 use super::{animation, fmt_warning, geometry};
-use crate::format::textures;
 use crate::format::inline;
 use crate::format::lexer::Pos;
 use crate::format::syntax::{AstNode, NodeRef, Parsed};
+use crate::format::textures;
 use crate::format::Loaded;
 use crate::scene::{
     Camera, CameraKind, ImageId, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId,
@@ -268,7 +268,7 @@ impl Builder {
                     let bg = self.background(&eff);
                     self.scene.settings.background = bg.flat_color();
                     if !bg.is_flat() {
-                        self.scene.settings.sky = Some(bg);
+                        self.scene.settings.sky = Some(Box::new(bg));
                     }
                 }
             }
@@ -373,7 +373,10 @@ impl Builder {
         mat.texture = Some(t);
         let id = self.scene.add_material(mat);
         if let Some(m) = m {
-            self.material_copies.entry(Rc::as_ptr(m)).or_default().push(id);
+            self.material_copies
+                .entry(Rc::as_ptr(m))
+                .or_default()
+                .push(id);
         }
         self.textured_materials.insert(Rc::as_ptr(app), id);
         id

@@ -311,7 +311,10 @@ fn extrusion(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     let mut tex_index: Vec<Vec<u32>> = faces.clone();
     let cap_base = n * m;
     if let Some(t) = &mut tex {
-        let flat: Vec<Vec3> = cross[..cap_len].iter().map(|c| Vec3::new(c.x, c.y, 0.0)).collect();
+        let flat: Vec<Vec3> = cross[..cap_len]
+            .iter()
+            .map(|c| Vec3::new(c.x, c.y, 0.0))
+            .collect();
         t.extend(bbox_texcoords(&flat));
     }
     if g.bool("beginCap", true) && !spine_closed && cap_len >= 3 {

@@ -303,9 +303,16 @@ fn missing_texture_warns_and_draws_untextured() {
     let path = dir.join("t.wrl");
     let l = read(src.as_bytes(), &path).unwrap();
     assert_eq!(l.warnings.len(), 2, "{:?}", l.warnings);
-    let want = format!("{}:3:11: cannot read texture 'missing.png': file not found", path.display());
+    let want = format!(
+        "{}:3:11: cannot read texture 'missing.png': file not found",
+        path.display()
+    );
     assert!(l.warnings[0].starts_with(&want), "{:?}", l.warnings);
-    assert!(l.warnings[1].contains("cannot read texture 'broken.png': "), "{:?}", l.warnings);
+    assert!(
+        l.warnings[1].contains("cannot read texture 'broken.png': "),
+        "{:?}",
+        l.warnings
+    );
     let (_, mat) = first_shape(&l.scene);
     assert!(mat.texture.is_none());
     assert!(l.scene.images.is_empty());
@@ -322,14 +329,26 @@ fn pixel_texture_without_material_is_unlit_with_default_mapping() {
     let t = mat.texture.as_ref().unwrap();
     assert_eq!(t.model, TextureModel::Replace);
     assert_eq!(l.scene.images[0].components(), 1);
-    assert_eq!(l.scene.images[0].base().pixels(), &[[0, 0, 0, 255], [255; 4]]);
+    assert_eq!(
+        l.scene.images[0].base().pixels(),
+        &[[0, 0, 0, 255], [255; 4]]
+    );
     // Bounding box 4 x 2: s along x 0..1, t along y 0..0.5.
-    let k = m.positions.iter().position(|p| *p == Vec3::new(4.0, 2.0, 0.0)).unwrap();
+    let k = m
+        .positions
+        .iter()
+        .position(|p| *p == Vec3::new(4.0, 2.0, 0.0))
+        .unwrap();
     assert_eq!(m.texcoords[k], glam::Vec2::new(1.0, 0.5));
     // A bad inline image is a warning and no texture.
     let l = load("#VRML V2.0 utf8\nShape { appearance Appearance { texture PixelTexture { image 2 2 3 0xFF } } geometry Box {} }");
     assert_eq!(l.warnings.len(), 1, "{:?}", l.warnings);
-    assert!(l.warnings[0].contains("cannot read texture 'PixelTexture': image is 2x2 but has only 1 pixels"), "{:?}", l.warnings);
+    assert!(
+        l.warnings[0]
+            .contains("cannot read texture 'PixelTexture': image is 2x2 but has only 1 pixels"),
+        "{:?}",
+        l.warnings
+    );
     assert!(first_shape(&l.scene).1.texture.is_none());
 }
 
