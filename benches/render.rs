@@ -3,7 +3,7 @@
 
 use animed::anim::evaluate;
 use animed::render::job::{find_camera, view_for};
-use animed::render::{bench_scenes, render, RenderOptions};
+use animed::render::{bench_scenes, render_into, Frame, RenderOptions};
 use animed::scene::Scene;
 use criterion::{criterion_group, criterion_main, Criterion};
 
@@ -11,6 +11,12 @@ const W: u32 = 1280;
 const H: u32 = 720;
 
 fn frame(c: &mut Criterion, name: &str, scene: &Scene) {
+    frame_aa(c, name, scene, 1);
+}
+
+/// One whole frame with `aa` samples per pixel (the frame reused, as the
+/// editor and `animed bench` do).
+fn frame_aa(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
     let pose = evaluate(scene, 0.0);
     let camera = find_camera(scene, None).ok().flatten();
     let view = view_for(scene, &pose, camera, W as f32 / H as f32);
@@ -18,9 +24,13 @@ fn frame(c: &mut Criterion, name: &str, scene: &Scene) {
         width: W,
         height: H,
         headlight: false,
+        aa,
         ..RenderOptions::default()
     };
-    c.bench_function(name, |b| b.iter(|| render(scene, &pose, &view, &opts)));
+    let mut out = Frame::new(W, H, opts.background);
+    c.bench_function(name, |b| {
+        b.iter(|| render_into(scene, &pose, &view, &opts, &mut out))
+    });
 }
 
 fn benches(c: &mut Criterion) {
@@ -34,6 +44,8 @@ fn benches(c: &mut Criterion) {
     );
     if let Ok(demo) = animed::format::demo() {
         frame(c, "demo", &demo.scene);
+        // Multisampling: depth/coverage per sample plus the resolve.
+        frame_aa(c, "demo_aa4", &demo.scene, 4);
     }
 }
 

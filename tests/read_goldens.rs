@@ -22,6 +22,7 @@ fn draw(file: &str, time: f32) -> animed::render::Frame {
         background: Some(glam::Vec3::new(0.2, 0.2, 0.3)),
         headlight: Headlight::Auto,
         threads: 0,
+        aa: 1,
     };
     render_at(&loaded.scene, &spec, time).expect("renders")
 }

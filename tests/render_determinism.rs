@@ -39,16 +39,19 @@ fn thread_count_never_changes_the_picture() {
         .unwrap()
         .scene;
     let cases = [
-        (&demo, None, 2.5f32),
-        (&oak, Some(RenderStyle::Lines), 0.0),
-        (&oak, Some(RenderStyle::Points), 0.0),
+        (&demo, None, 2.5f32, 1),
+        (&oak, Some(RenderStyle::Lines), 0.0, 1),
+        (&oak, Some(RenderStyle::Points), 0.0, 1),
+        (&demo, None, 2.5f32, 4),
+        (&oak, Some(RenderStyle::Lines), 0.0, 8),
     ];
-    for (scene, style, time) in cases {
+    for (scene, style, time, aa) in cases {
         let spec = |threads| FrameSpec {
             width: 333,
             height: 201,
             style,
             threads,
+            aa,
             ..FrameSpec::default()
         };
         let one = render_at(scene, &spec(1), time).unwrap();
@@ -57,7 +60,7 @@ fn thread_count_never_changes_the_picture() {
             let n = render_at(scene, &spec(threads), time).unwrap();
             assert!(
                 same(&one, &n),
-                "{threads} threads differ from 1 ({style:?})"
+                "{threads} threads differ from 1 ({style:?}, aa {aa})"
             );
         }
     }
@@ -138,6 +141,9 @@ fn demo_scene() {
         ..FrameSpec::default()
     };
     golden::check("demo", &render_at(&demo, &spec, 0.0).unwrap());
+    // `render --aa 4`: smooth silhouettes (zoom in on the golden).
+    let aa = FrameSpec { aa: 4, ..spec };
+    golden::check("demo_aa4", &render_at(&demo, &aa, 0.0).unwrap());
 }
 
 /// The SSE2 and AVX shading paths (AVX is picked at run time when the CPU

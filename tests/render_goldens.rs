@@ -521,7 +521,29 @@ fn orthographic_lines_points_unlit() {
         headlight: true,
         ..opts()
     };
-    golden::check("ortho_lines_points", &draw(&s, &o));
+    let plain = draw(&s, &o);
+    golden::check("ortho_lines_points", &plain);
+    // The same with 4x multisampling: edges of the cube, the ring and the
+    // dots get in-between colours (zoom in on the golden to see them).
+    let aa = draw(&s, &RenderOptions { aa: 4, ..o });
+    golden::check("ortho_lines_points_aa4", &aa);
+    let distinct = |f: &Frame| {
+        let mut c = f.color.clone();
+        c.sort_unstable();
+        c.dedup();
+        c.len()
+    };
+    assert!(
+        distinct(&aa) > distinct(&plain) * 3 / 2,
+        "AA adds edge shades: {} vs {} colours",
+        distinct(&aa),
+        distinct(&plain)
+    );
+    // Interior pixels keep their colour: a pixel in the middle of the cube
+    // and one of the background are the same with and without AA.
+    let mid = (H / 2 * W + W / 2) as usize;
+    assert_eq!(aa.color[mid], plain.color[mid]);
+    assert_eq!(aa.color[0], plain.color[0]);
 }
 
 /// A scoped DirectionalLight lights only its siblings' subtrees.

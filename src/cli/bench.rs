@@ -52,6 +52,11 @@ pub fn sections() -> Vec<Section> {
             run: bench_demo,
         },
         Section {
+            name: "aa",
+            about: "anti-aliasing cost on the demo and the frame budgets",
+            run: bench_aa,
+        },
+        Section {
             name: "animation",
             about: "track sampling and whole-scene evaluation (1000 tracks of each kind)",
             run: bench_animation,
@@ -164,12 +169,17 @@ pub fn time_it(seconds: f64, mut f: impl FnMut()) -> Timing {
 }
 
 fn render_scene_time(scene: &Scene, args: &Args) -> Timing {
+    render_scene_time_aa(scene, args, Headlight::Off, 1)
+}
+
+fn render_scene_time_aa(scene: &Scene, args: &Args, headlight: Headlight, aa: u32) -> Timing {
     let (w, h) = args.size;
     let spec = FrameSpec {
         width: w,
         height: h,
-        headlight: Headlight::Off,
+        headlight,
         threads: args.threads,
+        aa,
         ..FrameSpec::default()
     };
     let pose = crate::anim::evaluate(scene, 0.0);
@@ -244,6 +254,51 @@ fn bench_demo(args: &Args) -> Result<Vec<String>, String> {
         t.describe(),
         1.0 / t.wall.as_secs_f64()
     )])
+}
+
+/// What 4× multisampling costs on the demo (as a ratio to no AA, measured
+/// in one run), and the frame budgets of issue 15: the editor frame on the
+/// demo with 4× AA (8 ms) and a 100k-triangle textured scene without AA
+/// (60 frames/s).
+fn bench_aa(args: &Args) -> Result<Vec<String>, String> {
+    let (w, h) = args.size;
+    let demo = crate::format::demo().map_err(|e| e.to_string())?.scene;
+    let mut out = Vec::new();
+    let t1 = render_scene_time_aa(&demo, args, Headlight::Auto, 1);
+    let t4 = render_scene_time_aa(&demo, args, Headlight::Auto, 4);
+    let t8 = render_scene_time_aa(&demo, args, Headlight::Auto, 8);
+    let ratio = |t: &Timing| t.wall.as_secs_f64() / t1.wall.as_secs_f64();
+    out.push(format!("demo {w}x{h} without AA: {}", t1.describe()));
+    out.push(format!(
+        "demo {w}x{h} 8x AA: {} = {:.2}x",
+        t8.describe(),
+        ratio(&t8)
+    ));
+    out.push(format!(
+        "demo {w}x{h} 4x AA: {} = cost of 4x AA {:.2}x",
+        t4.describe(),
+        ratio(&t4)
+    ));
+    let mut ed = crate::editor::bench::setup(w, h);
+    ed.set_aa(4);
+    let mut frame = crate::render::Frame::new(w, h, glam::Vec3::ZERO);
+    let full = time_it(args.seconds, || {
+        ed.invalidate();
+        ed.draw(&mut frame);
+    });
+    out.push(format!(
+        "budget: editor frame on the demo with 4x AA: {} (budget 8 ms)",
+        full.describe()
+    ));
+    let aspect = w as f32 / h as f32;
+    let scene = bench_scenes::small_triangles_textured(100_000, aspect);
+    let t = render_scene_time(&scene, args);
+    out.push(format!(
+        "budget: 100k-triangle textured scene (uv + derivatives computed; texture sampler not yet connected) without AA: {} = {:.0} frames/s (budget 60)",
+        t.describe(),
+        1.0 / t.wall.as_secs_f64()
+    ));
+    Ok(out)
 }
 
 /// The editor's frame time: a full redraw (scene render, grid, outline,

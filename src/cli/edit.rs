@@ -22,6 +22,10 @@ pub struct Args {
     /// (0: off). Default: $ANIMED_AUTOSAVE_SECS, else 30.
     #[arg(long, value_name = "SECS")]
     pub autosave_secs: Option<f64>,
+    /// Anti-aliasing of the viewport: samples per pixel, 1 (off), 4 or 8.
+    /// Default: 4 in the window, 1 for --script/--screenshot.
+    #[arg(long, value_parser = super::render::parse_aa)]
+    pub aa: Option<u32>,
 }
 
 /// The autosave interval: the flag, else `$ANIMED_AUTOSAVE_SECS`, else 30 s.
@@ -87,8 +91,10 @@ pub fn run(args: Args) -> i32 {
         }
     };
     if args.script.is_none() && args.screenshot.is_none() {
+        ed.set_aa(args.aa.unwrap_or(WINDOW_AA));
         return window(ed);
     }
+    ed.set_aa(args.aa.unwrap_or(1));
     if let Some(path) = &args.script {
         let text = match std::fs::read_to_string(path) {
             Ok(t) => t,
@@ -115,6 +121,9 @@ pub fn run(args: Args) -> i32 {
     0
 }
 
+/// Anti-aliasing samples per pixel of the editor window by default.
+pub const WINDOW_AA: u32 = 4;
+
 fn window(ed: Editor) -> i32 {
     match crate::app::run(ed) {
         Ok(()) => 0,
@@ -135,6 +144,7 @@ pub fn run_default() -> i32 {
             return 1;
         }
     }
+    ed.set_aa(WINDOW_AA);
     window(ed)
 }
 

@@ -40,6 +40,9 @@ pub struct Args {
     /// Worker threads (0 = all cores); the picture is the same for any count.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
+    /// Anti-aliasing: samples per pixel, 1 (off), 4 or 8.
+    #[arg(long, default_value_t = 1, value_parser = parse_aa)]
+    pub aa: u32,
     /// Time in seconds at which to evaluate the animation.
     #[arg(long, conflicts_with = "frame")]
     pub time: Option<f32>,
@@ -107,6 +110,7 @@ pub fn prepare(args: &Args) -> Result<Job, String> {
         background: args.bg,
         headlight: args.headlight,
         threads: args.threads,
+        aa: args.aa,
     };
     // Fail early on a bad --viewpoint, before any frame is drawn.
     crate::render::job::find_camera(&scene, spec.viewpoint.as_deref())?;
@@ -218,6 +222,16 @@ pub fn parse_rgb(s: &str) -> Result<Vec3, String> {
 
 pub fn parse_headlight(s: &str) -> Result<Headlight, String> {
     Headlight::parse(s).ok_or_else(|| format!("headlight {s:?} is not on, off or auto"))
+}
+
+/// `--aa`: 1, 4 or 8 samples per pixel.
+pub fn parse_aa(s: &str) -> Result<u32, String> {
+    match s.trim() {
+        "1" => Ok(1),
+        "4" => Ok(4),
+        "8" => Ok(8),
+        _ => Err(format!("'{s}' is not 1, 4 or 8 samples per pixel")),
+    }
 }
 
 #[cfg(test)]

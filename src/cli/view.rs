@@ -25,6 +25,9 @@ pub struct Args {
     /// Headlight at start: on, off or auto (the file's NavigationInfo).
     #[arg(long, default_value = "auto", value_parser = parse_headlight)]
     pub headlight: Headlight,
+    /// Anti-aliasing: samples per pixel, 1 (off), 4 or 8.
+    #[arg(long, default_value_t = 4, value_parser = super::render::parse_aa)]
+    pub aa: u32,
     #[command(flatten)]
     pub clip: super::clip_arg::ClipArg,
 }
@@ -64,6 +67,7 @@ fn view(args: Args) -> Result<(), String> {
         headlight: args.headlight,
         stats: args.stats,
         title,
+        aa: args.aa,
     };
     let viewer = Viewer::new(loaded.scene, &opts)?;
     if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {

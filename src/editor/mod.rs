@@ -113,6 +113,7 @@ struct LayerKey {
     h: u32,
     grid: bool,
     style: Option<RenderStyle>,
+    aa: u32,
 }
 
 /// The whole editor state.
@@ -139,6 +140,9 @@ pub struct Editor {
     onion: onion::Onion,
     show_grid: bool,
     view_style: Option<RenderStyle>,
+    /// Anti-aliasing samples per pixel of the viewport (1, 4, 8); the
+    /// window uses 4, headless sessions 1 (see `set_aa`).
+    aa: u32,
     width: u32,
     height: u32,
     mouse: (f32, f32),
@@ -189,6 +193,7 @@ impl Editor {
             onion: onion::Onion::default(),
             show_grid: true,
             view_style: None,
+            aa: 1,
             width: width.max(1),
             height: height.max(1),
             mouse: (-1.0, -1.0),

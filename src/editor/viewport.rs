@@ -48,7 +48,13 @@ impl Editor {
             headlight: self.scene.settings.headlight.unwrap_or(true),
             background: self.scene.settings.background,
             sky: true,
+            aa: self.aa,
         }
+    }
+
+    /// Sets the viewport's anti-aliasing (samples per pixel: 1, 4 or 8).
+    pub fn set_aa(&mut self, samples: u32) {
+        self.aa = samples;
     }
 
     /// Re-renders the viewport layer when its inputs changed.
@@ -63,6 +69,7 @@ impl Editor {
             h,
             grid: self.show_grid,
             style: self.view_style,
+            aa: self.aa,
         };
         if self.layer.key == Some(key) {
             return;

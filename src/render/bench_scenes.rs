@@ -80,6 +80,46 @@ pub fn layers(layers: usize, aspect: f32) -> Scene {
     s
 }
 
+/// [`small_triangles`] with texture coordinates across the grid and a
+/// 256×256 checker texture on the material (what `tex`'s sampler draws;
+/// until it is connected the renderer computes the coordinates and their
+/// derivatives and keeps the diffuse colour).
+pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
+    let mut s = small_triangles(count, aspect);
+    let texels: Vec<[u8; 4]> = (0..256 * 256)
+        .map(|i| {
+            let (x, y) = (i % 256, i / 256);
+            if (x / 32 + y / 32) % 2 == 0 {
+                [230, 220, 200, 255]
+            } else {
+                [60, 70, 90, 255]
+            }
+        })
+        .collect();
+    let image = crate::scene::Image::new(
+        "checker",
+        crate::scene::ImageSource::Inline,
+        256,
+        256,
+        3,
+        texels,
+    )
+    .and_then(|img| s.add_image(img));
+    if let Ok(image) = image {
+        for m in &mut s.materials {
+            m.texture = Some(crate::scene::Texture::new(image));
+        }
+        for mesh in &mut s.meshes {
+            mesh.texcoords = mesh
+                .positions
+                .iter()
+                .map(|p| glam::Vec2::new(p.x * 4.0, p.y * 4.0))
+                .collect();
+        }
+    }
+    s
+}
+
 /// About `count` small triangles (a grid of quads, two each) covering the
 /// screen once, one mesh, lit by [`three_lights`].
 pub fn small_triangles(count: usize, aspect: f32) -> Scene {

@@ -26,7 +26,8 @@ pub const TILE: i32 = 64;
 /// Marks a pixel no opaque triangle covers.
 pub const NONE: u32 = u32::MAX;
 
-/// What the depth pass left for the shading pass, `TILE` pixels per row.
+/// What the depth pass left for the shading pass: per sample a plane of
+/// `TILE`×`TILE` pixels (sample-major).
 pub struct Visible<'a> {
     /// Index into `Prepared::opaque` of the nearest triangle, or [`NONE`].
     pub winner: &'a [u32],
@@ -35,7 +36,8 @@ pub struct Visible<'a> {
     pub b2: &'a [f32],
 }
 
-/// The tile's linear colour channels and object ids, `TILE` pixels per row.
+/// The tile's linear colour channels and object ids, per sample like
+/// [`Visible`].
 pub struct Shaded<'a> {
     pub r: &'a mut [f32],
     pub g: &'a mut [f32],
@@ -43,23 +45,23 @@ pub struct Shaded<'a> {
     pub ids: &'a mut [u32],
 }
 
-/// Shades the visible pixels of a `w`×`h` tile; pixels with no triangle get
-/// `background` and id 0.
+/// Shades the visible samples of a `w`×`h` tile with `samples` samples per
+/// pixel; samples with no triangle get `background` and id 0.
 pub fn shade_visible(
     p: &Prepared,
     eye: Vec3,
     background: Vec3,
-    (w, h): (usize, usize),
+    size: (usize, usize, usize),
     vis: &Visible,
     out: &mut Shaded,
 ) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { shade_visible_avx(p, eye, background, (w, h), vis, out) };
+        unsafe { shade_visible_avx(p, eye, background, size, vis, out) };
         return;
     }
-    shade_visible_in::<Sse8>(p, eye, background, (w, h), vis, out);
+    shade_visible_in::<Sse8>(p, eye, background, size, vis, out);
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -68,7 +70,7 @@ unsafe fn shade_visible_avx(
     p: &Prepared,
     eye: Vec3,
     background: Vec3,
-    size: (usize, usize),
+    size: (usize, usize, usize),
     vis: &Visible,
     out: &mut Shaded,
 ) {
@@ -112,10 +114,11 @@ fn shade_visible_in<V: V8>(
     p: &Prepared,
     eye: Vec3,
     background: Vec3,
-    (w, h): (usize, usize),
+    (w, h, ns): (usize, usize, usize),
     vis: &Visible,
     out: &mut Shaded,
 ) {
+    const PLANE: usize = (TILE * TILE) as usize;
     let bg = [
         V::splat(background.x),
         V::splat(background.y),
@@ -124,43 +127,108 @@ fn shade_visible_in<V: V8>(
     for row in 0..h {
         for bx in (0..w).step_by(8) {
             let i0 = row * TILE as usize + bx;
-            let win = lanes8(vis.winner, i0);
-            let mut todo = 0u32;
-            for (k, &t) in win.iter().enumerate() {
-                todo |= ((t != NONE) as u32) << k;
-            }
-            if todo != 0xFF {
-                bg[0].store(lanes8_mut(out.r, i0));
-                bg[1].store(lanes8_mut(out.g, i0));
-                bg[2].store(lanes8_mut(out.b, i0));
-                let ids = lanes8_mut(out.ids, i0);
-                for (k, id) in ids.iter_mut().enumerate() {
-                    if todo >> k & 1 == 0 {
-                        *id = 0;
+            // Per sample, the lanes still to colour.
+            let mut pending = [0u32; 8];
+            for (s, pend) in pending.iter_mut().enumerate().take(ns) {
+                let j0 = s * PLANE + i0;
+                for (k, &t) in lanes8(vis.winner, j0).iter().enumerate() {
+                    *pend |= ((t != NONE) as u32) << k;
+                }
+                if *pend != 0xFF {
+                    bg[0].store(lanes8_mut(out.r, j0));
+                    bg[1].store(lanes8_mut(out.g, j0));
+                    bg[2].store(lanes8_mut(out.b, j0));
+                    for (k, id) in lanes8_mut(out.ids, j0).iter_mut().enumerate() {
+                        if *pend >> k & 1 == 0 {
+                            *id = 0;
+                        }
                     }
                 }
             }
-            let b1 = V::load(lanes8(vis.b1, i0));
-            let b2 = V::load(lanes8(vis.b2, i0));
-            // One round per item (material + lights) in the block.
-            while todo != 0 {
-                let item_ix = p.opaque[win[todo.trailing_zeros() as usize] as usize].item;
-                let mut group = 0u32;
-                for (k, &t) in win.iter().enumerate() {
-                    if todo >> k & 1 == 1 && p.opaque[t as usize].item == item_ix {
-                        group |= 1 << k;
+            // Rounds: each lane shades the triangle of its first sample
+            // still pending (at that sample), and the colour goes to every
+            // sample of the lane showing the same triangle. Without
+            // multisampling there is one round.
+            loop {
+                let mut win = [NONE; 8];
+                let mut at_sample = [0usize; 8];
+                let mut todo = 0u32;
+                for k in 0..8 {
+                    if let Some(s) = (0..ns).find(|&s| pending[s] >> k & 1 == 1) {
+                        win[k] = vis.winner[s * PLANE + i0 + k];
+                        at_sample[k] = s;
+                        todo |= 1 << k;
                     }
                 }
-                todo &= !group;
-                let item = &p.items[item_ix as usize];
-                let [r, g, b] = shade_group::<V>(p, item, eye, win, group, b1, b2, bx, row);
-                store_masked(lanes8_mut(out.r, i0), r, group);
-                store_masked(lanes8_mut(out.g, i0), g, group);
-                store_masked(lanes8_mut(out.b, i0), b, group);
-                let ids = lanes8_mut(out.ids, i0);
-                for (k, id) in ids.iter_mut().enumerate() {
-                    if group >> k & 1 == 1 {
-                        *id = item.id;
+                if todo == 0 {
+                    break;
+                }
+                let (b1, b2) = if at_sample.iter().all(|&s| s == at_sample[0]) {
+                    let j0 = at_sample[0] * PLANE + i0;
+                    (V::load(lanes8(vis.b1, j0)), V::load(lanes8(vis.b2, j0)))
+                } else {
+                    let g = |v: &[f32]| std::array::from_fn(|k| v[at_sample[k] * PLANE + i0 + k]);
+                    (V::load(&g(vis.b1)), V::load(&g(vis.b2)))
+                };
+                let mut rgb = [[0.0f32; 8]; 3];
+                let mut lane_id = [0u32; 8];
+                let lanes = todo;
+                // One group per item (material + lights) in the block.
+                while todo != 0 {
+                    let item_ix = p.opaque[win[todo.trailing_zeros() as usize] as usize].item;
+                    let mut group = 0u32;
+                    for (k, &t) in win.iter().enumerate() {
+                        if todo >> k & 1 == 1 && p.opaque[t as usize].item == item_ix {
+                            group |= 1 << k;
+                        }
+                    }
+                    todo &= !group;
+                    let item = &p.items[item_ix as usize];
+                    let c = shade_group::<V>(p, item, eye, &win, group, b1, b2, bx, row);
+                    for (dst, v) in rgb.iter_mut().zip(c) {
+                        store_masked(dst, v, group);
+                    }
+                    for (k, id) in lane_id.iter_mut().enumerate() {
+                        if group >> k & 1 == 1 {
+                            *id = item.id;
+                        }
+                    }
+                }
+                if ns == 1 {
+                    for (dst, src) in [&mut *out.r, &mut *out.g, &mut *out.b]
+                        .into_iter()
+                        .zip(&rgb)
+                    {
+                        store_masked(lanes8_mut(dst, i0), V::load(src), lanes);
+                    }
+                    let ids = lanes8_mut(out.ids, i0);
+                    for (k, id) in ids.iter_mut().enumerate() {
+                        if lanes >> k & 1 == 1 {
+                            *id = lane_id[k];
+                        }
+                    }
+                    break;
+                }
+                for (s, pend) in pending.iter_mut().enumerate().take(ns) {
+                    let j0 = s * PLANE + i0;
+                    let mut same = 0u32;
+                    for (k, &t) in lanes8(vis.winner, j0).iter().enumerate() {
+                        same |= ((*pend >> k & 1 == 1 && t == win[k]) as u32) << k;
+                    }
+                    if same == 0 {
+                        continue;
+                    }
+                    *pend &= !same;
+                    for (dst, src) in [&mut *out.r, &mut *out.g, &mut *out.b]
+                        .into_iter()
+                        .zip(&rgb)
+                    {
+                        store_masked(lanes8_mut(dst, j0), V::load(src), same);
+                    }
+                    for (k, id) in lanes8_mut(out.ids, j0).iter_mut().enumerate() {
+                        if same >> k & 1 == 1 {
+                            *id = lane_id[k];
+                        }
                     }
                 }
             }
@@ -479,10 +547,8 @@ mod tests {
             item: 0,
             bbox: [0, 0, 64, 64],
         };
-        let p = Prepared {
-            opaque: vec![tri],
-            ..Prepared::default()
-        };
+        let mut p = Prepared::default();
+        p.opaque.push(tri);
         (p, (xy, inv_w, uv))
     }
 

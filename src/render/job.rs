@@ -58,6 +58,8 @@ pub struct FrameSpec {
     pub headlight: Headlight,
     /// 0 = all cores; never changes the picture.
     pub threads: usize,
+    /// Samples per pixel (1 = no anti-aliasing, 4, 8); see `RenderOptions::aa`.
+    pub aa: u32,
 }
 
 impl Default for FrameSpec {
@@ -70,6 +72,7 @@ impl Default for FrameSpec {
             background: None,
             headlight: Headlight::Auto,
             threads: 0,
+            aa: 1,
         }
     }
 }
@@ -141,6 +144,7 @@ pub fn options_for(scene: &Scene, spec: &FrameSpec) -> RenderOptions {
         background: spec.background.unwrap_or(scene.settings.background),
         // `--bg` overrides a file's Background gradient too.
         sky: spec.background.is_none(),
+        aa: spec.aa,
     }
 }
 

@@ -51,6 +51,21 @@ pub struct RenderOptions {
     /// Draw the scene's own gradient/panorama background (VRML97
     /// Background) instead of the flat `background`, when it has one.
     pub sky: bool,
+    /// Multisample anti-aliasing: 1 (off), 4 or 8 samples per pixel (other
+    /// values round down to one of these). Depth and coverage per sample,
+    /// shading once per pixel per triangle, box-filter resolve.
+    pub aa: u32,
+}
+
+impl RenderOptions {
+    /// Samples per pixel: 1, 4 or 8.
+    pub fn samples(&self) -> usize {
+        match self.aa {
+            0..=3 => 1,
+            4..=7 => 4,
+            _ => 8,
+        }
+    }
 }
 
 impl Default for RenderOptions {
@@ -63,6 +78,7 @@ impl Default for RenderOptions {
             headlight: true,
             background: Vec3::ZERO,
             sky: false,
+            aa: 1,
         }
     }
 }
@@ -103,19 +119,58 @@ pub fn render_into(
         return;
     }
     let pool = thread_pool(opts.threads);
+    let mut scratch = FrameScratch::take();
     pool.install(|| {
-        let prepared = prepare::prepare(scene, pose, view, &opts);
-        draw(&prepared, &opts, view.eye, frame);
+        prepare::prepare(scene, pose, view, &opts, &mut scratch.prepared);
+        draw(&scratch.prepared, &mut scratch.bins, &opts, view.eye, frame);
     });
+    scratch.give_back();
+}
+
+/// The per-frame working memory (prepared primitives and tile bins), kept
+/// in a small pool between renders: a 100k-triangle frame fills tens of
+/// megabytes, and allocating them afresh costs page faults every frame.
+/// Contents never carry over (everything is cleared before use).
+#[derive(Default)]
+struct FrameScratch {
+    prepared: prepare::Prepared,
+    bins: Vec<raster::Bin>,
+}
+
+static SCRATCH: Mutex<Vec<FrameScratch>> = Mutex::new(Vec::new());
+
+impl FrameScratch {
+    fn take() -> FrameScratch {
+        // A poisoned lock only means another render panicked; the pool is fine.
+        let mut pool = SCRATCH.lock().unwrap_or_else(|e| e.into_inner());
+        pool.pop().unwrap_or_default()
+    }
+
+    fn give_back(self) {
+        let mut pool = SCRATCH.lock().unwrap_or_else(|e| e.into_inner());
+        // Concurrent renders (editor + onion copies) each keep one.
+        if pool.len() < 4 {
+            pool.push(self);
+        }
+    }
 }
 
 /// Bins the prepared primitives into tiles, draws the tiles in parallel and
 /// copies them into `frame`.
-fn draw(p: &prepare::Prepared, opts: &RenderOptions, eye: Vec3, frame: &mut Frame) {
+fn draw(
+    p: &prepare::Prepared,
+    bins: &mut Vec<raster::Bin>,
+    opts: &RenderOptions,
+    eye: Vec3,
+    frame: &mut Frame,
+) {
     let (w, h) = (opts.width as i32, opts.height as i32);
     let tiles_x = (w + raster::TILE - 1) / raster::TILE;
     let tiles_y = (h + raster::TILE - 1) / raster::TILE;
-    let mut bins = vec![raster::Bin::default(); (tiles_x * tiles_y) as usize];
+    bins.resize_with((tiles_x * tiles_y) as usize, raster::Bin::default);
+    for b in bins.iter_mut() {
+        b.clear();
+    }
     fn bin_all(
         bins: &mut [raster::Bin],
         tiles_x: i32,
@@ -132,19 +187,16 @@ fn draw(p: &prepare::Prepared, opts: &RenderOptions, eye: Vec3, frame: &mut Fram
             }
         }
     }
-    bin_all(&mut bins, tiles_x, p.opaque.iter().map(|t| t.bbox), |b| {
+    bin_all(bins, tiles_x, p.opaque.iter().map(|t| t.bbox), |b| {
         &mut b.opaque
     });
-    bin_all(
-        &mut bins,
-        tiles_x,
-        p.transparent.iter().map(|t| t.bbox),
-        |b| &mut b.transparent,
-    );
-    bin_all(&mut bins, tiles_x, p.lines.iter().map(|l| l.bbox), |b| {
+    bin_all(bins, tiles_x, p.transparent.iter().map(|t| t.bbox), |b| {
+        &mut b.transparent
+    });
+    bin_all(bins, tiles_x, p.lines.iter().map(|l| l.bbox), |b| {
         &mut b.lines
     });
-    bin_all(&mut bins, tiles_x, p.points.iter().map(|q| q.bbox), |b| {
+    bin_all(bins, tiles_x, p.points.iter().map(|q| q.bbox), |b| {
         &mut b.points
     });
 
@@ -160,7 +212,16 @@ fn draw(p: &prepare::Prepared, opts: &RenderOptions, eye: Vec3, frame: &mut Fram
         .enumerate()
         .for_each(|(ty, ((color, depth), ids))| {
             let ty = ty as i32;
-            let mut scratch = raster::Scratch::default();
+            // Tile buffers are kept per worker thread between bands and
+            // frames (all their contents are reset or overwritten per tile).
+            thread_local! {
+                static SCRATCH: std::cell::RefCell<Option<raster::Scratch>> =
+                    const { std::cell::RefCell::new(None) };
+            }
+            let mut scratch = SCRATCH
+                .with(|s| s.borrow_mut().take())
+                .filter(|s| s.samples() == opts.samples())
+                .unwrap_or_else(|| raster::Scratch::new(opts.samples()));
             let mut target = raster::Target {
                 color,
                 depth,
@@ -178,6 +239,7 @@ fn draw(p: &prepare::Prepared, opts: &RenderOptions, eye: Vec3, frame: &mut Fram
                 let bin = &bins[(ty * tiles_x + tx) as usize];
                 raster::draw_tile(p, bin, rect, background, eye, &mut scratch, &mut target);
             }
+            SCRATCH.with(|s| *s.borrow_mut() = Some(scratch));
         });
 }
 

@@ -94,6 +94,8 @@ pub struct Line {
 /// A screen-space point (drawn as a small square).
 #[derive(Clone, Debug)]
 pub struct Point {
+    /// Screen position of the centre (pixels).
+    pub c: [f32; 2],
     pub z: f32,
     pub attr: [f32; ATTRS],
     pub item: u32,
@@ -103,7 +105,9 @@ pub struct Point {
 /// Side of the square a point covers, in pixels.
 pub const POINT_SIZE: i32 = 2;
 
-/// Everything the tiles draw, in drawing order.
+/// Everything the tiles draw, in drawing order. Kept between frames (see
+/// `render::render_into`) so its buffers are not allocated and faulted in
+/// again for every frame.
 #[derive(Default)]
 pub struct Prepared {
     pub items: Vec<Item>,
@@ -114,12 +118,18 @@ pub struct Prepared {
     pub points: Vec<Point>,
     /// The scene's gradient/panorama background, when drawn.
     pub sky: Option<Painter>,
+    /// Working buffers of `prepare`: transformed vertices of the current
+    /// mesh and per-chunk triangle lists of the parallel setup.
+    verts: Vec<ClipVert>,
+    chunks: Vec<Vec<Tri>>,
 }
 
 struct Screen {
     w: f32,
     h: f32,
     guard: f32,
+    /// Multisampling: lines and points reach a little further.
+    aa: bool,
 }
 
 impl Screen {
@@ -135,12 +145,13 @@ impl Screen {
     }
 }
 
-/// Prepares a frame's primitives.
-pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) -> Prepared {
+/// Prepares a frame's primitives into `out` (emptied first).
+pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, out: &mut Prepared) {
     let screen = Screen {
         w: opts.width as f32,
         h: opts.height as f32,
         guard: MAX_SCREEN / opts.width.max(opts.height).max(1) as f32,
+        aa: opts.samples() > 1,
     };
     let view_proj = view.proj * view.view;
     let lights = gather_lights(scene, pose);
@@ -148,12 +159,18 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) ->
         .headlight
         .then(|| WorldLight::headlight(view.forward()));
 
-    let mut out = Prepared::default();
+    out.items.clear();
+    out.opaque.clear();
+    out.transparent.clear();
+    out.lines.clear();
+    out.points.clear();
+    out.sky = None;
     if opts.sky {
         if let Some(bg) = &scene.settings.sky {
             out.sky = Painter::new(scene, bg, view.view, view.proj, opts.width, opts.height);
         }
     }
+    let mut verts = std::mem::take(&mut out.verts);
     for node_id in scene.walk() {
         let i = node_id.0 as usize;
         let node = &scene.nodes[i];
@@ -196,15 +213,15 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) ->
         });
         let translucent = texture.as_ref().is_some_and(Sampler::translucent);
 
-        let verts = transform_vertices(mesh, world, view_proj, material, has_normals);
+        transform_vertices(mesh, world, view_proj, material, has_normals, &mut verts);
         match style {
             RenderStyle::Filled => {
-                let tris = setup_triangles(mesh, &verts, item, &screen, opts);
-                if smat.alpha < 1.0 || translucent {
-                    out.transparent.extend(tris);
+                let dest = if smat.alpha < 1.0 || translucent {
+                    &mut out.transparent
                 } else {
-                    out.opaque.extend(tris);
-                }
+                    &mut out.opaque
+                };
+                setup_triangles(mesh, &verts, item, &screen, opts, &mut out.chunks, dest);
                 push_lines(&mut out.lines, &mesh.lines, &verts, item, &screen);
                 push_points(&mut out.points, &mesh.points, &verts, item, &screen);
             }
@@ -231,10 +248,10 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) ->
             texture,
         });
     }
+    out.verts = verts;
     // Back to front by mean depth; the stable sort keeps scene order on ties.
     out.transparent
         .sort_by(|a, b| mean(&b.z).total_cmp(&mean(&a.z)));
-    out
 }
 
 fn mean(z: &[f32; 3]) -> f32 {
@@ -276,18 +293,25 @@ fn is_ancestor(scene: &Scene, ancestor: NodeId, mut node: NodeId) -> bool {
     false
 }
 
-/// Object → clip space, plus world position, world normal and colour.
+/// Whether every vertex has texture coordinates.
+fn has_texcoords(mesh: &Mesh) -> bool {
+    !mesh.texcoords.is_empty() && mesh.texcoords.len() == mesh.positions.len()
+}
+
+/// Object → clip space, plus world position, world normal, colour and
+/// texture coordinates.
 fn transform_vertices(
     mesh: &Mesh,
     world: Mat4,
     view_proj: Mat4,
     material: &Material,
     has_normals: bool,
-) -> Vec<ClipVert> {
+    out: &mut Vec<ClipVert>,
+) {
     let mvp = view_proj * world;
     let normal_m = Mat3::from_mat4(world).inverse().transpose();
     let has_colors = mesh.colors.len() == mesh.positions.len();
-    let has_uv = mesh.texcoords.len() == mesh.positions.len();
+    let has_uv = has_texcoords(mesh);
     // Unlit geometry (lines/points without normals) shows its own colour or
     // the material's emissive colour (VRML97 IndexedLineSet/PointSet).
     let base = if has_normals {
@@ -316,7 +340,7 @@ fn transform_vertices(
                 attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z, uv.x, uv.y],
             }
         })
-        .collect()
+        .collect_into_vec(out);
 }
 
 fn setup_triangles(
@@ -325,17 +349,24 @@ fn setup_triangles(
     item: u32,
     screen: &Screen,
     opts: &RenderOptions,
-) -> Vec<Tri> {
+    bufs: &mut Vec<Vec<Tri>>,
+    dest: &mut Vec<Tri>,
+) {
     let n = verts.len();
     let cull = mesh.solid;
     let (w, h) = (opts.width as i32, opts.height as i32);
-    // Chunks keep the allocation count low; concatenating them in chunk
-    // order keeps the scene order.
-    let chunks: Vec<Vec<Tri>> = mesh
-        .triangles
-        .par_chunks(4096)
-        .map(|chunk| {
-            let mut out = Vec::with_capacity(chunk.len());
+    // Each chunk fills its own (reused) list; appending them in chunk order
+    // keeps the scene order.
+    const CHUNK: usize = 4096;
+    let count = mesh.triangles.len().div_ceil(CHUNK);
+    if bufs.len() < count {
+        bufs.resize_with(count, Vec::new);
+    }
+    mesh.triangles
+        .par_chunks(CHUNK)
+        .zip(bufs[..count].par_iter_mut())
+        .for_each(|(chunk, out)| {
+            out.clear();
             for t in chunk {
                 if t.iter().any(|&i| i as usize >= n) {
                     continue;
@@ -372,10 +403,12 @@ fn setup_triangles(
                     ));
                 }
             }
-            out
-        })
-        .collect();
-    chunks.concat()
+        });
+    let total: usize = bufs[..count].iter().map(Vec::len).sum();
+    dest.reserve(total);
+    for b in &bufs[..count] {
+        dest.extend_from_slice(b);
+    }
 }
 
 fn screen_triangle(
@@ -538,7 +571,19 @@ fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], item: u32,
         if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
             continue;
         }
+        let bbox = if s.aa {
+            // Anti-aliased: the square may touch one more pixel each way.
+            [
+                (x0 - 1).max(0),
+                (y0 - 1).max(0),
+                (x0 + POINT_SIZE + 1).min(s.w as i32),
+                (y0 + POINT_SIZE + 1).min(s.h as i32),
+            ]
+        } else {
+            bbox
+        };
         out.push(Point {
+            c: [x, y],
             z,
             attr: v.attr,
             item,

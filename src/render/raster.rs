@@ -7,7 +7,7 @@
 
 use super::clip::ATTRS;
 use super::fragment::{self, store_masked, Shaded, Visible, NONE};
-use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
+use super::prepare::{Item, Line, Point, Prepared, Tri, POINT_SIZE, SUBPIXEL};
 use super::shade::shade;
 use super::simd::{self, Sse8, V8};
 use glam::Vec3;
@@ -26,14 +26,55 @@ pub struct Bin {
     pub points: Vec<u32>,
 }
 
+impl Bin {
+    /// Empties the lists, keeping their memory.
+    pub fn clear(&mut self) {
+        self.opaque.clear();
+        self.transparent.clear();
+        self.lines.clear();
+        self.points.clear();
+    }
+}
+
+/// Sample positions of multisampling, in SUBPIXEL units from the pixel
+/// centre (y down): the standard rotated-grid 4× and 8× patterns of
+/// Direct3D 10.1 (given there in 1/16 pixel), so no two samples share a
+/// row or a column.
+pub fn sample_offsets(samples: usize) -> &'static [(i64, i64)] {
+    const S: i64 = SUBPIXEL / 16;
+    const ONE: [(i64, i64); 1] = [(0, 0)];
+    const FOUR: [(i64, i64); 4] = [
+        (-2 * S, -6 * S),
+        (6 * S, -2 * S),
+        (-6 * S, 2 * S),
+        (2 * S, 6 * S),
+    ];
+    const EIGHT: [(i64, i64); 8] = [
+        (S, -3 * S),
+        (-S, 3 * S),
+        (5 * S, S),
+        (-3 * S, -5 * S),
+        (-5 * S, 5 * S),
+        (-7 * S, -S),
+        (3 * S, 7 * S),
+        (7 * S, -7 * S),
+    ];
+    match samples {
+        1 => &ONE,
+        4 => &FOUR,
+        _ => &EIGHT,
+    }
+}
+
 const TILE_PIXELS: usize = (TILE * TILE) as usize;
 
-/// Per-thread working buffers for one tile, `TILE` pixels per row whatever
-/// the tile's width, reused from tile to tile. Depth and winner are reset
-/// for every tile; the shading pass writes every colour and id; barycentrics
-/// are read only where the depth pass wrote them. So reuse never changes a
-/// picture.
+/// Per-thread working buffers for one tile: every per-sample buffer holds
+/// `samples` planes of `TILE`×`TILE` (sample-major), reused from tile to
+/// tile. Depth and winner are reset for every tile; the shading pass writes
+/// every colour and id; barycentrics are read only where the depth pass
+/// wrote them. So reuse never changes a picture.
 pub struct Scratch {
+    samples: usize,
     r: Vec<f32>,
     g: Vec<f32>,
     b: Vec<f32>,
@@ -42,19 +83,32 @@ pub struct Scratch {
     winner: Vec<u32>,
     b1: Vec<f32>,
     b2: Vec<f32>,
+    /// Per pixel, for one transparent triangle under multisampling: the
+    /// samples it covers and the weights at the first of them.
+    cover: Vec<u8>,
+    cover_b: Vec<[f32; 2]>,
 }
 
-impl Default for Scratch {
-    fn default() -> Self {
+impl Scratch {
+    /// Samples per pixel these buffers hold.
+    pub fn samples(&self) -> usize {
+        self.samples
+    }
+
+    pub fn new(samples: usize) -> Scratch {
+        let n = samples * TILE_PIXELS;
         Scratch {
-            r: vec![0.0; TILE_PIXELS],
-            g: vec![0.0; TILE_PIXELS],
-            b: vec![0.0; TILE_PIXELS],
-            depth: vec![1.0; TILE_PIXELS],
-            ids: vec![0; TILE_PIXELS],
-            winner: vec![NONE; TILE_PIXELS],
-            b1: vec![0.0; TILE_PIXELS],
-            b2: vec![0.0; TILE_PIXELS],
+            samples,
+            r: vec![0.0; n],
+            g: vec![0.0; n],
+            b: vec![0.0; n],
+            depth: vec![1.0; n],
+            ids: vec![0; n],
+            winner: vec![NONE; n],
+            b1: vec![0.0; n],
+            b2: vec![0.0; n],
+            cover: vec![0; if samples > 1 { TILE_PIXELS } else { 0 }],
+            cover_b: vec![[0.0; 2]; if samples > 1 { TILE_PIXELS } else { 0 }],
         }
     }
 }
@@ -80,10 +134,12 @@ struct Edges {
 }
 
 impl Edges {
-    fn new(t: &Tri, x0: i32, y0: i32) -> Edges {
+    /// Edges at the sample `off` (SUBPIXEL units from the centre) of pixel
+    /// (x0, y0).
+    fn at(t: &Tri, x0: i32, y0: i32, off: (i64, i64)) -> Edges {
         let (px, py) = (
-            x0 as i64 * SUBPIXEL + SUBPIXEL / 2,
-            y0 as i64 * SUBPIXEL + SUBPIXEL / 2,
+            x0 as i64 * SUBPIXEL + SUBPIXEL / 2 + off.0,
+            y0 as i64 * SUBPIXEL + SUBPIXEL / 2 + off.1,
         );
         let mut row = [0; 3];
         let mut step_x = [0; 3];
@@ -114,7 +170,19 @@ impl Edges {
 /// covers; `b1`, `b2` are the screen-space barycentric weights of vertices 1
 /// and 2.
 #[inline]
-pub fn for_each_pixel(t: &Tri, rect: Rect, mut f: impl FnMut(i32, i32, f32, f32)) {
+pub fn for_each_pixel(t: &Tri, rect: Rect, f: impl FnMut(i32, i32, f32, f32)) {
+    for_each_pixel_at(t, rect, (0, 0), f)
+}
+
+/// [`for_each_pixel`] testing the sample at `off` of each pixel instead of
+/// its centre.
+#[inline]
+pub fn for_each_pixel_at(
+    t: &Tri,
+    rect: Rect,
+    off: (i64, i64),
+    mut f: impl FnMut(i32, i32, f32, f32),
+) {
     let x0 = t.bbox[0].max(rect[0]);
     let y0 = t.bbox[1].max(rect[1]);
     let x1 = t.bbox[2].min(rect[2]);
@@ -122,7 +190,7 @@ pub fn for_each_pixel(t: &Tri, rect: Rect, mut f: impl FnMut(i32, i32, f32, f32)
     if x0 >= x1 || y0 >= y1 {
         return;
     }
-    let mut ed = Edges::new(t, x0, y0);
+    let mut ed = Edges::at(t, x0, y0, off);
     for y in y0..y1 {
         let mut e = ed.row;
         for x in x0..x1 {
@@ -149,23 +217,30 @@ struct DepthBufs<'a> {
 
 /// Keeps, per pixel of the tile, the nearest opaque triangle of `bin` (the
 /// first one on ties) with its depth and barycentric weights.
-fn depth_pass(p: &Prepared, bin: &Bin, rect: Rect, bufs: &mut DepthBufs) {
+/// `off` is the sample position (SUBPIXEL units from the pixel centre).
+fn depth_pass(p: &Prepared, bin: &Bin, rect: Rect, off: (i64, i64), bufs: &mut DepthBufs) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { depth_pass_avx(p, bin, rect, bufs) };
+        unsafe { depth_pass_avx(p, bin, rect, off, bufs) };
         return;
     }
     for &ti in &bin.opaque {
-        depth_triangle::<Sse8>(&p.opaque[ti as usize], ti, rect, bufs);
+        depth_triangle::<Sse8>(&p.opaque[ti as usize], ti, rect, off, bufs);
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn depth_pass_avx(p: &Prepared, bin: &Bin, rect: Rect, bufs: &mut DepthBufs) {
+unsafe fn depth_pass_avx(
+    p: &Prepared,
+    bin: &Bin,
+    rect: Rect,
+    off: (i64, i64),
+    bufs: &mut DepthBufs,
+) {
     for &ti in &bin.opaque {
-        depth_triangle::<simd::Avx8>(&p.opaque[ti as usize], ti, rect, bufs);
+        depth_triangle::<simd::Avx8>(&p.opaque[ti as usize], ti, rect, off, bufs);
     }
 }
 
@@ -176,7 +251,7 @@ unsafe fn depth_pass_avx(p: &Prepared, bin: &Bin, rect: Rect, bufs: &mut DepthBu
 /// Weights and depth are computed exactly as [`for_each_pixel`] does, per
 /// pixel, so the blocks change no bit.
 #[inline(always)]
-fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, bufs: &mut DepthBufs) {
+fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &mut DepthBufs) {
     let x0 = t.bbox[0].max(rect[0]);
     let y0 = t.bbox[1].max(rect[1]);
     let x1 = t.bbox[2].min(rect[2]);
@@ -186,7 +261,7 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, bufs: &mut DepthBufs) {
     }
     // First block column (relative to the tile) and its screen x.
     let c0 = ((x0 - rect[0]) & !7) as usize;
-    let mut ed = Edges::new(t, rect[0] + c0 as i32, y0);
+    let mut ed = Edges::at(t, rect[0] + c0 as i32, y0, off);
     let s = ed.step_x;
     let (z0, dz1, dz2) = (
         V::splat(t.z[0]),
@@ -292,6 +367,8 @@ pub fn draw_tile(
 ) {
     let tw = (rect[2] - rect[0]) as usize;
     let th = (rect[3] - rect[1]) as usize;
+    let ns = scratch.samples;
+    let offsets = sample_offsets(ns);
     let at = |x: i32, y: i32| (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
     let Scratch {
         r,
@@ -302,51 +379,82 @@ pub fn draw_tile(
         winner,
         b1,
         b2,
+        cover,
+        cover_b,
+        ..
     } = scratch;
     depth.fill(1.0);
     winner.fill(NONE);
 
-    // 1. Depth pass: nearest opaque triangle per pixel (first wins on ties).
-    depth_pass(
-        p,
-        bin,
-        rect,
-        &mut DepthBufs {
-            depth,
-            winner,
-            b1,
-            b2,
-        },
-    );
-    // 2. Shade each visible pixel once.
+    // 1. Depth pass per sample: nearest opaque triangle (first wins on ties).
+    for (s, &off) in offsets.iter().enumerate() {
+        let plane = s * TILE_PIXELS..(s + 1) * TILE_PIXELS;
+        depth_pass(
+            p,
+            bin,
+            rect,
+            off,
+            &mut DepthBufs {
+                depth: &mut depth[plane.clone()],
+                winner: &mut winner[plane.clone()],
+                b1: &mut b1[plane.clone()],
+                b2: &mut b2[plane],
+            },
+        );
+    }
+    // 2. Shade each visible pixel once per triangle it shows.
     fragment::shade_visible(
         p,
         eye,
         background,
-        (tw, th),
+        (tw, th, ns),
         &Visible { winner, b1, b2 },
         &mut Shaded { r, g, b, ids },
     );
     // 2b. A gradient or panorama background behind what was drawn.
     if let Some(sky) = &p.sky {
-        let rgb = [&mut r[..], &mut g[..], &mut b[..]];
-        sky.fill_tile((rect[0], rect[1]), (tw, th), TILE as usize, ids, rgb);
+        for s in 0..ns {
+            let pl = s * TILE_PIXELS..(s + 1) * TILE_PIXELS;
+            let rgb = [&mut r[pl.clone()], &mut g[pl.clone()], &mut b[pl.clone()]];
+            sky.fill_tile((rect[0], rect[1]), (tw, th), TILE as usize, &ids[pl], rgb);
+        }
     }
     fn put(rgb: [&mut [f32]; 3], i: usize, c: Vec3) {
         rgb[0][i] = c.x;
         rgb[1][i] = c.y;
         rgb[2][i] = c.z;
     }
-    // 3. Lines and points, depth-tested and shaded as they come.
+    // 3. Lines and points, depth-tested and shaded as they come; under
+    // multisampling they cover samples (a 1-pixel-wide band, a square).
+    let sample_px: Vec<(f32, f32)> = offsets
+        .iter()
+        .map(|&(x, y)| (x as f32 / SUBPIXEL as f32, y as f32 / SUBPIXEL as f32))
+        .collect();
     for &li in &bin.lines {
         let l = &p.lines[li as usize];
         let item = &p.items[l.item as usize];
-        for_each_line_pixel(l, rect, |x, y, z, a| {
+        if ns == 1 {
+            for_each_line_pixel(l, rect, |x, y, z, a| {
+                let i = at(x, y);
+                if z < depth[i] && z >= 0.0 {
+                    depth[i] = z;
+                    put([r, g, b], i, shade_attrs(item, &facing(a, eye), eye));
+                    ids[i] = item.id;
+                }
+            });
+            continue;
+        }
+        for_each_line_pixel_aa(l, rect, &sample_px, |x, y, mask, z, a| {
             let i = at(x, y);
-            if z < depth[i] && z >= 0.0 {
-                depth[i] = z;
-                put([r, g, b], i, shade_attrs(item, &facing(a, eye), eye));
-                ids[i] = item.id;
+            let mut color = None;
+            for s in 0..ns {
+                let j = s * TILE_PIXELS + i;
+                if mask >> s & 1 == 1 && z < depth[j] && z >= 0.0 {
+                    let c = *color.get_or_insert_with(|| shade_attrs(item, &facing(a, eye), eye));
+                    depth[j] = z;
+                    put([r, g, b], j, c);
+                    ids[j] = item.id;
+                }
             }
         });
     }
@@ -354,13 +462,28 @@ pub fn draw_tile(
         let pt: &Point = &p.points[pi as usize];
         let item = &p.items[pt.item as usize];
         let c = shade_attrs(item, &facing(pt.attr, eye), eye);
+        let half = POINT_SIZE as f32 * 0.5;
         for y in pt.bbox[1].max(rect[1])..pt.bbox[3].min(rect[3]) {
             for x in pt.bbox[0].max(rect[0])..pt.bbox[2].min(rect[2]) {
                 let i = at(x, y);
-                if pt.z < depth[i] && pt.z >= 0.0 {
-                    depth[i] = pt.z;
-                    put([r, g, b], i, c);
-                    ids[i] = item.id;
+                for (s, &(ox, oy)) in sample_px.iter().enumerate() {
+                    if ns > 1 {
+                        // The sample inside the square [c − half, c + half)².
+                        let (sx, sy) = (x as f32 + 0.5 + ox, y as f32 + 0.5 + oy);
+                        let inside = sx >= pt.c[0] - half
+                            && sx < pt.c[0] + half
+                            && sy >= pt.c[1] - half
+                            && sy < pt.c[1] + half;
+                        if !inside {
+                            continue;
+                        }
+                    }
+                    let j = s * TILE_PIXELS + i;
+                    if pt.z < depth[j] && pt.z >= 0.0 {
+                        depth[j] = pt.z;
+                        put([r, g, b], j, c);
+                        ids[j] = item.id;
+                    }
                 }
             }
         }
@@ -370,33 +493,113 @@ pub fn draw_tile(
     for &ti in &bin.transparent {
         let t = &p.transparent[ti as usize];
         let item = &p.items[t.item as usize];
-        for_each_pixel(t, rect, |x, y, w1, w2| {
-            let z = depth_at(t, w1, w2);
-            let i = at(x, y);
-            if z < depth[i] && z >= 0.0 {
-                let (c, alpha) = match &item.texture {
-                    Some(s) => fragment::shade_textured(item, s, t, w1, w2, eye),
-                    None => (
-                        shade_attrs(item, &t.attrs_at(w1, w2), eye),
-                        item.material.alpha,
-                    ),
-                };
-                let under = Vec3::new(r[i], g[i], b[i]);
-                put([r, g, b], i, c * alpha + under * (1.0 - alpha));
-                ids[i] = item.id;
+        let mut blend = |j: usize, (c, alpha): (Vec3, f32)| {
+            let under = Vec3::new(r[j], g[j], b[j]);
+            put([r, g, b], j, c * alpha + under * (1.0 - alpha));
+            ids[j] = item.id;
+        };
+        // Colour and alpha of a fragment (textures may vary the alpha).
+        let color_at = |w1: f32, w2: f32| match &item.texture {
+            Some(s) => fragment::shade_textured(item, s, t, w1, w2, eye),
+            None => (
+                shade_attrs(item, &t.attrs_at(w1, w2), eye),
+                item.material.alpha,
+            ),
+        };
+        if ns == 1 {
+            for_each_pixel(t, rect, |x, y, w1, w2| {
+                let z = depth_at(t, w1, w2);
+                let i = at(x, y);
+                if z < depth[i] && z >= 0.0 {
+                    blend(i, color_at(w1, w2));
+                }
+            });
+            continue;
+        }
+        // Samples covered and in front, per pixel; then one shading per
+        // pixel (at its first such sample) blended into each of them.
+        let bx = [
+            t.bbox[0].max(rect[0]),
+            t.bbox[1].max(rect[1]),
+            t.bbox[2].min(rect[2]),
+            t.bbox[3].min(rect[3]),
+        ];
+        if bx[0] >= bx[2] || bx[1] >= bx[3] {
+            continue;
+        }
+        for y in bx[1]..bx[3] {
+            for x in bx[0]..bx[2] {
+                cover[at(x, y)] = 0;
             }
-        });
+        }
+        for (s, &off) in offsets.iter().enumerate() {
+            for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
+                let z = depth_at(t, w1, w2);
+                let i = at(x, y);
+                if z < depth[s * TILE_PIXELS + i] && z >= 0.0 {
+                    if cover[i] == 0 {
+                        cover_b[i] = [w1, w2];
+                    }
+                    cover[i] |= 1 << s;
+                }
+            });
+        }
+        for y in bx[1]..bx[3] {
+            for x in bx[0]..bx[2] {
+                let i = at(x, y);
+                if cover[i] == 0 {
+                    continue;
+                }
+                let [w1, w2] = cover_b[i];
+                let c = color_at(w1, w2);
+                for s in 0..ns {
+                    if cover[i] >> s & 1 == 1 {
+                        blend(s * TILE_PIXELS + i, c);
+                    }
+                }
+            }
+        }
     }
-    // 5. Into the frame.
+    // 5. Resolve into the frame: the mean of the samples (a box filter),
+    // the nearest sample's depth, the id of the first sample showing one.
+    let inv = 1.0 / ns as f32;
     for (row, y) in (rect[1]..rect[3]).enumerate() {
         let dst = (y - target.y0) as usize * target.stride + rect[0] as usize;
         let src = row * TILE as usize;
-        for k in 0..tw {
-            target.color[dst + k] =
-                super::frame::pack_rgb(Vec3::new(r[src + k], g[src + k], b[src + k]));
+        if ns == 1 {
+            for k in 0..tw {
+                target.color[dst + k] =
+                    super::frame::pack_rgb(Vec3::new(r[src + k], g[src + k], b[src + k]));
+            }
+            target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
+            target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
+            continue;
         }
-        target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
-        target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
+        // Row by row, one sample plane at a time (contiguous reads); the
+        // sum runs in sample order, so it is the same on every machine.
+        let mut acc = [[0.0f32; TILE as usize]; 3];
+        let mut zmin = [f32::INFINITY; TILE as usize];
+        let mut id = [0u32; TILE as usize];
+        for s in 0..ns {
+            let j = s * TILE_PIXELS + src;
+            for (a, c) in acc.iter_mut().zip([&*r, &*g, &*b]) {
+                for (a, c) in a[..tw].iter_mut().zip(&c[j..j + tw]) {
+                    *a += c;
+                }
+            }
+            for (z, d) in zmin[..tw].iter_mut().zip(&depth[j..j + tw]) {
+                *z = z.min(*d);
+            }
+            for (i, d) in id[..tw].iter_mut().zip(&ids[j..j + tw]) {
+                *i = if *i == 0 { *d } else { *i };
+            }
+        }
+        for (k, out) in target.color[dst..dst + tw].iter_mut().enumerate() {
+            let c = Vec3::new(acc[0][k], acc[1][k], acc[2][k]);
+            *out = super::frame::pack_rgb(c * inv);
+        }
+        target.depth[dst..dst + tw].copy_from_slice(&zmin[..tw]);
+        target.ids[dst..dst + tw].copy_from_slice(&id[..tw]);
     }
 }
 
@@ -460,6 +663,73 @@ pub fn for_each_line_pixel(l: &Line, rect: Rect, mut f: impl FnMut(i32, i32, f32
             *v = l.attr[0][j] + s * (l.attr[1][j] - l.attr[0][j]);
         }
         f(x, y, z, a);
+    }
+}
+
+/// Multisampled lines: calls `f(x, y, sample mask, depth, attrs)` for the
+/// pixels of `rect` some of whose samples (`samples`, in pixels from the
+/// centre) lie in the 1-pixel-wide band around the segment, within its
+/// half-open length. Depth and attributes are taken once per pixel, where
+/// the pixel's centre projects onto the segment.
+pub fn for_each_line_pixel_aa(
+    l: &Line,
+    rect: Rect,
+    samples: &[(f32, f32)],
+    mut f: impl FnMut(i32, i32, u32, f32, [f32; ATTRS]),
+) {
+    let (dx, dy) = (l.x[1] - l.x[0], l.y[1] - l.y[0]);
+    let len2 = dx * dx + dy * dy;
+    if len2 == 0.0 {
+        // A degenerate segment: as without multisampling, one pixel.
+        let (x, y) = (l.x[0].floor() as i32, l.y[0].floor() as i32);
+        if x >= rect[0] && x < rect[2] && y >= rect[1] && y < rect[3] {
+            f(x, y, (1 << samples.len()) - 1, l.z[0], l.attr[0]);
+        }
+        return;
+    }
+    let inv_len = 1.0 / len2.sqrt();
+    let x0 = (l.x[0].min(l.x[1]).floor() as i32 - 1)
+        .max(rect[0])
+        .max(l.bbox[0]);
+    let x1 = (l.x[0].max(l.x[1]).ceil() as i32 + 1)
+        .min(rect[2])
+        .min(l.bbox[2]);
+    let y0 = (l.y[0].min(l.y[1]).floor() as i32 - 1)
+        .max(rect[1])
+        .max(l.bbox[1]);
+    let y1 = (l.y[0].max(l.y[1]).ceil() as i32 + 1)
+        .min(rect[3])
+        .min(l.bbox[3]);
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let (cx, cy) = (x as f32 + 0.5, y as f32 + 0.5);
+            // Cheap reject: the centre is more than √2 pixels from the line.
+            if ((cx - l.x[0]) * dy - (cy - l.y[0]) * dx).abs() * inv_len > 1.5 {
+                continue;
+            }
+            let mut mask = 0u32;
+            for (s, &(ox, oy)) in samples.iter().enumerate() {
+                let (px, py) = (cx + ox - l.x[0], cy + oy - l.y[0]);
+                let dist = (px * dy - py * dx).abs() * inv_len;
+                let t = (px * dx + py * dy) / len2;
+                if dist <= 0.5 && (0.0..1.0).contains(&t) {
+                    mask |= 1 << s;
+                }
+            }
+            if mask == 0 {
+                continue;
+            }
+            let t = (((cx - l.x[0]) * dx + (cy - l.y[0]) * dy) / len2).clamp(0.0, 1.0);
+            let z = l.z[0] + t * (l.z[1] - l.z[0]);
+            let w1 = t * l.inv_w[1];
+            let w0 = (1.0 - t) * l.inv_w[0];
+            let s = w1 / (w0 + w1);
+            let mut a = [0.0; ATTRS];
+            for (j, v) in a.iter_mut().enumerate() {
+                *v = l.attr[0][j] + s * (l.attr[1][j] - l.attr[0][j]);
+            }
+            f(x, y, mask, z, a);
+        }
     }
 }
 

@@ -105,6 +105,7 @@ impl Viewer {
             } else {
                 Headlight::Off
             },
+            aa: self.aa,
             ..FrameSpec::default()
         };
         let frame = render(&self.scene, &pose, &view, &options_for(&self.scene, &spec));
