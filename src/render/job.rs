@@ -117,7 +117,10 @@ pub fn find_camera(scene: &Scene, name: Option<&str>) -> Result<Option<NodeId>, 
     })
 }
 
-/// The view through `camera` (animated values from `pose`), or view-all.
+/// The view through `camera` (animated values from `pose`), or view-all
+/// framed once from the start of the animation
+/// ([`View::view_all_from_start`]), so a file without a camera does not
+/// jump from frame to frame.
 pub fn view_for(scene: &Scene, pose: &Pose, camera: Option<NodeId>, aspect: f32) -> View {
     if let Some(id) = camera {
         let cam = pose.camera(id).or_else(|| scene.node(id).camera());
@@ -130,7 +133,7 @@ pub fn view_for(scene: &Scene, pose: &Pose, camera: Option<NodeId>, aspect: f32)
             return View::for_scene(cam, world, aspect, scene, pose);
         }
     }
-    View::view_all(scene, pose, aspect)
+    View::view_all_from_start(scene, &evaluate(scene, 0.0), pose, aspect)
 }
 
 /// The render options a spec means for `scene`.
@@ -155,4 +158,64 @@ pub fn render_at(scene: &Scene, spec: &FrameSpec, time: f32) -> Result<Frame, St
     let aspect = spec.width.max(1) as f32 / spec.height.max(1) as f32;
     let view = view_for(scene, &pose, camera, aspect);
     Ok(render(scene, &pose, &view, &options_for(scene, spec)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::anim::{Key, Keys, Property, Repeat, Target, TargetRef, Track};
+    use crate::scene::{primitives, Material, Node, NodeKind, Shape};
+
+    /// A unit box that slides from x = 0 to x = 10 over the animation.
+    fn sliding_box(animated: bool) -> Scene {
+        let mut s = Scene::new();
+        let mesh = s.add_mesh(primitives::box_mesh(Vec3::ONE));
+        let material = s.add_material(Material::default());
+        let id = s.add_node(
+            None,
+            Node::new("Box", NodeKind::Shape(Shape { mesh, material })),
+        );
+        if animated {
+            let keys = Keys::Vec3(vec![
+                Key::new(0.0, Vec3::ZERO),
+                Key::new(48.0, Vec3::X * 10.0),
+            ]);
+            let target = Target {
+                of: TargetRef::Node(id),
+                property: Property::Translation,
+            };
+            s.animation
+                .tracks
+                .push(Track::new(target, Repeat::Constant, keys).unwrap());
+        }
+        s
+    }
+
+    #[test]
+    fn view_all_is_framed_once_from_the_start_of_the_animation() {
+        let s = sliding_box(true);
+        let fps = s.settings.fps;
+        let at = |t: f32| view_for(&s, &evaluate(&s, t), None, 1.5);
+        let (v0, v1, v2) = (at(0.0), at(24.0 / fps), at(48.0 / fps));
+        // Same camera at every time: the box moves, the view does not.
+        assert_eq!(v0.view, v1.view);
+        assert_eq!(v0.view, v2.view);
+        assert_eq!(v0.eye, v2.eye);
+        // The start frame is exactly Coin's view-all of the start pose.
+        assert_eq!(v0, View::view_all(&s, &evaluate(&s, 0.0), 1.5));
+        // Near/far widen so the moved box is not clipped away: its far
+        // corner projects inside the depth range.
+        let corner = v2.proj * v2.view * glam::Vec4::new(10.5, 0.5, -0.5, 1.0);
+        assert!((corner.z / corner.w).abs() <= 1.0, "{corner}");
+        // Re-framing per time (the old behaviour) would have moved the eye.
+        let reframed = View::view_all(&s, &evaluate(&s, 48.0 / fps), 1.5);
+        assert_ne!(reframed.eye, v2.eye);
+    }
+
+    #[test]
+    fn a_still_scene_frames_exactly_as_before() {
+        let s = sliding_box(false);
+        let p = evaluate(&s, 1.0);
+        assert_eq!(view_for(&s, &p, None, 1.0), View::view_all(&s, &p, 1.0));
+    }
 }

@@ -259,6 +259,21 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
     if x0 >= x1 || y0 >= y1 {
         return;
     }
+    if x1 - x0 < 6 {
+        // Narrow triangles (most small ones): pixel by pixel is cheaper
+        // than a block, and does the very same arithmetic.
+        for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
+            let z = depth_at(t, w1, w2);
+            let i = (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
+            if z < bufs.depth[i] && z >= 0.0 {
+                bufs.depth[i] = z;
+                bufs.winner[i] = ti;
+                bufs.b1[i] = w1;
+                bufs.b2[i] = w2;
+            }
+        });
+        return;
+    }
     // First block column (relative to the tile) and its screen x.
     let c0 = ((x0 - rect[0]) & !7) as usize;
     let mut ed = Edges::at(t, rect[0] + c0 as i32, y0, off);

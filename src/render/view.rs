@@ -75,6 +75,30 @@ impl View {
         Self::build_view_all(bounding_sphere(scene, pose), aspect).0
     }
 
+    /// [`View::view_all`] framed once per file: the camera comes from
+    /// `start` (the pose at time 0, as Coin and castle-model-viewer frame a
+    /// file when they open it), so every time, frame, range and shard of an
+    /// animated file sees from the same place; only near and far widen to
+    /// hold `now` as well (Coin's automatic clipping planes do the same).
+    /// For a still scene (`now` = `start`) it is exactly `view_all`.
+    pub fn view_all_from_start(scene: &Scene, start: &Pose, now: &Pose, aspect: f32) -> View {
+        let (view, mut cam) = Self::build_view_all(bounding_sphere(scene, start), aspect);
+        let (Some((c, r)), Some(near), Some(far)) =
+            (bounding_sphere(scene, now), cam.near, cam.far)
+        else {
+            return view;
+        };
+        // The view-all camera looks down −z from `cam.position`.
+        let d = cam.position.z - c.z;
+        let (n, f) = (near.min(d - r), far.max(d + r));
+        if (n, f) == (near, far) {
+            return view;
+        }
+        cam.far = Some(f);
+        cam.near = Some(n.max(f * 1e-3));
+        Self::from_camera(&cam, Mat4::IDENTITY, aspect)
+    }
+
     /// The distance [`View::view_all`] puts the camera from the sphere's
     /// centre.
     pub fn view_all_distance(radius: f32, height_angle: f32, aspect: f32) -> f32 {

@@ -23,7 +23,7 @@ impl Eye {
         let aspect = w.max(1) as f32 / h.max(1) as f32;
         match self {
             Eye::Viewpoint(i) => view_for(scene, pose, cameras.get(*i).copied(), aspect),
-            Eye::ViewAll => View::view_all(scene, pose, aspect),
+            Eye::ViewAll => view_for(scene, pose, None, aspect),
             Eye::Orbit(c) => {
                 let radius = crate::render::bounding_sphere(scene, pose).map_or(1.0, |s| s.1);
                 c.view(w, h, radius)
