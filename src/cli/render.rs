@@ -30,7 +30,7 @@ pub struct Args {
     /// Draw every object as filled, lines, points (overrides the file).
     #[arg(long, value_parser = parse_style)]
     pub style: Option<RenderStyle>,
-    /// Background colour r,g,b in 0..1 (default: the scene's).
+    /// Background colour r,g,b in 0..1 (default: the scene's; a file's VRML97 Background gradient or panorama is drawn unless --bg is given, which overrides it).
     #[arg(long, value_parser = parse_rgb)]
     pub bg: Option<Vec3>,
     /// Headlight: on, off or auto (VRML97: NavigationInfo.headlight; other

@@ -47,6 +47,7 @@ impl Editor {
             style_override: self.view_style,
             headlight: self.scene.settings.headlight.unwrap_or(true),
             background: self.scene.settings.background,
+            sky: true,
             aa: self.aa,
         }
     }

@@ -108,7 +108,23 @@ pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) -> Result<(), LimitEr
     let mesh_base = dst.meshes.len() as u32;
     let mat_base = dst.materials.len() as u32;
     dst.meshes.extend(src.meshes.iter().cloned());
-    dst.materials.extend(src.materials.iter().cloned());
+    // Images join the including scene's (shared when grafted again); one
+    // that does not fit its budget leaves its materials untextured.
+    let images: Vec<_> = src
+        .images
+        .iter()
+        .map(|i| dst.add_image(i.clone()).ok())
+        .collect();
+    dst.materials
+        .extend(src.materials.iter().cloned().map(|mut m| {
+            if let Some(t) = &mut m.texture {
+                match images.get(t.image.0 as usize).copied().flatten() {
+                    Some(id) => t.image = id,
+                    None => m.texture = None,
+                }
+            }
+            m
+        }));
     let mut map = vec![None; src.nodes.len()];
     for id in src.walk() {
         let n = src.node(id);

@@ -5,7 +5,7 @@
 //! Layout: one folder per format, each owning its reader and writer
 //! (`iv/` Inventor + VRML 1.0, `vrml97/`, `obj`), the shared reading pieces
 //! (`limits`: the input budget every read goes through; `lexer`, `syntax/`
-//! with PROTO expansion, `polygons`, `inline`, `gzip`, `sgi_image`,
+//! with PROTO expansion, `polygons`, `inline`, `gzip`, `sgi_image`, `textures`,
 //! `hsv`) and the shared export code (`export/`: write plan, channels,
 //! sampling, key note, options, atomic save) beside them.
 
@@ -23,6 +23,7 @@ pub mod obj;
 pub mod polygons;
 pub mod sgi_image;
 pub mod syntax;
+pub mod textures;
 pub mod vrml97;
 
 pub use error::LoadError;

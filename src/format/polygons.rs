@@ -3,9 +3,9 @@
 //! so that one bad index costs one face (or the colours), not the shape.
 
 use crate::format::lexer::Pos;
-use crate::scene::normals::{mesh_from_polygons, Binding, PolyOptions};
+use crate::scene::normals::{mesh_from_polygons_textured, Binding, PolyOptions, TexCoords};
 use crate::scene::Mesh;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 /// Splits an index list at negative entries (VRML's `-1` separators); a
 /// trailing list without a separator counts too.
@@ -41,7 +41,20 @@ pub fn drop_bad(mut faces: Vec<Vec<u32>>, len: usize) -> Vec<Vec<u32>> {
 pub fn build(
     positions: &[Vec3],
     faces: Vec<Vec<u32>>,
+    opts: PolyOptions,
+    pos: Pos,
+    msgs: &mut Vec<(Pos, String)>,
+) -> Option<Mesh> {
+    build_textured(positions, faces, opts, None, pos, msgs)
+}
+
+/// [`build`] with texture coordinates; bad ones are dropped with a message
+/// (the shape is then drawn untextured).
+pub fn build_textured(
+    positions: &[Vec3],
+    faces: Vec<Vec<u32>>,
     mut opts: PolyOptions,
+    mut texcoords: Option<TexCoords>,
     pos: Pos,
     msgs: &mut Vec<(Pos, String)>,
 ) -> Option<Mesh> {
@@ -57,11 +70,14 @@ pub fn build(
             ),
         ));
     }
-    for _ in 0..3 {
-        match mesh_from_polygons(positions, &faces, &opts) {
+    for _ in 0..4 {
+        match mesh_from_polygons_textured(positions, &faces, &opts, texcoords.as_ref()) {
             Ok(m) => return Some(m),
             Err(e) => {
-                if opts.colors != Binding::None {
+                if texcoords.is_some() {
+                    msgs.push((pos, format!("texture coordinates ignored: {e}")));
+                    texcoords = None;
+                } else if opts.colors != Binding::None {
                     msgs.push((pos, format!("colours ignored: {e}")));
                     opts.colors = Binding::None;
                 } else if opts.normals != Binding::None {
@@ -75,6 +91,37 @@ pub fn build(
         }
     }
     None
+}
+
+/// The default texture coordinates of a polygon set without any (VRML97
+/// §6.23, Inventor's default the same): s runs 0..1 along the longest side
+/// of the bounding box, t along the second longest from 0 to that side's
+/// share of the longest (ties prefer x, then y, then z). One per position.
+pub fn bbox_texcoords(positions: &[Vec3]) -> Vec<Vec2> {
+    let Some((lo, hi)) = positions.iter().fold(None, |b: Option<(Vec3, Vec3)>, p| {
+        Some(b.map_or((*p, *p), |(lo, hi)| (lo.min(*p), hi.max(*p))))
+    }) else {
+        return Vec::new();
+    };
+    let size = hi - lo;
+    let mut axes = [0usize, 1, 2];
+    // Stable sort by decreasing size keeps x before y before z on ties.
+    axes.sort_by(|&a, &b| size[b].total_cmp(&size[a]));
+    let (s_axis, t_axis) = (axes[0], axes[1]);
+    let scale = if size[s_axis] > 0.0 {
+        1.0 / size[s_axis]
+    } else {
+        0.0
+    };
+    positions
+        .iter()
+        .map(|p| {
+            Vec2::new(
+                (p[s_axis] - lo[s_axis]) * scale,
+                (p[t_axis] - lo[t_axis]) * scale,
+            )
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -18,7 +18,8 @@ use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
 use super::prepare::{Item, Prepared, Tri, INV_W, SUBPIXEL};
 use super::shade::shade8;
 use super::simd::{self, Sse8, V8};
-use glam::Vec3;
+use super::texture::Sampler;
+use glam::{Vec2, Vec3, Vec4};
 
 /// Tile edge in pixels (the row stride of every tile buffer).
 pub const TILE: i32 = 64;
@@ -304,21 +305,28 @@ fn shade_group<V: V8>(
     let s = V::splat(1.0) / a[9];
     let at = |j: usize| a[j] * s;
     let mut diffuse = [at(6), at(7), at(8)];
+    let mut texels = None;
     if item.textured {
         let uv = UvLanes::new(p, win, group, b1, b2, s);
-        diffuse = apply_texture(item, &uv, diffuse, (bx, row));
+        let (d, t) = apply_texture(item, &uv, diffuse, (bx, row));
+        diffuse = d;
+        texels = Some(t);
     }
     if item.unlit {
         return diffuse;
     }
-    shade8(
+    let lit = shade8(
         &item.material,
         &item.lights,
         eye,
         [at(0), at(1), at(2)],
         [at(3), at(4), at(5)],
         diffuse,
-    )
+    );
+    match (&item.texture, texels) {
+        (Some(s), Some(t)) => after_lighting(s, &t, lit),
+        _ => lit,
+    }
 }
 
 /// Perspective-correct texture coordinates of eight pixels and their
@@ -328,8 +336,6 @@ fn shade_group<V: V8>(
 ///
 /// With `q = 1/w` and `U = u/w` both affine in screen space,
 /// `u = U/q` and `∂u/∂x = (∂U/∂x − u·∂q/∂x)/q`.
-// Read by the texture sampler that `apply_texture` will call (helper tex).
-#[allow(dead_code)]
 pub struct UvLanes<V> {
     pub u: V,
     pub v: V,
@@ -380,20 +386,97 @@ impl<V: V8> UvLanes<V> {
     }
 }
 
-/// TEXTURE HOOK (helper `tex`, issue 12): the diffuse colour of the lanes
-/// of a textured item, given their texture coordinates and footprints;
-/// `at` is the block's first pixel (column, row) in the tile. This is where
-/// the sampler's texel replaces (or, per VRML97 §4.14, modulates) the
-/// diffuse colour; today no item sets `textured`, so it returns `diffuse`.
+/// The texture of a textured item applied to eight lanes before lighting:
+/// returns the diffuse colour lighting starts from (VRML97 and MODULATE
+/// act here, see `texture::Sampler::before_lighting`) and each lane's texel
+/// for [`after_lighting`]. Sampling is scalar per lane (trilinear, level
+/// from that pixel's exact derivatives); `_at` is the block's first pixel.
 #[inline(always)]
 pub fn apply_texture<V: V8>(
     item: &Item,
     uv: &UvLanes<V>,
     diffuse: [V; 3],
-    at: (usize, usize),
-) -> [V; 3] {
-    let _ = (item, uv, at);
-    diffuse
+    _at: (usize, usize),
+) -> ([V; 3], [Vec4; 8]) {
+    let mut texels = [Vec4::ONE; 8];
+    let Some(s) = &item.texture else {
+        return (diffuse, texels);
+    };
+    let arr = |v: V| {
+        let mut a = [0.0; 8];
+        v.store(&mut a);
+        a
+    };
+    let (u, v) = (arr(uv.u), arr(uv.v));
+    let (dudx, dvdx, dudy, dvdy) = (arr(uv.du_dx), arr(uv.dv_dx), arr(uv.du_dy), arr(uv.dv_dy));
+    let mut d = diffuse.map(arr);
+    for k in 0..8 {
+        let t = s.texel(
+            Vec2::new(u[k], v[k]),
+            Vec2::new(dudx[k], dvdx[k]),
+            Vec2::new(dudy[k], dvdy[k]),
+        );
+        texels[k] = t;
+        let (c, _) = s.before_lighting(t, Vec3::new(d[0][k], d[1][k], d[2][k]), 1.0);
+        d[0][k] = c.x;
+        d[1][k] = c.y;
+        d[2][k] = c.z;
+    }
+    (d.map(|a| V::load(&a)), texels)
+}
+
+/// The texture models that act on the lit colour (Replace, DECAL, BLEND),
+/// per lane; others leave `lit` as it is.
+#[inline(always)]
+pub fn after_lighting<V: V8>(s: &Sampler, texels: &[Vec4; 8], lit: [V; 3]) -> [V; 3] {
+    if !s.acts_after_lighting() {
+        return lit;
+    }
+    let mut c = lit.map(|v| {
+        let mut a = [0.0; 8];
+        v.store(&mut a);
+        a
+    });
+    for (k, t) in texels.iter().enumerate() {
+        let (o, _) = s.after_lighting(*t, Vec3::new(c[0][k], c[1][k], c[2][k]), 1.0);
+        c[0][k] = o.x;
+        c[1][k] = o.y;
+        c[2][k] = o.z;
+    }
+    c.map(|a| V::load(&a))
+}
+
+/// One pixel of a textured triangle drawn outside the 8-lane pass (the
+/// transparent pass): colour and alpha at screen weights `b1`, `b2`, with
+/// the same texture arithmetic as the lanes.
+pub fn shade_textured(
+    item: &Item,
+    s: &Sampler,
+    t: &Tri,
+    b1: f32,
+    b2: f32,
+    eye: Vec3,
+) -> (Vec3, f32) {
+    let a = t.attrs_at(b1, b2);
+    let plane = |j: usize| t.base[j] + b1 * t.d1[j] + b2 * t.d2[j];
+    let inv_q = 1.0 / plane(INV_W);
+    let (u, v) = (a[A_UV], a[A_UV + 1]);
+    let g = t.gradients();
+    let ddx = Vec2::new(
+        (g.uv[0][0] - u * g.q[0]) * inv_q,
+        (g.uv[1][0] - v * g.q[0]) * inv_q,
+    );
+    let ddy = Vec2::new(
+        (g.uv[0][1] - u * g.q[1]) * inv_q,
+        (g.uv[1][1] - v * g.q[1]) * inv_q,
+    );
+    let texel = s.texel(Vec2::new(u, v), ddx, ddy);
+    let color = Vec3::new(a[A_COLOR], a[A_COLOR + 1], a[A_COLOR + 2]);
+    let (diffuse, alpha) = s.before_lighting(texel, color, item.material.alpha);
+    let p = Vec3::new(a[A_POS], a[A_POS + 1], a[A_POS + 2]);
+    let n = Vec3::new(a[A_NORMAL], a[A_NORMAL + 1], a[A_NORMAL + 2]);
+    let lit = super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye);
+    s.after_lighting(texel, lit, alpha)
 }
 
 /// Screen-space gradients of a triangle's planes, per pixel step.

@@ -147,6 +147,8 @@ pub fn options_for(scene: &Scene, spec: &FrameSpec) -> RenderOptions {
         style_override: spec.style,
         headlight: spec.headlight.resolve(scene),
         background: spec.background.unwrap_or(scene.settings.background),
+        // `--bg` overrides a file's Background gradient too.
+        sky: spec.background.is_none(),
         aa: spec.aa,
     }
 }

@@ -13,6 +13,7 @@
 //! Every pixel belongs to exactly one tile and every tile draws its
 //! primitives in scene order, so the bytes never depend on the thread count.
 
+mod background;
 pub mod bench_scenes;
 mod clip;
 mod fragment;
@@ -22,6 +23,7 @@ mod prepare;
 mod raster;
 mod shade;
 mod simd;
+mod texture;
 mod view;
 
 pub use frame::{pack_rgb, Frame};
@@ -46,6 +48,9 @@ pub struct RenderOptions {
     /// A directional light at the camera looking along the view direction.
     pub headlight: bool,
     pub background: Vec3,
+    /// Draw the scene's own gradient/panorama background (VRML97
+    /// Background) instead of the flat `background`, when it has one.
+    pub sky: bool,
     /// Multisample anti-aliasing: 1 (off), 4 or 8 samples per pixel (other
     /// values round down to one of these). Depth and coverage per sample,
     /// shading once per pixel per triangle, box-filter resolve.
@@ -72,6 +77,7 @@ impl Default for RenderOptions {
             style_override: None,
             headlight: true,
             background: Vec3::ZERO,
+            sky: false,
             aa: 1,
         }
     }

@@ -3,8 +3,10 @@
 //! and snap to the fixed-point grid. Everything here is per primitive and
 //! order-preserving, so it can run in parallel without changing the result.
 
+use super::background::Painter;
 use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::shade::{ShadeMaterial, WorldLight};
+use super::texture::Sampler;
 use super::{RenderOptions, View};
 use crate::anim::Pose;
 use crate::scene::{Material, Mesh, NodeId, NodeKind, RenderStyle, Scene};
@@ -33,6 +35,8 @@ pub struct Item {
     /// vertices then carry them in `clip::A_UV`). Untextured items never
     /// pay for it.
     pub textured: bool,
+    /// The texture of a textured item.
+    pub texture: Option<Sampler>,
 }
 
 /// Index of the 1/w plane in [`Tri::base`] (after the attributes).
@@ -112,6 +116,8 @@ pub struct Prepared {
     pub transparent: Vec<Tri>,
     pub lines: Vec<Line>,
     pub points: Vec<Point>,
+    /// The scene's gradient/panorama background, when drawn.
+    pub sky: Option<Painter>,
     /// Working buffers of `prepare`: transformed vertices of the current
     /// mesh and per-chunk triangle lists of the parallel setup.
     verts: Vec<ClipVert>,
@@ -158,6 +164,12 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
     out.transparent.clear();
     out.lines.clear();
     out.points.clear();
+    out.sky = None;
+    if opts.sky {
+        if let Some(bg) = &scene.settings.sky {
+            out.sky = Painter::new(scene, bg, view.view, view.proj, opts.width, opts.height);
+        }
+    }
     let mut verts = std::mem::take(&mut out.verts);
     for node_id in scene.walk() {
         let i = node_id.0 as usize;
@@ -192,11 +204,19 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
         let has_normals = mesh.normals.len() == mesh.positions.len();
         let smat = ShadeMaterial::new(material);
         let item = out.items.len() as u32;
+        // Textured: the material's texture, when its image exists and the
+        // mesh has coordinates for it.
+        let texture = material.texture.as_ref().and_then(|t| {
+            let image = scene.image(t.image)?;
+            let has_uv = mesh.texcoords.len() == mesh.positions.len() && has_normals;
+            has_uv.then(|| Sampler::new(t, image))
+        });
+        let translucent = texture.as_ref().is_some_and(Sampler::translucent);
 
         transform_vertices(mesh, world, view_proj, material, has_normals, &mut verts);
         match style {
             RenderStyle::Filled => {
-                let dest = if smat.alpha < 1.0 {
+                let dest = if smat.alpha < 1.0 || translucent {
                     &mut out.transparent
                 } else {
                     &mut out.opaque
@@ -224,7 +244,8 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             material: smat,
             lights: item_lights,
             unlit: !has_normals,
-            textured: material.texture.is_some() && has_texcoords(mesh),
+            textured: texture.is_some(),
+            texture,
         });
     }
     out.verts = verts;

@@ -259,6 +259,21 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
     if x0 >= x1 || y0 >= y1 {
         return;
     }
+    if x1 - x0 < 6 {
+        // Narrow triangles (most small ones): pixel by pixel is cheaper
+        // than a block, and does the very same arithmetic.
+        for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
+            let z = depth_at(t, w1, w2);
+            let i = (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
+            if z < bufs.depth[i] && z >= 0.0 {
+                bufs.depth[i] = z;
+                bufs.winner[i] = ti;
+                bufs.b1[i] = w1;
+                bufs.b2[i] = w2;
+            }
+        });
+        return;
+    }
     // First block column (relative to the tile) and its screen x.
     let c0 = ((x0 - rect[0]) & !7) as usize;
     let mut ed = Edges::at(t, rect[0] + c0 as i32, y0, off);
@@ -411,6 +426,14 @@ pub fn draw_tile(
         &Visible { winner, b1, b2 },
         &mut Shaded { r, g, b, ids },
     );
+    // 2b. A gradient or panorama background behind what was drawn.
+    if let Some(sky) = &p.sky {
+        for s in 0..ns {
+            let pl = s * TILE_PIXELS..(s + 1) * TILE_PIXELS;
+            let rgb = [&mut r[pl.clone()], &mut g[pl.clone()], &mut b[pl.clone()]];
+            sky.fill_tile((rect[0], rect[1]), (tw, th), TILE as usize, &ids[pl], rgb);
+        }
+    }
     fn put(rgb: [&mut [f32]; 3], i: usize, c: Vec3) {
         rgb[0][i] = c.x;
         rgb[1][i] = c.y;
@@ -485,18 +508,25 @@ pub fn draw_tile(
     for &ti in &bin.transparent {
         let t = &p.transparent[ti as usize];
         let item = &p.items[t.item as usize];
-        let alpha = item.material.alpha;
-        let mut blend = |j: usize, c: Vec3| {
+        let mut blend = |j: usize, (c, alpha): (Vec3, f32)| {
             let under = Vec3::new(r[j], g[j], b[j]);
             put([r, g, b], j, c * alpha + under * (1.0 - alpha));
             ids[j] = item.id;
+        };
+        // Colour and alpha of a fragment (textures may vary the alpha).
+        let color_at = |w1: f32, w2: f32| match &item.texture {
+            Some(s) => fragment::shade_textured(item, s, t, w1, w2, eye),
+            None => (
+                shade_attrs(item, &t.attrs_at(w1, w2), eye),
+                item.material.alpha,
+            ),
         };
         if ns == 1 {
             for_each_pixel(t, rect, |x, y, w1, w2| {
                 let z = depth_at(t, w1, w2);
                 let i = at(x, y);
                 if z < depth[i] && z >= 0.0 {
-                    blend(i, shade_attrs(item, &t.attrs_at(w1, w2), eye));
+                    blend(i, color_at(w1, w2));
                 }
             });
             continue;
@@ -536,7 +566,7 @@ pub fn draw_tile(
                     continue;
                 }
                 let [w1, w2] = cover_b[i];
-                let c = shade_attrs(item, &t.attrs_at(w1, w2), eye);
+                let c = color_at(w1, w2);
                 for s in 0..ns {
                     if cover[i] >> s & 1 == 1 {
                         blend(s * TILE_PIXELS + i, c);

@@ -176,6 +176,11 @@ impl Image {
     pub fn has_alpha(&self) -> bool {
         self.data.levels[0].pixels.iter().any(|p| p[3] != 255)
     }
+    /// Whether both share one decoded copy (clones of one image).
+    pub fn same_pixels(&self, other: &Image) -> bool {
+        Arc::ptr_eq(&self.data, &other.data)
+    }
+
     /// Pixels of the base level (what counts against the budgets).
     pub fn pixel_count(&self) -> u64 {
         self.width() as u64 * self.height() as u64

@@ -5,6 +5,7 @@
 //! place in the tree is `parent` + `children`. Meshes and materials are shared
 //! by id (images too, [`ImageId`]) so that DEF/USE in the files maps onto sharing here.
 
+mod background;
 mod clips;
 mod image;
 mod light;
@@ -16,6 +17,7 @@ pub mod primitives;
 mod texture;
 mod transform;
 
+pub use background::{Background, Face};
 pub use clips::{Clip, ClipRef, Clips};
 pub use image::{
     check_size as check_image_size, Image, ImageError, ImageId, ImageSource, MipLevel,
@@ -25,7 +27,9 @@ pub use light::{Camera, CameraKind, Light, LightKind};
 pub use material::Material;
 pub use mesh::Mesh;
 pub use node::{Node, NodeKind, RenderStyle, Shape};
-pub use normals::{mesh_from_polygons, Binding, MeshError, PolyOptions};
+pub use normals::{
+    mesh_from_polygons, mesh_from_polygons_textured, Binding, MeshError, PolyOptions, TexCoords,
+};
 pub use texture::{TexTransform, TexTransformOrder, Texture, TextureModel, Wrap};
 pub use transform::Transform;
 
@@ -53,6 +57,9 @@ pub struct Settings {
     pub duration: f32,
     /// Background colour, linear 0..1 RGB.
     pub background: Vec3,
+    /// A file's sky/ground gradient and panorama (VRML97 Background);
+    /// `background` is then its first sky colour, for flat fills.
+    pub sky: Option<Box<Background>>,
     /// `None` = the format's default (VRML97: NavigationInfo.headlight, default on;
     /// Inventor/VRML1/OBJ: on, as examiner viewers do).
     pub headlight: Option<bool>,
@@ -64,6 +71,7 @@ impl Default for Settings {
             fps: 24.0,
             duration: 96.0,
             background: Vec3::ZERO,
+            sky: None,
             headlight: None,
         }
     }
@@ -129,8 +137,16 @@ impl Scene {
     }
 
     /// Adds an image, refusing it when the scene's images would exceed
-    /// [`MAX_SCENE_IMAGE_PIXELS`] together.
+    /// [`MAX_SCENE_IMAGE_PIXELS`] together. A clone of an image already
+    /// held (an inlined file used twice) returns the held one's id.
     pub fn add_image(&mut self, image: Image) -> Result<ImageId, ImageError> {
+        if let Some(i) = self
+            .images
+            .iter()
+            .position(|i| i.same_pixels(&image) && *i == image)
+        {
+            return Ok(ImageId(i as u32));
+        }
         let held: u64 = self.images.iter().map(Image::pixel_count).sum();
         if held + image.pixel_count() > MAX_SCENE_IMAGE_PIXELS {
             return Err(ImageError(format!(

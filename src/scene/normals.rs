@@ -9,7 +9,7 @@
 //! [`MeshError`], never a panic.
 
 use super::Mesh;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use std::collections::HashMap;
 
 /// How colours or normals are bound to the polygons (VRML97 §6.23,
@@ -87,6 +87,16 @@ const MAX_EAR_CLIP: usize = 1024;
 /// their faces (the crease test is quadratic in the valence).
 const MAX_CREASE_VALENCE: usize = 512;
 
+/// Texture coordinates of polygons: `values[index[f][k]]` for corner `k`
+/// of face `f`, or `values[faces[f][k]]` (the coordinate index) when
+/// `index` is `None` (VRML97 `texCoordIndex`, Inventor
+/// `textureCoordIndex`).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TexCoords {
+    pub values: Vec<Vec2>,
+    pub index: Option<Vec<Vec<u32>>>,
+}
+
 /// Builds a mesh from polygons. Faces with fewer than 3 corners are skipped.
 /// Output vertices are unwelded wherever normal or colour differ between the
 /// faces that share a position, and welded back where they are equal.
@@ -95,9 +105,24 @@ pub fn mesh_from_polygons(
     faces: &[Vec<u32>],
     opts: &PolyOptions,
 ) -> Result<Mesh, MeshError> {
+    mesh_from_polygons_textured(positions, faces, opts, None)
+}
+
+/// [`mesh_from_polygons`] with texture coordinates, which unweld vertices
+/// like normals and colours do.
+pub fn mesh_from_polygons_textured(
+    positions: &[Vec3],
+    faces: &[Vec<u32>],
+    opts: &PolyOptions,
+    texcoords: Option<&TexCoords>,
+) -> Result<Mesh, MeshError> {
     for (f, face) in faces.iter().enumerate() {
         check_indices(f, face, positions.len(), "coordinate")?;
     }
+    let uvs = match texcoords {
+        Some(t) => Some(resolve_uv(t, faces)?),
+        None => None,
+    };
     let colors = resolve(&opts.colors, faces, positions.len(), "color")?;
     let given_normals = resolve(&opts.normals, faces, positions.len(), "normal")?;
 
@@ -120,7 +145,8 @@ pub fn mesh_from_polygons(
         solid: opts.solid,
         ..Mesh::default()
     };
-    let mut welded: HashMap<(u32, [u32; 3], [u32; 3]), u32> = HashMap::new();
+    type Key = (u32, [u32; 3], [u32; 3], [u32; 2]);
+    let mut welded: HashMap<Key, u32> = HashMap::new();
     let mut corner = 0usize;
     for face in faces {
         let n = face.len();
@@ -128,12 +154,17 @@ pub fn mesh_from_polygons(
         for (k, &p) in face.iter().enumerate() {
             let nrm = corner_normals[corner + k];
             let col = colors.as_ref().map(|c| c[corner + k]);
-            let key = (p, bits(nrm), bits(col.unwrap_or(Vec3::ZERO)));
+            let uv = uvs.as_ref().map(|t| t[corner + k]);
+            let uv_bits = uv.map_or([0; 2], |v| [v.x.to_bits(), v.y.to_bits()]);
+            let key = (p, bits(nrm), bits(col.unwrap_or(Vec3::ZERO)), uv_bits);
             let idx = *welded.entry(key).or_insert_with(|| {
                 mesh.positions.push(positions[p as usize]);
                 mesh.normals.push(nrm);
                 if let Some(c) = col {
                     mesh.colors.push(c);
+                }
+                if let Some(t) = uv {
+                    mesh.texcoords.push(t);
                 }
                 mesh.positions.len() as u32 - 1
             });
@@ -270,6 +301,34 @@ fn resolve(
         }
     }
     Ok(Some(out))
+}
+
+/// Expands texture coordinates into one per face corner (in face order).
+fn resolve_uv(t: &TexCoords, faces: &[Vec<u32>]) -> Result<Vec<Vec2>, MeshError> {
+    let corners: usize = faces.iter().map(|f| f.len()).sum();
+    let mut out = Vec::with_capacity(corners);
+    for (f, face) in faces.iter().enumerate() {
+        let ix: &[u32] = match &t.index {
+            Some(ix) => {
+                let row = ix.get(f).map(Vec::as_slice).unwrap_or(&[]);
+                if row.len() < face.len() {
+                    return Err(MeshError {
+                        face: f,
+                        message: format!(
+                            "texture coordinate index list has {} entries for {} vertices",
+                            row.len(),
+                            face.len()
+                        ),
+                    });
+                }
+                row
+            }
+            None => face,
+        };
+        check_indices(f, &ix[..face.len()], t.values.len(), "texture coordinate")?;
+        out.extend(ix[..face.len()].iter().map(|&i| t.values[i as usize]));
+    }
+    Ok(out)
 }
 
 /// Newell's normal: area-weighted normal of a (possibly non-planar) polygon.

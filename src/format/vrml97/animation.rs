@@ -229,7 +229,12 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                     }
                 }
                 Some(Dest::Material(property)) => {
-                    if let Some(id) = b.materials.get(&Rc::as_ptr(&t)).copied() {
+                    let base = b.materials.get(&Rc::as_ptr(&t)).copied();
+                    let copies = b.material_copies.get(&Rc::as_ptr(&t));
+                    let ids = base
+                        .into_iter()
+                        .chain(copies.into_iter().flatten().copied());
+                    for id in ids.collect::<Vec<_>>() {
                         pending.push(Pending {
                             interp: interp.clone(),
                             clock: c,

@@ -7,11 +7,12 @@ use crate::format::inline;
 use crate::format::lexer::Pos;
 use crate::format::limits::{self, LimitError};
 use crate::format::syntax::{AstNode, NodeRef, Parsed};
+use crate::format::textures;
 use crate::format::LoadError;
 use crate::format::Loaded;
 use crate::scene::{
-    Camera, CameraKind, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId, NodeKind,
-    Scene, Shape, Transform,
+    Camera, CameraKind, ImageId, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId,
+    NodeKind, Scene, Shape, Texture, Transform,
 };
 use glam::{Quat, Vec3};
 use std::collections::{HashMap, HashSet};
@@ -34,7 +35,6 @@ const IGNORED: &[&str] = &[
     "AudioClip",
     "Fog",
     "FontStyle",
-    "MovieTexture",
 ];
 
 pub struct Builder {
@@ -45,7 +45,15 @@ pub struct Builder {
     /// Scene nodes made from each AST node (several when USEd).
     pub(super) instances: HashMap<*const AstNode, Vec<NodeId>>,
     pub(super) materials: HashMap<*const AstNode, MaterialId>,
-    meshes: HashMap<*const AstNode, Option<MeshId>>,
+    /// Textured materials per Appearance node.
+    textured_materials: HashMap<*const AstNode, MaterialId>,
+    /// Textured copies of each Material node (animation drives them too).
+    pub(super) material_copies: HashMap<*const AstNode, Vec<MaterialId>>,
+    /// Each texture node's image (`None`: it did not load).
+    pub(super) texture_images: HashMap<*const AstNode, Option<ImageId>>,
+    pub(super) loader: textures::Loader,
+    /// Meshes per geometry node, with and without texture coordinates.
+    meshes: HashMap<(*const AstNode, bool), Option<MeshId>>,
     unlit: Option<MaterialId>,
     default_material: Option<MaterialId>,
     warned: HashSet<String>,
@@ -70,6 +78,10 @@ impl Builder {
             warnings: Vec::new(),
             instances: HashMap::new(),
             materials: HashMap::new(),
+            textured_materials: HashMap::new(),
+            material_copies: HashMap::new(),
+            texture_images: HashMap::new(),
+            loader: textures::Loader::new(path),
             meshes: HashMap::new(),
             unlit: None,
             default_material: None,
@@ -290,11 +302,10 @@ impl Builder {
             "Background" => {
                 if !self.saw_background {
                     self.saw_background = true;
-                    if let Some(c) = eff.nums("skyColor") {
-                        if c.len() >= 3 {
-                            self.scene.settings.background =
-                                Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32);
-                        }
+                    let bg = self.background(&eff);
+                    self.scene.settings.background = bg.flat_color();
+                    if !bg.is_flat() {
+                        self.scene.settings.sky = Some(Box::new(bg));
                     }
                 }
             }
@@ -341,11 +352,14 @@ impl Builder {
         let Some(geom) = n.node("geometry").map(|g| g.effective()) else {
             return;
         };
-        let mesh = match self.meshes.get(&Rc::as_ptr(&geom)) {
+        let appearance = n.node("appearance").map(|a| a.effective());
+        let texture = appearance.as_ref().and_then(|a| self.texture(a));
+        let textured = texture.is_some();
+        let mesh = match self.meshes.get(&(Rc::as_ptr(&geom), textured)) {
             Some(m) => *m,
             None => {
                 let mut msgs = Vec::new();
-                let m = geometry::mesh(&geom, &mut msgs).map(|m| self.scene.add_mesh(m));
+                let m = geometry::mesh(&geom, textured, &mut msgs).map(|m| self.scene.add_mesh(m));
                 if let Some(e) = limits::tripped() {
                     self.stop(geom.pos, e);
                     return;
@@ -354,20 +368,20 @@ impl Builder {
                     let key = format!("{}:{msg}", geom.kind);
                     self.warn_once(&key, pos, &msg);
                 }
-                self.meshes.insert(Rc::as_ptr(&geom), m);
+                self.meshes.insert((Rc::as_ptr(&geom), textured), m);
                 m
             }
         };
         let Some(mesh) = mesh else { return };
         let has_colors = !self.scene.meshes[mesh.0 as usize].colors.is_empty();
-        let material = match n
-            .node("appearance")
-            .map(|a| a.effective())
-            .and_then(|a| a.node("material").map(|m| m.effective()))
-        {
-            Some(m) => self.material(&m),
-            None if has_colors => self.default_material(),
-            None => self.unlit(),
+        let mat_node = appearance
+            .as_ref()
+            .and_then(|a| a.node("material").map(|m| m.effective()));
+        let material = match (&appearance, &mat_node, texture) {
+            (Some(a), m, Some(t)) => self.textured_material(a, m.as_ref(), t),
+            (_, Some(m), _) => self.material(m),
+            (_, None, _) if has_colors => self.default_material(),
+            (_, None, _) => self.unlit(),
         };
         self.push(
             n,
@@ -380,19 +394,32 @@ impl Builder {
         if let Some(id) = self.materials.get(&Rc::as_ptr(m)) {
             return *id;
         }
-        let d = Material::default();
-        let mat = Material {
-            name: m.def.clone().unwrap_or_default(),
-            diffuse: m.vec3("diffuseColor", d.diffuse),
-            ambient_intensity: m.f32("ambientIntensity", d.ambient_intensity),
-            specular: m.vec3("specularColor", d.specular),
-            emissive: m.vec3("emissiveColor", d.emissive),
-            shininess: m.f32("shininess", d.shininess),
-            transparency: m.f32("transparency", d.transparency),
-            texture: None,
-        };
+        let mat = material_fields(m);
         let id = self.scene.add_material(mat);
         self.materials.insert(Rc::as_ptr(m), id);
+        id
+    }
+
+    /// A material carrying a texture (one per Appearance node): the
+    /// Material node's fields, or the unlit white of a Shape without one,
+    /// plus the texture.
+    fn textured_material(&mut self, app: &NodeRef, m: Option<&NodeRef>, t: Texture) -> MaterialId {
+        if let Some(id) = self.textured_materials.get(&Rc::as_ptr(app)) {
+            return *id;
+        }
+        let mut mat = match m {
+            Some(m) => material_fields(m),
+            None => unlit_fields(),
+        };
+        mat.texture = Some(t);
+        let id = self.scene.add_material(mat);
+        if let Some(m) = m {
+            self.material_copies
+                .entry(Rc::as_ptr(m))
+                .or_default()
+                .push(id);
+        }
+        self.textured_materials.insert(Rc::as_ptr(app), id);
         id
     }
 
@@ -410,18 +437,38 @@ impl Builder {
         if let Some(id) = self.unlit {
             return id;
         }
-        let id = self.scene.add_material(Material {
-            name: String::new(),
-            diffuse: Vec3::ZERO,
-            ambient_intensity: 0.0,
-            specular: Vec3::ZERO,
-            emissive: Vec3::ONE,
-            shininess: 0.0,
-            transparency: 0.0,
-            texture: None,
-        });
+        let id = self.scene.add_material(unlit_fields());
         self.unlit = Some(id);
         id
+    }
+}
+
+/// VRML97 §4.14: a Shape without Material is unlit and white.
+fn unlit_fields() -> Material {
+    Material {
+        name: String::new(),
+        diffuse: Vec3::ZERO,
+        ambient_intensity: 0.0,
+        specular: Vec3::ZERO,
+        emissive: Vec3::ONE,
+        shininess: 0.0,
+        transparency: 0.0,
+        texture: None,
+    }
+}
+
+/// A VRML97 Material node's fields (§6.27).
+fn material_fields(m: &NodeRef) -> Material {
+    let d = Material::default();
+    Material {
+        name: m.def.clone().unwrap_or_default(),
+        diffuse: m.vec3("diffuseColor", d.diffuse),
+        ambient_intensity: m.f32("ambientIntensity", d.ambient_intensity),
+        specular: m.vec3("specularColor", d.specular),
+        emissive: m.vec3("emissiveColor", d.emissive),
+        shininess: m.f32("shininess", d.shininess),
+        transparency: m.f32("transparency", d.transparency),
+        texture: None,
     }
 }
 

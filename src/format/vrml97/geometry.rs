@@ -3,27 +3,33 @@
 //!
 //! Polygons go through the shared builder (`scene::normals`), which
 //! triangulates concave polygons and applies ccw/solid/creaseAngle.
+//! Textured shapes get texture coordinates: the node's own, or the spec's
+//! default mapping (IndexedFaceSet: the bounding box, §6.23; ElevationGrid:
+//! the grid, §6.17; Extrusion: cross-section × spine, §6.18; primitives:
+//! `scene::primitives`' textured builders).
 
 use crate::format::lexer::Pos;
 use crate::format::limits;
-use crate::format::polygons::{self, split_index};
+use crate::format::polygons::{self, bbox_texcoords, split_index};
 use crate::format::syntax::AstNode;
-use crate::scene::normals::{mesh_from_points, mesh_from_polylines, Binding, PolyOptions};
+use crate::scene::normals::{
+    mesh_from_points, mesh_from_polylines, Binding, PolyOptions, TexCoords,
+};
 use crate::scene::Mesh;
 use glam::{Quat, Vec2, Vec3};
 
 type Msgs = Vec<(Pos, String)>;
 
 /// Builds the mesh of a geometry node, or `None` (with a message) when it
-/// is unsupported or empty.
-pub fn mesh(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+/// is unsupported or empty. `textured` asks for texture coordinates.
+pub fn mesh(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     let mut m = match g.kind.as_str() {
-        "IndexedFaceSet" => indexed_face_set(g, msgs),
+        "IndexedFaceSet" => indexed_face_set(g, textured, msgs),
         "IndexedLineSet" => indexed_line_set(g, msgs),
         "PointSet" => point_set(g, msgs),
-        "ElevationGrid" => elevation_grid(g, msgs),
-        "Extrusion" => extrusion(g, msgs),
-        "Box" | "Sphere" | "Cone" | "Cylinder" => primitive(g),
+        "ElevationGrid" => elevation_grid(g, textured, msgs),
+        "Extrusion" => extrusion(g, textured, msgs),
+        "Box" | "Sphere" | "Cone" | "Cylinder" => primitive(g, textured),
         "Text" => {
             msgs.push((g.pos, "Text is not supported; skipped".into()));
             None
@@ -98,7 +104,13 @@ fn binding(values: Option<Vec<Vec3>>, index: &[i64], per_vertex: bool) -> Bindin
     }
 }
 
-fn indexed_face_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+/// The texture coordinates of a `texCoord TextureCoordinate { point }`.
+fn texcoord_values(g: &AstNode) -> Option<Vec<Vec2>> {
+    let n = g.node("texCoord")?.effective();
+    Some(vec2s(n.nums("point")?))
+}
+
+fn indexed_face_set(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     let positions = sub_values(g, "coord", "point").unwrap_or_default();
     let faces = split_index(&indices(g, "coordIndex"));
     let opts = PolyOptions {
@@ -117,7 +129,20 @@ fn indexed_face_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
         ),
         name: String::new(),
     };
-    polygons::build(&positions, faces, opts, g.pos, msgs)
+    let texcoords = textured.then(|| match texcoord_values(g) {
+        Some(values) => {
+            let index = indices(g, "texCoordIndex");
+            TexCoords {
+                values,
+                index: (!index.is_empty()).then(|| split_index(&index)),
+            }
+        }
+        None => TexCoords {
+            values: bbox_texcoords(&positions),
+            index: None,
+        },
+    });
+    polygons::build_textured(&positions, faces, opts, texcoords, g.pos, msgs)
 }
 
 fn indexed_line_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
@@ -169,7 +194,7 @@ fn fits(points: u64, g: &AstNode, msgs: &mut Msgs) -> bool {
     }
 }
 
-fn elevation_grid(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+fn elevation_grid(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     let nx = g.num("xDimension").unwrap_or(0.0).max(0.0) as usize;
     let nz = g.num("zDimension").unwrap_or(0.0).max(0.0) as usize;
     let (sx, sz) = (g.f32("xSpacing", 1.0), g.f32("zSpacing", 1.0));
@@ -217,12 +242,25 @@ fn elevation_grid(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
         ),
         name: String::new(),
     };
-    polygons::build(&positions, faces, opts, g.pos, msgs)
+    // Default: s 0..1 along x, t 0..1 along z over the grid.
+    let texcoords = textured.then(|| TexCoords {
+        values: texcoord_values(g).unwrap_or_else(|| {
+            (0..nz)
+                .flat_map(|j| {
+                    (0..nx).map(move |i| {
+                        Vec2::new(i as f32 / (nx - 1) as f32, j as f32 / (nz - 1) as f32)
+                    })
+                })
+                .collect()
+        }),
+        index: None,
+    });
+    polygons::build_textured(&positions, faces, opts, texcoords, g.pos, msgs)
 }
 
 /// Extrusion (VRML97 §6.18): cross-sections scaled, oriented and placed
 /// along the spine in each spine point's SCP frame.
-fn extrusion(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
+fn extrusion(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     let cross = g.nums("crossSection").map(vec2s).unwrap_or_else(|| {
         vec![
             Vec2::new(1.0, 1.0),
@@ -287,11 +325,25 @@ fn extrusion(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
     let closed_cross = cross[0] == cross[m - 1];
     let cap_len = if closed_cross { m - 1 } else { m };
     let spine_closed = spine[0] == spine[n - 1];
+    // Texture coordinates: the sides s along the cross-section, t along the
+    // spine (by length, 0..1); the caps map the cross-section's bounding box.
+    let mut tex = textured.then(|| extrusion_side_texcoords(&cross, &spine));
+    let mut tex_index: Vec<Vec<u32>> = faces.clone();
+    let cap_base = n * m;
+    if let Some(t) = &mut tex {
+        let flat: Vec<Vec3> = cross[..cap_len]
+            .iter()
+            .map(|c| Vec3::new(c.x, c.y, 0.0))
+            .collect();
+        t.extend(bbox_texcoords(&flat));
+    }
     if g.bool("beginCap", true) && !spine_closed && cap_len >= 3 {
         faces.push((0..cap_len).rev().map(|j| at(0, j)).collect());
+        tex_index.push((0..cap_len).rev().map(|j| (cap_base + j) as u32).collect());
     }
     if g.bool("endCap", true) && !spine_closed && cap_len >= 3 {
         faces.push((0..cap_len).map(|j| at(n - 1, j)).collect());
+        tex_index.push((0..cap_len).map(|j| (cap_base + j) as u32).collect());
     }
     let opts = PolyOptions {
         ccw: g.bool("ccw", true),
@@ -301,7 +353,34 @@ fn extrusion(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
         colors: Binding::None,
         name: String::new(),
     };
-    polygons::build(&positions, faces, opts, g.pos, msgs)
+    let texcoords = tex.map(|values| TexCoords {
+        values,
+        index: Some(tex_index),
+    });
+    polygons::build_textured(&positions, faces, opts, texcoords, g.pos, msgs)
+}
+
+/// Extrusion side texture coordinates, one per (spine point, cross-section
+/// point) in position order: s by length along the cross-section, t by
+/// length along the spine (by index when a curve has no length).
+fn extrusion_side_texcoords(cross: &[Vec2], spine: &[Vec3]) -> Vec<Vec2> {
+    fn params(lengths: impl Iterator<Item = f32>, n: usize) -> Vec<f32> {
+        let mut acc = vec![0.0];
+        for l in lengths {
+            acc.push(acc.last().copied().unwrap_or(0.0) + l);
+        }
+        let total = acc.last().copied().unwrap_or(0.0);
+        if total > 0.0 {
+            acc.iter().map(|a| a / total).collect()
+        } else {
+            (0..n).map(|i| i as f32 / (n - 1).max(1) as f32).collect()
+        }
+    }
+    let s = params(cross.windows(2).map(|w| w[0].distance(w[1])), cross.len());
+    let t = params(spine.windows(2).map(|w| w[0].distance(w[1])), spine.len());
+    t.iter()
+        .flat_map(|&t| s.iter().map(move |&s| Vec2::new(s, t)))
+        .collect()
 }
 
 /// The spine-aligned cross-section planes (X, Y, Z axes per spine point).
@@ -375,11 +454,25 @@ fn scp_frames(spine: &[Vec3]) -> Vec<(Vec3, Vec3, Vec3)> {
 }
 
 /// Box, Sphere, Cone, Cylinder through the shared primitive builders.
-fn primitive(g: &AstNode) -> Option<Mesh> {
+fn primitive(g: &AstNode, textured: bool) -> Option<Mesh> {
     use crate::scene::primitives as p;
     let m = match g.kind.as_str() {
         "Box" => p::box_mesh(g.vec3("size", Vec3::splat(2.0))),
+        "Sphere" if textured => p::sphere_textured(g.f32("radius", 1.0)),
         "Sphere" => p::sphere(g.f32("radius", 1.0)),
+        "Cone" if textured => p::cone_textured(
+            g.f32("bottomRadius", 1.0),
+            g.f32("height", 2.0),
+            g.bool("side", true),
+            g.bool("bottom", true),
+        ),
+        "Cylinder" if textured => p::cylinder_textured(
+            g.f32("radius", 1.0),
+            g.f32("height", 2.0),
+            g.bool("side", true),
+            g.bool("top", true),
+            g.bool("bottom", true),
+        ),
         "Cone" => p::cone(
             g.f32("bottomRadius", 1.0),
             g.f32("height", 2.0),

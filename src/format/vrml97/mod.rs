@@ -3,6 +3,7 @@
 //! imported as animation tracks.
 
 mod animation;
+mod appearance;
 mod build;
 mod geometry;
 pub mod write;

@@ -247,3 +247,133 @@ fn bindables_and_lights_in_hidden_switch_choices_are_skipped() {
         .iter()
         .all(|n| n.light().is_none() && n.camera().is_none()));
 }
+
+/// A scratch folder with a 2x2 RGB PNG `ok.png`, a broken `broken.png`.
+fn texture_dir(tag: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("animed-vrml-tex-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    image::RgbImage::from_pixel(2, 2, image::Rgb([200, 100, 50]))
+        .save(dir.join("ok.png"))
+        .unwrap();
+    std::fs::write(dir.join("broken.png"), b"\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR").unwrap();
+    dir
+}
+
+fn first_shape(s: &crate::scene::Scene) -> (&crate::scene::Mesh, &crate::scene::Material) {
+    let shape = s
+        .nodes
+        .iter()
+        .find_map(|n| match &n.kind {
+            NodeKind::Shape(sh) => Some(sh),
+            _ => None,
+        })
+        .unwrap();
+    (
+        &s.meshes[shape.mesh.0 as usize],
+        &s.materials[shape.material.0 as usize],
+    )
+}
+
+#[test]
+fn image_texture_url_list_coordinates_and_transform() {
+    use crate::scene::{TexTransformOrder, TextureModel, Wrap};
+    let dir = texture_dir("a");
+    let src = "#VRML V2.0 utf8\nShape { appearance Appearance { material Material {}\n texture ImageTexture { url [\"missing.png\" \"broken.png\" \"ok.png\"] repeatS FALSE }\n textureTransform TextureTransform { translation 0.5 0 rotation 1 scale 2 3 center 0.5 0.5 } }\n geometry IndexedFaceSet { coord Coordinate { point [0 0 0, 1 0 0, 1 1 0, 0 1 0] } coordIndex [0 1 2 3 -1]\n texCoord TextureCoordinate { point [0 0, 1 0, 1 1, 0 1] } texCoordIndex [3 2 1 0 -1] } }";
+    let l = read(src.as_bytes(), &dir.join("t.wrl")).unwrap();
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let s = &l.scene;
+    assert_eq!(s.images.len(), 1);
+    assert_eq!(s.images[0].components(), 3);
+    assert_eq!(s.images[0].base().texel(0, 0), [200, 100, 50, 255]);
+    let (m, mat) = first_shape(s);
+    let t = mat.texture.as_ref().unwrap();
+    assert_eq!((t.wrap_s, t.wrap_t), (Wrap::Clamp, Wrap::Repeat));
+    assert_eq!(t.model, TextureModel::Vrml97);
+    assert_eq!(t.transform.order, TexTransformOrder::Vrml97);
+    assert_eq!(t.transform.scale, glam::Vec2::new(2.0, 3.0));
+    assert_eq!(t.transform.rotation, 1.0);
+    // texCoordIndex reverses the corners: position (0,0,0) gets (0,1).
+    assert_eq!(m.texcoords.len(), m.positions.len());
+    let k = m.positions.iter().position(|p| *p == Vec3::ZERO).unwrap();
+    assert_eq!(m.texcoords[k], glam::Vec2::new(0.0, 1.0));
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn missing_texture_warns_and_draws_untextured() {
+    let dir = texture_dir("b");
+    let src = "#VRML V2.0 utf8\nShape { appearance Appearance { material Material {}\n  texture ImageTexture { url [\"missing.png\" \"broken.png\"] } }\n geometry Box {} }";
+    let path = dir.join("t.wrl");
+    let l = read(src.as_bytes(), &path).unwrap();
+    assert_eq!(l.warnings.len(), 2, "{:?}", l.warnings);
+    let want = format!(
+        "{}:3:11: cannot read texture 'missing.png': file not found",
+        path.display()
+    );
+    assert!(l.warnings[0].starts_with(&want), "{:?}", l.warnings);
+    assert!(
+        l.warnings[1].contains("cannot read texture 'broken.png': "),
+        "{:?}",
+        l.warnings
+    );
+    let (_, mat) = first_shape(&l.scene);
+    assert!(mat.texture.is_none());
+    assert!(l.scene.images.is_empty());
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn pixel_texture_without_material_is_unlit_with_default_mapping() {
+    use crate::scene::TextureModel;
+    let src = "#VRML V2.0 utf8\nShape { appearance Appearance { texture PixelTexture { image 2 1 1 0x00 0xFF } }\n geometry IndexedFaceSet { coord Coordinate { point [0 0 0, 4 0 0, 4 2 0, 0 2 0] } coordIndex [0 1 2 3] } }";
+    let l = load(src);
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let (m, mat) = first_shape(&l.scene);
+    let t = mat.texture.as_ref().unwrap();
+    assert_eq!(t.model, TextureModel::Replace);
+    assert_eq!(l.scene.images[0].components(), 1);
+    assert_eq!(
+        l.scene.images[0].base().pixels(),
+        &[[0, 0, 0, 255], [255; 4]]
+    );
+    // Bounding box 4 x 2: s along x 0..1, t along y 0..0.5.
+    let k = m
+        .positions
+        .iter()
+        .position(|p| *p == Vec3::new(4.0, 2.0, 0.0))
+        .unwrap();
+    assert_eq!(m.texcoords[k], glam::Vec2::new(1.0, 0.5));
+    // A bad inline image is a warning and no texture.
+    let l = load("#VRML V2.0 utf8\nShape { appearance Appearance { texture PixelTexture { image 2 2 3 0xFF } } geometry Box {} }");
+    assert_eq!(l.warnings.len(), 1, "{:?}", l.warnings);
+    assert!(
+        l.warnings[0]
+            .contains("cannot read texture 'PixelTexture': image is 2x2 but has only 1 pixels"),
+        "{:?}",
+        l.warnings
+    );
+    assert!(first_shape(&l.scene).1.texture.is_none());
+}
+
+#[test]
+fn background_gradient_is_kept() {
+    let l = load("#VRML V2.0 utf8\nBackground { skyColor [0 0 1, 1 1 1] skyAngle [1.5] groundColor [0 1 0, 0 0.5 0] groundAngle [1.2] }\nBackground { skyColor 1 0 0 }");
+    let sky = l.scene.settings.sky.as_ref().unwrap();
+    assert_eq!(sky.sky_color, vec![Vec3::Z, Vec3::ONE]);
+    assert_eq!(sky.sky_angle, vec![1.5]);
+    assert_eq!(sky.ground_angle, vec![1.2]);
+    assert_eq!(l.scene.settings.background, Vec3::Z);
+    // A one-colour Background stays a flat colour.
+    let l = load("#VRML V2.0 utf8\nBackground { skyColor 1 0 0 }");
+    assert!(l.scene.settings.sky.is_none());
+    assert_eq!(l.scene.settings.background, Vec3::X);
+}
+
+#[test]
+fn textured_primitives_get_the_default_mapping_and_untextured_ones_none() {
+    let l = load("#VRML V2.0 utf8\nShape { appearance Appearance { texture PixelTexture { image 1 1 3 0xFF0000 } } geometry Sphere {} }\nShape { geometry Sphere {} }");
+    let meshes = &l.scene.meshes;
+    assert_eq!(meshes.len(), 2);
+    assert_eq!(meshes[0].texcoords.len(), meshes[0].positions.len());
+    assert!(meshes[1].texcoords.is_empty());
+}

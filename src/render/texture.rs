@@ -1,0 +1,338 @@
+//! Texture sampling and how a texel combines with lighting.
+//!
+//! Sampling is trilinear: bilinear within the two mip levels around the
+//! level of detail, blended by its fraction (the level of detail is log2 of
+//! the larger of the two screen-axis footprints in texels, as in the OpenGL
+//! 1.x specification §3.8.5). Texture coordinates follow VRML: (0, 0) is
+//! the image's lower-left corner, s to the right, t up. Repeat wraps the
+//! texel index, clamp clamps it (OpenGL `CLAMP_TO_EDGE`).
+//!
+//! Combining follows [`TextureModel`]: the VRML97 rules of ISO/IEC 14772-1
+//! §4.14.3 (table 4.5) and the OpenGL texture environment functions that
+//! Inventor's MODULATE/DECAL/BLEND name (OpenGL 1.1 table 3.18).
+//! Everything is plain f32 arithmetic with no fused operations, so results
+//! are the same on every machine and for any thread count.
+
+use crate::scene::{Image, MipLevel, Texture, TextureModel, Wrap};
+use glam::{Affine2, Vec2, Vec3, Vec4};
+
+/// A texture ready to sample: the image (a cheap shared clone), wraps and
+/// matrix.
+#[derive(Clone, Debug)]
+pub struct Sampler {
+    image: Image,
+    wrap_s: Wrap,
+    wrap_t: Wrap,
+    matrix: Affine2,
+    identity: bool,
+    pub model: TextureModel,
+    /// Components of the source image (1..=4).
+    pub components: u8,
+    blend_color: Vec3,
+    translucent: bool,
+}
+
+impl Sampler {
+    pub fn new(t: &Texture, image: &Image) -> Sampler {
+        let uses_alpha = matches!(image.components(), 2 | 4) && t.model != TextureModel::Decal;
+        Sampler {
+            image: image.clone(),
+            wrap_s: t.wrap_s,
+            wrap_t: t.wrap_t,
+            matrix: t.transform.matrix(),
+            identity: t.transform.is_identity(),
+            model: t.model,
+            components: image.components(),
+            blend_color: t.blend_color,
+            translucent: uses_alpha && image.has_alpha(),
+        }
+    }
+
+    /// Whether the texture can make pixels partly transparent (then its
+    /// shape is drawn with the transparent ones, sorted back to front).
+    pub fn translucent(&self) -> bool {
+        self.translucent
+    }
+
+    /// The mesh texture coordinate after the texture transform.
+    #[inline]
+    pub fn transform(&self, uv: Vec2) -> Vec2 {
+        if self.identity {
+            uv
+        } else {
+            self.matrix.transform_point2(uv)
+        }
+    }
+
+    /// A derivative of (s, t) after the texture transform.
+    #[inline]
+    pub fn transform_vector(&self, d: Vec2) -> Vec2 {
+        if self.identity {
+            d
+        } else {
+            self.matrix.transform_vector2(d)
+        }
+    }
+
+    /// Level of detail from the screen-space derivatives of the
+    /// (transformed) coordinates: log2 of the longer footprint axis in
+    /// base-level texels. ≤ 0 means magnified.
+    pub fn lod(&self, ddx: Vec2, ddy: Vec2) -> f32 {
+        let base = self.image.base();
+        let size = Vec2::new(base.width() as f32, base.height() as f32);
+        let (x, y) = (ddx * size, ddy * size);
+        let rho2 = x.length_squared().max(y.length_squared());
+        // Also catches NaN footprints.
+        if rho2.is_nan() || rho2 <= 1.0 {
+            return 0.0;
+        }
+        // log2(rho) = log2(rho²) / 2.
+        0.5 * libm::log2f(rho2)
+    }
+
+    /// The filtered RGBA (0..1) at transformed coordinates `st`.
+    pub fn sample(&self, st: Vec2, lod: f32) -> Vec4 {
+        let levels = self.image.levels();
+        let last = levels.len() - 1;
+        let lod = if lod.is_finite() { lod.max(0.0) } else { 0.0 };
+        if lod >= last as f32 {
+            return self.bilinear(&levels[last], st);
+        }
+        let i = lod as usize;
+        let f = lod - i as f32;
+        let a = self.bilinear(&levels[i], st);
+        if f == 0.0 {
+            return a;
+        }
+        let b = self.bilinear(&levels[i + 1], st);
+        a + (b - a) * f
+    }
+
+    /// Bilinear filtering in one level (texel centres at half-integers).
+    fn bilinear(&self, level: &MipLevel, st: Vec2) -> Vec4 {
+        let (w, h) = (level.width() as i64, level.height() as i64);
+        let s = if st.x.is_finite() { st.x } else { 0.0 };
+        let t = if st.y.is_finite() { st.y } else { 0.0 };
+        // Reduce repeating coordinates to one period first so huge values
+        // keep their fraction.
+        let s = if self.wrap_s == Wrap::Repeat {
+            s - s.floor()
+        } else {
+            s
+        };
+        let t = if self.wrap_t == Wrap::Repeat {
+            t - t.floor()
+        } else {
+            t
+        };
+        let x = s * w as f32 - 0.5;
+        // Rows are stored top first; t = 0 is the bottom row.
+        let y = (1.0 - t) * h as f32 - 0.5;
+        let (x0, y0) = (x.floor(), y.floor());
+        let (fx, fy) = (x - x0, y - y0);
+        let (x0, y0) = (
+            x0.clamp(-2.0, w as f32) as i64,
+            y0.clamp(-2.0, h as f32) as i64,
+        );
+        let xs = [wrap(x0, w, self.wrap_s), wrap(x0 + 1, w, self.wrap_s)];
+        let ys = [wrap(y0, h, self.wrap_t), wrap(y0 + 1, h, self.wrap_t)];
+        let px = level.pixels();
+        let at = |x: usize, y: usize| {
+            let p = px[y * w as usize + x];
+            Vec4::new(p[0] as f32, p[1] as f32, p[2] as f32, p[3] as f32)
+        };
+        let top = at(xs[0], ys[0]) + (at(xs[1], ys[0]) - at(xs[0], ys[0])) * fx;
+        let bottom = at(xs[0], ys[1]) + (at(xs[1], ys[1]) - at(xs[0], ys[1])) * fx;
+        (top + (bottom - top) * fy) * (1.0 / 255.0)
+    }
+
+    /// The diffuse colour and alpha lighting starts from, given a texel and
+    /// the material's (or colour node's) diffuse colour and alpha. Models
+    /// that act after lighting leave them unchanged.
+    #[inline]
+    pub fn before_lighting(&self, texel: Vec4, diffuse: Vec3, alpha: f32) -> (Vec3, f32) {
+        let rgb = texel.truncate();
+        match self.model {
+            TextureModel::Vrml97 => match self.components {
+                1 => (diffuse * rgb.x, alpha),
+                2 => (diffuse * rgb.x, texel.w),
+                3 => (rgb, alpha),
+                _ => (rgb, texel.w),
+            },
+            TextureModel::Modulate => (diffuse * rgb, alpha * texel.w),
+            _ => (diffuse, alpha),
+        }
+    }
+
+    /// Whether [`Sampler::after_lighting`] changes anything.
+    #[inline]
+    pub fn acts_after_lighting(&self) -> bool {
+        matches!(
+            self.model,
+            TextureModel::Replace | TextureModel::Decal | TextureModel::Blend
+        )
+    }
+
+    /// The final colour and alpha from a texel and the lit colour, for the
+    /// models that act after lighting (others return `lit` unchanged).
+    #[inline]
+    pub fn after_lighting(&self, texel: Vec4, lit: Vec3, alpha: f32) -> (Vec3, f32) {
+        let rgb = texel.truncate();
+        let has_alpha = matches!(self.components, 2 | 4);
+        match self.model {
+            TextureModel::Replace => (rgb, if has_alpha { texel.w } else { alpha }),
+            TextureModel::Decal => {
+                let a = if has_alpha { texel.w } else { 1.0 };
+                (lit + (rgb - lit) * a, alpha)
+            }
+            TextureModel::Blend => (
+                lit * (Vec3::ONE - rgb) + self.blend_color * rgb,
+                if has_alpha { alpha * texel.w } else { alpha },
+            ),
+            _ => (lit, alpha),
+        }
+    }
+}
+
+impl Sampler {
+    /// Everything for one pixel: the texel at mesh coordinates `uv` with
+    /// screen derivatives `ddx`, `ddy` (before the texture transform).
+    #[inline]
+    pub fn texel(&self, uv: Vec2, ddx: Vec2, ddy: Vec2) -> Vec4 {
+        let st = self.transform(uv);
+        let lod = self.lod(self.transform_vector(ddx), self.transform_vector(ddy));
+        self.sample(st, lod)
+    }
+}
+
+/// A texel index wrapped (repeat) or clamped into `0..n`.
+#[inline]
+fn wrap(i: i64, n: i64, mode: Wrap) -> usize {
+    match mode {
+        Wrap::Repeat => i.rem_euclid(n) as usize,
+        Wrap::Clamp => i.clamp(0, n - 1) as usize,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{ImageId, ImageSource};
+
+    fn image(w: u32, h: u32, comps: u8, f: impl Fn(u32, u32) -> [u8; 4]) -> Image {
+        let px = (0..h).flat_map(|y| (0..w).map(move |x| (x, y)));
+        Image::new(
+            "t",
+            ImageSource::Inline,
+            w,
+            h,
+            comps,
+            px.map(|(x, y)| f(x, y)).collect(),
+        )
+        .unwrap()
+    }
+
+    fn tex() -> Texture {
+        Texture::new(ImageId(0))
+    }
+
+    #[test]
+    fn texel_centres_and_orientation() {
+        // 2x2: top row red, green; bottom row blue, white.
+        let img = image(2, 2, 3, |x, y| {
+            [
+                [[255, 0, 0, 255], [0, 255, 0, 255]],
+                [[0, 0, 255, 255], [255; 4]],
+            ][y as usize][x as usize]
+        });
+        let s = Sampler::new(&tex(), &img);
+        let red = s.sample(Vec2::new(0.25, 0.75), 0.0);
+        assert_eq!(red, Vec4::new(1.0, 0.0, 0.0, 1.0));
+        let blue = s.sample(Vec2::new(0.25, 0.25), 0.0);
+        assert_eq!(blue, Vec4::new(0.0, 0.0, 1.0, 1.0));
+        // Half-way between red and green texel centres.
+        let mid = s.sample(Vec2::new(0.5, 0.75), 0.0);
+        assert!((mid - Vec4::new(0.5, 0.5, 0.0, 1.0)).abs().max_element() < 1e-6);
+    }
+
+    #[test]
+    fn repeat_wraps_and_clamp_holds_the_edge() {
+        let img = image(
+            2,
+            1,
+            3,
+            |x, _| if x == 0 { [0, 0, 0, 255] } else { [255; 4] },
+        );
+        let mut t = tex();
+        let rep = Sampler::new(&t, &img);
+        // s = 0 lies between the last and first texel when repeating.
+        assert!((rep.sample(Vec2::new(0.0, 0.5), 0.0).x - 0.5).abs() < 1e-6);
+        assert_eq!(rep.sample(Vec2::new(3.25, 0.5), 0.0).x, 0.0);
+        t.wrap_s = Wrap::Clamp;
+        let cl = Sampler::new(&t, &img);
+        assert_eq!(cl.sample(Vec2::new(0.0, 0.5), 0.0).x, 0.0);
+        assert_eq!(cl.sample(Vec2::new(-5.0, 0.5), 0.0).x, 0.0);
+        assert_eq!(cl.sample(Vec2::new(7.0, 0.5), 0.0).x, 1.0);
+        // Non-finite coordinates do not panic.
+        let _ = rep.sample(Vec2::new(f32::NAN, f32::INFINITY), f32::NAN);
+    }
+
+    #[test]
+    fn minified_checker_goes_grey() {
+        let img = image(64, 64, 3, |x, y| {
+            if (x + y) % 2 == 0 {
+                [255; 4]
+            } else {
+                [0, 0, 0, 255]
+            }
+        });
+        let s = Sampler::new(&tex(), &img);
+        // One screen pixel covers 8 texels: lod 3.
+        let lod = s.lod(Vec2::new(8.0 / 64.0, 0.0), Vec2::new(0.0, 8.0 / 64.0));
+        assert!((lod - 3.0).abs() < 1e-6, "{lod}");
+        let c = s.sample(Vec2::new(0.3, 0.7), lod);
+        assert!((c.x - 0.5).abs() < 0.01, "{c}");
+        // Magnified: lod 0.
+        assert_eq!(s.lod(Vec2::new(0.001, 0.0), Vec2::ZERO), 0.0);
+    }
+
+    #[test]
+    fn vrml97_component_rules() {
+        let t = tex();
+        let diffuse = Vec3::new(1.0, 0.5, 0.0);
+        let texel = Vec4::new(0.5, 0.25, 1.0, 0.5);
+        let check = |comps: u8| {
+            let img = image(1, 1, comps, |_, _| [0; 4]);
+            Sampler::new(&t, &img).before_lighting(texel, diffuse, 0.8)
+        };
+        assert_eq!(check(1), (diffuse * 0.5, 0.8));
+        assert_eq!(check(2), (diffuse * 0.5, 0.5));
+        assert_eq!(check(3), (texel.truncate(), 0.8));
+        assert_eq!(check(4), (texel.truncate(), 0.5));
+    }
+
+    #[test]
+    fn inventor_models() {
+        let img = image(1, 1, 4, |_, _| [0; 4]);
+        let texel = Vec4::new(1.0, 0.0, 0.0, 0.25);
+        let lit = Vec3::new(0.0, 0.0, 1.0);
+        let mut t = tex();
+        t.model = TextureModel::Decal;
+        let (c, a) = Sampler::new(&t, &img).after_lighting(texel, lit, 0.9);
+        assert_eq!((c, a), (Vec3::new(0.25, 0.0, 0.75), 0.9));
+        t.model = TextureModel::Blend;
+        t.blend_color = Vec3::new(0.0, 1.0, 0.0);
+        let (c, a) = Sampler::new(&t, &img).after_lighting(texel, lit, 0.8);
+        assert_eq!((c, a), (Vec3::new(0.0, 0.0, 1.0), 0.2));
+        t.model = TextureModel::Modulate;
+        let s = Sampler::new(&t, &img);
+        assert_eq!(
+            s.before_lighting(texel, Vec3::splat(0.5), 0.8),
+            (Vec3::new(0.5, 0.0, 0.0), 0.2)
+        );
+        assert_eq!(s.after_lighting(texel, lit, 0.3), (lit, 0.3));
+        t.model = TextureModel::Replace;
+        let (c, a) = Sampler::new(&t, &img).after_lighting(texel, lit, 1.0);
+        assert_eq!((c, a), (Vec3::new(1.0, 0.0, 0.0), 0.25));
+    }
+}

@@ -1,0 +1,266 @@
+//! Golden pictures of textures and backgrounds, from small VRML97 scenes
+//! written here (images generated in code): component counts, repeat vs
+//! clamp, texture transform, the primitives' default mappings, Inventor
+//! DECAL/BLEND, alpha, gradient and panorama backgrounds, a receding
+//! checkerboard (mip-mapping: no moiré) and a magnified texture (bilinear).
+//! `UPDATE_GOLDENS=1` rewrites them (look at every one).
+
+#[path = "common/golden.rs"]
+mod golden;
+
+use animed::format::load_bytes;
+use animed::render::job::{render_at, FrameSpec};
+use animed::render::Frame;
+use animed::scene::{Scene, TextureModel};
+use glam::Vec3;
+use std::path::{Path, PathBuf};
+
+const W: u32 = 240;
+const H: u32 = 180;
+
+/// A scratch folder holding the generated images the scenes name.
+fn images() -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("animed-render-tex-{}", std::process::id()));
+    if dir.join("rgba.png").exists() {
+        return dir;
+    }
+    std::fs::create_dir_all(&dir).unwrap();
+    // 8x8 checker of red and white with a blue top-left texel (orientation).
+    image::RgbImage::from_fn(8, 8, |x, y| match (x, y) {
+        (0, 0) => image::Rgb([0, 0, 255]),
+        _ if (x + y) % 2 == 0 => image::Rgb([220, 40, 40]),
+        _ => image::Rgb([240, 240, 240]),
+    })
+    .save(dir.join("checker.png"))
+    .unwrap();
+    // 64x64 black/white checker of 1-texel squares, for minification.
+    image::GrayImage::from_fn(64, 64, |x, y| {
+        image::Luma([if (x + y) % 2 == 0 { 255 } else { 0 }])
+    })
+    .save(dir.join("fine.png"))
+    .unwrap();
+    // A grey ramp (1 component) and its version with alpha (2 components).
+    image::GrayImage::from_fn(16, 16, |x, _| image::Luma([(x * 16) as u8]))
+        .save(dir.join("grey.png"))
+        .unwrap();
+    image::GrayAlphaImage::from_fn(16, 16, |x, y| {
+        image::LumaA([
+            (x * 16) as u8,
+            if (x / 4 + y / 4) % 2 == 0 { 255 } else { 60 },
+        ])
+    })
+    .save(dir.join("greyalpha.png"))
+    .unwrap();
+    // RGBA: an opaque green disc on a transparent square.
+    image::RgbaImage::from_fn(32, 32, |x, y| {
+        let (dx, dy) = (x as f32 - 15.5, y as f32 - 15.5);
+        if dx * dx + dy * dy < 144.0 {
+            image::Rgba([30, 200, 60, 255])
+        } else {
+            image::Rgba([255, 255, 0, 0])
+        }
+    })
+    .save(dir.join("rgba.png"))
+    .unwrap();
+    for (name, rgb) in [
+        ("front", [200, 60, 60]),
+        ("back", [60, 200, 60]),
+        ("left", [60, 60, 200]),
+        ("right", [200, 200, 60]),
+        ("top", [60, 200, 200]),
+        ("bottom", [200, 60, 200]),
+    ] {
+        // Each face: its colour with a dark bar along its top edge.
+        image::RgbImage::from_fn(16, 16, |_, y| {
+            image::Rgb(if y < 3 { [20, 20, 20] } else { rgb })
+        })
+        .save(dir.join(format!("{name}.png")))
+        .unwrap();
+    }
+    dir
+}
+
+fn load(src: &str) -> Scene {
+    let path = images().join("scene.wrl");
+    let l = load_bytes(src.as_bytes(), &path).unwrap();
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    l.scene
+}
+
+fn draw(scene: &Scene) -> Frame {
+    let spec = FrameSpec {
+        width: W,
+        height: H,
+        ..FrameSpec::default()
+    };
+    render_at(scene, &spec, 0.0).unwrap()
+}
+
+const HEAD: &str = "#VRML V2.0 utf8\nNavigationInfo { headlight FALSE }\nDirectionalLight { direction -0.3 -0.4 -1 }\nBackground { skyColor 0.1 0.1 0.15 }\nViewpoint { position 0 0 9.5 }\n";
+
+/// A unit quad at x offset `x` with `appearance`, texture coordinates 0..1.
+fn quad(x: f32, appearance: &str) -> String {
+    format!(
+        "Transform {{ translation {x} 0 0 children Shape {{ appearance Appearance {{ {appearance} }}\n geometry IndexedFaceSet {{ coord Coordinate {{ point [-0.9 -0.9 0, 0.9 -0.9 0, 0.9 0.9 0, -0.9 0.9 0] }} coordIndex [0 1 2 3] texCoord TextureCoordinate {{ point [0 0, 1 0, 1 1, 0 1] }} }} }} }}\n"
+    )
+}
+
+#[test]
+fn texture_component_counts() {
+    // Left to right: 1 (intensity × diffuse), 2 (… with alpha), 3 (RGB
+    // replaces the orange diffuse), 4 (RGBA). All lit.
+    let mat = "material Material { diffuseColor 1 0.6 0.2 }";
+    let src = [
+        quad(
+            -3.0,
+            &format!("{mat} texture ImageTexture {{ url \"grey.png\" }}"),
+        ),
+        quad(
+            -1.0,
+            &format!("{mat} texture ImageTexture {{ url \"greyalpha.png\" }}"),
+        ),
+        quad(
+            1.0,
+            &format!("{mat} texture ImageTexture {{ url \"checker.png\" }}"),
+        ),
+        quad(
+            3.0,
+            &format!("{mat} texture ImageTexture {{ url \"rgba.png\" }}"),
+        ),
+    ]
+    .concat();
+    let s = load(&format!("{HEAD}{src}"));
+    let comps: Vec<u8> = s.images.iter().map(|i| i.components()).collect();
+    assert_eq!(comps, vec![1, 2, 3, 4]);
+    golden::check("tex_components", &draw(&s));
+}
+
+#[test]
+fn texture_repeat_clamp_and_transform() {
+    // Coordinates -0.5..1.5: repeating (left), clamped (middle), and a
+    // TextureTransform rotating and scaling about the centre (right).
+    let q = |x: f32, tex: &str, tt: &str| {
+        format!(
+            "Transform {{ translation {x} 0 0 children Shape {{ appearance Appearance {{ material Material {{}} texture ImageTexture {{ url \"checker.png\" {tex} }} {tt} }}\n geometry IndexedFaceSet {{ coord Coordinate {{ point [-0.9 -0.9 0, 0.9 -0.9 0, 0.9 0.9 0, -0.9 0.9 0] }} coordIndex [0 1 2 3] texCoord TextureCoordinate {{ point [-0.5 -0.5, 1.5 -0.5, 1.5 1.5, -0.5 1.5] }} }} }} }}\n"
+        )
+    };
+    let src = [
+        q(-2.0, "", ""),
+        q(0.0, "repeatS FALSE repeatT FALSE", ""),
+        q(
+            2.0,
+            "",
+            "textureTransform TextureTransform { rotation 0.5 scale 0.5 0.5 center 0.5 0.5 translation 0.25 0 }",
+        ),
+    ]
+    .concat();
+    golden::check(
+        "tex_repeat_clamp_transform",
+        &draw(&load(&format!("{HEAD}{src}"))),
+    );
+}
+
+#[test]
+fn texture_primitive_default_mappings() {
+    let app = "appearance Appearance { material Material {} texture ImageTexture { url \"checker.png\" } }";
+    let src = format!(
+        "{HEAD}Transform {{ rotation 1 1 0 0.5 children [\
+         Transform {{ translation -3 0 0 children Shape {{ {app} geometry Box {{ size 1.4 1.4 1.4 }} }} }}\
+         Transform {{ translation -1 0 0 children Shape {{ {app} geometry Sphere {{ radius 0.8 }} }} }}\
+         Transform {{ translation 1 0 0 children Shape {{ {app} geometry Cylinder {{ radius 0.7 height 1.4 }} }} }}\
+         Transform {{ translation 3 0 0 children Shape {{ {app} geometry Cone {{ bottomRadius 0.7 height 1.4 }} }} }} ] }}"
+    );
+    golden::check("tex_primitives", &draw(&load(&src)));
+}
+
+#[test]
+fn texture_inventor_models_and_alpha() {
+    // DECAL and BLEND are Inventor models; set them on materials read from
+    // VRML97 so one picture shows MODULATE, DECAL, BLEND and an alpha
+    // texture drawn over a red bar behind it.
+    let mat = "material Material { diffuseColor 0.3 0.5 1 }";
+    let src = [
+        quad(-3.0, &format!("{mat} texture ImageTexture {{ url \"checker.png\" }}")),
+        quad(-1.0, &format!("{mat} texture ImageTexture {{ url \"rgba.png\" }}")),
+        quad(1.0, &format!("{mat} texture ImageTexture {{ url \"grey.png\" }}")),
+        quad(3.0, &format!("{mat} texture ImageTexture {{ url \"greyalpha.png\" }}")),
+        "Transform { translation 0 0 -1 children Shape { appearance Appearance { material Material { diffuseColor 1 0 0 } } geometry Box { size 9 0.5 0.1 } } }\n".to_string(),
+    ]
+    .concat();
+    let mut s = load(&format!("{HEAD}{src}"));
+    let models = [
+        TextureModel::Modulate,
+        TextureModel::Decal,
+        TextureModel::Blend,
+        TextureModel::Vrml97,
+    ];
+    let textured: Vec<usize> = (0..s.materials.len())
+        .filter(|&i| s.materials[i].texture.is_some())
+        .collect();
+    assert_eq!(textured.len(), 4);
+    for (i, m) in textured.into_iter().zip(models) {
+        let t = s.materials[i].texture.as_mut().unwrap();
+        t.model = m;
+        t.blend_color = Vec3::new(1.0, 1.0, 0.0);
+    }
+    golden::check("tex_decal_blend_alpha", &draw(&s));
+}
+
+#[test]
+fn texture_receding_checkerboard_and_magnified() {
+    // A floor of the fine checker repeated 40 times: far away it must turn
+    // grey (mip-mapped), not moiré. Beside it, the 8x8 checker magnified on
+    // a small quad: smooth bilinear steps.
+    let src =         "#VRML V2.0 utf8\nNavigationInfo { headlight FALSE }\nBackground { skyColor 0.1 0.1 0.15 }\nViewpoint { position 0 1 4 orientation 1 0 0 -0.15 }\n\
+         Shape { appearance Appearance { texture ImageTexture { url \"fine.png\" } }\n geometry IndexedFaceSet { coord Coordinate { point [-20 0 4, 20 0 4, 20 0 -200, -20 0 -200] } coordIndex [0 1 2 3] texCoord TextureCoordinate { point [0 0, 40 0, 40 204, 0 204] } } }\n\
+         Transform { translation 1.2 1.3 0 children Shape { appearance Appearance { texture ImageTexture { url \"checker.png\" } }\n geometry IndexedFaceSet { coord Coordinate { point [-0.5 -0.5 0, 0.5 -0.5 0, 0.5 0.5 0, -0.5 0.5 0] } coordIndex [0 1 2 3] texCoord TextureCoordinate { point [0 0, 0.25 0, 0.25 0.25, 0 0.25] } } } }\n";
+    let f = draw(&load(src));
+    // The far floor (just below the horizon) averages to mid grey with
+    // little spread: no moiré.
+    let row = (H / 2 - 12) as usize;
+    let px: Vec<f32> = (40..200)
+        .map(|x| (f.color[row * W as usize + x] >> 8 & 0xFF) as f32)
+        .collect();
+    let mean = px.iter().sum::<f32>() / px.len() as f32;
+    let spread = px.iter().map(|p| (p - mean).abs()).fold(0.0, f32::max);
+    assert!(spread < 40.0, "far floor varies by {spread} around {mean}");
+    golden::check("tex_mipmap_and_magnified", &f);
+}
+
+#[test]
+fn background_gradient_and_panorama() {
+    // Sky blue → red → white, ground brown → green up to 1.3 rad.
+    let sky = "Background { skyColor [0 0 1, 1 0 0, 1 1 1] skyAngle [1.2, 1.57] groundColor [0.5 0.3 0, 0 1 0] groundAngle [1.3] }";
+    let src = format!("#VRML V2.0 utf8\nViewpoint {{ position 0 0 0 fieldOfView 1.6 orientation 1 0 0 0.3 }}\n{sky}\n");
+    golden::check("bg_gradient", &draw(&load(&src)));
+    // Six faces seen looking to the front-left and a little up: front (red),
+    // left (blue) and top (cyan) show, each upright with its dark bar up.
+    let pano = "Background { skyColor 0.2 0.2 0.2 frontUrl \"front.png\" backUrl \"back.png\" leftUrl \"left.png\" rightUrl \"right.png\" topUrl \"top.png\" bottomUrl \"bottom.png\" }";
+    let src = format!("#VRML V2.0 utf8\nViewpoint {{ position 0 0 0 fieldOfView 1.6 orientation 0.3 0.9 0 0.8 }}\n{pano}\n");
+    let s = load(&src);
+    assert_eq!(s.images.len(), 6);
+    golden::check("bg_panorama", &draw(&s));
+    // --bg (a spec background) overrides the file's gradient.
+    let spec = FrameSpec {
+        width: 40,
+        height: 30,
+        background: Some(Vec3::new(0.0, 1.0, 0.0)),
+        ..FrameSpec::default()
+    };
+    let f = render_at(&s, &spec, 0.0).unwrap();
+    assert!(f.color.iter().all(|&c| c == 0x00FF00), "--bg must win");
+}
+
+#[test]
+fn sgi_rgb_texture() {
+    // The Inventor corpus' SGI image (tests/data/textures/brick.rgb) on a
+    // VRML97 box.
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/textures/brick.rgb");
+    let src = format!(
+        "{HEAD}Transform {{ rotation 1 1 0 0.6 children Shape {{ appearance Appearance {{ material Material {{}} texture ImageTexture {{ url \"{}\" }} }} geometry Box {{ size 2.5 2.5 2.5 }} }} }}\n",
+        data.display()
+    );
+    let s = load(&src);
+    assert_eq!(s.images.len(), 1);
+    golden::check("tex_sgi_rgb", &draw(&s));
+}
