@@ -86,3 +86,53 @@ fn errors_are_positioned_and_exit_nonzero() {
     assert!(err.contains("Nobody"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A file with one animation behaves as before: `--animation 0` is that one
+/// clip, anything else is a clear error on every command that takes it.
+#[test]
+fn animation_flag_on_a_one_clip_file() {
+    let (code, out, err) = animed(&[
+        "sample",
+        "assets/demo.wrl",
+        "--target",
+        "Ball.translation",
+        "--times",
+        "1",
+        "--animation",
+        "0",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.trim(), "1\t0 1.6 1.5");
+    let (code, out, err) = animed(&["info", "assets/demo.wrl", "--json", "--animation", "0"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["animations"].as_array().unwrap().len(), 1);
+    assert_eq!(v["animations"][0]["playing"], true);
+    assert_eq!(v["animations"][0]["tracks"], 4);
+    for cmd in [
+        vec!["info", "assets/demo.wrl", "--animation", "Walk"],
+        vec![
+            "sample",
+            "assets/demo.wrl",
+            "--target",
+            "Ball.translation",
+            "--times",
+            "0",
+            "--animation",
+            "1",
+        ],
+        vec![
+            "render",
+            "assets/demo.wrl",
+            "-o",
+            "target/never.png",
+            "--animation",
+            "Walk",
+        ],
+        vec!["key", "list", "assets/demo.wrl", "--animation", "2"],
+    ] {
+        let (code, _, err) = animed(&cmd);
+        assert_ne!(code, 0, "{cmd:?} should fail");
+        assert!(err.contains("there is no animation"), "{cmd:?}: {err}");
+    }
+}

@@ -139,3 +139,43 @@ fn demo_scene() {
     };
     golden::check("demo", &render_at(&demo, &spec, 0.0).unwrap());
 }
+
+/// The SSE2 and AVX shading paths (AVX is picked at run time when the CPU
+/// has it; `ANIMED_SIMD=sse2` forces SSE2) write the same bytes: the demo
+/// has all three light kinds, a spot ramp, specular and transparency.
+#[test]
+fn simd_path_never_changes_the_picture() {
+    #[cfg(target_arch = "x86_64")]
+    if !std::arch::is_x86_feature_detected!("avx") {
+        eprintln!("NOTE: this CPU has no AVX, so both runs below take the SSE2 path");
+    }
+    let out_dir = root().join("target").join("render-determinism");
+    std::fs::create_dir_all(&out_dir).unwrap();
+    let render = |simd: Option<&str>, name: &str| {
+        let out = out_dir.join(name);
+        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_animed"));
+        cmd.args([
+            "render",
+            "assets/demo.wrl",
+            "--size",
+            "333x201",
+            "--time",
+            "2.5",
+            "-o",
+        ])
+        .arg(&out)
+        .current_dir(root());
+        match simd {
+            Some(v) => cmd.env("ANIMED_SIMD", v),
+            None => cmd.env_remove("ANIMED_SIMD"),
+        };
+        assert!(cmd.status().unwrap().success());
+        image::open(&out).unwrap().to_rgb8()
+    };
+    let sse2 = render(Some("sse2"), "simd_sse2.png");
+    let auto = render(None, "simd_auto.png");
+    assert!(
+        sse2 == auto,
+        "the SSE2 and AVX paths give different pictures"
+    );
+}

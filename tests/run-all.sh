@@ -38,7 +38,25 @@ elif [ "$rc" != 0 ]; then
 fi
 
 mkdir -p target
-cargo test 2>&1 | tee target/test-output.log
+# GOLDEN_RECORD: every picture a golden test draws is also saved, for the
+# x86-64-v3 comparison below (tests/common/golden.rs).
+rm -rf target/golden-record
+GOLDEN_RECORD=target/golden-record cargo test 2>&1 | tee target/test-output.log
+
+# Determinism across CPU feature levels (README, "Determinism"): the golden
+# test binaries only, built again with -C target-cpu=x86-64-v3 (AVX2, FMA)
+# in their own target dir; each picture must equal the default build's
+# recording byte for byte. Costs one extra build of the crate and its
+# dependencies (6 min 41 s of CPU, about 4 minutes on 2 idle cores).
+v3_tests=(anim_goldens editor_goldens output_goldens read_goldens render_goldens render_determinism)
+if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo && grep -qw bmi2 /proc/cpuinfo; then
+  echo "run-all: golden tests built with -C target-cpu=x86-64-v3, compared byte for byte"
+  RUSTFLAGS='-C target-cpu=x86-64-v3' GOLDEN_EXACT=target/golden-record \
+    cargo test --target-dir target/x86-64-v3 "${v3_tests[@]/#/--test=}" 2>&1 |
+    tee -a target/test-output.log
+else
+  echo "run-all: x86-64-v3 determinism check NOT RUN: this CPU lacks AVX2/FMA/BMI2"
+fi
 # cargo's last summary is the (empty) doc-test run; close with the total.
 awk '/^test result:/ {p += $4; f += $6} END {printf "tests: %d passed, %d failed\n", p, f}' \
   target/test-output.log

@@ -71,3 +71,52 @@ fn v1_is_a_still_scene_with_the_note() {
         .iter()
         .any(|w| w.contains("1.0 cannot play")));
 }
+
+#[test]
+fn textures_are_texture2_state_with_the_transform_baked_into_coordinates() {
+    let scene = writers_common::textured_scene(std::path::Path::new("brick.png"));
+    let (text, report) = iv(&scene, InventorVersion::V2_1);
+    for needle in [
+        "Texture2 {\n",
+        "filename \"brick.png\"",
+        "wrapT CLAMP",
+        "model DECAL",
+        "image 2 1 4",
+        "0xFF0000FF 0x0000FF80",
+        "TextureCoordinate2 {",
+        "TextureCoordinateBinding { value PER_VERTEX_INDEXED }",
+        // The untextured cube switches texturing off rather than inheriting.
+        "Texture2 { }",
+    ] {
+        assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+    }
+    // Texture2Transform accumulates in Inventor, so it is baked instead:
+    // the first point of the turned, scaled quad is the transform of (0, 0).
+    assert!(!text.contains("Texture2Transform"), "{text}");
+    let t = match &scene.materials[0].texture {
+        Some(t) => t.transform,
+        None => unreachable!(),
+    };
+    let p = t.matrix().transform_point2(glam::Vec2::ZERO);
+    let first = text
+        .split("TextureCoordinate2 {")
+        .nth(1)
+        .and_then(|s| s.split('[').nth(1))
+        .and_then(|s| s.split(',').next())
+        .unwrap();
+    let xy: Vec<f32> = first
+        .split_whitespace()
+        .map(|w| w.parse().unwrap())
+        .collect();
+    assert!(
+        (xy[0] - p.x).abs() < 1e-6 && (xy[1] - p.y).abs() < 1e-6,
+        "{first} vs {p}"
+    );
+    // The file texture replaces a grey diffuse colour in VRML97 terms, which
+    // MODULATE cannot say: one warning.
+    assert_eq!(report.warnings.len(), 1, "{:?}", report.warnings);
+    assert!(report.warnings[0].contains("MODULATE"));
+    // A scene without textures writes no texture state at all.
+    let (plain, _) = iv(&writers_common::demo_scene(), InventorVersion::V2_1);
+    assert!(!plain.contains("Texture2"));
+}

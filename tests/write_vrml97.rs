@@ -131,3 +131,102 @@ fn hidden_node_plays_as_scale_zero() {
         .unwrap();
     assert!(block.contains("0 0 0,"));
 }
+
+#[test]
+fn textures_are_written_as_image_and_pixel_textures_with_coordinates() {
+    let dir = std::env::temp_dir().join(format!("animed-wtex-{}", std::process::id()));
+    let tex_dir = dir.join("tex");
+    std::fs::create_dir_all(&tex_dir).unwrap();
+    let brick = tex_dir.join("brick.png");
+    let scene = writers_common::textured_scene(&brick);
+    // Saved into another folder: the url climbs to the file that was read.
+    let out = dir.join("out").join("scene.wrl");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    let report = animed::format::save(&scene, &out, &WriteOptions::default()).unwrap();
+    let text = std::fs::read_to_string(&out).unwrap();
+    for needle in [
+        "texture ImageTexture {\n",
+        "url \"../tex/brick.png\"",
+        "repeatT FALSE",
+        "textureTransform TextureTransform {",
+        "center 0.5 0.5",
+        "rotation 0.5",
+        "scale 2 2",
+        "texCoord TextureCoordinate {",
+        "2 0,",
+        "texture PixelTexture {",
+        "image 2 1 4",
+        "0xFF0000FF 0x0000FF80",
+    ] {
+        assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+    }
+    assert!(!text.contains("repeatS FALSE"), "{text}");
+    // The untextured cube has no texture and no coordinates of its own.
+    assert_eq!(text.matches("texCoord TextureCoordinate").count(), 2);
+    // DECAL cannot be said in VRML97: the writer says so.
+    assert!(
+        report.warnings.iter().any(|w| w.contains("Decal")),
+        "{:?}",
+        report.warnings
+    );
+    // Written without a folder (to_bytes), the url stays as authored.
+    assert!(vrml(&scene).contains("url \"brick.png\""));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn copy_textures_copies_each_file_once_and_points_the_output_at_the_copies() {
+    let dir = std::env::temp_dir().join(format!("animed-ctex-{}", std::process::id()));
+    let src = dir.join("src");
+    std::fs::create_dir_all(&src).unwrap();
+    let brick = src.join("brick.png");
+    std::fs::write(&brick, b"not really a png").unwrap();
+    let mut scene = writers_common::textured_scene(&brick);
+    // A second image from another folder with the same file name.
+    let mut other = scene.images[0].clone();
+    let elsewhere = dir.join("elsewhere");
+    std::fs::create_dir_all(&elsewhere).unwrap();
+    std::fs::write(elsewhere.join("brick.png"), b"another").unwrap();
+    other.source = animed::scene::ImageSource::File {
+        url: "brick.png".into(),
+        path: elsewhere.join("brick.png"),
+    };
+    scene.add_image(other).unwrap();
+    let copies = dir.join("out/textures");
+    let copied = animed::format::export::textures::copy_textures(&mut scene, &copies).unwrap();
+    assert_eq!(copied.len(), 2);
+    assert_eq!(
+        std::fs::read(copies.join("brick.png")).unwrap(),
+        b"not really a png"
+    );
+    assert_eq!(
+        std::fs::read(copies.join("brick_2.png")).unwrap(),
+        b"another"
+    );
+    let out = dir.join("out/scene.wrl");
+    animed::format::save(&scene, &out, &WriteOptions::default()).unwrap();
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.contains("url \"textures/brick.png\""), "{text}");
+    // info lists the textures with their users.
+    let loaded = animed::format::Loaded {
+        scene,
+        warnings: Vec::new(),
+    };
+    let d = animed::cli::info::describe(&loaded);
+    let t = &d["textures"];
+    assert_eq!(t.as_array().unwrap().len(), 3, "{t}");
+    // In memory the url is the copy's path; `save` made it relative above.
+    assert!(t[0]["url"]
+        .as_str()
+        .unwrap()
+        .ends_with("out/textures/brick.png"));
+    assert_eq!(t[0]["shapes"], serde_json::json!(["Tiled"]));
+    assert_eq!(t[0]["materials"], serde_json::json!(["TiledMat"]));
+    assert_eq!(t[1]["source"], "inline");
+    assert_eq!(
+        (t[1]["width"].as_u64(), t[1]["components"].as_u64()),
+        (Some(2), Some(4))
+    );
+    assert_eq!(t[2]["shapes"], serde_json::json!([]));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -27,6 +27,11 @@ pub struct Args {
     /// Print key counts per animated field and what the format could not hold.
     #[arg(long, short)]
     pub verbose: bool,
+    /// Copy every texture file into DIR (created if missing) and make the
+    /// output refer to the copies. Without it, textures are referenced where
+    /// they are, by their path relative to OUT; nothing is copied.
+    #[arg(long, value_name = "DIR")]
+    pub copy_textures: Option<PathBuf>,
 }
 
 pub fn run(args: Args) -> i32 {
@@ -45,7 +50,7 @@ pub fn run(args: Args) -> i32 {
         );
         return 2;
     }
-    let loaded = match format::load(&args.input) {
+    let mut loaded = match format::load(&args.input) {
         Ok(l) => l,
         Err(e) => {
             eprintln!("{e}");
@@ -64,6 +69,20 @@ pub fn run(args: Args) -> i32 {
             InventorVersion::V2_1
         },
     };
+    if let Some(dir) = &args.copy_textures {
+        match format::export::textures::copy_textures(&mut loaded.scene, dir) {
+            Ok(copied) if args.verbose => {
+                for (from, to) in copied {
+                    println!("copied {} -> {}", from.display(), to.display());
+                }
+            }
+            Ok(_) => {}
+            Err(e) => {
+                eprintln!("animed convert: {e}");
+                return 1;
+            }
+        }
+    }
     let report = match format::save(&loaded.scene, &args.output, &opts) {
         Ok(r) => r,
         Err(e) => {

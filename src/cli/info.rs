@@ -1,12 +1,12 @@
-//! `animed info`: describe a scene file: nodes, shapes, lights, cameras, tracks, warnings.
+//! `animed info`: describe a scene file: nodes, shapes, lights, cameras, textures, tracks, warnings.
 
 use crate::anim::{TargetRef, Track};
 use crate::format;
-use crate::scene::{CameraKind, LightKind, NodeId, NodeKind, Scene, SourceFormat};
+use crate::scene::{CameraKind, ImageSource, LightKind, NodeId, NodeKind, Scene, SourceFormat};
 use serde_json::{json, Value as Json};
 use std::path::PathBuf;
 
-/// Describe a scene file: nodes, shapes, lights, cameras, tracks, warnings.
+/// Describe a scene file: nodes, shapes, lights, cameras, textures, tracks, warnings.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// The scene file (.iv, .wrl, .wrl.gz, .obj …).
@@ -14,6 +14,8 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 /// The name `info` shows for a node and `sample` accepts: its DEF name, or
@@ -53,6 +55,53 @@ fn format_name(f: SourceFormat) -> &'static str {
         SourceFormat::Vrml97 => "VRML97",
         SourceFormat::Obj => "Wavefront OBJ",
     }
+}
+
+/// One entry per image: its size, components, where it came from, and the
+/// materials and shapes that draw it.
+fn describe_textures(s: &Scene) -> Vec<Json> {
+    s.images
+        .iter()
+        .enumerate()
+        .map(|(i, image)| {
+            let uses = |m: &crate::scene::Material| {
+                m.texture.as_ref().is_some_and(|t| t.image.0 as usize == i)
+            };
+            let materials: Vec<usize> = (0..s.materials.len())
+                .filter(|&m| uses(&s.materials[m]))
+                .collect();
+            let material_names: Vec<String> = materials
+                .iter()
+                .map(|&m| match s.materials[m].name.as_str() {
+                    "" => format!("material#{m}"),
+                    n => n.to_string(),
+                })
+                .collect();
+            let shapes: Vec<String> = s
+                .walk()
+                .into_iter()
+                .filter(|&id| match &s.node(id).kind {
+                    NodeKind::Shape(sh) => materials.contains(&(sh.material.0 as usize)),
+                    _ => false,
+                })
+                .map(|id| node_label(s, id))
+                .collect();
+            let (source, url) = match &image.source {
+                ImageSource::Inline => ("inline", Json::Null),
+                ImageSource::File { url, .. } => ("file", json!(url)),
+            };
+            json!({
+                "name": image.name,
+                "source": source,
+                "url": url,
+                "width": image.width(),
+                "height": image.height(),
+                "components": image.components(),
+                "materials": material_names,
+                "shapes": shapes,
+            })
+        })
+        .collect()
 }
 
 /// Everything `info` reports, as JSON (the text form prints the same data).
@@ -105,6 +154,7 @@ pub fn describe(loaded: &format::Loaded) -> Json {
             NodeKind::Group => {}
         }
     }
+    let textures = describe_textures(s);
     let fps = s.settings.fps.max(1e-6);
     let tracks: Vec<Json> = s
         .animation
@@ -132,12 +182,32 @@ pub fn describe(loaded: &format::Loaded) -> Json {
         "triangles": triangles,
         "lights": lights,
         "cameras": cameras,
+        "textures": textures,
         "fps": short(s.settings.fps),
         "duration": short(s.duration_seconds()),
+        "animations": clips_json(s),
+        "animation": s.clips.active(),
         "tracks": tracks,
         "info": s.info,
         "warnings": loaded.warnings,
     })
+}
+
+/// Every clip: name, length and track count, the playing one marked.
+fn clips_json(s: &Scene) -> Json {
+    let fps = s.settings.fps.max(1e-6);
+    s.clip_refs()
+        .iter()
+        .map(|c| {
+            json!({
+                "index": c.index,
+                "name": c.name,
+                "duration": short(c.duration / fps),
+                "tracks": c.animation.tracks.len(),
+                "playing": c.playing,
+            })
+        })
+        .collect()
 }
 
 fn print_text(path: &std::path::Path, d: &Json) {
@@ -179,6 +249,55 @@ fn print_text(path: &std::path::Path, d: &Json) {
             }
         );
     }
+    let textures = list("textures");
+    println!("textures:   {}", textures.len());
+    for t in &textures {
+        let names = |k: &str| -> String {
+            let v: Vec<&str> = t[k].as_array().map_or(Vec::new(), |a| {
+                a.iter().filter_map(|x| x.as_str()).collect()
+            });
+            if v.is_empty() {
+                "nothing".into()
+            } else {
+                v.join(", ")
+            }
+        };
+        let kind = match t["components"].as_u64().unwrap_or(0) {
+            1 => "grey",
+            2 => "grey+alpha",
+            3 => "RGB",
+            _ => "RGBA",
+        };
+        let from = match t["url"].as_str() {
+            Some(u) => format!("\"{u}\""),
+            None => "inline".into(),
+        };
+        println!(
+            "  {from}: {}x{} {kind}, shapes: {} (materials: {})",
+            t["width"],
+            t["height"],
+            names("shapes"),
+            names("materials")
+        );
+    }
+    let clips = list("animations");
+    if clips.len() > 1 || clips.iter().any(|c| c["name"] != json!("")) {
+        println!("animations: {}", clips.len());
+        for c in &clips {
+            println!(
+                "  {}{} `{}`: {} tracks, {:.3} s",
+                if c["playing"] == json!(true) {
+                    "*"
+                } else {
+                    " "
+                },
+                c["index"],
+                c["name"].as_str().unwrap_or(""),
+                c["tracks"],
+                c["duration"].as_f64().unwrap_or(0.0)
+            );
+        }
+    }
     let tracks = list("tracks");
     println!(
         "tracks:     {}   ({} fps, {:.3} s)",
@@ -208,13 +327,17 @@ fn print_text(path: &std::path::Path, d: &Json) {
 }
 
 pub fn run(args: Args) -> i32 {
-    let loaded = match format::load(&args.file) {
+    let mut loaded = match format::load(&args.file) {
         Ok(l) => l,
         Err(e) => {
             eprintln!("{e}");
             return 1;
         }
     };
+    if let Err(e) = args.clip.apply(&mut loaded.scene) {
+        eprintln!("animed info: {e}");
+        return 2;
+    }
     let d = describe(&loaded);
     if args.json {
         println!("{}", serde_json::to_string_pretty(&d).unwrap_or_default());

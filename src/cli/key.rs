@@ -121,6 +121,8 @@ pub struct SetArgs {
     /// Where to save (default: FILE itself).
     #[arg(short = 'o', long = "output")]
     pub output: Option<PathBuf>,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 #[derive(clap::Args, Debug)]
@@ -132,6 +134,8 @@ pub struct RmArgs {
     pub when: When,
     #[arg(short = 'o', long = "output")]
     pub output: Option<PathBuf>,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 #[derive(clap::Args, Debug)]
@@ -140,6 +144,8 @@ pub struct ListArgs {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 #[derive(clap::Args, Debug)]
@@ -149,6 +155,8 @@ pub struct SettingsArgs {
     pub timing: Timing,
     #[arg(short = 'o', long = "output")]
     pub output: Option<PathBuf>,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 pub fn run(args: Args) -> i32 {
@@ -168,7 +176,7 @@ pub fn run(args: Args) -> i32 {
     }
 }
 
-fn load(path: &Path) -> Result<Scene, String> {
+fn load(path: &Path, clip: &super::clip_arg::ClipArg) -> Result<Scene, String> {
     if !path.exists() {
         return Err(format!(
             "{}: no such file (start a scene with `animed key new {} --box NAME`)",
@@ -180,7 +188,9 @@ fn load(path: &Path) -> Result<Scene, String> {
     for w in &loaded.warnings {
         eprintln!("warning: {w}");
     }
-    Ok(loaded.scene)
+    let mut scene = loaded.scene;
+    clip.apply(&mut scene)?;
+    Ok(scene)
 }
 
 fn save(scene: &Scene, path: &Path) -> Result<(), String> {
@@ -402,7 +412,7 @@ fn frame_of(scene: &Scene, w: &When) -> Result<f32, String> {
 }
 
 fn set(a: SetArgs) -> Result<(), String> {
-    let mut scene = load(&a.file)?;
+    let mut scene = load(&a.file, &a.clip)?;
     apply_timing(&mut scene, &a.timing)?;
     let target = resolve(&scene, &a.target)?;
     let frame = frame_of(&scene, &a.when)?;
@@ -441,7 +451,7 @@ fn set(a: SetArgs) -> Result<(), String> {
 }
 
 fn rm(a: RmArgs) -> Result<(), String> {
-    let mut scene = load(&a.file)?;
+    let mut scene = load(&a.file, &a.clip)?;
     let target = resolve(&scene, &a.target)?;
     let frame = frame_of(&scene, &a.when)?;
     let track = scene
@@ -460,7 +470,7 @@ fn rm(a: RmArgs) -> Result<(), String> {
 }
 
 fn settings(a: SettingsArgs) -> Result<(), String> {
-    let mut scene = load(&a.file)?;
+    let mut scene = load(&a.file, &a.clip)?;
     if a.timing.fps.is_none() && a.timing.duration.is_none() {
         println!(
             "fps {}\nduration {}",
@@ -492,7 +502,7 @@ fn value_numbers(v: &Value) -> Vec<f32> {
 }
 
 fn list(a: ListArgs) -> Result<(), String> {
-    let scene = load(&a.file)?;
+    let scene = load(&a.file, &a.clip)?;
     if a.json {
         println!("{}", list_json(&scene));
     } else {

@@ -1,6 +1,8 @@
 //! The command line: one file per subcommand, each with its `Args` and `run`.
 
 pub mod bench;
+pub mod check;
+pub mod clip_arg;
 pub mod convert;
 pub mod edit;
 pub mod info;
@@ -37,6 +39,8 @@ pub enum Command {
     Sample(sample::Args),
     /// Set, remove and list keys from the command line.
     Key(key::Args),
+    /// Screenshot tests: render scenes and compare them with golden PNGs.
+    Check(check::Args),
 }
 
 /// Runs the CLI; returns the process exit code.
@@ -52,5 +56,6 @@ pub fn run() -> i32 {
         Some(Command::Info(a)) => info::run(a),
         Some(Command::Sample(a)) => sample::run(a),
         Some(Command::Key(a)) => key::run(a),
+        Some(Command::Check(a)) => check::run_cli(a),
     }
 }

@@ -58,6 +58,8 @@ pub struct Args {
     /// (K/N, K from 0), to spread a range over machines.
     #[arg(long)]
     pub shard: Option<String>,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 /// A loaded scene and everything needed to draw frames of it.
@@ -86,7 +88,8 @@ pub fn prepare(args: &Args) -> Result<Job, String> {
     for w in &loaded.warnings {
         eprintln!("warning: {w}");
     }
-    let scene = loaded.scene;
+    let mut scene = loaded.scene;
+    args.clip.apply(&mut scene)?;
     let (width, height) = args.size;
     let time = match (args.time, args.frame) {
         (Some(t), _) => t,

@@ -27,6 +27,8 @@ pub struct Args {
     /// Print a JSON array of `{"time": t, "value": [numbers]}`.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 /// What a `NAME.property` resolves to.
@@ -171,6 +173,11 @@ pub fn run(args: Args) -> i32 {
             return 1;
         }
     };
+    let mut loaded = loaded;
+    if let Err(e) = args.clip.apply(&mut loaded.scene) {
+        eprintln!("animed sample: {e}");
+        return 2;
+    }
     let scene = &loaded.scene;
     let (owner, property) = match resolve(scene, &args.target) {
         Ok(r) => r,

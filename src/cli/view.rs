@@ -25,6 +25,8 @@ pub struct Args {
     /// Headlight at start: on, off or auto (the file's NavigationInfo).
     #[arg(long, default_value = "auto", value_parser = parse_headlight)]
     pub headlight: Headlight,
+    #[command(flatten)]
+    pub clip: super::clip_arg::ClipArg,
 }
 
 fn parse_headlight(s: &str) -> Result<Headlight, String> {
@@ -42,7 +44,7 @@ pub fn run(args: Args) -> i32 {
 }
 
 fn view(args: Args) -> Result<(), String> {
-    let loaded = match &args.file {
+    let mut loaded = match &args.file {
         Some(p) => crate::format::load(p),
         None => crate::format::demo(),
     }
@@ -50,6 +52,7 @@ fn view(args: Args) -> Result<(), String> {
     for w in &loaded.warnings {
         eprintln!("warning: {w}");
     }
+    args.clip.apply(&mut loaded.scene)?;
     let title = args.file.as_ref().map_or("demo".to_string(), |p| {
         p.file_name()
             .map_or_else(|| p.display().to_string(), |n| n.to_string_lossy().into())

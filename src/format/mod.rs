@@ -4,7 +4,7 @@
 //!
 //! Layout: one folder per format, each owning its reader and writer
 //! (`iv/` Inventor + VRML 1.0, `vrml97/`, `obj`), the shared reading pieces
-//! (`lexer`, `syntax/` with PROTO expansion, `polygons`, `inline`, `gzip`,
+//! (`lexer`, `syntax/` with PROTO expansion, `polygons`, `inline`, `gzip`, `sgi_image`,
 //! `hsv`) and the shared export code (`export/`: write plan, channels,
 //! sampling, key note, options, atomic save) beside them.
 
@@ -18,6 +18,7 @@ pub mod lexer;
 mod loaded;
 pub mod obj;
 pub mod polygons;
+pub mod sgi_image;
 pub mod syntax;
 pub mod vrml97;
 

@@ -7,8 +7,15 @@
 use glam::Vec4;
 
 /// Number of per-vertex attributes carried through clipping and
-/// interpolated per pixel: world position (3), normal (3), colour (3).
-pub const ATTRS: usize = 9;
+/// interpolated per pixel: world position (3), normal (3), colour (3),
+/// texture coordinates (2; zero when the mesh has none, and interpolated
+/// per pixel only for textured items).
+pub const ATTRS: usize = 11;
+/// Where each attribute starts in the array.
+pub const A_POS: usize = 0;
+pub const A_NORMAL: usize = 3;
+pub const A_COLOR: usize = 6;
+pub const A_UV: usize = 9;
 
 /// A vertex in clip space with its attributes.
 #[derive(Clone, Copy, Debug, PartialEq)]

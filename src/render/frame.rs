@@ -31,6 +31,23 @@ impl Frame {
         }
     }
 
+    /// Makes the buffers `width`×`height` pixels, keeping their memory when
+    /// the size is unchanged; new pixels are zero (the renderer overwrites
+    /// every pixel anyway).
+    pub fn resize(&mut self, width: u32, height: u32) {
+        let n = width as usize * height as usize;
+        if (self.width, self.height) != (width, height) {
+            self.width = width;
+            self.height = height;
+            for v in [&mut self.color, &mut self.ids] {
+                v.clear();
+                v.resize(n, 0);
+            }
+            self.depth.clear();
+            self.depth.resize(n, 0.0);
+        }
+    }
+
     /// RGBA8 bytes for `image` (alpha 255).
     pub fn to_rgba8(&self) -> Vec<u8> {
         let mut out = Vec::with_capacity(self.color.len() * 4);

@@ -15,6 +15,7 @@
 
 pub mod bench_scenes;
 mod clip;
+mod fragment;
 mod frame;
 pub mod job;
 mod prepare;
@@ -69,22 +70,37 @@ pub const MAX_PIXELS: u64 = 1 << 26;
 
 /// Draws `pose` of `scene` seen through `view`.
 pub fn render(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) -> Frame {
+    let mut frame = Frame::new(0, 0, opts.background);
+    render_into(scene, pose, view, opts, &mut frame);
+    frame
+}
+
+/// [`render`] into an existing frame, reusing its buffers when the size
+/// stays the same (a new 1280×720 frame costs its page faults every time;
+/// players and editors draw many frames).
+pub fn render_into(
+    scene: &Scene,
+    pose: &Pose,
+    view: &View,
+    opts: &RenderOptions,
+    frame: &mut Frame,
+) {
     let mut opts = opts.clone();
     opts.width = opts.width.min(MAX_SIDE);
     opts.height = opts.height.min(MAX_SIDE);
     if opts.width as u64 * opts.height as u64 > MAX_PIXELS {
         opts.height = (MAX_PIXELS / opts.width as u64) as u32;
     }
-    let mut frame = Frame::new(opts.width, opts.height, opts.background);
+    // Every pixel is written by its tile, so resized buffers need no fill.
+    frame.resize(opts.width, opts.height);
     if opts.width == 0 || opts.height == 0 {
-        return frame;
+        return;
     }
     let pool = thread_pool(opts.threads);
     pool.install(|| {
         let prepared = prepare::prepare(scene, pose, view, &opts);
-        draw(&prepared, &opts, view.eye, &mut frame);
+        draw(&prepared, &opts, view.eye, frame);
     });
-    frame
 }
 
 /// Bins the prepared primitives into tiles, draws the tiles in parallel and

@@ -3,7 +3,7 @@
 //! and snap to the fixed-point grid. Everything here is per primitive and
 //! order-preserving, so it can run in parallel without changing the result.
 
-use super::clip::{self, ClipVert, ATTRS};
+use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::shade::{ShadeMaterial, WorldLight};
 use super::{RenderOptions, View};
 use crate::anim::Pose;
@@ -27,10 +27,26 @@ pub struct Item {
     pub lights: Vec<WorldLight>,
     /// Lines/points without normals: colour is used as is.
     pub unlit: bool,
+    /// The shading pass computes texture coordinates and their derivatives
+    /// for this item and calls `fragment::apply_texture` (set it when the
+    /// material has a texture and the mesh has texture coordinates; the
+    /// vertices then carry them in `clip::A_UV`). Untextured items never
+    /// pay for it.
+    pub textured: bool,
 }
+
+/// Index of the 1/w plane in [`Tri::base`] (after the attributes).
+pub const INV_W: usize = ATTRS;
+/// Planes per triangle: every attribute divided by w, then 1/w.
+pub const PLANES: usize = ATTRS + 1;
 
 /// A screen-space triangle, oriented so its edge functions are positive
 /// inside (see `raster`).
+///
+/// Attributes are stored as planes over the screen-space barycentric
+/// weights b1, b2 of vertices 1 and 2: `value/w = base + b1·d1 + b2·d2`
+/// (value/w and 1/w are affine in screen space), so a pixel needs two
+/// multiply-adds per attribute and one division for 1/w.
 #[derive(Clone, Debug)]
 pub struct Tri {
     /// Fixed-point (SUBPIXEL) screen coordinates, y down.
@@ -38,13 +54,25 @@ pub struct Tri {
     pub y: [i64; 3],
     /// Window depth 0..1 (linear in screen space).
     pub z: [f32; 3],
-    pub inv_w: [f32; 3],
-    pub attr: [[f32; ATTRS]; 3],
+    /// Attribute planes (see above); normals already face the viewer for
+    /// triangles seen from behind (two-sided lighting).
+    pub base: [f32; PLANES],
+    pub d1: [f32; PLANES],
+    pub d2: [f32; PLANES],
     pub item: u32,
-    /// Seen from behind (non-solid shape): normals are flipped when shading.
-    pub back: bool,
     /// Pixel bounding box, inclusive min, exclusive max, clamped to the frame.
     pub bbox: [i32; 4],
+}
+
+impl Tri {
+    /// Perspective-correct attributes at screen-space weights b1, b2 (the
+    /// same arithmetic as the shading pass, one lane).
+    #[inline]
+    pub fn attrs_at(&self, b1: f32, b2: f32) -> [f32; ATTRS] {
+        let plane = |j: usize| self.base[j] + b1 * self.d1[j] + b2 * self.d2[j];
+        let s = 1.0 / plane(INV_W);
+        std::array::from_fn(|j| plane(j) * s)
+    }
 }
 
 /// A screen-space line segment.
@@ -180,6 +208,7 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) ->
             material: smat,
             lights: item_lights,
             unlit: !has_normals,
+            textured: false,
         });
     }
     // Back to front by mean depth; the stable sort keeps scene order on ties.
@@ -258,7 +287,9 @@ fn transform_vertices(
             let c = if has_colors { mesh.colors[k] } else { base };
             ClipVert {
                 clip: mvp * p.extend(1.0),
-                attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z],
+                // Texture coordinates (slots A_UV..A_UV + 2) stay zero until
+                // meshes carry them.
+                attr: [wp.x, wp.y, wp.z, n.x, n.y, n.z, c.x, c.y, c.z, 0.0, 0.0],
             }
         })
         .collect()
@@ -355,6 +386,14 @@ fn screen_triangle(
         return None;
     }
     let mut attr = [v[0].attr, v[1].attr, v[2].attr];
+    if back {
+        // Two-sided lighting: light the side we see.
+        for a in &mut attr {
+            for n in &mut a[A_NORMAL..A_NORMAL + 3] {
+                *n = -*n;
+            }
+        }
+    }
     if area < 0 {
         x.swap(1, 2);
         y.swap(1, 2);
@@ -372,16 +411,40 @@ fn screen_triangle(
     if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
         return None;
     }
+    let (base, d1, d2) = planes(&attr, &inv_w);
     Some(Tri {
         x,
         y,
         z,
-        inv_w,
-        attr,
+        base,
+        d1,
+        d2,
         item,
-        back,
         bbox,
     })
+}
+
+/// The attribute planes of a triangle (see [`Tri`]).
+pub fn planes(
+    attr: &[[f32; ATTRS]; 3],
+    inv_w: &[f32; 3],
+) -> ([f32; PLANES], [f32; PLANES], [f32; PLANES]) {
+    let mut base = [0.0; PLANES];
+    let mut d1 = [0.0; PLANES];
+    let mut d2 = [0.0; PLANES];
+    for j in 0..PLANES {
+        let at = |k: usize| {
+            if j == INV_W {
+                inv_w[k]
+            } else {
+                attr[k][j] * inv_w[k]
+            }
+        };
+        base[j] = at(0);
+        d1[j] = at(1) - at(0);
+        d2[j] = at(2) - at(0);
+    }
+    (base, d1, d2)
 }
 
 fn push_lines(out: &mut Vec<Line>, edges: &[[u32; 2]], verts: &[ClipVert], item: u32, s: &Screen) {

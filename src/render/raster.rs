@@ -1,16 +1,18 @@
 //! Drawing one screen tile: fixed-point edge functions with the top-left
 //! fill rule, a depth pass that keeps the nearest triangle per pixel, then
-//! one shading call per visible pixel; lines and points; transparent
-//! triangles blended back to front. A tile owns its pixels, so tiles can run
-//! on any thread in any order and the picture stays the same.
+//! the shading pass (`fragment`: each visible pixel shaded once, eight at a
+//! time); lines and points; transparent triangles blended back to front. A
+//! tile owns its pixels, so tiles can run on any thread in any order and the
+//! picture stays the same.
 
 use super::clip::ATTRS;
+use super::fragment::{self, store_masked, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
-use super::shade::{shade, shade_batch, Batch, LANES};
+use super::shade::shade;
+use super::simd::{self, Sse8, V8};
 use glam::Vec3;
 
-/// Tile edge in pixels.
-pub const TILE: i32 = 64;
+pub use super::fragment::TILE;
 
 /// A rectangle of pixels: `[x0, y0, x1, y1)`.
 pub type Rect = [i32; 4];
@@ -24,15 +26,37 @@ pub struct Bin {
     pub points: Vec<u32>,
 }
 
-/// Per-thread working buffers for one tile, reused from tile to tile (every
-/// entry is reset before use, so reuse never changes a picture).
-#[derive(Default)]
+const TILE_PIXELS: usize = (TILE * TILE) as usize;
+
+/// Per-thread working buffers for one tile, `TILE` pixels per row whatever
+/// the tile's width, reused from tile to tile. Depth and winner are reset
+/// for every tile; the shading pass writes every colour and id; barycentrics
+/// are read only where the depth pass wrote them. So reuse never changes a
+/// picture.
 pub struct Scratch {
-    color: Vec<Vec3>,
+    r: Vec<f32>,
+    g: Vec<f32>,
+    b: Vec<f32>,
     depth: Vec<f32>,
     ids: Vec<u32>,
     winner: Vec<u32>,
-    bary: Vec<[f32; 2]>,
+    b1: Vec<f32>,
+    b2: Vec<f32>,
+}
+
+impl Default for Scratch {
+    fn default() -> Self {
+        Scratch {
+            r: vec![0.0; TILE_PIXELS],
+            g: vec![0.0; TILE_PIXELS],
+            b: vec![0.0; TILE_PIXELS],
+            depth: vec![1.0; TILE_PIXELS],
+            ids: vec![0; TILE_PIXELS],
+            winner: vec![NONE; TILE_PIXELS],
+            b1: vec![0.0; TILE_PIXELS],
+            b2: vec![0.0; TILE_PIXELS],
+        }
+    }
 }
 
 /// Where a tile's finished pixels go: rows of the frame starting at row
@@ -44,8 +68,6 @@ pub struct Target<'a> {
     pub stride: usize,
     pub y0: i32,
 }
-
-const NONE: u32 = u32::MAX;
 
 /// Edge functions of a triangle stepped across a rectangle. `e[k]` is the
 /// (biased) edge function opposite vertex k at the current pixel centre;
@@ -117,38 +139,144 @@ pub fn for_each_pixel(t: &Tri, rect: Rect, mut f: impl FnMut(i32, i32, f32, f32)
     }
 }
 
+/// The depth pass's buffers, `TILE` pixels per row.
+struct DepthBufs<'a> {
+    depth: &'a mut [f32],
+    winner: &'a mut [u32],
+    b1: &'a mut [f32],
+    b2: &'a mut [f32],
+}
+
+/// Keeps, per pixel of the tile, the nearest opaque triangle of `bin` (the
+/// first one on ties) with its depth and barycentric weights.
+fn depth_pass(p: &Prepared, bin: &Bin, rect: Rect, bufs: &mut DepthBufs) {
+    #[cfg(target_arch = "x86_64")]
+    if simd::avx() {
+        // SAFETY: `simd::avx()` checked that the CPU has AVX.
+        unsafe { depth_pass_avx(p, bin, rect, bufs) };
+        return;
+    }
+    for &ti in &bin.opaque {
+        depth_triangle::<Sse8>(&p.opaque[ti as usize], ti, rect, bufs);
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn depth_pass_avx(p: &Prepared, bin: &Bin, rect: Rect, bufs: &mut DepthBufs) {
+    for &ti in &bin.opaque {
+        depth_triangle::<simd::Avx8>(&p.opaque[ti as usize], ti, rect, bufs);
+    }
+}
+
+/// One triangle's depth pass over blocks of eight pixels of a row (aligned
+/// to the tile). A block is skipped when one edge is negative at both of
+/// its ends and taken whole when every edge is non-negative at both ends
+/// (edge functions are linear); only blocks on an edge test each pixel.
+/// Weights and depth are computed exactly as [`for_each_pixel`] does, per
+/// pixel, so the blocks change no bit.
+#[inline(always)]
+fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, bufs: &mut DepthBufs) {
+    let x0 = t.bbox[0].max(rect[0]);
+    let y0 = t.bbox[1].max(rect[1]);
+    let x1 = t.bbox[2].min(rect[2]);
+    let y1 = t.bbox[3].min(rect[3]);
+    if x0 >= x1 || y0 >= y1 {
+        return;
+    }
+    // First block column (relative to the tile) and its screen x.
+    let c0 = ((x0 - rect[0]) & !7) as usize;
+    let mut ed = Edges::new(t, rect[0] + c0 as i32, y0);
+    let s = ed.step_x;
+    let (z0, dz1, dz2) = (
+        V::splat(t.z[0]),
+        V::splat(t.z[1] - t.z[0]),
+        V::splat(t.z[2] - t.z[0]),
+    );
+    let inv_area = V::splat(ed.inv_area);
+    let zero = V::splat(0.0);
+    for y in y0..y1 {
+        let mut e = ed.row;
+        let row = (y - rect[1]) as usize * TILE as usize;
+        let mut c = c0;
+        while rect[0] + (c as i32) < x1 {
+            let xb = rect[0] + c as i32;
+            // Lanes inside the triangle's box.
+            let lo = (x0 - xb).max(0);
+            let hi = (x1 - xb).min(8);
+            let in_box = (0xFFu32 << lo) & (0xFF >> (8 - hi));
+            let ends = |k: usize| (e[k], e[k] + 7 * s[k]);
+            let mut mask = in_box;
+            let mut outside = false;
+            let mut all_in = true;
+            for k in 0..3 {
+                let (a, b) = ends(k);
+                outside |= a < 0 && b < 0;
+                all_in &= a >= 0 && b >= 0;
+            }
+            if !outside {
+                if !all_in {
+                    for l in 0..8 {
+                        let li = l as i64;
+                        let inside = (e[0] + li * s[0]) | (e[1] + li * s[1]) | (e[2] + li * s[2]);
+                        if inside < 0 {
+                            mask &= !(1 << l);
+                        }
+                    }
+                }
+                if mask != 0 {
+                    let e1: [f32; 8] = std::array::from_fn(|l| (e[1] + l as i64 * s[1]) as f32);
+                    let e2: [f32; 8] = std::array::from_fn(|l| (e[2] + l as i64 * s[2]) as f32);
+                    let w1 = V::load(&e1) * inv_area;
+                    let w2 = V::load(&e2) * inv_area;
+                    let z = z0 + w1 * dz1 + w2 * dz2;
+                    let i0 = row + c;
+                    let depth: &mut [f32; 8] =
+                        (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
+                    let old = V::load(depth);
+                    let nearer = old.gt(z).and(zero.le(z)).and(V::from_bits(mask));
+                    let m = nearer.bits();
+                    if m != 0 {
+                        store_masked(depth, z, m);
+                        let b1: &mut [f32; 8] =
+                            (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                        store_masked(b1, w1, m);
+                        let b2: &mut [f32; 8] =
+                            (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                        store_masked(b2, w2, m);
+                        for (l, w) in bufs.winner[i0..i0 + 8].iter_mut().enumerate() {
+                            if m >> l & 1 == 1 {
+                                *w = ti;
+                            }
+                        }
+                    }
+                }
+            }
+            for (e, s) in e.iter_mut().zip(s) {
+                *e += 8 * s;
+            }
+            c += 8;
+        }
+        for (r, s) in ed.row.iter_mut().zip(ed.step_y) {
+            *r += s;
+        }
+    }
+}
+
 #[inline]
 fn depth_at(t: &Tri, b1: f32, b2: f32) -> f32 {
     t.z[0] + b1 * (t.z[1] - t.z[0]) + b2 * (t.z[2] - t.z[0])
 }
 
-/// Perspective-correct attributes from screen-space weights.
-#[inline]
-fn attrs_at(t: &Tri, b1: f32, b2: f32) -> [f32; ATTRS] {
-    let p0 = (1.0 - b1 - b2) * t.inv_w[0];
-    let p1 = b1 * t.inv_w[1];
-    let p2 = b2 * t.inv_w[2];
-    let s = 1.0 / (p0 + p1 + p2);
-    let (p0, p1, p2) = (p0 * s, p1 * s, p2 * s);
-    let mut out = [0.0; ATTRS];
-    for (k, o) in out.iter_mut().enumerate() {
-        *o = p0 * t.attr[0][k] + p1 * t.attr[1][k] + p2 * t.attr[2][k];
-    }
-    out
-}
-
 /// Colour of a fragment with attributes `a` of `item`.
 #[inline]
-fn shade_attrs(item: &Item, a: &[f32; ATTRS], back: bool, eye: Vec3) -> Vec3 {
+fn shade_attrs(item: &Item, a: &[f32; ATTRS], eye: Vec3) -> Vec3 {
     let color = Vec3::new(a[6], a[7], a[8]);
     if item.unlit {
         return color;
     }
     let p = Vec3::new(a[0], a[1], a[2]);
-    let mut n = Vec3::new(a[3], a[4], a[5]);
-    if back {
-        n = -n; // two-sided lighting: light the side we see
-    }
+    let n = Vec3::new(a[3], a[4], a[5]);
     shade(&item.material, color, &item.lights, p, n, eye)
 }
 
@@ -163,78 +291,47 @@ pub fn draw_tile(
     target: &mut Target,
 ) {
     let tw = (rect[2] - rect[0]) as usize;
-    let n = tw * (rect[3] - rect[1]) as usize;
-    let at = |x: i32, y: i32| (y - rect[1]) as usize * tw + (x - rect[0]) as usize;
+    let th = (rect[3] - rect[1]) as usize;
+    let at = |x: i32, y: i32| (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
     let Scratch {
-        color,
+        r,
+        g,
+        b,
         depth,
         ids,
         winner,
-        bary,
+        b1,
+        b2,
     } = scratch;
-    reset(color, n, background);
-    reset(depth, n, 1.0);
-    reset(ids, n, 0);
-    reset(winner, n, NONE);
-    reset(bary, n, [0.0; 2]);
+    depth.fill(1.0);
+    winner.fill(NONE);
 
     // 1. Depth pass: nearest opaque triangle per pixel (first wins on ties).
-    {
-        // Plain slices: the loop then keeps their pointers in registers.
-        let (depth, winner, bary) = (&mut depth[..n], &mut winner[..n], &mut bary[..n]);
-        for &ti in &bin.opaque {
-            let t = &p.opaque[ti as usize];
-            for_each_pixel(t, rect, |x, y, b1, b2| {
-                let z = depth_at(t, b1, b2);
-                let i = at(x, y);
-                if z < depth[i] && z >= 0.0 {
-                    depth[i] = z;
-                    winner[i] = ti;
-                    bary[i] = [b1, b2];
-                }
-            });
-        }
+    depth_pass(
+        p,
+        bin,
+        rect,
+        &mut DepthBufs {
+            depth,
+            winner,
+            b1,
+            b2,
+        },
+    );
+    // 2. Shade each visible pixel once.
+    fragment::shade_visible(
+        p,
+        eye,
+        background,
+        (tw, th),
+        &Visible { winner, b1, b2 },
+        &mut Shaded { r, g, b, ids },
+    );
+    fn put(rgb: [&mut [f32]; 3], i: usize, c: Vec3) {
+        rgb[0][i] = c.x;
+        rgb[1][i] = c.y;
+        rgb[2][i] = c.z;
     }
-    // 2. Shade each visible pixel once, in batches of pixels of one item.
-    let mut batch = Batch::default();
-    let mut batch_item = NONE;
-    let mut shaded = [Vec3::ZERO; LANES];
-    let mut flush = |batch: &mut Batch, item: u32, color: &mut [Vec3]| {
-        if batch.len == 0 {
-            return;
-        }
-        let it = &p.items[item as usize];
-        shade_batch(&it.material, &it.lights, eye, batch, &mut shaded);
-        for k in 0..batch.len {
-            color[batch.dest[k] as usize] = shaded[k];
-        }
-        batch.len = 0;
-    };
-    for i in 0..n {
-        let ti = winner[i];
-        if ti == NONE {
-            continue;
-        }
-        let t = &p.opaque[ti as usize];
-        let item = &p.items[t.item as usize];
-        ids[i] = item.id;
-        let a = attrs_at(t, bary[i][0], bary[i][1]);
-        let c = Vec3::new(a[6], a[7], a[8]);
-        if item.unlit {
-            color[i] = c;
-            continue;
-        }
-        if t.item != batch_item || batch.len == LANES {
-            flush(&mut batch, batch_item, color);
-            batch_item = t.item;
-        }
-        let mut nrm = Vec3::new(a[3], a[4], a[5]);
-        if t.back {
-            nrm = -nrm;
-        }
-        batch.push(i as u32, Vec3::new(a[0], a[1], a[2]), nrm, c);
-    }
-    flush(&mut batch, batch_item, color);
     // 3. Lines and points, depth-tested and shaded as they come.
     for &li in &bin.lines {
         let l = &p.lines[li as usize];
@@ -243,7 +340,7 @@ pub fn draw_tile(
             let i = at(x, y);
             if z < depth[i] && z >= 0.0 {
                 depth[i] = z;
-                color[i] = shade_attrs(item, &facing(a, eye), false, eye);
+                put([r, g, b], i, shade_attrs(item, &facing(a, eye), eye));
                 ids[i] = item.id;
             }
         });
@@ -251,13 +348,13 @@ pub fn draw_tile(
     for &pi in &bin.points {
         let pt: &Point = &p.points[pi as usize];
         let item = &p.items[pt.item as usize];
-        let c = shade_attrs(item, &facing(pt.attr, eye), false, eye);
+        let c = shade_attrs(item, &facing(pt.attr, eye), eye);
         for y in pt.bbox[1].max(rect[1])..pt.bbox[3].min(rect[3]) {
             for x in pt.bbox[0].max(rect[0])..pt.bbox[2].min(rect[2]) {
                 let i = at(x, y);
                 if pt.z < depth[i] && pt.z >= 0.0 {
                     depth[i] = pt.z;
-                    color[i] = c;
+                    put([r, g, b], i, c);
                     ids[i] = item.id;
                 }
             }
@@ -269,13 +366,13 @@ pub fn draw_tile(
         let t = &p.transparent[ti as usize];
         let item = &p.items[t.item as usize];
         let alpha = item.material.alpha;
-        for_each_pixel(t, rect, |x, y, b1, b2| {
-            let z = depth_at(t, b1, b2);
+        for_each_pixel(t, rect, |x, y, w1, w2| {
+            let z = depth_at(t, w1, w2);
             let i = at(x, y);
             if z < depth[i] && z >= 0.0 {
-                let a = attrs_at(t, b1, b2);
-                let c = shade_attrs(item, &a, t.back, eye);
-                color[i] = c * alpha + color[i] * (1.0 - alpha);
+                let c = shade_attrs(item, &t.attrs_at(w1, w2), eye);
+                let under = Vec3::new(r[i], g[i], b[i]);
+                put([r, g, b], i, c * alpha + under * (1.0 - alpha));
                 ids[i] = item.id;
             }
         });
@@ -283,18 +380,14 @@ pub fn draw_tile(
     // 5. Into the frame.
     for (row, y) in (rect[1]..rect[3]).enumerate() {
         let dst = (y - target.y0) as usize * target.stride + rect[0] as usize;
-        let src = row * tw;
+        let src = row * TILE as usize;
         for k in 0..tw {
-            target.color[dst + k] = super::frame::pack_rgb(color[src + k]);
+            target.color[dst + k] =
+                super::frame::pack_rgb(Vec3::new(r[src + k], g[src + k], b[src + k]));
         }
         target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
         target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
     }
-}
-
-fn reset<T: Copy>(v: &mut Vec<T>, n: usize, value: T) {
-    v.clear();
-    v.resize(n, value);
 }
 
 /// Lines and points have no "side": turn their normal towards the eye.
@@ -366,14 +459,15 @@ mod tests {
 
     fn tri(pts: [(f32, f32); 3]) -> Tri {
         let fx = |v: f32| (v * SUBPIXEL as f32).round() as i64;
+        let (base, d1, d2) = super::super::prepare::planes(&[[0.0; ATTRS]; 3], &[1.0; 3]);
         let mut t = Tri {
             x: pts.map(|p| fx(p.0)),
             y: pts.map(|p| fx(p.1)),
             z: [0.5; 3],
-            inv_w: [1.0; 3],
-            attr: [[0.0; ATTRS]; 3],
+            base,
+            d1,
+            d2,
             item: 0,
-            back: false,
             bbox: [0, 0, 64, 64],
         };
         let area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);

@@ -12,7 +12,7 @@
 //! the cut-off (the OpenGL spot exponent Inventor maps dropOffRate to).
 //! Lights are prepared once per frame in world space.
 
-use super::simd::F4;
+use super::simd::{Sse8, V8};
 use crate::scene::{Light, LightKind, Material};
 use glam::{Mat4, Vec3};
 
@@ -128,60 +128,11 @@ impl ShadeMaterial {
     }
 }
 
-/// Pixels shaded together: the lighting loops below run over fixed-size
-/// lane arrays so the compiler turns them into SIMD instructions (each lane
-/// does exactly the arithmetic a lone pixel would, so results do not depend
-/// on how pixels are grouped).
-pub const LANES: usize = 8;
-type Lanes = [f32; LANES];
-
-/// Inputs of up to [`LANES`] pixels of one item (same material and lights),
-/// structure-of-arrays. Unused lanes hold harmless values.
-#[derive(Clone, Debug)]
-pub struct Batch {
-    pub len: usize,
-    /// World position, unit normal (facing the viewer), diffuse colour.
-    pub p: [Lanes; 3],
-    pub n: [Lanes; 3],
-    pub c: [Lanes; 3],
-    /// Where each lane's result goes (pixel index in the tile).
-    pub dest: [u32; LANES],
-}
-
-impl Default for Batch {
-    fn default() -> Self {
-        Batch {
-            len: 0,
-            p: [[0.0; LANES]; 3],
-            n: [[0.0; LANES], [0.0; LANES], [1.0; LANES]],
-            c: [[0.0; LANES]; 3],
-            dest: [0; LANES],
-        }
-    }
-}
-
-impl Batch {
-    /// Adds a pixel; the caller flushes when `len == LANES`.
-    #[inline]
-    pub fn push(&mut self, dest: u32, p: Vec3, n: Vec3, c: Vec3) {
-        let k = self.len;
-        self.p[0][k] = p.x;
-        self.p[1][k] = p.y;
-        self.p[2][k] = p.z;
-        self.n[0][k] = n.x;
-        self.n[1][k] = n.y;
-        self.n[2][k] = n.z;
-        self.c[0][k] = c.x;
-        self.c[1][k] = c.y;
-        self.c[2][k] = c.z;
-        self.dest[k] = dest;
-        self.len += 1;
-    }
-}
-
 /// The VRML97 colour of a surface point `p` with normal `n` (already
 /// facing the viewer for two-sided surfaces), seen from `eye`. `diffuse` is
 /// the material's diffuse colour or the per-vertex colour that replaces it.
+/// One pixel through the same [`shade8`] the shading pass uses (all lanes
+/// alike), so a lone pixel gets exactly the bits a block would give it.
 pub fn shade(
     m: &ShadeMaterial,
     diffuse: Vec3,
@@ -190,194 +141,185 @@ pub fn shade(
     n: Vec3,
     eye: Vec3,
 ) -> Vec3 {
-    let mut b = Batch::default();
-    b.push(0, p, n, diffuse);
-    let mut out = [Vec3::ZERO; LANES];
-    shade_batch(m, lights, eye, &b, &mut out);
-    out[0]
-}
-
-/// Shades every lane of `b` (see [`shade`]) into `out`. Normals need not be
-/// unit length (they are normalised here). Runs four lanes at a time in
-/// SSE2 registers (see `simd`); each lane does exactly the arithmetic a lone
-/// pixel would, so grouping never changes a result.
-pub fn shade_batch(
-    m: &ShadeMaterial,
-    lights: &[WorldLight],
-    eye: Vec3,
-    b: &Batch,
-    out: &mut [Vec3; LANES],
-) {
-    for half in 0..LANES / 4 {
-        if half * 4 >= b.len {
-            break;
-        }
-        let r = half * 4..half * 4 + 4;
-        let load3 = |v: &[Lanes; 3]| {
-            [
-                F4::load(&v[0][r.clone()]),
-                F4::load(&v[1][r.clone()]),
-                F4::load(&v[2][r.clone()]),
-            ]
-        };
-        let c = shade4(m, lights, eye, load3(&b.p), load3(&b.n), load3(&b.c));
-        let [cr, cg, cb] = c.map(F4::to_array);
-        for k in 0..4 {
-            out[half * 4 + k] = Vec3::new(cr[k], cg[k], cb[k]);
-        }
-    }
+    let s = |v: Vec3| [Sse8::splat(v.x), Sse8::splat(v.y), Sse8::splat(v.z)];
+    let c = shade8(m, lights, eye, s(p), s(n), s(diffuse));
+    let lane0 = |v: Sse8| {
+        let mut a = [0.0; 8];
+        v.store(&mut a);
+        a[0]
+    };
+    Vec3::new(lane0(c[0]), lane0(c[1]), lane0(c[2]))
 }
 
 #[inline(always)]
-fn dot(a: &[F4; 3], b: &[F4; 3]) -> F4 {
+fn dot<V: V8>(a: &[V; 3], b: &[V; 3]) -> V {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+#[inline(always)]
+fn splat3<V: V8>(v: Vec3) -> [V; 3] {
+    [V::splat(v.x), V::splat(v.y), V::splat(v.z)]
 }
 
 /// `v / |v|`, or zero for a zero vector; also returns |v|.
 #[inline(always)]
-fn normalize(v: [F4; 3]) -> ([F4; 3], F4) {
+fn normalize<V: V8>(v: [V; 3]) -> ([V; 3], V) {
     let len = dot(&v, &v).sqrt();
-    let zero = F4::splat(0.0);
-    let inv = len.gt(zero).select(F4::splat(1.0).div(len), zero);
+    let zero = V::splat(0.0);
+    let inv = V::select(len.gt(zero), V::splat(1.0) / len, zero);
     ([v[0] * inv, v[1] * inv, v[2] * inv], len)
 }
 
-/// The lighting model for four pixels.
-fn shade4(
+/// The lighting model for eight pixels of one material: world positions
+/// `p`, normals `n` (any length; normalised here) and diffuse colours.
+/// Every lane does exactly the arithmetic a lone pixel would, so grouping
+/// never changes a result; per-light and per-material constants are
+/// computed once per call, outside the lane arithmetic.
+#[inline(always)]
+pub fn shade8<V: V8>(
     m: &ShadeMaterial,
     lights: &[WorldLight],
     eye: Vec3,
-    p: [F4; 3],
-    n: [F4; 3],
-    diffuse: [F4; 3],
-) -> [F4; 3] {
-    let zero = F4::splat(0.0);
-    let one = F4::splat(1.0);
+    p: [V; 3],
+    n: [V; 3],
+    diffuse: [V; 3],
+) -> [V; 3] {
+    let zero = V::splat(0.0);
+    let one = V::splat(1.0);
     let (n, _) = normalize(n);
-    let (v, _) = normalize([
-        F4::splat(eye.x) - p[0],
-        F4::splat(eye.y) - p[1],
-        F4::splat(eye.z) - p[2],
-    ]);
-    let mut sum = [
-        F4::splat(m.emissive.x),
-        F4::splat(m.emissive.y),
-        F4::splat(m.emissive.z),
-    ];
+    let e: [V; 3] = splat3(eye);
+    let (v, _) = normalize([e[0] - p[0], e[1] - p[1], e[2] - p[2]]);
+    let mut sum: [V; 3] = splat3(m.emissive);
     let use_specular = m.specular != Vec3::ZERO;
     for l in lights {
         // Unit vector to the light and attenuation × spot factor per lane
         // (0 where the light does not reach).
         let (to_light, factor) = match l.kind {
-            WorldLightKind::Directional { to_light } => (
-                [
-                    F4::splat(to_light.x),
-                    F4::splat(to_light.y),
-                    F4::splat(to_light.z),
-                ],
-                one,
-            ),
+            WorldLightKind::Directional { to_light } => (splat3(to_light), one),
             WorldLightKind::Point {
                 location, radius, ..
             }
             | WorldLightKind::Spot {
                 location, radius, ..
             } => {
-                let d = [
-                    F4::splat(location.x) - p[0],
-                    F4::splat(location.y) - p[1],
-                    F4::splat(location.z) - p[2],
-                ];
-                let (to_light, dist) = normalize(d);
-                let d2 = dist * dist;
+                let loc: [V; 3] = splat3(location);
+                let (to_light, dist) = normalize([loc[0] - p[0], loc[1] - p[1], loc[2] - p[2]]);
                 let a = l.attenuation;
-                let denom = (F4::splat(a.x) + F4::splat(a.y) * dist + F4::splat(a.z) * d2).max(one);
-                let reach = dist.le(F4::splat(radius)).and(dist.gt(zero));
-                let mut factor = reach.select(one.div(denom), zero);
-                if let WorldLightKind::Spot {
-                    axis,
-                    cos_cut_off,
-                    cos_beam,
-                    cut_off,
-                    beam_width,
-                    exponent,
-                    ..
-                } = l.kind
-                {
-                    let cos = zero
-                        - (to_light[0] * F4::splat(axis.x)
-                            + to_light[1] * F4::splat(axis.y)
-                            + to_light[2] * F4::splat(axis.z));
-                    let inside = cos.gt(F4::splat(cos_cut_off));
-                    factor = inside.select(factor, zero);
-                    let full = F4::splat(cos_beam).le(cos);
-                    // Lanes lit by the spot but outside its full beam need the ramp.
-                    let partial = inside.and(factor.gt(zero)).and(F4::splat(cos_beam).gt(cos));
-                    if exponent > 0.0 || partial.any() {
-                        factor = spot_lanes(factor, cos, cos_beam, cut_off, beam_width, exponent);
-                    } else {
-                        factor = full.select(factor, zero);
-                    }
+                let denom =
+                    (V::splat(a.x) + V::splat(a.y) * dist + V::splat(a.z) * (dist * dist)).max(one);
+                let reach = dist.le(V::splat(radius)).and(dist.gt(zero));
+                let mut factor = V::select(reach, one / denom, zero);
+                if let WorldLightKind::Spot { axis, .. } = l.kind {
+                    let cos = zero - dot(&to_light, &splat3(axis));
+                    factor = spot(&l.kind, factor, cos);
                 }
                 (to_light, factor)
             }
         };
         let amb = l.ambient * m.ambient_intensity;
         let ndl = dot(&n, &to_light).max(zero);
-        let lit = ndl.gt(zero);
         let spec = if use_specular {
             let (h, _) = normalize([to_light[0] + v[0], to_light[1] + v[1], to_light[2] + v[2]]);
             let ndh = dot(&n, &h).max(zero);
-            lit.select(pow4(ndh, m.exponent as u32), zero)
+            V::select(ndl.gt(zero), powi(ndh, m.exponent as u32), zero)
         } else {
             zero
         };
         for ch in 0..3 {
-            let term = F4::splat(amb[ch]) * diffuse[ch]
-                + F4::splat(l.color[ch]) * diffuse[ch] * ndl
-                + F4::splat(l.color[ch] * m.specular[ch]) * spec;
+            let term = V::splat(amb[ch]) * diffuse[ch]
+                + V::splat(l.color[ch]) * diffuse[ch] * ndl
+                + V::splat(l.color[ch] * m.specular[ch]) * spec;
             sum[ch] = sum[ch] + factor * term;
         }
     }
     sum
 }
 
-/// The spot term per lane, multiplied into `factor`: `cos^exponent`
-/// (Inventor dropOffRate) or the VRML97 ramp — 1 within the beam width,
-/// linear in the angle down to 0 at the cut-off. Lanes with `factor` 0 stay 0.
-#[inline(never)]
-fn spot_lanes(
-    factor: F4,
-    cos: F4,
-    cos_beam: f32,
-    cut_off: f32,
-    beam_width: f32,
-    exponent: f32,
-) -> F4 {
-    let mut f = factor.to_array();
-    let c = cos.to_array();
-    for k in 0..4 {
-        if f[k] == 0.0 {
-            continue;
-        }
-        let spot = if exponent > 0.0 {
-            libm::powf(c[k], exponent)
-        } else if c[k] >= cos_beam {
-            1.0
-        } else {
-            let angle = libm::acosf(c[k].clamp(-1.0, 1.0));
-            ((angle - cut_off) / (beam_width - cut_off)).clamp(0.0, 1.0)
-        };
-        f[k] *= spot;
+/// The spot term multiplied into `factor`, for lanes whose direction from
+/// the light makes cosine `cos` with the spot axis: 0 outside the cut-off;
+/// inside it either `cos^exponent` (Inventor dropOffRate) or the VRML97
+/// ramp — 1 within the beam width, linear in the angle down to 0 at the
+/// cut-off.
+#[inline(always)]
+fn spot<V: V8>(kind: &WorldLightKind, factor: V, cos: V) -> V {
+    let WorldLightKind::Spot {
+        cos_cut_off,
+        cos_beam,
+        cut_off,
+        beam_width,
+        exponent,
+        ..
+    } = *kind
+    else {
+        return factor;
+    };
+    let zero = V::splat(0.0);
+    let inside = cos.gt(V::splat(cos_cut_off)).and(factor.gt(zero));
+    let factor = V::select(inside, factor, zero);
+    if inside.bits() == 0 {
+        return factor;
     }
-    F4::load(&f)
+    if exponent > 0.0 {
+        let c = cos.max(zero);
+        if exponent.fract() == 0.0 && exponent <= 128.0 {
+            // An integer exponent (dropOffRate k/128): exact repeated squaring.
+            return factor * powi(c, exponent as u32);
+        }
+        let mut f = [0.0; 8];
+        let mut cs = [0.0; 8];
+        factor.store(&mut f);
+        c.store(&mut cs);
+        for k in 0..8 {
+            if f[k] != 0.0 {
+                f[k] *= libm::powf(cs[k], exponent);
+            }
+        }
+        return V::load(&f);
+    }
+    let full = V::splat(cos_beam).le(cos);
+    if full.bits() & inside.bits() == inside.bits() {
+        return factor;
+    }
+    let ramp = (acos(cos) - V::splat(cut_off)) / V::splat(beam_width - cut_off);
+    let ramp = ramp.max(zero).min(V::splat(1.0));
+    V::select(full, factor, factor * ramp)
+}
+
+/// arccos per lane from Abramowitz & Stegun, Handbook of Mathematical
+/// Functions, 4.4.46: `acos x = √(1−x)·(a0 + a1·x + … + a7·x⁷)` for
+/// 0 ≤ x ≤ 1 (absolute error ≤ 2·10⁻⁸), and `acos x = π − acos(−x)` below
+/// 0. Only + − × √, so every machine gives the same bits.
+#[inline(always)]
+fn acos<V: V8>(x: V) -> V {
+    // a0 is A&S's coefficient (one f32 ulp below π/2), not π/2 itself.
+    #[allow(clippy::approx_constant)]
+    const A: [f32; 8] = [
+        1.570_796_3,
+        -0.214_598_8,
+        0.088_978_99,
+        -0.050_174_303,
+        0.030_891_88,
+        -0.017_088_126,
+        0.006_670_09,
+        -0.001_262_491_1,
+    ];
+    let zero = V::splat(0.0);
+    let one = V::splat(1.0);
+    let neg = zero.gt(x);
+    let a = V::select(neg, zero - x, x).min(one);
+    let mut poly = V::splat(A[7]);
+    for &c in A[..7].iter().rev() {
+        poly = poly * a + V::splat(c);
+    }
+    let r = (one - a).sqrt() * poly;
+    V::select(neg, V::splat(std::f32::consts::PI) - r, r)
 }
 
 /// `x^e` per lane by repeated squaring: the same bits on every machine and
 /// build, unlike platform `powf`.
 #[inline(always)]
-fn pow4(mut x: F4, mut e: u32) -> F4 {
-    let mut r = F4::splat(1.0);
+fn powi<V: V8>(mut x: V, mut e: u32) -> V {
+    let mut r = V::splat(1.0);
     while e > 0 {
         if e & 1 == 1 {
             r = r * x;
@@ -496,7 +438,19 @@ mod tests {
         let tilted = Vec3::new(0.2, 0.0, 1.0).normalize();
         let c = shade(&m, Vec3::ZERO, &[l], Vec3::ZERO, tilted, Vec3::Z * 3.0);
         assert!((c.x - tilted.z.powi(64)).abs() < 1e-6);
-        assert_eq!(pow4(F4::splat(0.5), 10).to_array(), [1.0 / 1024.0; 4]);
+        let mut out = [0.0; 8];
+        powi(Sse8::splat(0.5), 10).store(&mut out);
+        assert_eq!(out, [1.0 / 1024.0; 8]);
+    }
+
+    #[test]
+    fn acos_matches_libm_closely() {
+        for k in 0..=2000 {
+            let x = -1.0 + k as f32 / 1000.0;
+            let mut out = [0.0; 8];
+            acos(Sse8::splat(x)).store(&mut out);
+            assert!((out[0] - libm::acosf(x)).abs() < 1e-6, "{x}: {}", out[0]);
+        }
     }
 
     #[test]

@@ -1,10 +1,16 @@
-//! Four f32 lanes for the shader. On x86-64 these are SSE2 registers (part
-//! of the baseline, so no run-time detection and the same instructions on
-//! every x86-64 machine); elsewhere plain arrays. Only IEEE-exact operations
-//! (+ − × ÷ √, compares, selects) are offered, so both versions give the
-//! same bits as scalar code doing the same steps.
+//! Lanes of f32 for the shader. Only IEEE-exact operations (+ − × ÷ √,
+//! compares, selects) are offered and never a fused multiply-add, so every
+//! implementation gives the same bits as scalar code doing the same steps.
+//!
+//! * [`F4`]: four lanes in an SSE2 register (part of the x86-64 baseline, so
+//!   no run-time detection); plain arrays elsewhere.
+//! * [`V8`]: the eight-lane interface the shading pass is written against,
+//!   with [`Sse8`] (two `F4`s, always available) and, on x86-64, [`Avx8`]
+//!   (one 256-bit AVX register, used only after run-time detection; see
+//!   [`avx`]). AVX without FMA does lane for lane exactly what SSE2 does, so
+//!   the picture does not depend on which one runs.
 
-use std::ops::{Add, Mul, Sub};
+use std::ops::{Add, Div, Mul, Sub};
 
 #[cfg(target_arch = "x86_64")]
 mod imp {
@@ -78,9 +84,23 @@ mod imp {
         pub fn and(self, o: M4) -> M4 {
             unsafe { M4(_mm_and_ps(self.0, o.0)) }
         }
+        /// One bit per lane (the lane's sign bit).
         #[inline(always)]
-        pub fn any(self) -> bool {
-            unsafe { _mm_movemask_ps(self.0) != 0 }
+        pub fn bits(self) -> u32 {
+            unsafe { _mm_movemask_ps(self.0) as u32 }
+        }
+        /// The mask as lanes of all-ones / all-zero bits.
+        #[inline(always)]
+        pub fn as_f4(self) -> F4 {
+            F4(self.0)
+        }
+    }
+
+    impl F4 {
+        /// Reads lanes of all-ones / all-zero bits as a mask.
+        #[inline(always)]
+        pub fn as_mask(self) -> M4 {
+            M4(self.0)
         }
     }
 }
@@ -143,21 +163,22 @@ mod imp {
         pub fn and(self, o: M4) -> M4 {
             M4(std::array::from_fn(|k| self.0[k] && o.0[k]))
         }
-        pub fn any(self) -> bool {
-            self.0.iter().any(|&b| b)
+        pub fn bits(self) -> u32 {
+            (0..4).map(|k| (self.0[k] as u32) << k).sum()
+        }
+        pub fn as_f4(self) -> F4 {
+            F4(self.0.map(|b| f32::from_bits(if b { !0 } else { 0 })))
+        }
+    }
+
+    impl F4 {
+        pub fn as_mask(self) -> M4 {
+            M4(self.0.map(|f| f.to_bits() >> 31 == 1))
         }
     }
 }
 
 pub use imp::F4;
-
-impl F4 {
-    /// Lane-wise `a > b ? a : b`.
-    #[inline(always)]
-    pub fn max(self, o: F4) -> F4 {
-        self.gt(o).select(self, o)
-    }
-}
 
 impl Add for F4 {
     type Output = F4;
@@ -181,9 +202,265 @@ impl Mul for F4 {
     }
 }
 
+/// Eight f32 lanes. A mask is a value whose lanes are all-ones or all-zero
+/// bits (what the comparisons return), as in SSE/AVX.
+pub trait V8:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
+    fn splat(v: f32) -> Self;
+    fn load(a: &[f32; 8]) -> Self;
+    fn store(self, a: &mut [f32; 8]);
+    fn sqrt(self) -> Self;
+    fn gt(self, o: Self) -> Self;
+    fn le(self, o: Self) -> Self;
+    /// Lane-wise `mask ? a : b`.
+    fn select(mask: Self, a: Self, b: Self) -> Self;
+    fn and(self, o: Self) -> Self;
+    /// One bit per lane: the lane's sign bit (set for true mask lanes).
+    fn bits(self) -> u32;
+
+    /// A mask with lane k true where bit k of `bits` is set.
+    #[inline(always)]
+    fn from_bits(bits: u32) -> Self {
+        let a = std::array::from_fn(|k| f32::from_bits(if bits >> k & 1 == 1 { !0 } else { 0 }));
+        Self::load(&a)
+    }
+    /// Lane-wise `a > b ? a : b`.
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        Self::select(self.gt(o), self, o)
+    }
+    #[inline(always)]
+    fn min(self, o: Self) -> Self {
+        Self::select(o.gt(self), self, o)
+    }
+}
+
+/// Eight lanes as two SSE2 registers (or arrays off x86-64): the baseline.
+#[derive(Clone, Copy, Debug)]
+pub struct Sse8(F4, F4);
+
+impl V8 for Sse8 {
+    #[inline(always)]
+    fn splat(v: f32) -> Self {
+        Sse8(F4::splat(v), F4::splat(v))
+    }
+    #[inline(always)]
+    fn load(a: &[f32; 8]) -> Self {
+        Sse8(F4::load(&a[..4]), F4::load(&a[4..]))
+    }
+    #[inline(always)]
+    fn store(self, a: &mut [f32; 8]) {
+        a[..4].copy_from_slice(&self.0.to_array());
+        a[4..].copy_from_slice(&self.1.to_array());
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Sse8(self.0.sqrt(), self.1.sqrt())
+    }
+    #[inline(always)]
+    fn gt(self, o: Self) -> Self {
+        Sse8(self.0.gt(o.0).as_f4(), self.1.gt(o.1).as_f4())
+    }
+    #[inline(always)]
+    fn le(self, o: Self) -> Self {
+        Sse8(self.0.le(o.0).as_f4(), self.1.le(o.1).as_f4())
+    }
+    #[inline(always)]
+    fn select(mask: Self, a: Self, b: Self) -> Self {
+        Sse8(
+            mask.0.as_mask().select(a.0, b.0),
+            mask.1.as_mask().select(a.1, b.1),
+        )
+    }
+    #[inline(always)]
+    fn and(self, o: Self) -> Self {
+        Sse8(
+            self.0.as_mask().and(o.0.as_mask()).as_f4(),
+            self.1.as_mask().and(o.1.as_mask()).as_f4(),
+        )
+    }
+    #[inline(always)]
+    fn bits(self) -> u32 {
+        self.0.as_mask().bits() | self.1.as_mask().bits() << 4
+    }
+}
+
+macro_rules! ops8 {
+    ($t:ty, $add:expr, $sub:expr, $mul:expr, $div:expr) => {
+        impl Add for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn add(self, o: $t) -> $t {
+                $add(self, o)
+            }
+        }
+        impl Sub for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn sub(self, o: $t) -> $t {
+                $sub(self, o)
+            }
+        }
+        impl Mul for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn mul(self, o: $t) -> $t {
+                $mul(self, o)
+            }
+        }
+        impl Div for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn div(self, o: $t) -> $t {
+                $div(self, o)
+            }
+        }
+    };
+}
+
+ops8!(
+    Sse8,
+    |a: Sse8, b: Sse8| Sse8(a.0 + b.0, a.1 + b.1),
+    |a: Sse8, b: Sse8| Sse8(a.0 - b.0, a.1 - b.1),
+    |a: Sse8, b: Sse8| Sse8(a.0 * b.0, a.1 * b.1),
+    |a: Sse8, b: Sse8| Sse8(a.0.div(b.0), a.1.div(b.1))
+);
+
+#[cfg(target_arch = "x86_64")]
+pub use avx_lanes::Avx8;
+
+#[cfg(target_arch = "x86_64")]
+mod avx_lanes {
+    use super::*;
+    use std::arch::x86_64::*;
+
+    /// Eight lanes in one AVX register. Only use inside a function compiled
+    /// with `#[target_feature(enable = "avx")]` after [`super::avx`] said yes.
+    #[derive(Clone, Copy, Debug)]
+    pub struct Avx8(__m256);
+
+    // SAFETY (every `unsafe` block below): these run only inside functions
+    // compiled for AVX and called after run-time detection (see `avx`).
+    impl V8 for Avx8 {
+        #[inline(always)]
+        fn splat(v: f32) -> Self {
+            unsafe { Avx8(_mm256_set1_ps(v)) }
+        }
+        #[inline(always)]
+        fn load(a: &[f32; 8]) -> Self {
+            unsafe { Avx8(_mm256_loadu_ps(a.as_ptr())) }
+        }
+        #[inline(always)]
+        fn store(self, a: &mut [f32; 8]) {
+            unsafe { _mm256_storeu_ps(a.as_mut_ptr(), self.0) }
+        }
+        #[inline(always)]
+        fn sqrt(self) -> Self {
+            unsafe { Avx8(_mm256_sqrt_ps(self.0)) }
+        }
+        #[inline(always)]
+        fn gt(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_cmp_ps::<_CMP_GT_OQ>(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn le(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_cmp_ps::<_CMP_LE_OQ>(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn select(mask: Self, a: Self, b: Self) -> Self {
+            unsafe { Avx8(_mm256_blendv_ps(b.0, a.0, mask.0)) }
+        }
+        #[inline(always)]
+        fn and(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_and_ps(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn bits(self) -> u32 {
+            unsafe { _mm256_movemask_ps(self.0) as u32 }
+        }
+    }
+
+    ops8!(
+        Avx8,
+        |a: Avx8, b: Avx8| unsafe { Avx8(_mm256_add_ps(a.0, b.0)) },
+        |a: Avx8, b: Avx8| unsafe { Avx8(_mm256_sub_ps(a.0, b.0)) },
+        |a: Avx8, b: Avx8| unsafe { Avx8(_mm256_mul_ps(a.0, b.0)) },
+        |a: Avx8, b: Avx8| unsafe { Avx8(_mm256_div_ps(a.0, b.0)) }
+    );
+}
+
+/// Whether the AVX path may run: the CPU has AVX and `ANIMED_SIMD` is not
+/// `sse2` (set it to compare the two paths; they give the same bytes).
+pub fn avx() -> bool {
+    use std::sync::OnceLock;
+    static AVX: OnceLock<bool> = OnceLock::new();
+    *AVX.get_or_init(|| {
+        let forced_off = std::env::var("ANIMED_SIMD").is_ok_and(|v| v == "sse2");
+        #[cfg(target_arch = "x86_64")]
+        {
+            !forced_off && std::arch::is_x86_feature_detected!("avx")
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let _ = forced_off;
+            false
+        }
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn eight_lane_ops<V: V8>() -> Vec<[f32; 8]> {
+        let a = V::load(&[1.5, -2.25, 3.0e-3, 7.0, 0.1, 1e-30, -0.0, 3.0]);
+        let b = V::load(&[0.3, 4.0, -1.0e5, 7.0, 0.7, 3.0, 2.0, 9.0]);
+        let mut out = Vec::new();
+        for v in [
+            a + b,
+            a - b,
+            a * b,
+            a / b,
+            b.sqrt(),
+            a.max(b),
+            a.min(b),
+            V::select(a.gt(b), a, b * b),
+            V::select(a.le(b).and(V::from_bits(0b1010_1010)), a, b),
+        ] {
+            let mut o = [0.0; 8];
+            v.store(&mut o);
+            out.push(o);
+        }
+        assert_eq!(a.gt(b).bits(), 0b0000_0101);
+        out
+    }
+
+    #[test]
+    fn eight_lanes_match_scalar_and_each_other() {
+        let sse = eight_lane_ops::<Sse8>();
+        assert_eq!(sse[0][0], 1.5f32 + 0.3);
+        assert_eq!(sse[3][1], -2.25f32 / 4.0);
+        assert_eq!(sse[4][1], 2.0);
+        assert_eq!(
+            sse[7],
+            [1.5, 16.0, 3.0e-3, 49.0, 0.7f32 * 0.7, 9.0, 4.0, 81.0]
+        );
+        #[cfg(target_arch = "x86_64")]
+        if avx() {
+            // SAFETY: avx() checked the CPU.
+            let avx = unsafe { avx_ops() };
+            for (s, a) in sse.iter().zip(&avx) {
+                assert_eq!(s.map(f32::to_bits), a.map(f32::to_bits));
+            }
+        }
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    unsafe fn avx_ops() -> Vec<[f32; 8]> {
+        eight_lane_ops::<Avx8>()
+    }
 
     #[test]
     fn lanes_match_scalar_arithmetic() {
@@ -194,16 +471,12 @@ mod tests {
             assert_eq!((va + vb).to_array()[k], a[k] + b[k]);
             assert_eq!((va * vb).to_array()[k], a[k] * b[k]);
             assert_eq!(va.div(vb).to_array()[k], a[k] / b[k]);
-            assert_eq!(
-                va.max(vb).to_array()[k],
-                if a[k] > b[k] { a[k] } else { b[k] }
-            );
         }
         assert_eq!(
             F4::load(&[4.0, 9.0, 2.0, 0.0]).sqrt().to_array(),
             [2.0, 3.0, 2f32.sqrt(), 0.0]
         );
-        assert!(va.gt(vb).any());
-        assert!(!va.gt(F4::splat(100.0)).any());
+        assert_eq!(va.gt(vb).bits(), 0b0101);
+        assert_eq!(va.gt(F4::splat(100.0)).bits(), 0);
     }
 }

@@ -1,3 +1,4 @@
+use super::Texture;
 use glam::Vec3;
 
 /// VRML97 Material fields (ISO/IEC 14772-1 §6.27), colours linear 0..1.
@@ -11,6 +12,9 @@ pub struct Material {
     /// 0..1 as in VRML97; the specular exponent is `shininess * 128`.
     pub shininess: f32,
     pub transparency: f32,
+    /// An image texture (VRML97 Appearance.texture, Inventor Texture2, OBJ
+    /// map_Kd, glTF baseColorTexture); drawn only on meshes with texcoords.
+    pub texture: Option<Texture>,
 }
 
 impl Default for Material {
@@ -24,6 +28,7 @@ impl Default for Material {
             emissive: Vec3::ZERO,
             shininess: 0.2,
             transparency: 0.0,
+            texture: None,
         }
     }
 }

@@ -1,4 +1,4 @@
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 /// Geometry ready to draw: indexed triangles, lines and points over one
 /// vertex array. Readers unweld vertices where normals or colours differ per
@@ -12,6 +12,9 @@ pub struct Mesh {
     pub normals: Vec<Vec3>,
     /// Per-vertex colours (replace the material's diffuse), empty if none.
     pub colors: Vec<Vec3>,
+    /// Per-vertex texture coordinates (s right, t up, as VRML), same length
+    /// as `positions`, or empty when the mesh has none.
+    pub texcoords: Vec<Vec2>,
     /// Counter-clockwise triangles (front faces CCW seen from outside).
     pub triangles: Vec<[u32; 3]>,
     pub lines: Vec<[u32; 2]>,

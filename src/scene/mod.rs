@@ -3,21 +3,30 @@
 //!
 //! Nodes live in an arena (`Scene::nodes`) addressed by [`NodeId`]; a node's
 //! place in the tree is `parent` + `children`. Meshes and materials are shared
-//! by id so that DEF/USE in the files maps onto sharing here.
+//! by id (images too, [`ImageId`]) so that DEF/USE in the files maps onto sharing here.
 
+mod clips;
+mod image;
 mod light;
 mod material;
 mod mesh;
 mod node;
 pub mod normals;
 pub mod primitives;
+mod texture;
 mod transform;
 
+pub use clips::{Clip, ClipRef, Clips};
+pub use image::{
+    check_size as check_image_size, Image, ImageError, ImageId, ImageSource, MipLevel,
+    MAX_IMAGE_PIXELS, MAX_IMAGE_SIDE, MAX_SCENE_IMAGE_PIXELS,
+};
 pub use light::{Camera, CameraKind, Light, LightKind};
 pub use material::Material;
 pub use mesh::Mesh;
 pub use node::{Node, NodeKind, RenderStyle, Shape};
 pub use normals::{mesh_from_polygons, Binding, MeshError, PolyOptions};
+pub use texture::{TexTransform, TexTransformOrder, Texture, TextureModel, Wrap};
 pub use transform::Transform;
 
 use crate::anim::Animation;
@@ -78,8 +87,13 @@ pub struct Scene {
     pub roots: Vec<NodeId>,
     pub meshes: Vec<Mesh>,
     pub materials: Vec<Material>,
+    /// Decoded images shared by the materials' textures (one copy each).
+    pub images: Vec<Image>,
     pub settings: Settings,
+    /// The playing clip's tracks (see [`Clips`] for the others).
     pub animation: Animation,
+    /// Clip names and order, and the clips that are not playing.
+    pub clips: Clips,
     pub format: SourceFormat,
     /// Free text from WorldInfo/Info nodes that is not animed's own key note.
     pub info: Vec<String>,
@@ -111,6 +125,26 @@ impl Scene {
     pub fn add_material(&mut self, material: Material) -> MaterialId {
         self.materials.push(material);
         MaterialId(self.materials.len() as u32 - 1)
+    }
+
+    /// Adds an image, refusing it when the scene's images would exceed
+    /// [`MAX_SCENE_IMAGE_PIXELS`] together.
+    pub fn add_image(&mut self, image: Image) -> Result<ImageId, ImageError> {
+        let held: u64 = self.images.iter().map(Image::pixel_count).sum();
+        if held + image.pixel_count() > MAX_SCENE_IMAGE_PIXELS {
+            return Err(ImageError(format!(
+                "image {}x{} would take the scene's images past the budget of {} pixels",
+                image.width(),
+                image.height(),
+                MAX_SCENE_IMAGE_PIXELS
+            )));
+        }
+        self.images.push(image);
+        Ok(ImageId(self.images.len() as u32 - 1))
+    }
+
+    pub fn image(&self, id: ImageId) -> Option<&Image> {
+        self.images.get(id.0 as usize)
     }
 
     pub fn node(&self, id: NodeId) -> &Node {

@@ -216,3 +216,107 @@ pub fn demo_scene() -> Scene {
     ];
     s
 }
+
+/// Two textured quads: `Tiled` uses a file texture (`brick.png`, clamped in
+/// t, turned by a VRML97 texture transform), `Decal` a 2x1 inline RGBA image
+/// with Inventor's DECAL model; plus an untextured cube after them.
+pub fn textured_scene(brick: &std::path::Path) -> Scene {
+    use animed::scene::{Image, ImageSource, TexTransform, Texture, TextureModel, Wrap};
+    use glam::Vec2;
+    let mut s = Scene::new();
+    let quad = |name: &str| {
+        let mut m = Mesh {
+            name: name.into(),
+            ..Default::default()
+        };
+        m.positions = vec![
+            Vec3::new(-1.0, -1.0, 0.0),
+            Vec3::new(1.0, -1.0, 0.0),
+            Vec3::new(1.0, 1.0, 0.0),
+            Vec3::new(-1.0, 1.0, 0.0),
+        ];
+        m.normals = vec![Vec3::Z; 4];
+        m.texcoords = vec![
+            Vec2::new(0.0, 0.0),
+            Vec2::new(2.0, 0.0),
+            Vec2::new(2.0, 1.0),
+            Vec2::new(0.0, 1.0),
+        ];
+        m.triangles = vec![[0, 1, 2], [0, 2, 3]];
+        m
+    };
+    let file = s
+        .add_image(
+            Image::new(
+                "brick.png",
+                ImageSource::File {
+                    url: "brick.png".into(),
+                    path: brick.to_path_buf(),
+                },
+                1,
+                1,
+                3,
+                vec![[200, 40, 40, 255]],
+            )
+            .unwrap(),
+        )
+        .unwrap();
+    let inline = s
+        .add_image(
+            Image::new(
+                "",
+                ImageSource::Inline,
+                2,
+                1,
+                4,
+                vec![[255, 0, 0, 255], [0, 0, 255, 128]],
+            )
+            .unwrap(),
+        )
+        .unwrap();
+    let tiled = s.add_material(Material {
+        name: "TiledMat".into(),
+        texture: Some(Texture {
+            wrap_t: Wrap::Clamp,
+            transform: TexTransform {
+                rotation: 0.5,
+                scale: Vec2::splat(2.0),
+                center: Vec2::splat(0.5),
+                ..TexTransform::default()
+            },
+            ..Texture::new(file)
+        }),
+        ..Material::default()
+    });
+    let decal = s.add_material(Material {
+        name: "DecalMat".into(),
+        texture: Some(Texture {
+            model: TextureModel::Decal,
+            ..Texture::new(inline)
+        }),
+        ..Material::default()
+    });
+    let plain = s.add_material(Material::default());
+    for (name, mat, mesh, x) in [
+        ("Tiled", tiled, quad("TiledQuad"), -1.5),
+        ("Decal", decal, quad("DecalQuad"), 1.5),
+        ("Plain", plain, cube("PlainCube"), 0.0),
+    ] {
+        let mesh = s.add_mesh(mesh);
+        s.add_node(
+            None,
+            Node::new(
+                name,
+                NodeKind::Shape(Shape {
+                    mesh,
+                    material: mat,
+                }),
+            )
+            .with_transform(Transform {
+                translation: Vec3::new(x, 0.0, 0.0),
+                ..Transform::default()
+            }),
+        );
+    }
+    s
+}

@@ -89,11 +89,13 @@ pub fn gzip(data: &[u8]) -> Vec<u8> {
     enc.finish().unwrap_or_default()
 }
 
-/// Saves `scene` to `path`, the format chosen by its extension.
+/// Saves `scene` to `path`, the format chosen by its extension. Texture
+/// files are referenced by their path relative to `path`'s folder.
 pub fn save(scene: &Scene, path: &Path, opts: &WriteOptions) -> Result<WriteReport, SaveError> {
     let format =
         OutputFormat::from_path(path).ok_or_else(|| SaveError::UnknownExtension(path.into()))?;
-    let (bytes, report) = to_bytes(scene, format, opts);
+    let scene = super::textures::rebase_urls(scene, path);
+    let (bytes, report) = to_bytes(&scene, format, opts);
     write_atomic(path, &bytes).map_err(|e| SaveError::Io(path.into(), e))?;
     Ok(report)
 }

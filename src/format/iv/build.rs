@@ -389,6 +389,7 @@ impl Builder {
             emissive: first(m, "emissiveColor", Vec3::ZERO),
             shininess: scalar(m, "shininess", 0.2),
             transparency,
+            texture: None,
         };
         if st.unlit {
             mat.emissive = mat.diffuse;

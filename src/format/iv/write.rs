@@ -36,8 +36,10 @@ use crate::format::export::options::{ChannelReport, InventorVersion, WriteOption
 use crate::format::export::plan::WritePlan;
 use crate::format::export::sampling::{per_frame_keys, slerp_shortest, Sample, Tolerances};
 use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
+use crate::format::export::textures::sfimage;
 use crate::scene::{
-    Camera, CameraKind, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene, Shape, Transform,
+    Camera, CameraKind, ImageSource, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene,
+    Shape, TextureModel, Transform, Wrap,
 };
 use glam::{Quat, Vec3};
 use std::collections::HashMap;
@@ -51,6 +53,8 @@ struct Writer<'a> {
     clock: Option<String>,
     clock_defined: bool,
     written_materials: Vec<bool>,
+    /// Whether any material has a texture (then every shape states its own).
+    textured_scene: bool,
     /// How many shapes use each set of points + normals.
     coord_uses: HashMap<Vec<u32>, usize>,
     /// DEF names of shared Coordinate3 / Normal nodes once written.
@@ -78,6 +82,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         clock: None,
         clock_defined: false,
         written_materials: vec![false; scene.materials.len()],
+        textured_scene: scene.materials.iter().any(|m| m.texture.is_some()),
         coord_uses: coord_uses(scene),
         coord_names: HashMap::new(),
         report: WriteReport::default(),
@@ -514,6 +519,7 @@ impl Writer<'_> {
             return;
         };
         self.material(s.material.0 as usize, mesh);
+        self.texture(s.material.0 as usize, mesh);
         let has_normals = !mesh.normals.is_empty() && mesh.normals.len() == mesh.positions.len();
         let key = mesh_key(mesh);
         let hints = if mesh.solid {
@@ -589,6 +595,80 @@ impl Writer<'_> {
             self.out
                 .line(&format!("PointSet {{ numPoints {} }}", pts.len()));
         }
+    }
+
+    /// Texture state for one shape. Inventor's Texture2 is inherited by
+    /// every later shape in the Separator and Texture2Transform accumulates,
+    /// so in a scene with any texture each shape states its own (`Texture2 {}`
+    /// switches texturing off), and the texture transform is baked into the
+    /// shape's TextureCoordinate2 points instead of written as a node.
+    fn texture(&mut self, mi: usize, mesh: &Mesh) {
+        if !self.textured_scene {
+            return;
+        }
+        let has_coords = !mesh.texcoords.is_empty() && mesh.texcoords.len() == mesh.positions.len();
+        let tex = self
+            .scene
+            .materials
+            .get(mi)
+            .and_then(|m| m.texture.as_ref());
+        let image = tex.and_then(|t| self.scene.image(t.image));
+        let (Some(t), Some(image), true) = (tex, image, has_coords) else {
+            self.out.line("Texture2 { }");
+            return;
+        };
+        self.out.open("Texture2");
+        match &image.source {
+            ImageSource::File { url, .. } => self.out.line(&format!("filename {}", quoted(url))),
+            ImageSource::Inline => {
+                let (head, rows) = sfimage(image);
+                self.out.line(&format!("image {head}"));
+                self.out.depth += 1;
+                for r in rows {
+                    self.out.line(&r);
+                }
+                self.out.depth -= 1;
+            }
+        }
+        if t.wrap_s == Wrap::Clamp {
+            self.out.line("wrapS CLAMP");
+        }
+        if t.wrap_t == Wrap::Clamp {
+            self.out.line("wrapT CLAMP");
+        }
+        match t.model {
+            TextureModel::Modulate => {}
+            TextureModel::Vrml97 => {
+                let diffuse = self.scene.materials[mi].diffuse;
+                if image.components() >= 3 && diffuse != Vec3::ONE {
+                    self.report.warnings.push(format!(
+                        "texture {:?}: VRML97 replaces the diffuse colour by an RGB texture; Inventor's MODULATE multiplies it",
+                        image.name
+                    ));
+                }
+            }
+            TextureModel::Decal | TextureModel::Replace => self.out.line("model DECAL"),
+            TextureModel::Blend => {
+                self.out.line("model BLEND");
+                self.out
+                    .line(&format!("blendColor {}", vec3(t.blend_color)));
+            }
+        }
+        self.out.close("}");
+        let m = t.transform.matrix();
+        let coords: Vec<glam::Vec2> = mesh
+            .texcoords
+            .iter()
+            .map(|&c| m.transform_point2(c))
+            .collect();
+        self.out.open("TextureCoordinate2");
+        self.out.list(
+            "point",
+            rows(&coords, 6, |c| format!("{} {}", num(c.x), num(c.y)), ","),
+        );
+        self.out.close("}");
+        self.out
+            .line("TextureCoordinateBinding { value PER_VERTEX_INDEXED }");
     }
 
     fn material(&mut self, mi: usize, mesh: &Mesh) {

@@ -348,6 +348,7 @@ impl Builder {
             emissive: m.vec3("emissiveColor", d.emissive),
             shininess: m.f32("shininess", d.shininess),
             transparency: m.f32("transparency", d.transparency),
+            texture: None,
         };
         let id = self.scene.add_material(mat);
         self.materials.insert(Rc::as_ptr(m), id);
@@ -376,6 +377,7 @@ impl Builder {
             emissive: Vec3::ONE,
             shininess: 0.0,
             transparency: 0.0,
+            texture: None,
         });
         self.unlit = Some(id);
         id

@@ -20,10 +20,12 @@ use crate::format::export::options::{ChannelReport, WriteOptions, WriteReport};
 use crate::format::export::plan::WritePlan;
 use crate::format::export::sampling::{per_frame_keys, Tolerances};
 use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
+use crate::format::export::textures::{sfimage, transform_in};
 use crate::scene::{
-    Camera, CameraKind, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene, Shape, Transform,
+    Camera, CameraKind, ImageSource, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene,
+    Shape, TexTransformOrder, Texture, TextureModel, Transform, Wrap,
 };
-use glam::{Quat, Vec3};
+use glam::{Quat, Vec2, Vec3};
 
 struct Writer<'a> {
     scene: &'a Scene,
@@ -239,17 +241,111 @@ impl Writer<'_> {
             return;
         };
         let name = self.plan.materials[mi].clone();
-        if let (Some(n), true) = (&name, self.written_materials[mi]) {
+        // VRML97 draws a texture unlit exactly when the Appearance has no
+        // Material (§4.14.3), so an unlit texture drops the Material unless
+        // a track animates it.
+        let animated = self
+            .scene
+            .animation
+            .tracks
+            .iter()
+            .any(|t| t.target.of == TargetRef::Material(crate::scene::MaterialId(mi as u32)));
+        let unlit = m
+            .texture
+            .as_ref()
+            .is_some_and(|t| t.model == TextureModel::Replace)
+            && !animated;
+        let reuse = name.is_some() && self.written_materials[mi];
+        if reuse && m.texture.is_none() {
+            let n = name.as_deref().unwrap_or_default();
             self.out
                 .line(&format!("appearance Appearance {{ material USE {n} }}"));
             return;
         }
-        self.written_materials[mi] = true;
         self.out.open("appearance Appearance");
-        self.out.open(&format!("material {}Material", def(&name)));
-        material_fields(&mut self.out, m);
+        if unlit {
+        } else if reuse {
+            let n = name.as_deref().unwrap_or_default();
+            self.out.line(&format!("material USE {n}"));
+        } else {
+            self.written_materials[mi] = true;
+            self.out.open(&format!("material {}Material", def(&name)));
+            material_fields(&mut self.out, m);
+            self.out.close("}");
+        }
+        if let Some(t) = &m.texture {
+            self.texture(t);
+        }
         self.out.close("}");
+    }
+
+    fn texture(&mut self, t: &Texture) {
+        let Some(image) = self.scene.image(t.image) else {
+            self.report
+                .warnings
+                .push(format!("a material refers to missing image {}", t.image.0));
+            return;
+        };
+        match &image.source {
+            ImageSource::File { url, .. } => {
+                self.out.open("texture ImageTexture");
+                self.out.line(&format!("url {}", quoted(url)));
+            }
+            ImageSource::Inline => {
+                self.out.open("texture PixelTexture");
+                let (head, rows) = sfimage(image);
+                self.out.line(&format!("image {head}"));
+                self.out.depth += 1;
+                for r in rows {
+                    self.out.line(&r);
+                }
+                self.out.depth -= 1;
+            }
+        }
+        if t.wrap_s == Wrap::Clamp {
+            self.out.line("repeatS FALSE");
+        }
+        if t.wrap_t == Wrap::Clamp {
+            self.out.line("repeatT FALSE");
+        }
         self.out.close("}");
+        if !t.transform.is_identity() {
+            match transform_in(&t.transform, TexTransformOrder::Vrml97) {
+                Some(x) => {
+                    self.out.open("textureTransform TextureTransform");
+                    if x.center != Vec2::ZERO {
+                        self.out.line(&format!("center {} {}", num(x.center.x), num(x.center.y)));
+                    }
+                    if x.rotation != 0.0 {
+                        self.out.line(&format!("rotation {}", num(x.rotation)));
+                    }
+                    if x.scale != Vec2::ONE {
+                        self.out.line(&format!("scale {} {}", num(x.scale.x), num(x.scale.y)));
+                    }
+                    if x.translation != Vec2::ZERO {
+                        self.out.line(&format!(
+                            "translation {} {}",
+                            num(x.translation.x),
+                            num(x.translation.y)
+                        ));
+                    }
+                    self.out.close("}");
+                }
+                None => self.report.warnings.push(format!(
+                    "texture {:?}: a rotated, non-uniformly scaled Inventor texture transform has no VRML97 form; written without it",
+                    image.name
+                )),
+            }
+        }
+        if matches!(
+            t.model,
+            TextureModel::Modulate | TextureModel::Decal | TextureModel::Blend
+        ) {
+            self.report.warnings.push(format!(
+                "texture {:?}: Inventor's {:?} model has no VRML97 form; VRML97 lights the texture by its own rule",
+                image.name, t.model
+            ));
+        }
     }
 
     fn face_set(&mut self, s: &Shape, mesh: &Mesh, can_def: bool) {
@@ -279,6 +375,20 @@ impl Writer<'_> {
             self.out.close("}");
         }
         self.colors(mesh);
+        if !mesh.texcoords.is_empty() && mesh.texcoords.len() == mesh.positions.len() {
+            // No texCoordIndex: coordIndex then indexes the coordinates too.
+            self.out.open("texCoord TextureCoordinate");
+            self.out.list(
+                "point",
+                rows(
+                    &mesh.texcoords,
+                    6,
+                    |t| format!("{} {}", num(t.x), num(t.y)),
+                    ",",
+                ),
+            );
+            self.out.close("}");
+        }
         self.out.list(
             "coordIndex",
             rows(

@@ -1,0 +1,468 @@
+//! The shading pass of a tile: after the depth pass has chosen one
+//! triangle per pixel, shade every visible pixel once, eight pixels of a
+//! row at a time in structure-of-arrays lanes ([`V8`]).
+//!
+//! A block of eight pixels may show several triangles. Their attributes are
+//! planes over the screen-space barycentrics the depth pass stored
+//! (`value/w = base + b1·d1 + b2·d2`, set up once per triangle in
+//! `prepare`), so each triangle present is evaluated for all eight lanes and
+//! merged by lane mask; then the block is lit once per material it shows
+//! (normally once). Each lane does exactly the arithmetic a lone pixel would,
+//! so neither the grouping nor the lane width (SSE2 or AVX) changes a bit.
+//!
+//! Texture coordinates (perspective-correct, with their screen-space
+//! derivatives for the mip level) are computed only for items that carry a
+//! texture; see [`UvLanes`] and [`apply_texture`].
+
+use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
+use super::prepare::{Item, Prepared, Tri, INV_W, SUBPIXEL};
+use super::shade::shade8;
+use super::simd::{self, Sse8, V8};
+use glam::Vec3;
+
+/// Tile edge in pixels (the row stride of every tile buffer).
+pub const TILE: i32 = 64;
+/// Marks a pixel no opaque triangle covers.
+pub const NONE: u32 = u32::MAX;
+
+/// What the depth pass left for the shading pass, `TILE` pixels per row.
+pub struct Visible<'a> {
+    /// Index into `Prepared::opaque` of the nearest triangle, or [`NONE`].
+    pub winner: &'a [u32],
+    /// Screen-space barycentric weights of vertices 1 and 2 at the pixel.
+    pub b1: &'a [f32],
+    pub b2: &'a [f32],
+}
+
+/// The tile's linear colour channels and object ids, `TILE` pixels per row.
+pub struct Shaded<'a> {
+    pub r: &'a mut [f32],
+    pub g: &'a mut [f32],
+    pub b: &'a mut [f32],
+    pub ids: &'a mut [u32],
+}
+
+/// Shades the visible pixels of a `w`×`h` tile; pixels with no triangle get
+/// `background` and id 0.
+pub fn shade_visible(
+    p: &Prepared,
+    eye: Vec3,
+    background: Vec3,
+    (w, h): (usize, usize),
+    vis: &Visible,
+    out: &mut Shaded,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if simd::avx() {
+        // SAFETY: `simd::avx()` checked that the CPU has AVX.
+        unsafe { shade_visible_avx(p, eye, background, (w, h), vis, out) };
+        return;
+    }
+    shade_visible_in::<Sse8>(p, eye, background, (w, h), vis, out);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn shade_visible_avx(
+    p: &Prepared,
+    eye: Vec3,
+    background: Vec3,
+    size: (usize, usize),
+    vis: &Visible,
+    out: &mut Shaded,
+) {
+    shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
+}
+
+#[inline(always)]
+fn lanes8<T>(s: &[T], i: usize) -> &[T; 8] {
+    s[i..i + 8]
+        .try_into()
+        .expect("tile rows are multiples of 8")
+}
+
+#[inline(always)]
+fn lanes8_mut<T>(s: &mut [T], i: usize) -> &mut [T; 8] {
+    (&mut s[i..i + 8])
+        .try_into()
+        .expect("tile rows are multiples of 8")
+}
+
+/// Stores `v` into the lanes of `dst` selected by `mask` (bit per lane).
+/// Partial stores go lane by lane: a select of the loaded old value would
+/// compile to a masked store, which is very slow on some CPUs.
+#[inline(always)]
+pub fn store_masked<V: V8>(dst: &mut [f32; 8], v: V, mask: u32) {
+    if mask == 0xFF {
+        v.store(dst);
+    } else {
+        let mut a = [0.0; 8];
+        v.store(&mut a);
+        for (k, (d, a)) in dst.iter_mut().zip(a).enumerate() {
+            if mask >> k & 1 == 1 {
+                *d = a;
+            }
+        }
+    }
+}
+
+#[inline(always)]
+fn shade_visible_in<V: V8>(
+    p: &Prepared,
+    eye: Vec3,
+    background: Vec3,
+    (w, h): (usize, usize),
+    vis: &Visible,
+    out: &mut Shaded,
+) {
+    let bg = [
+        V::splat(background.x),
+        V::splat(background.y),
+        V::splat(background.z),
+    ];
+    for row in 0..h {
+        for bx in (0..w).step_by(8) {
+            let i0 = row * TILE as usize + bx;
+            let win = lanes8(vis.winner, i0);
+            let mut todo = 0u32;
+            for (k, &t) in win.iter().enumerate() {
+                todo |= ((t != NONE) as u32) << k;
+            }
+            if todo != 0xFF {
+                bg[0].store(lanes8_mut(out.r, i0));
+                bg[1].store(lanes8_mut(out.g, i0));
+                bg[2].store(lanes8_mut(out.b, i0));
+                let ids = lanes8_mut(out.ids, i0);
+                for (k, id) in ids.iter_mut().enumerate() {
+                    if todo >> k & 1 == 0 {
+                        *id = 0;
+                    }
+                }
+            }
+            let b1 = V::load(lanes8(vis.b1, i0));
+            let b2 = V::load(lanes8(vis.b2, i0));
+            // One round per item (material + lights) in the block.
+            while todo != 0 {
+                let item_ix = p.opaque[win[todo.trailing_zeros() as usize] as usize].item;
+                let mut group = 0u32;
+                for (k, &t) in win.iter().enumerate() {
+                    if todo >> k & 1 == 1 && p.opaque[t as usize].item == item_ix {
+                        group |= 1 << k;
+                    }
+                }
+                todo &= !group;
+                let item = &p.items[item_ix as usize];
+                let [r, g, b] = shade_group::<V>(p, item, eye, win, group, b1, b2, bx, row);
+                store_masked(lanes8_mut(out.r, i0), r, group);
+                store_masked(lanes8_mut(out.g, i0), g, group);
+                store_masked(lanes8_mut(out.b, i0), b, group);
+                let ids = lanes8_mut(out.ids, i0);
+                for (k, id) in ids.iter_mut().enumerate() {
+                    if group >> k & 1 == 1 {
+                        *id = item.id;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Calls `f(triangle, lane mask)` once per distinct triangle among the
+/// lanes of `group`.
+#[inline(always)]
+fn for_each_tri<'p>(p: &'p Prepared, win: &[u32; 8], group: u32, mut f: impl FnMut(&'p Tri, u32)) {
+    let mut rest = group;
+    while rest != 0 {
+        let t = win[rest.trailing_zeros() as usize];
+        let mut mask = 0u32;
+        for (k, &wk) in win.iter().enumerate() {
+            mask |= ((rest >> k & 1 == 1 && wk == t) as u32) << k;
+        }
+        rest &= !mask;
+        f(&p.opaque[t as usize], mask);
+    }
+}
+
+/// `base + b1·d1 + b2·d2` of plane `j` of `t`, per lane.
+#[inline(always)]
+fn plane<V: V8>(t: &Tri, j: usize, b1: V, b2: V) -> V {
+    V::splat(t.base[j]) + b1 * V::splat(t.d1[j]) + b2 * V::splat(t.d2[j])
+}
+
+/// Interpolates and lights the lanes of `group` (all of one item).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn shade_group<V: V8>(
+    p: &Prepared,
+    item: &Item,
+    eye: Vec3,
+    win: &[u32; 8],
+    group: u32,
+    b1: V,
+    b2: V,
+    bx: usize,
+    row: usize,
+) -> [V; 3] {
+    // Perspective-correct attributes: every plane holds value/w, plane
+    // INV_W holds 1/w. Lanes outside `group` carry harmless values of the
+    // first triangle's plane.
+    const USED: [usize; 10] = [
+        A_POS,
+        A_POS + 1,
+        A_POS + 2,
+        A_NORMAL,
+        A_NORMAL + 1,
+        A_NORMAL + 2,
+        A_COLOR,
+        A_COLOR + 1,
+        A_COLOR + 2,
+        INV_W,
+    ];
+    let mut a = [V::splat(0.0); 10];
+    let mut first = true;
+    for_each_tri(p, win, group, |t, mask| {
+        if first {
+            for (v, &j) in a.iter_mut().zip(&USED) {
+                *v = plane(t, j, b1, b2);
+            }
+            first = false;
+        } else {
+            let m = V::from_bits(mask);
+            for (v, &j) in a.iter_mut().zip(&USED) {
+                *v = V::select(m, plane(t, j, b1, b2), *v);
+            }
+        }
+    });
+    let s = V::splat(1.0) / a[9];
+    let at = |j: usize| a[j] * s;
+    let mut diffuse = [at(6), at(7), at(8)];
+    if item.textured {
+        let uv = UvLanes::new(p, win, group, b1, b2, s);
+        diffuse = apply_texture(item, &uv, diffuse, (bx, row));
+    }
+    if item.unlit {
+        return diffuse;
+    }
+    shade8(
+        &item.material,
+        &item.lights,
+        eye,
+        [at(0), at(1), at(2)],
+        [at(3), at(4), at(5)],
+        diffuse,
+    )
+}
+
+/// Perspective-correct texture coordinates of eight pixels and their
+/// screen-space derivatives (per pixel step in x and in y), from which a
+/// sampler picks the mip level (e.g. ρ = max(|∂uv/∂x|, |∂uv/∂y|) in texels,
+/// OpenGL 4.6 §8.14.1).
+///
+/// With `q = 1/w` and `U = u/w` both affine in screen space,
+/// `u = U/q` and `∂u/∂x = (∂U/∂x − u·∂q/∂x)/q`.
+// Read by the texture sampler that `apply_texture` will call (helper tex).
+#[allow(dead_code)]
+pub struct UvLanes<V> {
+    pub u: V,
+    pub v: V,
+    pub du_dx: V,
+    pub dv_dx: V,
+    pub du_dy: V,
+    pub dv_dy: V,
+}
+
+impl<V: V8> UvLanes<V> {
+    /// `s` is 1/q, the reciprocal of the interpolated 1/w, per lane.
+    #[inline(always)]
+    fn new(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V, s: V) -> UvLanes<V> {
+        // Per lane: U, V planes and the constant gradients of U, V and q.
+        let mut m = [V::splat(0.0); 8];
+        let mut first = true;
+        for_each_tri(p, win, group, |t, mask| {
+            let g = t.gradients();
+            let vals = [
+                plane(t, A_UV, b1, b2),
+                plane(t, A_UV + 1, b1, b2),
+                V::splat(g.uv[0][0]),
+                V::splat(g.uv[1][0]),
+                V::splat(g.q[0]),
+                V::splat(g.uv[0][1]),
+                V::splat(g.uv[1][1]),
+                V::splat(g.q[1]),
+            ];
+            if first {
+                m = vals;
+                first = false;
+            } else {
+                let mk = V::from_bits(mask);
+                for (o, v) in m.iter_mut().zip(vals) {
+                    *o = V::select(mk, v, *o);
+                }
+            }
+        });
+        let (u, v) = (m[0] * s, m[1] * s);
+        UvLanes {
+            u,
+            v,
+            du_dx: (m[2] - u * m[4]) * s,
+            dv_dx: (m[3] - v * m[4]) * s,
+            du_dy: (m[5] - u * m[7]) * s,
+            dv_dy: (m[6] - v * m[7]) * s,
+        }
+    }
+}
+
+/// TEXTURE HOOK (helper `tex`, issue 12): the diffuse colour of the lanes
+/// of a textured item, given their texture coordinates and footprints;
+/// `at` is the block's first pixel (column, row) in the tile. This is where
+/// the sampler's texel replaces (or, per VRML97 §4.14, modulates) the
+/// diffuse colour; today no item sets `textured`, so it returns `diffuse`.
+#[inline(always)]
+pub fn apply_texture<V: V8>(
+    item: &Item,
+    uv: &UvLanes<V>,
+    diffuse: [V; 3],
+    at: (usize, usize),
+) -> [V; 3] {
+    let _ = (item, uv, at);
+    diffuse
+}
+
+/// Screen-space gradients of a triangle's planes, per pixel step.
+pub struct Gradients {
+    /// ∂(u/w)/∂x, ∂(u/w)/∂y; then the same for v/w.
+    pub uv: [[f32; 2]; 2],
+    /// ∂(1/w)/∂x, ∂(1/w)/∂y.
+    pub q: [f32; 2],
+}
+
+impl Tri {
+    /// Gradients of the texture planes and of 1/w: the barycentric weight
+    /// of vertex k is its edge function over twice the area, so its step
+    /// per pixel is the edge's (fixed-point) delta over the area.
+    pub fn gradients(&self) -> Gradients {
+        let area = (self.x[1] - self.x[0]) * (self.y[2] - self.y[0])
+            - (self.y[1] - self.y[0]) * (self.x[2] - self.x[0]);
+        let inv = SUBPIXEL as f32 / area as f32;
+        // b1: edge from vertex 2 to 0; b2: edge from vertex 0 to 1.
+        let db1 = [
+            -((self.y[0] - self.y[2]) as f32) * inv,
+            (self.x[0] - self.x[2]) as f32 * inv,
+        ];
+        let db2 = [
+            -((self.y[1] - self.y[0]) as f32) * inv,
+            (self.x[1] - self.x[0]) as f32 * inv,
+        ];
+        let grad = |j: usize, axis: usize| self.d1[j] * db1[axis] + self.d2[j] * db2[axis];
+        Gradients {
+            uv: [
+                [grad(A_UV, 0), grad(A_UV, 1)],
+                [grad(A_UV + 1, 0), grad(A_UV + 1, 1)],
+            ],
+            q: [grad(INV_W, 0), grad(INV_W, 1)],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::clip::ATTRS;
+    use crate::render::prepare::planes;
+
+    /// Screen positions, 1/w and texture coordinates of three vertices.
+    type Corners = ([(f32, f32); 3], [f32; 3], [[f32; 2]; 3]);
+
+    /// A triangle with texture coordinates and very different depths at
+    /// its corners, in a one-triangle `Prepared`.
+    fn textured() -> (Prepared, Corners) {
+        let xy = [(2.0, 3.0), (60.0, 10.0), (12.0, 50.0)];
+        let inv_w = [1.0, 0.25, 0.5];
+        let uv = [[0.0, 0.0], [4.0, 1.0], [1.0, 3.0]];
+        let mut attr = [[0.0; ATTRS]; 3];
+        for k in 0..3 {
+            attr[k][A_UV] = uv[k][0];
+            attr[k][A_UV + 1] = uv[k][1];
+        }
+        let (base, d1, d2) = planes(&attr, &inv_w);
+        let fx = |v: f32| (v * SUBPIXEL as f32) as i64;
+        let tri = Tri {
+            x: xy.map(|p| fx(p.0)),
+            y: xy.map(|p| fx(p.1)),
+            z: [0.5; 3],
+            base,
+            d1,
+            d2,
+            item: 0,
+            bbox: [0, 0, 64, 64],
+        };
+        let p = Prepared {
+            opaque: vec![tri],
+            ..Prepared::default()
+        };
+        (p, (xy, inv_w, uv))
+    }
+
+    /// Perspective-correct uv at a screen point, from the vertices.
+    fn exact_uv(
+        xy: &[(f32, f32); 3],
+        inv_w: &[f32; 3],
+        uv: &[[f32; 2]; 3],
+        x: f64,
+        y: f64,
+    ) -> [f64; 2] {
+        let p = xy.map(|(a, b)| (a as f64, b as f64));
+        let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[1].1 - p[0].1) * (p[2].0 - p[0].0);
+        let b1 = ((x - p[0].0) * (p[2].1 - p[0].1) - (y - p[0].1) * (p[2].0 - p[0].0)) / area;
+        let b2 = ((p[1].0 - p[0].0) * (y - p[0].1) - (p[1].1 - p[0].1) * (x - p[0].0)) / area;
+        let w = [1.0 - b1 - b2, b1, b2];
+        let q: f64 = (0..3).map(|k| w[k] * inv_w[k] as f64).sum();
+        let f = |c: usize| {
+            (0..3)
+                .map(|k| w[k] * inv_w[k] as f64 * uv[k][c] as f64)
+                .sum::<f64>()
+                / q
+        };
+        [f(0), f(1)]
+    }
+
+    #[test]
+    fn texture_coordinates_and_derivatives_are_perspective_correct() {
+        let (p, (xy, inv_w, uv)) = textured();
+        let t = &p.opaque[0];
+        let mut checked = 0;
+        crate::render::raster::for_each_pixel(t, [0, 0, 64, 64], |x, y, b1, b2| {
+            let q = t.base[INV_W] + b1 * t.d1[INV_W] + b2 * t.d2[INV_W];
+            let lanes = UvLanes::new(
+                &p,
+                &[0; 8],
+                0xFF,
+                Sse8::splat(b1),
+                Sse8::splat(b2),
+                Sse8::splat(1.0) / Sse8::splat(q),
+            );
+            let get = |v: Sse8| {
+                let mut a = [0.0; 8];
+                v.store(&mut a);
+                a[0] as f64
+            };
+            let (cx, cy) = (x as f64 + 0.5, y as f64 + 0.5);
+            let want = exact_uv(&xy, &inv_w, &uv, cx, cy);
+            assert!((get(lanes.u) - want[0]).abs() < 1e-4, "u at {x},{y}");
+            assert!((get(lanes.v) - want[1]).abs() < 1e-4, "v at {x},{y}");
+            // Central differences of the exact mapping.
+            let h = 1e-3;
+            let dx = exact_uv(&xy, &inv_w, &uv, cx + h, cy);
+            let dx0 = exact_uv(&xy, &inv_w, &uv, cx - h, cy);
+            let dy = exact_uv(&xy, &inv_w, &uv, cx, cy + h);
+            let dy0 = exact_uv(&xy, &inv_w, &uv, cx, cy - h);
+            let close = |a: f64, b: f64| (a - b).abs() < 1e-3 * (1.0 + b.abs());
+            assert!(close(get(lanes.du_dx), (dx[0] - dx0[0]) / (2.0 * h)));
+            assert!(close(get(lanes.dv_dx), (dx[1] - dx0[1]) / (2.0 * h)));
+            assert!(close(get(lanes.du_dy), (dy[0] - dy0[0]) / (2.0 * h)));
+            assert!(close(get(lanes.dv_dy), (dy[1] - dy0[1]) / (2.0 * h)));
+            checked += 1;
+        });
+        assert!(checked > 500);
+    }
+}
