@@ -292,3 +292,175 @@ fn graph_goldens() {
     run(&mut ed, "key n");
     golden::check("editor_graph_normalised", &ed.render_frame());
 }
+
+/// No file of `src/editor/` imports another that (through others)
+/// imports it back. An edge A → B is any path in A's non-test code that
+/// names module B (`use super::b::…`, `crate::editor::b::…`, a child
+/// `b::…` in a module file, a `use` group); `mod b;` declarations are not
+/// edges, and re-exports are followed to the file that defines the item.
+#[test]
+fn editor_files_import_no_cycle() {
+    use std::collections::{BTreeMap, BTreeSet};
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files: BTreeMap<Vec<String>, String> = BTreeMap::new();
+    let mut stack = vec![root.join("editor")];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                let rel = p.strip_prefix(&root).unwrap().with_extension("");
+                let mut m: Vec<String> = rel
+                    .iter()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .collect();
+                if m.last().is_some_and(|l| l == "mod") {
+                    m.pop();
+                }
+                let text = std::fs::read_to_string(&p).unwrap();
+                // Test modules sit at the ends of files; comments go.
+                let code = text.split("#[cfg(test)]").next().unwrap_or("");
+                let code: String = code
+                    .lines()
+                    .map(|l| l.split("//").next().unwrap_or(""))
+                    .collect::<Vec<_>>()
+                    .join("\n");
+                files.insert(m, code);
+            }
+        }
+    }
+    let is_mod = |m: &[String]| files.contains_key(m);
+    // Expands `a::{b, c::{d}}` into full paths.
+    fn expand(tree: &str) -> Vec<String> {
+        let tree = tree.trim();
+        let Some(i) = tree.find('{') else {
+            return vec![tree.split(" as ").next().unwrap_or("").trim().to_string()];
+        };
+        let (prefix, inner) = (
+            &tree[..i],
+            &tree[i + 1..tree.rfind('}').unwrap_or(tree.len())],
+        );
+        let (mut parts, mut depth, mut cur) = (Vec::new(), 0, String::new());
+        for c in inner.chars() {
+            match c {
+                ',' if depth == 0 => parts.push(std::mem::take(&mut cur)),
+                _ => {
+                    depth += (c == '{') as i32 - (c == '}') as i32;
+                    cur.push(c);
+                }
+            }
+        }
+        parts.push(cur);
+        parts
+            .iter()
+            .filter(|p| !p.trim().is_empty())
+            .flat_map(|p| expand(p))
+            .map(|e| format!("{prefix}{e}"))
+            .collect()
+    }
+    let resolve = |here: &[String], path: &str| -> Option<Vec<String>> {
+        let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
+        let mut cur: Vec<String> = here.to_vec();
+        let mut rest = &segs[..];
+        match segs.first()? {
+            &"crate" => {
+                cur.clear();
+                rest = &segs[1..];
+            }
+            &"super" | &"self" => {
+                while let Some(s) = rest.first().filter(|s| **s == "super" || **s == "self") {
+                    if *s == "super" {
+                        cur.pop();
+                    }
+                    rest = &rest[1..];
+                }
+            }
+            first => {
+                let mut child = cur.clone();
+                child.push(first.to_string());
+                if !is_mod(&child) {
+                    return None;
+                }
+            }
+        }
+        for s in rest {
+            let mut next = cur.clone();
+            next.push(s.to_string());
+            if is_mod(&next) {
+                cur = next;
+            } else {
+                break;
+            }
+        }
+        Some(cur)
+    };
+    let mut edges: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = BTreeMap::new();
+    for (m, code) in &files {
+        let mut paths = Vec::new();
+        // `use` statements (at a line's start, maybe `pub`), to their `;`.
+        let mut at = 0;
+        for line in code.split_inclusive('\n') {
+            let t = line.trim_start();
+            let t = t
+                .strip_prefix("pub(crate) ")
+                .or(t.strip_prefix("pub(super) "))
+                .unwrap_or(t);
+            let t = t.strip_prefix("pub ").unwrap_or(t);
+            if let Some(rest) = t.strip_prefix("use ") {
+                let start = at + (line.len() - rest.len());
+                if let Some(tree) = code[start..].split(';').next() {
+                    paths.extend(expand(tree));
+                }
+            }
+            at += line.len();
+        }
+        for w in code.split(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')) {
+            if w.contains("::") {
+                paths.push(w.to_string());
+            }
+        }
+        for p in paths {
+            if let Some(t) = resolve(m, &p) {
+                if &t != m && t.first().is_some_and(|f| f == "editor") && files.contains_key(&t) {
+                    edges.entry(m.clone()).or_default().insert(t);
+                }
+            }
+        }
+    }
+    // A cycle shows as a path back to its start (depth-first search).
+    fn cycle_from(
+        n: &Vec<String>,
+        edges: &BTreeMap<Vec<String>, BTreeSet<Vec<String>>>,
+        path: &mut Vec<Vec<String>>,
+        done: &mut BTreeSet<Vec<String>>,
+    ) -> Option<Vec<Vec<String>>> {
+        if let Some(i) = path.iter().position(|p| p == n) {
+            return Some(path[i..].to_vec());
+        }
+        if !done.insert(n.clone()) {
+            return None;
+        }
+        path.push(n.clone());
+        for t in edges.get(n).into_iter().flatten() {
+            if let Some(c) = cycle_from(t, edges, path, done) {
+                return Some(c);
+            }
+        }
+        path.pop();
+        None
+    }
+    let total: usize = edges.values().map(BTreeSet::len).sum();
+    assert!(
+        total > 50,
+        "the scan found the editor's imports ({total} edges)"
+    );
+    let mut done = BTreeSet::new();
+    for n in files.keys() {
+        let mut path = Vec::new();
+        if let Some(c) = cycle_from(n, &edges, &mut path, &mut done) {
+            let names: Vec<String> = c.iter().map(|m| m.join("/")).collect();
+            panic!("import cycle in src/editor: {}", names.join(" -> "));
+        }
+    }
+}
