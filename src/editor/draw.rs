@@ -2,7 +2,7 @@
 //! and the modal browser or dialog on top.
 
 use super::fields::FieldValue;
-use super::input::Drag;
+use super::gesture::Drag;
 use super::ops;
 use super::panel::{List, Widget, WidgetKind};
 use super::{Editor, Mode};
@@ -15,6 +15,7 @@ use glam::Vec3;
 impl Editor {
     /// Draws the editor into `frame`, resizing it to the editor's size.
     pub fn draw(&mut self, frame: &mut Frame) {
+        self.graph_follow();
         if frame.width != self.width || frame.height != self.height {
             *frame = Frame::new(self.width, self.height, Vec3::ZERO);
         }
@@ -214,11 +215,20 @@ impl Editor {
             f += minor;
         }
         p.fill_rect(Rect::new(r.x, base, r.w, 1), theme::BORDER);
-        self.draw_key_strip(p, l);
+        match self.graph_shown {
+            true => self.draw_graph(p, l),
+            false => self.draw_key_strip(p, l),
+        }
         // Current frame cursor with its number.
         let cx = l.frame_to_x(self.frame.clamp(0.0, dur), dur) as i32;
         p.fill_rect(
-            Rect::new(cx, r.y, 1, l.ruler.h + l.key_rows.h),
+            // Through the key strip; the graph draws its own frame line.
+            Rect::new(
+                cx,
+                r.y,
+                1,
+                l.ruler.h + if self.graph_shown { 0 } else { l.key_rows.h },
+            ),
             theme::CURSOR,
         );
         p.fill_polygon(

@@ -2,6 +2,7 @@
 //! how to write a new value (on a copy of a node or of the settings), and
 //! how fast a drag changes it.
 
+use crate::anim::Property;
 use crate::scene::{LightKind, Node, NodeKind, Settings};
 use glam::{EulerRot, Quat, Vec3};
 
@@ -24,7 +25,7 @@ pub enum FieldId {
     /// Spot cut-off angle in degrees.
     LightCutOff,
     /// A parameter of the selected keys (the key panel, `keyprops.rs`).
-    Key(super::keyprops::KeyField),
+    Key(KeyField),
 }
 
 /// A field's value.
@@ -242,6 +243,55 @@ pub fn parse_number(s: &str) -> Option<f32> {
         }
     }
     None
+}
+
+/// Which key parameter a key panel field edits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KeyField {
+    Frame,
+    /// Component of the value (x/y/z, r/g/b, Euler degrees; 0 for scalars).
+    Value(u8),
+    Tension,
+    Continuity,
+    Bias,
+    EaseIn,
+    EaseOut,
+}
+
+/// The node field that edits the same value as `Value(i)` of a key of
+/// `p` (for clamping and drag speed).
+fn value_field(p: Property, i: u8) -> Option<FieldId> {
+    Some(match p {
+        Property::Translation => FieldId::Translation(i),
+        Property::Rotation => FieldId::Rotation(i),
+        Property::Scale => FieldId::Scale(i),
+        Property::LightIntensity => FieldId::LightIntensity,
+        Property::LightColor => FieldId::LightColor(i),
+        Property::LightLocation => FieldId::LightLocation(i),
+        Property::LightDirection => FieldId::LightDirection(i),
+        _ => return None,
+    })
+}
+
+impl KeyField {
+    /// Change per pixel of horizontal drag for a key of `p`.
+    pub fn drag_step(self, p: Property) -> f32 {
+        match self {
+            KeyField::Frame => 0.25,
+            KeyField::Value(i) => value_field(p, i).map(|f| f.drag_step()).unwrap_or(0.02),
+            _ => 0.01,
+        }
+    }
+
+    /// What the parameter accepts (TCB [-1, 1], ease [0, 1], frames >= 0).
+    pub fn clamp(self, p: Property, v: f32) -> f32 {
+        match self {
+            KeyField::Frame => v.max(0.0).round(),
+            KeyField::Value(i) => value_field(p, i).map(|f| f.clamp(v)).unwrap_or(v),
+            KeyField::Tension | KeyField::Continuity | KeyField::Bias => v.clamp(-1.0, 1.0),
+            KeyField::EaseIn | KeyField::EaseOut => v.clamp(0.0, 1.0),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -28,6 +28,7 @@ pub const HELP: &[(&str, &str)] = &[
     ("drag / Alt+drag", "move keys / scale their timing"),
     ("Delete", "delete selected keys (else the object)"),
     ("Ctrl+C / Ctrl+V", "copy keys / paste at the current frame"),
+    ("Shift+F6, Graph", "graph editor: curves, keys, tangents"),
     ("", "View and files"),
     ("Alt+drag, middle", "orbit; Shift+middle pans; wheel zooms"),
     ("F / Home", "frame the selection / everything"),

@@ -17,11 +17,13 @@
 pub mod bench;
 pub mod browser;
 pub mod command;
+pub mod component;
 mod draw;
 pub mod fields;
+mod gesture;
 pub mod gizmo;
+pub mod graph;
 pub mod help;
-mod input;
 pub mod keyedit;
 pub mod keyprops;
 pub mod keystrip;
@@ -33,6 +35,7 @@ pub mod ops;
 pub mod panel;
 pub mod record;
 pub mod recovery;
+mod route;
 mod screen;
 pub mod script;
 mod viewport;
@@ -142,6 +145,12 @@ pub struct Editor {
     keys: keystrip::KeyStrip,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
+    /// The graph editor (taken out while it handles an event).
+    graph: Option<Box<graph::GraphEditor>>,
+    /// It is shown, in the key strip's place.
+    graph_shown: bool,
+    /// Its height (the split with the viewport).
+    graph_height: i32,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     /// Anti-aliasing samples per pixel of the viewport (1, 4, 8); the
@@ -150,7 +159,7 @@ pub struct Editor {
     width: u32,
     height: u32,
     mouse: (f32, f32),
-    drag: input::Drag,
+    drag: gesture::Drag,
     edit: Option<TextEdit>,
     browser: Option<Browser>,
     /// What a save-as browser should continue with.
@@ -197,13 +206,16 @@ impl Editor {
             manip: manip::Manip::default(),
             keys: keystrip::KeyStrip::default(),
             onion: onion::Onion::default(),
+            graph: None,
+            graph_shown: false,
+            graph_height: 140,
             show_grid: true,
             view_style: None,
             aa: 1,
             width: width.max(1),
             height: height.max(1),
             mouse: (-1.0, -1.0),
-            drag: input::Drag::None,
+            drag: gesture::Drag::None,
             edit: None,
             browser: None,
             browser_then: None,
@@ -320,7 +332,11 @@ impl Editor {
 
     /// Layout of the current window.
     pub fn layout(&self) -> Layout {
-        Layout::new(self.width as i32, self.height as i32, self.key_strip_rows())
+        let (w, h) = (self.width as i32, self.height as i32);
+        match self.graph_shown {
+            true => Layout::with_graph(w, h, self.graph_height),
+            false => Layout::new(w, h, self.key_strip_rows()),
+        }
     }
 
     /// Where the file browser starts when no file is open (default: the

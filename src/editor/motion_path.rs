@@ -111,13 +111,7 @@ impl Editor {
                 let now = (f - self.frame).abs() <= KEY_EPS;
                 let color = if now { KEY_NOW } else { KEY };
                 let r = if now { 5.0 } else { 4.0 };
-                let d = [
-                    (c.0, c.1 - r),
-                    (c.0 + r, c.1),
-                    (c.0, c.1 + r),
-                    (c.0 - r, c.1),
-                ];
-                p.fill_polygon(&d, color, 255);
+                crate::ui::widgets::diamond(p, c, r, color);
             }
         }
         p.set_clip(None);

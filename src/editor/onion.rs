@@ -10,10 +10,9 @@
 //! size, style or selection change, and only made while the onion skin is on.
 
 use super::record::key_frames;
-use super::{ops, Editor};
 use crate::anim::KEY_EPS;
-use crate::render::{self, Frame, View};
-use crate::scene::{NodeId, NodeKind, RenderStyle};
+use crate::render::Frame;
+use crate::scene::{NodeId, RenderStyle};
 use crate::ui::Rect;
 
 /// How much of a copy shows over the viewport, inside and on its outline.
@@ -28,23 +27,45 @@ pub const AFTER: u32 = 0xe060d0;
 #[derive(Default)]
 pub(super) struct Onion {
     pub on: bool,
-    key: Option<OnionKey>,
+    pub(super) key: Option<OnionKey>,
     /// The covered pixels of the rendered copies, ready to blend.
-    ghosts: Vec<GhostPixel>,
+    pub(super) ghosts: Vec<GhostPixel>,
 }
 
 /// One pixel a copy covers: index in the viewport layer, the colour to
 /// blend in (tinted) with its strength, and its depth.
 #[derive(Clone, Copy, Debug)]
-struct GhostPixel {
+pub(super) struct GhostPixel {
     index: u32,
     color: u32,
     alpha: f32,
     depth: f32,
 }
 
+impl Onion {
+    /// Blends the copies over the viewport part `vp` of `frame`, hidden
+    /// where `layer` (the viewport's own render) is nearer.
+    pub(super) fn blend(&self, layer: &Frame, frame: &mut Frame, vp: Rect) {
+        let (w, h) = (layer.width, layer.height);
+        let depth = &layer.depth;
+        let fw = frame.width as usize;
+        let rows = (vp.h.max(0) as usize).min(h as usize);
+        let cols = (vp.w.max(0) as usize).min(w as usize);
+        for g in &self.ghosts {
+            let i = g.index as usize;
+            let (x, y) = (i % w as usize, i / w as usize);
+            // Hidden where the viewport shows something nearer.
+            if x >= cols || y >= rows || g.depth > depth[i] + 1e-6 {
+                continue;
+            }
+            let o = (vp.y as usize + y) * fw + vp.x as usize + x;
+            frame.color[o] = mix(frame.color[o], g.color, g.alpha);
+        }
+    }
+}
+
 /// The pixels `g` covers, tinted; its silhouette firmer so the shape reads.
-fn covered(g: &Frame, tint: u32, out: &mut Vec<GhostPixel>) {
+pub(super) fn covered(g: &Frame, tint: u32, out: &mut Vec<GhostPixel>) {
     let (w, h) = (g.width as usize, g.height as usize);
     for y in 0..h {
         for x in 0..w {
@@ -76,16 +97,16 @@ fn covered(g: &Frame, tint: u32, out: &mut Vec<GhostPixel>) {
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct OnionKey {
-    rev: u64,
+pub(super) struct OnionKey {
+    pub(super) rev: u64,
     /// The key frames shown (not the current frame: the copies stay
     /// while the frame moves between the same two keys).
-    keys: (Option<f32>, Option<f32>),
-    camera: crate::input::OrbitCamera,
-    w: u32,
-    h: u32,
-    sel: NodeId,
-    style: Option<RenderStyle>,
+    pub(super) keys: (Option<f32>, Option<f32>),
+    pub(super) camera: crate::input::OrbitCamera,
+    pub(super) w: u32,
+    pub(super) h: u32,
+    pub(super) sel: NodeId,
+    pub(super) style: Option<RenderStyle>,
 }
 
 /// The key frames of `id` just before and just after `frame`.
@@ -101,107 +122,12 @@ pub fn neighbour_keys(
 }
 
 /// Mixes `a` towards `b` by `t` (packed 0xRRGGBB).
-fn mix(a: u32, b: u32, t: f32) -> u32 {
+pub(super) fn mix(a: u32, b: u32, t: f32) -> u32 {
     let ch = |s: u32| {
         let (x, y) = (((a >> s) & 255) as f32, ((b >> s) & 255) as f32);
         ((x + (y - x) * t).round() as u32).min(255) << s
     };
     ch(16) | ch(8) | ch(0)
-}
-
-impl Editor {
-    /// Whether the onion skin is on.
-    pub fn onion_shown(&self) -> bool {
-        self.onion.on
-    }
-
-    /// O / toolbar: shows or hides the onion skin.
-    pub(super) fn toggle_onion(&mut self) {
-        self.onion.on = !self.onion.on;
-        let s = if self.onion.on { "on" } else { "off" };
-        self.set_status(&format!("Onion skin {s}"), false);
-    }
-
-    /// The frames the onion skin shows copies at for the selection.
-    pub fn onion_frames(&self) -> (Option<f32>, Option<f32>) {
-        match self.selection {
-            Some(id) => neighbour_keys(&self.scene.animation, id, self.frame),
-            None => (None, None),
-        }
-    }
-
-    /// Re-renders the copies when their inputs changed.
-    fn update_onion(&mut self, w: u32, h: u32) {
-        let Some(sel) = self.selection.filter(|_| self.onion.on) else {
-            self.onion.ghosts.clear();
-            self.onion.key = None;
-            return;
-        };
-        let key = OnionKey {
-            rev: self.scene_rev,
-            keys: self.onion_frames(),
-            camera: self.camera,
-            w,
-            h,
-            sel,
-            style: self.view_style,
-        };
-        if self.onion.key == Some(key) {
-            return;
-        }
-        self.onion.key = Some(key);
-        self.onion.ghosts.clear();
-        if matches!(self.scene.node(sel).kind, NodeKind::Light(_)) {
-            return;
-        }
-        let proj = self.projector();
-        let view = View {
-            view: proj.view,
-            proj: proj.proj,
-            eye: self.camera.eye(),
-        };
-        let opts = self.layer_options(w, h);
-        let mut mine = vec![false; self.scene.nodes.len()];
-        for id in ops::subtree(&self.scene, sel) {
-            mine[id.0 as usize] = true;
-        }
-        let (before, after) = key.keys;
-        let fps = self.scene.settings.fps.max(1e-6);
-        for (f, tint) in [(before, BEFORE), (after, AFTER)] {
-            let Some(f) = f else { continue };
-            let mut pose = crate::anim::evaluate(&self.scene, f / fps);
-            for (i, n) in self.scene.nodes.iter().enumerate() {
-                if !mine[i] && matches!(n.kind, NodeKind::Shape(_)) {
-                    pose.visible[i] = false;
-                }
-            }
-            let ghost = render::render(&self.scene, &pose, &view, &opts);
-            if ghost.width == w && ghost.height == h {
-                covered(&ghost, tint, &mut self.onion.ghosts);
-            }
-        }
-    }
-
-    /// Blends the copies over the viewport part of `frame` (after the
-    /// viewport layer was copied there).
-    pub(super) fn blit_onion(&mut self, frame: &mut Frame, vp: Rect) {
-        let (w, h) = (self.layer.frame.width, self.layer.frame.height);
-        self.update_onion(w, h);
-        let depth = &self.layer.frame.depth;
-        let fw = frame.width as usize;
-        let rows = (vp.h.max(0) as usize).min(h as usize);
-        let cols = (vp.w.max(0) as usize).min(w as usize);
-        for g in &self.onion.ghosts {
-            let i = g.index as usize;
-            let (x, y) = (i % w as usize, i / w as usize);
-            // Hidden where the viewport shows something nearer.
-            if x >= cols || y >= rows || g.depth > depth[i] + 1e-6 {
-                continue;
-            }
-            let o = (vp.y as usize + y) * fw + vp.x as usize + x;
-            frame.color[o] = mix(frame.color[o], g.color, g.alpha);
-        }
-    }
 }
 
 #[cfg(test)]

@@ -25,6 +25,13 @@
 //! drag-handle H DX DY [MODS] drag handle H of the current tool (W/E/T) by
 //!                            DX DY pixels: `x` `y` `z`, `xy` `xz` `yz`,
 //!                            `view`, `uniform`, `body`
+//! click-curve-key CH F [MODS]           click the graph editor's key of
+//!                            channel CH (`translation.y`, `rotation.z`,
+//!                            `color.g`, `intensity`) of the selection at F
+//! drag-curve-key CH F DX DY [MODS]      drag that key by DX DY pixels
+//!                            (`ctrl` snaps to whole frames)
+//! drag-curve-handle CH F DX DY [MODS]   drag the tangent handle of that
+//!                            (selected) key by DX DY (`alt`: continuity)
 //! ```
 //! BUTTON is `left` (default), `middle` or `right`, optionally with
 //! modifiers: `alt+left`, `shift+middle`.
@@ -90,6 +97,15 @@ pub enum Step {
     Select(String),
     /// A handle of the current tool by name, dragged by (dx, dy) pixels.
     DragHandle(String, f32, f32, Mods),
+    /// A graph editor key (or with `handle` its tangent handle): channel,
+    /// frame, drag by (dx, dy) pixels or a click, modifiers.
+    CurveKey {
+        channel: String,
+        frame: f32,
+        by: Option<(f32, f32)>,
+        handle: bool,
+        mods: Mods,
+    },
 }
 
 /// Parses a whole script; `path` names it in errors.
@@ -264,11 +280,28 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 };
                 Step::DragHandle(args[0].to_string(), num(1)?, num(2)?, mods)
             }
+            "click-curve-key" | "drag-curve-key" | "drag-curve-handle" => {
+                let n = if cmd == "click-curve-key" { 2 } else { 4 };
+                want(n..=n + 1)?;
+                let mods = match args.get(n) {
+                    None => Mods::NONE,
+                    Some(a) => parse_mods(&a.split('+').collect::<Vec<_>>()).ok_or_else(|| {
+                        err(col_of(n), format!("unknown modifiers '{a}' (shift, alt, ctrl)"))
+                    })?,
+                };
+                Step::CurveKey {
+                    channel: args[0].to_string(),
+                    frame: num(1)?,
+                    by: if n == 4 { Some((num(2)?, num(3)?)) } else { None },
+                    handle: cmd == "drag-curve-handle",
+                    mods,
+                }
+            }
             _ => {
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field, select, drag-handle)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field, select, drag-handle, click-curve-key, drag-curve-key, drag-curve-handle)"
                     ),
                 ))
             }
@@ -525,6 +558,21 @@ impl Runner {
                 })?;
                 let b = MouseButton::Left;
                 self.step(ed, &Step::Drag(x, y, x + dx, y + dy, b, *mods))?;
+            }
+            Step::CurveKey {
+                channel,
+                frame,
+                by,
+                handle,
+                mods,
+            } => {
+                let (x, y) = ed.graph_point(channel, *frame, *handle)?;
+                let b = MouseButton::Left;
+                let step = match by {
+                    None => Step::Click(x, y, b, *mods),
+                    Some((dx, dy)) => Step::Drag(x, y, x + dx, y + dy, b, *mods),
+                };
+                self.step(ed, &step)?;
             }
         }
         Ok(())

@@ -34,9 +34,27 @@ pub struct Layout {
 impl Layout {
     /// Lays out a `w`×`h` window with `key_rows` key strip rows.
     pub fn new(w: i32, h: i32, key_rows: usize) -> Layout {
+        Layout::split(w, h, |rest_h| {
+            (key_rows as i32 * KEY_ROW_H).min((rest_h / 3).max(0))
+        })
+    }
+
+    /// Lays out a `w`×`h` window with the graph editor, `graph_h` pixels
+    /// tall, in the key strip's place (`key_rows`); the viewport keeps at
+    /// least a quarter of the height.
+    pub fn with_graph(w: i32, h: i32, graph_h: i32) -> Layout {
+        Layout::split(w, h, |rest_h| {
+            let most = (rest_h - RULER_H - CONTROLS_H - rest_h / 4).max(0);
+            graph_h.clamp(60.min(most), most)
+        })
+    }
+
+    /// The layout with `rows_h(height below the toolbar)` pixels of key
+    /// rows (or graph).
+    fn split(w: i32, h: i32, rows_h: impl Fn(i32) -> i32) -> Layout {
         let window = Rect::new(0, 0, w.max(1), h.max(1));
         let (toolbar, rest) = window.take_top(TOOLBAR_H);
-        let rows_h = (key_rows as i32 * KEY_ROW_H).min((rest.h / 3).max(0));
+        let rows_h = rows_h(rest.h);
         let tl_h = RULER_H + rows_h + CONTROLS_H;
         let (middle, timeline) = rest.take_top(rest.h - tl_h);
         let side_w = (w * 32 / 100).clamp(140.min(w / 2), 280);

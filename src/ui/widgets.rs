@@ -108,3 +108,15 @@ pub fn checkbox(p: &mut Painter, r: Rect, on: bool, hot: bool) {
 pub fn label(p: &mut Painter, r: Rect, s: &str, color: u32) {
     p.text_clipped(r.x, r.y + (r.h - text::LINE_H) / 2, s, color, r.w);
 }
+
+/// A filled diamond of half-size `r` centred at `c` (a key marker: the key
+/// strip, the motion path and the graph editor draw keys with it).
+pub fn diamond(p: &mut Painter, c: (f32, f32), r: f32, color: u32) {
+    let pts = [
+        (c.0, c.1 - r),
+        (c.0 + r, c.1),
+        (c.0, c.1 + r),
+        (c.0 - r, c.1),
+    ];
+    p.fill_polygon(&pts, color, 255);
+}

@@ -1,53 +1,15 @@
-//! Turning events into state changes: mouse drags (camera, fields, seek),
-//! clicks on widgets, shortcuts, text editing, the modal browser/dialog.
+//! The editor's side of `input`: routes events to it and applies what it returns.
 
-use super::browser::Purpose;
-use super::command::Command;
-use super::fields::{parse_number, FieldId, FieldValue};
-use super::ops;
-use super::panel::{Action, WidgetKind};
-use super::{After, Dialog, Editor, Mode, Playback, TextEdit};
+use crate::editor::browser::Purpose;
+use crate::editor::command::Command;
+use crate::editor::fields::{parse_number, FieldId, FieldValue};
+#[allow(unused_imports)]
+use crate::editor::gesture::*;
+use crate::editor::ops;
+use crate::editor::panel::{Action, WidgetKind};
+use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
-use crate::scene::{Node, NodeId, RenderStyle, Settings};
-
-/// State kept between mouse down and up.
-#[derive(Clone, Debug, Default)]
-pub(super) enum Drag {
-    #[default]
-    None,
-    Orbit {
-        last: (f32, f32),
-    },
-    Pan {
-        last: (f32, f32),
-    },
-    /// Pressed on a field: a click starts typing, a drag changes the value.
-    Field {
-        id: FieldId,
-        start_x: f32,
-        moved: bool,
-        base: Base,
-    },
-    /// Dragging the current-frame cursor on the ruler.
-    Seek,
-    /// Pressed in the viewport in select mode; selects on release.
-    Pick {
-        at: (f32, f32),
-    },
-}
-
-/// What a field drag started from (to compute values and the command).
-#[derive(Clone, Debug)]
-pub(super) enum Base {
-    Node(NodeId, Box<Node>),
-    Settings(Settings),
-    Frame(f32),
-    /// A key panel field: the animation and selected keys at press.
-    Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
-}
-
-/// Pixels the mouse may move before a press counts as a drag.
-const DRAG_SLOP: f32 = 3.0;
+use crate::scene::RenderStyle;
 
 impl Editor {
     /// Feeds one event; returns true when the picture needs redrawing.
@@ -58,7 +20,7 @@ impl Editor {
         redraw
     }
 
-    fn dispatch(&mut self, ev: Event) -> bool {
+    pub(in crate::editor) fn dispatch(&mut self, ev: Event) -> bool {
         match ev {
             Event::Resize { width, height } => {
                 let changed = (width.max(1), height.max(1)) != (self.width, self.height);
@@ -93,7 +55,7 @@ impl Editor {
         }
     }
 
-    fn tick(&mut self, time: f64) -> bool {
+    pub(in crate::editor) fn tick(&mut self, time: f64) -> bool {
         let status = self.autosave_tick(time);
         let Some(pb) = &mut self.playback else {
             return status;
@@ -109,7 +71,7 @@ impl Editor {
         changed || status
     }
 
-    fn toggle_play(&mut self) {
+    pub(in crate::editor) fn toggle_play(&mut self) {
         self.playback = match self.playback {
             Some(_) => None,
             None => Some(Playback {
@@ -119,16 +81,22 @@ impl Editor {
         };
     }
 
-    pub(super) fn stop_playback(&mut self) {
+    pub(in crate::editor) fn stop_playback(&mut self) {
         self.playback = None;
     }
 
     // ----- mouse -----
 
-    fn mouse_move(&mut self, x: f32, y: f32, _mods: Mods) -> bool {
+    pub(in crate::editor) fn mouse_move(&mut self, x: f32, y: f32, mods: Mods) -> bool {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
-        if let Some(redraw) = self.handles_move(x, y, _mods) {
+        if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
+            let ev = Event::MouseMove { x, y, mods };
+            if let Some(redraw) = self.graph_event(&ev) {
+                return redraw;
+            }
+        }
+        if let Some(redraw) = self.handles_move(x, y, mods) {
             return redraw;
         }
         if let Some(redraw) = self.key_strip_move(x, y) {
@@ -180,13 +148,19 @@ impl Editor {
         }
     }
 
-    fn seek_to_x(&mut self, x: f32) {
+    pub(in crate::editor) fn seek_to_x(&mut self, x: f32) {
         let l = self.layout();
         self.stop_playback();
         self.frame = l.x_to_frame(x, self.scene.settings.duration).round();
     }
 
-    fn mouse_down(&mut self, button: MouseButton, x: f32, y: f32, mods: Mods) {
+    pub(in crate::editor) fn mouse_down(
+        &mut self,
+        button: MouseButton,
+        x: f32,
+        y: f32,
+        mods: Mods,
+    ) {
         if self.dialog.is_some() || self.browser.is_some() {
             if button == MouseButton::Left {
                 self.click_modal(x, y);
@@ -194,6 +168,11 @@ impl Editor {
             return;
         }
         let l = self.layout();
+        if self.graph_shown && l.key_rows.contains(x, y) {
+            self.commit_edit();
+            self.graph_event(&Event::MouseDown { button, x, y, mods });
+            return;
+        }
         if l.viewport.contains(x, y) {
             self.commit_edit();
             let grab = button == MouseButton::Left && !mods.alt && self.mode == Mode::Select;
@@ -256,7 +235,11 @@ impl Editor {
         }
     }
 
-    fn mouse_up(&mut self, _button: MouseButton, x: f32, y: f32, _mods: Mods) {
+    pub(in crate::editor) fn mouse_up(&mut self, button: MouseButton, x: f32, y: f32, mods: Mods) {
+        if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
+            self.graph_event(&Event::MouseUp { button, x, y, mods });
+            return;
+        }
         if self.handles_release() || self.key_strip_release() {
             return;
         }
@@ -289,7 +272,7 @@ impl Editor {
         }
     }
 
-    fn wheel(&mut self, delta: f32, x: f32, y: f32, _mods: Mods) -> bool {
+    pub(in crate::editor) fn wheel(&mut self, delta: f32, x: f32, y: f32, mods: Mods) -> bool {
         if self.dialog.is_some() {
             return false;
         }
@@ -303,6 +286,10 @@ impl Editor {
             return true;
         }
         let l = self.layout();
+        if self.graph_shown && l.key_rows.contains(x, y) {
+            let ev = Event::Wheel { delta, x, y, mods };
+            return self.graph_event(&ev).unwrap_or(false);
+        }
         if l.viewport.contains(x, y) {
             self.camera.zoom(delta);
             return true;
@@ -333,14 +320,14 @@ impl Editor {
         false
     }
 
-    fn step_frame(&mut self, d: f32) {
+    pub(in crate::editor) fn step_frame(&mut self, d: f32) {
         self.stop_playback();
         self.frame = (self.frame.round() + d).clamp(0.0, self.scene.settings.duration);
     }
 
     // ----- fields -----
 
-    fn field_base(&self, id: FieldId) -> Option<Base> {
+    pub(in crate::editor) fn field_base(&self, id: FieldId) -> Option<Base> {
         if id == FieldId::Frame {
             return Some(Base::Frame(self.frame));
         }
@@ -355,7 +342,7 @@ impl Editor {
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
     }
 
-    fn field_value(&self, id: FieldId, base: &Base) -> Option<FieldValue> {
+    pub(in crate::editor) fn field_value(&self, id: FieldId, base: &Base) -> Option<FieldValue> {
         match base {
             Base::Frame(f) => Some(FieldValue::Number(*f)),
             Base::Settings(s) => id.read_settings(s),
@@ -366,7 +353,12 @@ impl Editor {
 
     /// Shows `value` in the scene as if `id` had been set (from `base`).
     /// Returns the command that would record it.
-    fn field_command(&self, id: FieldId, base: &Base, value: &FieldValue) -> Option<Command> {
+    pub(in crate::editor) fn field_command(
+        &self,
+        id: FieldId,
+        base: &Base,
+        value: &FieldValue,
+    ) -> Option<Command> {
         match base {
             Base::Frame(_) | Base::Keys(..) => None,
             Base::Settings(s) => {
@@ -388,7 +380,7 @@ impl Editor {
         }
     }
 
-    fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
+    pub(in crate::editor) fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
         self.stop_playback();
         if let Base::Keys(a, k) = base {
             self.drag_key_field(id, a, k, dx);
@@ -408,7 +400,7 @@ impl Editor {
         }
     }
 
-    fn finish_field_drag(&mut self, id: FieldId, base: Base) {
+    pub(in crate::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
         let label = format!("Drag {id:?}");
         match base {
             Base::Frame(_) => {}
@@ -422,7 +414,9 @@ impl Editor {
                 // Previews changed the stored node; put it back so the
                 // recorded command starts from it.
                 self.scene.nodes[nid.0 as usize] = (*before).clone();
-                let props: Vec<_> = super::record::field_property(id).into_iter().collect();
+                let props: Vec<_> = crate::editor::record::field_property(id)
+                    .into_iter()
+                    .collect();
                 let c = Command::SetNode {
                     id: nid,
                     before,
@@ -435,7 +429,7 @@ impl Editor {
     }
 
     /// Ends typing into a field: parses and records the value.
-    fn commit_edit(&mut self) {
+    pub(in crate::editor) fn commit_edit(&mut self) {
         let Some(edit) = self.edit.take() else { return };
         let value = if edit.field.is_text() {
             FieldValue::Text(edit.text.clone())
@@ -465,7 +459,7 @@ impl Editor {
         match self.field_command(edit.field, &base, &value) {
             Some(c) => {
                 self.stop_playback();
-                let props: Vec<_> = super::record::field_property(edit.field)
+                let props: Vec<_> = crate::editor::record::field_property(edit.field)
                     .into_iter()
                     .collect();
                 let c = self.recorded(c, &props);
@@ -475,7 +469,7 @@ impl Editor {
         }
     }
 
-    fn text(&mut self, s: &str) -> bool {
+    pub(in crate::editor) fn text(&mut self, s: &str) -> bool {
         if let Some(b) = &mut self.browser {
             if self.dialog.is_none() {
                 b.input.extend(s.chars().filter(|c| !c.is_control()));
@@ -496,7 +490,7 @@ impl Editor {
 
     // ----- picking -----
 
-    fn pick(&mut self, x: f32, y: f32) {
+    pub(in crate::editor) fn pick(&mut self, x: f32, y: f32) {
         let hit = self.pick_at(x, y);
         self.selection = hit;
         match hit {
@@ -510,7 +504,7 @@ impl Editor {
 
     // ----- keyboard -----
 
-    fn key_down(&mut self, key: Key, mods: Mods) {
+    pub(in crate::editor) fn key_down(&mut self, key: Key, mods: Mods) {
         if self.recovery_key(key) {
             return;
         }
@@ -543,6 +537,11 @@ impl Editor {
             }
             return;
         }
+        if self.graph_event(&Event::KeyDown { key, mods }).is_some()
+            || self.graph_shortcut(key, mods)
+        {
+            return;
+        }
         if self.handles_key(key, mods) || self.key_strip_key(key, mods) {
             return;
         }
@@ -556,7 +555,7 @@ impl Editor {
     }
 
     /// Esc during a drag: put back what the drag changed.
-    fn cancel_drag(&mut self) {
+    pub(in crate::editor) fn cancel_drag(&mut self) {
         if let Drag::Field { id, base, .. } = std::mem::take(&mut self.drag) {
             match base {
                 Base::Frame(f) => self.frame = f,
@@ -578,7 +577,7 @@ impl Editor {
         }
     }
 
-    fn shortcut(&mut self, key: Key, m: Mods) {
+    pub(in crate::editor) fn shortcut(&mut self, key: Key, m: Mods) {
         match (key, m.ctrl, m.shift) {
             (Key::Char('n'), true, _) => self.run_action(Action::New),
             (Key::Char('o'), true, _) => self.run_action(Action::Open),
@@ -617,7 +616,7 @@ impl Editor {
     }
 
     /// Runs `then` now, or first asks what to do with unsaved changes.
-    fn ask_unsaved(&mut self, then: After) {
+    pub(in crate::editor) fn ask_unsaved(&mut self, then: After) {
         if self.is_dirty() {
             self.dialog = Some(Dialog {
                 message: "Save changes first?".into(),
@@ -628,7 +627,7 @@ impl Editor {
         }
     }
 
-    fn continue_with(&mut self, then: After) {
+    pub(in crate::editor) fn continue_with(&mut self, then: After) {
         match then {
             After::Quit => self.quit = true,
             After::New => self.new_scene(),
@@ -637,7 +636,7 @@ impl Editor {
         }
     }
 
-    pub(super) fn run_action(&mut self, a: Action) {
+    pub(in crate::editor) fn run_action(&mut self, a: Action) {
         if self.recovery_action(a) {
             return;
         }
@@ -677,6 +676,7 @@ impl Editor {
             }
             Action::Tool(t) => self.set_tool(t),
             Action::Onion => self.toggle_onion(),
+            Action::ToggleGraph => self.toggle_graph(),
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::AddLight(which) => {
@@ -743,7 +743,7 @@ impl Editor {
         }
     }
 
-    fn cycle_object_style(&mut self) {
+    pub(in crate::editor) fn cycle_object_style(&mut self) {
         let Some(sel) = self.selection else { return };
         let next = match self.scene.node(sel).style {
             RenderStyle::Filled => RenderStyle::Lines,
@@ -764,7 +764,7 @@ impl Editor {
         self.execute(&format!("Draw as {next:?}"), Command::Group(cmds));
     }
 
-    fn delete_selection(&mut self) {
+    pub(in crate::editor) fn delete_selection(&mut self) {
         let Some(sel) = self.selection else {
             self.set_status("Nothing selected to delete", false);
             return;
@@ -785,7 +785,7 @@ impl Editor {
 
     // ----- modal boxes -----
 
-    fn click_modal(&mut self, x: f32, y: f32) {
+    pub(in crate::editor) fn click_modal(&mut self, x: f32, y: f32) {
         let Some(widget) = self.widget_at(x, y) else {
             return;
         };
@@ -817,7 +817,7 @@ impl Editor {
         }
     }
 
-    fn browser_key(&mut self, key: Key, _mods: Mods) {
+    pub(in crate::editor) fn browser_key(&mut self, key: Key, _mods: Mods) {
         let rows = {
             let r = self.browser_rect();
             ((r.h - 3 * 16 - 20) / 16).max(1) as usize
@@ -844,7 +844,7 @@ impl Editor {
     }
 
     /// Enter / the accept button: a folder is entered, a file is used.
-    fn browser_accept(&mut self) {
+    pub(in crate::editor) fn browser_accept(&mut self) {
         let Some(b) = &mut self.browser else { return };
         let path = b.resolved();
         if path.is_dir() {
@@ -885,12 +885,4 @@ impl Editor {
             }
         }
     }
-}
-
-/// Files the writers can produce.
-fn is_writable_type(p: &std::path::Path) -> bool {
-    let s = p.to_string_lossy().to_ascii_lowercase();
-    [".wrl", ".iv", ".wrl.gz", ".wrz"]
-        .iter()
-        .any(|e| s.ends_with(e))
 }

@@ -1,0 +1,65 @@
+//! What the editor's parts (components) hand back to the editor: a
+//! [`Response`] says whether the event was theirs and whether the picture
+//! changed, and carries [`Intent`]s, the changes they ask for. Components
+//! never touch the scene or the history; the editor applies intents, and
+//! scene changes go through undoable commands (egui's `Context::run`
+//! returning its side effects is the model).
+
+use crate::anim::Animation;
+use crate::editor::keystrip::KeyRef;
+
+/// A change a component asks the editor to make.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Intent {
+    /// Show this animation now (a drag in progress); not recorded.
+    Preview(Animation),
+    /// Record `before` → `after` as one undo step (the scene may already
+    /// show `after` through previews).
+    Commit {
+        label: String,
+        before: Animation,
+        after: Animation,
+    },
+    /// Make these the selected keys (the key strip and key panel follow).
+    SelectKeys(Vec<KeyRef>),
+    /// Go to this frame.
+    Seek(f32),
+    /// A line for the status bar (true: an error).
+    Status(String, bool),
+}
+
+/// A component's answer to one event.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Response {
+    /// The event was the component's (the editor routes it nowhere else).
+    pub consumed: bool,
+    pub redraw: bool,
+    pub intents: Vec<Intent>,
+}
+
+impl Response {
+    /// Not this component's event.
+    pub fn ignored() -> Response {
+        Response::default()
+    }
+    /// Taken, picture changed.
+    pub fn redraw() -> Response {
+        Response {
+            consumed: true,
+            redraw: true,
+            intents: Vec::new(),
+        }
+    }
+    /// Taken, picture unchanged.
+    pub fn taken() -> Response {
+        Response {
+            consumed: true,
+            ..Response::default()
+        }
+    }
+    pub fn with(mut self, i: Intent) -> Response {
+        self.intents.push(i);
+        self.redraw = true;
+        self
+    }
+}

@@ -1,0 +1,52 @@
+//! The editor's gesture in progress (camera, field drags, seek, pick) and
+//! what a field drag started from. Routing lives in `route/input.rs`.
+
+use super::fields::FieldId;
+use crate::scene::{Node, NodeId, Settings};
+
+/// State kept between mouse down and up.
+#[derive(Clone, Debug, Default)]
+pub(super) enum Drag {
+    #[default]
+    None,
+    Orbit {
+        last: (f32, f32),
+    },
+    Pan {
+        last: (f32, f32),
+    },
+    /// Pressed on a field: a click starts typing, a drag changes the value.
+    Field {
+        id: FieldId,
+        start_x: f32,
+        moved: bool,
+        base: Base,
+    },
+    /// Dragging the current-frame cursor on the ruler.
+    Seek,
+    /// Pressed in the viewport in select mode; selects on release.
+    Pick {
+        at: (f32, f32),
+    },
+}
+
+/// What a field drag started from (to compute values and the command).
+#[derive(Clone, Debug)]
+pub(super) enum Base {
+    Node(NodeId, Box<Node>),
+    Settings(Settings),
+    Frame(f32),
+    /// A key panel field: the animation and selected keys at press.
+    Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
+}
+
+/// Pixels the mouse may move before a press counts as a drag.
+pub(super) const DRAG_SLOP: f32 = 3.0;
+
+/// Files the writers can produce.
+pub(super) fn is_writable_type(p: &std::path::Path) -> bool {
+    let s = p.to_string_lossy().to_ascii_lowercase();
+    [".wrl", ".iv", ".wrl.gz", ".wrz"]
+        .iter()
+        .any(|e| s.ends_with(e))
+}

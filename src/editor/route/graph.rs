@@ -1,0 +1,180 @@
+//! The editor's side of the graph editor: where it sits (in the key
+//! strip's place), the context it sees, routing events to it and applying
+//! the intents it returns.
+
+use crate::editor::command::Command;
+use crate::editor::component::{Intent, Response};
+use crate::editor::graph::{Ctx, GraphEditor};
+use crate::editor::Editor;
+use crate::input::{Event, Key, Mods};
+use crate::ui::{Layout, Painter};
+
+impl Editor {
+    /// The graph editor is shown (in the key strip's place).
+    pub fn graph_open(&self) -> bool {
+        self.graph_shown
+    }
+
+    /// The graph editor's state, while it is shown.
+    pub fn graph(&self) -> Option<&GraphEditor> {
+        self.graph.as_deref().filter(|_| self.graph_shown)
+    }
+
+    /// Shows or hides the graph editor (toolbar `Graph`, Shift+F6). Hidden,
+    /// it keeps its view and channel switches.
+    pub fn toggle_graph(&mut self) {
+        self.graph_shown = !self.graph_shown;
+        if self.graph.is_none() {
+            let mut g = Box::<GraphEditor>::default();
+            g.height = self.graph_height;
+            self.graph = Some(g);
+        }
+        self.graph_follow();
+    }
+
+    /// What the graph sees: the animation, the selected object, the frame,
+    /// its area and the selected keys.
+    pub fn graph_ctx(&self) -> Ctx<'_> {
+        Ctx {
+            anim: &self.scene.animation,
+            node: self.selection,
+            node_name: self
+                .selection
+                .map(|s| crate::editor::ops::display_name(&self.scene, s))
+                .unwrap_or_default(),
+            frame: self.frame,
+            duration: self.scene.settings.duration,
+            rect: self.layout().key_rows,
+            selected: &self.keys.selected,
+        }
+    }
+
+    /// Frames a newly selected object's curves.
+    pub(in crate::editor) fn graph_follow(&mut self) {
+        if !self.graph_shown {
+            return;
+        }
+        if let Some(mut g) = self.graph.take() {
+            g.follow(&self.graph_ctx());
+            self.graph = Some(g);
+        }
+    }
+
+    /// Offers `ev` to the graph: `Some(redraw)` when it took it.
+    pub(in crate::editor) fn graph_event(&mut self, ev: &Event) -> Option<bool> {
+        if !self.graph_shown {
+            return None;
+        }
+        let mut g = self.graph.take()?;
+        let ctx = self.graph_ctx();
+        // Keys go to the graph only while the mouse is over it.
+        let over = ctx.rect.contains(self.mouse.0, self.mouse.1);
+        if matches!(ev, Event::KeyDown { .. }) && !over && !g.is_dragging() {
+            self.graph = Some(g);
+            return None;
+        }
+        g.follow(&ctx);
+        let r = g.handle(ev, &ctx);
+        self.graph_height = g.height;
+        self.graph = Some(g);
+        self.apply_response(r)
+    }
+
+    /// Applies a component's intents; `Some(redraw)` when it took the event.
+    pub(in crate::editor) fn apply_response(&mut self, r: Response) -> Option<bool> {
+        for i in r.intents {
+            match i {
+                Intent::Preview(after) => {
+                    let before = Box::new(self.scene.animation.clone());
+                    self.preview(&Command::SetAnimation {
+                        before,
+                        after: Box::new(after),
+                    });
+                }
+                Intent::Commit {
+                    label,
+                    before,
+                    after,
+                } => {
+                    self.scene.animation = after.clone();
+                    self.push_applied(
+                        &label,
+                        Command::SetAnimation {
+                            before: Box::new(before),
+                            after: Box::new(after),
+                        },
+                    );
+                }
+                Intent::SelectKeys(keys) => self.set_key_selection(keys),
+                Intent::Seek(f) => {
+                    self.stop_playback();
+                    self.frame = f;
+                }
+                Intent::Status(s, error) => self.set_status(&s, error),
+            }
+        }
+        r.consumed.then_some(r.redraw)
+    }
+
+    /// Shift+F6 and the toolbar button.
+    pub(in crate::editor) fn graph_shortcut(&mut self, key: Key, m: Mods) -> bool {
+        if key == Key::F(6) && m.shift && !m.ctrl {
+            self.toggle_graph();
+            return true;
+        }
+        false
+    }
+
+    pub(in crate::editor) fn draw_graph(&self, p: &mut Painter, l: &Layout) {
+        if l.key_rows.is_empty() {
+            return;
+        }
+        if let Some(g) = self.graph() {
+            g.draw(p, &self.graph_ctx());
+        }
+    }
+}
+
+impl Editor {
+    /// Where a script aims: the pixel of the graph key of `channel`
+    /// (`translation.y`, ...) of the selected object at `frame`, or with
+    /// `handle` the end of its tangent handle (the key must be selected
+    /// and TCB).
+    pub fn graph_point(
+        &mut self,
+        channel: &str,
+        frame: f32,
+        handle: bool,
+    ) -> Result<(f32, f32), String> {
+        use crate::editor::graph::{channel::Channel, edit::CurveKey};
+        let node = self
+            .selection
+            .ok_or("nothing selected: the graph shows the selection's curves")?;
+        let ch = Channel::parse(node, channel).ok_or_else(|| {
+            format!(
+                "unknown channel '{channel}' (translation.x, rotation.z, color.g, intensity, ...)"
+            )
+        })?;
+        self.graph_follow();
+        let g = self
+            .graph
+            .as_deref()
+            .ok_or("the graph editor is not open (Shift+F6)")?;
+        let ctx = self.graph_ctx();
+        let k = CurveKey { ch, frame };
+        let p = if handle {
+            g.handle_of(&ctx, k).map(|h| h.end).ok_or_else(|| {
+                format!("no tangent handle on {channel} at frame {frame} (select a TCB key first)")
+            })?
+        } else {
+            g.key_point(&ctx, k)
+                .ok_or_else(|| format!("no key of {channel} at frame {frame} in the graph"))?
+        };
+        if !ctx.rect.contains(p.0, p.1) {
+            return Err(format!(
+                "{channel} at frame {frame} is outside the graph's view (Home frames all)"
+            ));
+        }
+        Ok(p)
+    }
+}

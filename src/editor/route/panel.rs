@@ -1,0 +1,509 @@
+//! The editor's side of `panel`: routes events to it and applies what it returns.
+
+use crate::editor::browser::Browser;
+use crate::editor::fields::FieldId;
+use crate::editor::ops::{self, NewLight};
+#[allow(unused_imports)]
+use crate::editor::panel::*;
+use crate::editor::{Editor, Mode};
+use crate::scene::{LightKind, NodeId, NodeKind};
+use crate::ui::layout::{CONTROLS_H, ROW};
+use crate::ui::text::{self, CHAR_W};
+use crate::ui::{Rect, SidePanel};
+
+impl Editor {
+    /// Property rows the selection needs (for the side panel split).
+    pub(in crate::editor) fn prop_rows(&self) -> i32 {
+        match self.selection.map(|s| &self.scene.node(s).kind) {
+            None => 1,
+            Some(NodeKind::Light(l)) => match l.kind {
+                LightKind::Directional => 5,
+                LightKind::Point => 5,
+                LightKind::Spot { .. } => 7,
+            },
+            Some(_) => 5,
+        }
+    }
+
+    pub fn side_panel(&self) -> SidePanel {
+        SidePanel::new(
+            self.layout().side,
+            self.section_rows(),
+            [
+                ops::objects(&self.scene).len(),
+                ops::lights(&self.scene).len(),
+            ],
+        )
+    }
+
+    /// Scrolls the objects and lights lists so the selection's row shows.
+    pub(in crate::editor) fn reveal_selection(&mut self) {
+        let Some(sel) = self.selection else { return };
+        if self.revealed == Some(sel) {
+            return;
+        }
+        self.revealed = Some(sel);
+        let sp = self.side_panel();
+        let lists: [(Vec<NodeId>, Rect); 2] = [
+            (
+                ops::objects(&self.scene)
+                    .into_iter()
+                    .map(|(id, _)| id)
+                    .collect(),
+                sp.objects,
+            ),
+            (ops::lights(&self.scene), sp.lights),
+        ];
+        for (i, (ids, r)) in lists.iter().enumerate() {
+            if let Some(pos) = ids.iter().position(|&id| id == sel) {
+                let cap = Self::list_capacity(*r).max(1);
+                let s = &mut self.scroll[i];
+                if pos < *s {
+                    *s = pos;
+                } else if pos >= *s + cap {
+                    *s = pos + 1 - cap;
+                }
+            }
+        }
+    }
+
+    /// Visible rows of a list section.
+    pub(in crate::editor) fn list_capacity(r: Rect) -> usize {
+        ((r.h - ROW).max(0) / ROW) as usize
+    }
+
+    /// All widgets of the main window (not the modal ones).
+    pub fn widgets(&self) -> Vec<Widget> {
+        let l = self.layout();
+        let mut out = Vec::new();
+        self.toolbar_widgets(l.toolbar, &mut out);
+        let sp = self.side_panel();
+        self.scene_widgets(sp.scene, &mut out);
+        self.list_widgets(sp.objects, List::Objects, &mut out);
+        self.list_widgets(sp.lights, List::Lights, &mut out);
+        self.prop_widgets(sp.props, &mut out);
+        self.controls_widgets(l.controls, &mut out);
+        out
+    }
+
+    pub(in crate::editor) fn toolbar_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+        let style = match self.view_style {
+            None => "Own",
+            Some(s) => style_name(s),
+        };
+        let style_label = format!("Style:{style}");
+        use crate::editor::manip::Tool;
+        let tool = self.tool();
+        let items: [(&str, Action, bool); 13] = [
+            ("New", Action::New, false),
+            ("Open", Action::Open, false),
+            ("Imp", Action::Import, false),
+            ("Save", Action::Save, false),
+            (
+                "Mov",
+                Action::Tool(Tool::Translate),
+                tool == Tool::Translate,
+            ),
+            ("Rot", Action::Tool(Tool::Rotate), tool == Tool::Rotate),
+            ("Scl", Action::Tool(Tool::Scale), tool == Tool::Scale),
+            ("Rec", Action::Record, self.record),
+            (
+                if self.playback.is_some() {
+                    "Stop"
+                } else {
+                    "Play"
+                },
+                Action::Play,
+                self.playback.is_some(),
+            ),
+            ("Grid", Action::Grid, self.show_grid),
+            ("Onion", Action::Onion, self.onion_shown()),
+            ("Graph", Action::ToggleGraph, self.graph_open()),
+            (&style_label, Action::ViewStyle, false),
+        ];
+        let mut x = r.x + 2;
+        for (label, action, on) in items {
+            let bw = text::width(label) + 6;
+            if x + bw > r.right() - 2 {
+                break;
+            }
+            out.push(button(
+                Rect::new(x, r.y + 2, bw, r.h - 4),
+                label,
+                action,
+                on,
+            ));
+            x += bw + 1;
+        }
+    }
+
+    pub(in crate::editor) fn scene_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+        let (h, rest) = r.take_top(ROW);
+        out.push(w(h, WidgetKind::Header("Scene".into())));
+        let row = Rect::new(rest.x + 2, rest.y + 1, rest.w - 4, ROW);
+        let half = row.w / 2;
+        let (a, b) = row.take_left(half);
+        field_row(out, a, "fps", 4 * CHAR_W, &[FieldId::Fps]);
+        field_row(
+            out,
+            Rect::new(b.x + 2, b.y, b.w - 2, b.h),
+            "len",
+            4 * CHAR_W,
+            &[FieldId::Duration],
+        );
+    }
+
+    pub(in crate::editor) fn list_widgets(&self, r: Rect, list: List, out: &mut Vec<Widget>) {
+        let (h, body) = r.take_top(ROW);
+        let rows: Vec<(NodeId, usize)> = match list {
+            List::Objects => ops::objects(&self.scene),
+            List::Lights => ops::lights(&self.scene)
+                .into_iter()
+                .map(|id| (id, 0))
+                .collect(),
+        };
+        let title = match list {
+            List::Objects => format!("Objects ({})", rows.len()),
+            List::Lights => "Lights".to_string(),
+        };
+        out.push(w(h, WidgetKind::Header(title)));
+        if list == List::Lights {
+            // Add-light buttons at the right of the header; one-letter
+            // labels when the panel is narrow.
+            let long = [
+                ("+Spot", NewLight::Spot),
+                ("+Pt", NewLight::Point),
+                ("+Dir", NewLight::Directional),
+            ];
+            let short = [
+                ("+S", NewLight::Spot),
+                ("+P", NewLight::Point),
+                ("+D", NewLight::Directional),
+            ];
+            let need: i32 = long.iter().map(|(l, _)| text::width(l) + 5).sum();
+            let items = if h.w - text::width("Lights") - 8 >= need {
+                long
+            } else {
+                short
+            };
+            let mut x = h.right() - 2;
+            for (label, which) in items {
+                let bw = text::width(label) + 4;
+                x -= bw;
+                out.push(button(
+                    Rect::new(x, h.y + 1, bw, h.h - 2),
+                    label,
+                    Action::AddLight(which),
+                    false,
+                ));
+                x -= 1;
+            }
+        }
+        let cap = Self::list_capacity(r);
+        let idx = if list == List::Objects { 0 } else { 1 };
+        let first = self.scroll[idx].min(rows.len().saturating_sub(cap));
+        for (i, (id, depth)) in rows.iter().skip(first).take(cap).enumerate() {
+            let rr = Rect::new(body.x, body.y + i as i32 * ROW, body.w, ROW);
+            if list == List::Lights {
+                let (main, chk) = rr.take_left(rr.w - ROW - 2);
+                out.push(w(
+                    main,
+                    WidgetKind::Row {
+                        node: *id,
+                        depth: *depth,
+                        list,
+                    },
+                ));
+                let on = self.scene.node(*id).light().is_some_and(|l| l.on);
+                out.push(w(
+                    chk,
+                    WidgetKind::Check {
+                        action: Action::ToggleLight(*id),
+                        on,
+                    },
+                ));
+            } else {
+                out.push(w(
+                    rr,
+                    WidgetKind::Row {
+                        node: *id,
+                        depth: *depth,
+                        list,
+                    },
+                ));
+            }
+        }
+        if rows.is_empty() && body.h >= ROW {
+            out.push(label(
+                Rect::new(body.x + 4, body.y, body.w - 4, ROW),
+                "(none)",
+                true,
+            ));
+        }
+    }
+
+    pub(in crate::editor) fn prop_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+        if self.key_panel_shown() {
+            self.key_panel_widgets(r, out);
+            return;
+        }
+        let (h, body) = r.take_top(ROW);
+        let body = Rect::new(body.x + 2, body.y + 1, body.w - 4, body.h - 1);
+        let Some(sel) = self.selection else {
+            out.push(w(h, WidgetKind::Header("Properties".into())));
+            out.push(label(
+                Rect::new(body.x + 2, body.y, body.w, ROW),
+                "Nothing selected",
+                true,
+            ));
+            return;
+        };
+        let node = self.scene.node(sel);
+        let kind = match &node.kind {
+            NodeKind::Light(l) => ops::light_kind_name(l),
+            NodeKind::Shape(_) => "Shape",
+            NodeKind::Camera(_) => "Camera",
+            NodeKind::Group => "Object",
+        };
+        out.push(w(h, WidgetKind::Header(kind.to_string())));
+        let lw = 5 * CHAR_W;
+        let mut y = body.y;
+        let mut row = |out: &mut Vec<Widget>, f: &dyn Fn(&mut Vec<Widget>, Rect)| {
+            if y + ROW <= body.bottom() + 1 {
+                f(out, Rect::new(body.x, y, body.w, ROW));
+            }
+            y += ROW;
+        };
+        row(out, &|o, r| field_row(o, r, "Name", lw, &[FieldId::Name]));
+        match &node.kind {
+            NodeKind::Light(l) => {
+                let on = l.on;
+                row(out, &|o, r| {
+                    let (a, b) = r.take_left(lw);
+                    o.push(label(a, "On", true));
+                    o.push(w(
+                        Rect::new(b.x, b.y, ROW, b.h),
+                        WidgetKind::Check {
+                            action: Action::ToggleLight(sel),
+                            on,
+                        },
+                    ));
+                    let rest = Rect::new(b.x + ROW + 4, b.y, b.w - ROW - 4, b.h);
+                    field_row(o, rest, "Int", lw, &[FieldId::LightIntensity]);
+                });
+                row(out, &|o, r| {
+                    field_row(o, r, "Col", lw, &[0, 1, 2].map(FieldId::LightColor))
+                });
+                if !matches!(l.kind, LightKind::Directional) {
+                    row(out, &|o, r| {
+                        field_row(o, r, "Loc", lw, &[0, 1, 2].map(FieldId::LightLocation))
+                    });
+                }
+                if !matches!(l.kind, LightKind::Point) {
+                    row(out, &|o, r| {
+                        field_row(o, r, "Dir", lw, &[0, 1, 2].map(FieldId::LightDirection))
+                    });
+                }
+                if matches!(l.kind, LightKind::Spot { .. }) {
+                    row(out, &|o, r| {
+                        let (a, _) = r.take_left(r.w / 2);
+                        field_row(o, a, "Cut", lw, &[FieldId::LightCutOff])
+                    });
+                }
+                row(out, &|o, r| {
+                    let bw = text::width("Delete") + 8;
+                    o.push(button(
+                        Rect::new(r.right() - bw, r.y + 1, bw, r.h - 2),
+                        "Delete",
+                        Action::Delete,
+                        false,
+                    ));
+                });
+            }
+            _ => {
+                row(out, &|o, r| {
+                    field_row(o, r, "T", lw, &[0, 1, 2].map(FieldId::Translation))
+                });
+                row(out, &|o, r| {
+                    field_row(o, r, "R", lw, &[0, 1, 2].map(FieldId::Rotation))
+                });
+                row(out, &|o, r| {
+                    field_row(o, r, "S", lw, &[0, 1, 2].map(FieldId::Scale))
+                });
+                let style = style_name(node.style);
+                row(out, &|o, r| {
+                    let (a, b) = r.take_left(lw);
+                    o.push(label(a, "Draw", true));
+                    let bw = text::width("Hidden") + 8;
+                    o.push(button(
+                        Rect::new(b.x, b.y + 1, bw, b.h - 2),
+                        style,
+                        Action::ObjectStyle,
+                        false,
+                    ));
+                    let dw = text::width("Delete") + 8;
+                    o.push(button(
+                        Rect::new(r.right() - dw, r.y + 1, dw, r.h - 2),
+                        "Delete",
+                        Action::Delete,
+                        false,
+                    ));
+                });
+            }
+        }
+        row(out, &|o, r| self.key_list_row(r, o));
+        self.key_panel_switch(h, out);
+    }
+
+    pub(in crate::editor) fn controls_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+        let y = r.y + 1;
+        let h = CONTROLS_H - 2;
+        let mut x = r.x + 4;
+        out.push(label(Rect::new(x, y, 6 * CHAR_W, h), "Frame", true));
+        x += 6 * CHAR_W;
+        let fw = 6 * CHAR_W;
+        out.push(w(Rect::new(x, y, fw, h), WidgetKind::Field(FieldId::Frame)));
+        x += fw + 4;
+        let total = format!("/{}", self.scene.settings.duration);
+        let tw = text::width(&total);
+        out.push(label(Rect::new(x, y, tw, h), &total, true));
+        x += tw + 8;
+        let mode = match self.mode {
+            Mode::Select => "Select",
+            Mode::View => "View",
+        };
+        let mw = text::width("Select") + 8;
+        if x + mw < r.right() {
+            out.push(button(Rect::new(x, y, mw, h), mode, Action::Mode, false));
+            x += mw + 8;
+        }
+        if x < r.right() - 4 {
+            out.push(label(
+                Rect::new(x, y, r.right() - 4 - x, h),
+                &self.status.text,
+                false,
+            ));
+        }
+    }
+
+    /// The file browser's box.
+    pub fn browser_rect(&self) -> Rect {
+        let win = self.layout().window;
+        let bw = (win.w - 40).clamp(100, 560);
+        let bh = (win.h - 40).clamp(80, 420);
+        Rect::new((win.w - bw) / 2, (win.h - bh) / 2, bw, bh)
+    }
+
+    /// Widgets of the file browser.
+    pub fn browser_widgets(&self, b: &Browser) -> Vec<Widget> {
+        let r = self.browser_rect();
+        let mut out = Vec::new();
+        let (title, rest) = r.take_top(ROW + 2);
+        out.push(w(title, WidgetKind::Header(b.purpose.title().into())));
+        let inner = rest.inset(4);
+        let (path_row, rest) = inner.take_top(ROW + 2);
+        out.push(w(path_row, WidgetKind::PathInput));
+        let (list, buttons) = rest.take_top(rest.h - ROW - 6);
+        let list = Rect::new(list.x, list.y + 3, list.w, list.h - 3);
+        let cap = (list.h / ROW).max(0) as usize;
+        for (i, _) in b.entries.iter().enumerate().skip(b.scroll).take(cap) {
+            let y = list.y + (i - b.scroll) as i32 * ROW;
+            out.push(w(Rect::new(list.x, y, list.w, ROW), WidgetKind::Entry(i)));
+        }
+        let by = buttons.y + 4;
+        let cw = text::width("Cancel") + 10;
+        let aw = text::width(b.purpose.verb()) + 10;
+        let uw = text::width("Up") + 10;
+        out.push(button(
+            Rect::new(buttons.right() - cw, by, cw, ROW + 2),
+            "Cancel",
+            Action::BrowserCancel,
+            false,
+        ));
+        out.push(button(
+            Rect::new(buttons.right() - cw - aw - 4, by, aw, ROW + 2),
+            b.purpose.verb(),
+            Action::BrowserAccept,
+            true,
+        ));
+        out.push(button(
+            Rect::new(buttons.x, by, uw, ROW + 2),
+            "Up",
+            Action::BrowserUp,
+            false,
+        ));
+        if let Some(m) = &b.message {
+            let x = buttons.x + uw + 6;
+            let mw = buttons.right() - cw - aw - 10 - x;
+            out.push(label(Rect::new(x, by + 1, mw, ROW), m, true));
+        }
+        out
+    }
+
+    pub fn dialog_rect(&self) -> Rect {
+        let win = self.layout().window;
+        let bw = (win.w - 20).clamp(100, 360);
+        let lines = self
+            .dialog
+            .as_ref()
+            .map_or(1, |d| d.message.lines().count());
+        let bh = (2 + lines.max(1) as i32) * ROW + 20;
+        Rect::new((win.w - bw) / 2, (win.h - bh) / 2, bw, bh)
+    }
+
+    pub fn dialog_widgets(&self, message: &str) -> Vec<Widget> {
+        let r = self.dialog_rect();
+        let mut out = Vec::new();
+        let recover = self
+            .dialog
+            .as_ref()
+            .is_some_and(|d| d.then == crate::editor::After::Recover);
+        let (heading, labels) = if recover {
+            ("Recovery copy", ["Open saved", "Discard copy", "Recover"])
+        } else {
+            ("Unsaved changes", ["Cancel", "Discard", "Save"])
+        };
+        let (title, rest) = r.take_top(ROW + 2);
+        out.push(w(title, WidgetKind::Header(heading.into())));
+        for (i, line) in message.lines().enumerate() {
+            out.push(label(
+                Rect::new(rest.x + 6, rest.y + 4 + i as i32 * ROW, rest.w - 12, ROW),
+                line,
+                false,
+            ));
+        }
+        let by = rest.bottom() - ROW - 8;
+        let mut x = rest.right() - 6;
+        for (l, a) in labels.into_iter().zip([
+            Action::DialogCancel,
+            Action::DialogDiscard,
+            Action::DialogSave,
+        ]) {
+            let bw = text::width(l) + 10;
+            x -= bw;
+            out.push(button(
+                Rect::new(x, by, bw, ROW + 2),
+                l,
+                a,
+                a == Action::DialogSave,
+            ));
+            x -= 4;
+        }
+        out
+    }
+
+    /// The topmost widget under (x, y), considering modal boxes first.
+    pub fn widget_at(&self, x: f32, y: f32) -> Option<Widget> {
+        let list = if let Some(d) = &self.dialog {
+            self.dialog_widgets(&d.message)
+        } else if let Some(b) = &self.browser {
+            self.browser_widgets(b)
+        } else {
+            self.widgets()
+        };
+        list.into_iter().rev().find(|w| {
+            w.rect.contains(x, y)
+                && !matches!(w.kind, WidgetKind::Label { .. } | WidgetKind::Header(_))
+        })
+    }
+}

@@ -1,0 +1,466 @@
+//! The graph editor, driven as a user drives it: Shift+F6 or the toolbar
+//! opens it in the key strip's place; keys and tangent handles are aimed
+//! at through the headless script steps (`click-curve-key`,
+//! `drag-curve-key`, `drag-curve-handle`), and every edit is checked on
+//! the scene's keys, on undo, and in goldens/editor_graph_*.png.
+
+#[path = "common/golden.rs"]
+mod golden;
+#[path = "common/ui_input.rs"]
+mod ui_input;
+
+use animed::anim::{Interp, Key, Property, Target, TargetRef, Value};
+use animed::editor::{script, Editor, Event, Key as K, Mods, MouseButton};
+use animed::scene::NodeId;
+use std::path::{Path, PathBuf};
+
+const W: u32 = 480;
+const H: u32 = 320;
+
+/// The editor on the frozen copy of the demo stage (Ball keys at 0, 24,
+/// 48, 72, 96, linear).
+fn stage() -> Editor {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
+    let loaded = animed::format::load(&path).expect("the stage loads");
+    Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), W, H)
+}
+
+fn run(ed: &mut Editor, s: &str) {
+    script::run(ed, s, Path::new("graph-session.txt")).unwrap_or_else(|e| panic!("{e}"));
+}
+
+fn ball(ed: &Editor) -> NodeId {
+    ed.scene().find_node("Ball").expect("Ball")
+}
+
+/// The Ball's translation key at `frame`.
+fn key_at(ed: &Editor, frame: f32) -> Option<Key<Value>> {
+    let t = ed.scene().animation.track(Target {
+        of: TargetRef::Node(ball(ed)),
+        property: Property::Translation,
+    })?;
+    t.key(t.key_index_at(frame)?)
+}
+
+fn y_of(k: Key<Value>) -> f32 {
+    match k.value {
+        Value::Vec3(v) => v.y,
+        _ => panic!("translation is a Vec3"),
+    }
+}
+
+/// Stage with the Ball selected and the graph open.
+fn graph_on_ball() -> Editor {
+    let mut ed = stage();
+    run(&mut ed, "select Ball\nkey shift+f6");
+    assert!(ed.graph_open(), "Shift+F6 opens the graph");
+    ed
+}
+
+#[test]
+fn shift_f6_and_the_toolbar_button_toggle_the_graph_in_the_strips_place() {
+    let mut ed = stage();
+    let strip = ed.layout().key_rows;
+    run(&mut ed, "select Ball\nkey shift+f6");
+    assert!(ed.graph_open());
+    let g = ed.layout().key_rows;
+    assert!(
+        g.h > strip.h.max(60),
+        "the graph is taller than the strip: {g:?}"
+    );
+    assert_eq!(
+        ed.layout().viewport.h + g.h,
+        strip.h + ed.layout().viewport.h + (g.h - strip.h)
+    );
+    run(&mut ed, "key shift+f6");
+    assert!(!ed.graph_open());
+    let b = ed
+        .widgets()
+        .into_iter()
+        .find(|w| format!("{:?}", w.kind).contains("ToggleGraph"))
+        .expect("a Graph button on the toolbar");
+    let c = (
+        (b.rect.x + b.rect.w / 2) as f32,
+        (b.rect.y + b.rect.h / 2) as f32,
+    );
+    ui_input::click(&mut ed, c);
+    assert!(ed.graph_open(), "the toolbar button opens it");
+}
+
+#[test]
+fn dragging_a_key_up_raises_its_value_and_one_undo_restores_it() {
+    let mut ed = graph_on_ball();
+    let before = y_of(key_at(&ed, 24.0).unwrap());
+    let steps = ed.history().labels().count();
+    let world = |ed: &Editor| {
+        let s = ed.scene();
+        animed::editor::motion_path::world_at(s, &s.animation, ball(ed), 24.0)
+            .w_axis
+            .y
+    };
+    let shown = world(&ed);
+    run(&mut ed, "drag-curve-key translation.y 24 0 -20");
+    let after = y_of(key_at(&ed, 24.0).expect("still at frame 24 (no sideways motion)"));
+    assert!(after > before + 0.05, "{before} -> {after}");
+    let labels: Vec<&str> = ed.history().labels().collect();
+    assert_eq!(labels.len(), steps + 1, "one undo step: {labels:?}");
+    // Where the motion path and the viewport put the Ball follows the key.
+    assert!((world(&ed) - shown - (after - before)).abs() < 1e-4);
+    run(&mut ed, "key ctrl+z");
+    assert_eq!(y_of(key_at(&ed, 24.0).unwrap()), before);
+}
+
+#[test]
+fn a_sideways_drag_moves_the_key_in_time_and_ctrl_snaps_it_to_a_frame() {
+    let mut ed = graph_on_ball();
+    run(&mut ed, "drag-curve-key translation.y 24 9 0");
+    let moved: Vec<f32> = frames(&ed);
+    assert!(!moved.contains(&24.0), "left frame 24: {moved:?}");
+    let f = moved[1];
+    assert!(f > 24.0 && f < 36.0, "{moved:?}");
+    run(&mut ed, "key ctrl+z");
+    run(&mut ed, "drag-curve-key translation.y 24 9 0 ctrl");
+    let snapped = frames(&ed)[1];
+    assert!(
+        snapped > 24.0 && snapped.fract() == 0.0,
+        "Ctrl snaps to whole frames: {snapped}"
+    );
+}
+
+fn frames(ed: &Editor) -> Vec<f32> {
+    ed.scene()
+        .animation
+        .track(Target {
+            of: TargetRef::Node(ball(ed)),
+            property: Property::Translation,
+        })
+        .unwrap()
+        .keys
+        .frames()
+}
+
+#[test]
+fn dragging_the_tangent_handle_sets_tension_and_bias_and_the_handle_follows() {
+    let mut ed = graph_on_ball();
+    run(&mut ed, "click-curve-key translation.y 24");
+    let k0 = key_at(&ed, 24.0).unwrap();
+    assert_eq!(k0.interp, Interp::Linear);
+    let start = ed.graph_point("translation.y", 24.0, true).unwrap();
+    run(&mut ed, "drag-curve-handle translation.y 24 25 -12");
+    let k = key_at(&ed, 24.0).unwrap();
+    assert_eq!(k.interp, Interp::Tcb, "shaping a key makes it TCB");
+    assert_eq!(y_of(k), y_of(k0), "the value stays");
+    assert!(k.tension < 0.0, "a longer handle loosens: {}", k.tension);
+    assert!(k.bias != 0.0, "the direction sets bias: {}", k.bias);
+    assert_eq!(k.continuity, 0.0);
+    // Tension and bias were solved from the release point: the handle
+    // now ends there.
+    let end = ed.graph_point("translation.y", 24.0, true).unwrap();
+    let want = (start.0 + 25.0, start.1 - 12.0);
+    assert!(
+        (end.0 - want.0).hypot(end.1 - want.1) < 2.0,
+        "handle at {end:?}, released at {want:?}"
+    );
+    run(&mut ed, "key ctrl+z");
+    let k = key_at(&ed, 24.0).unwrap();
+    assert_eq!((k.interp, k.tension, k.bias), (Interp::Linear, 0.0, 0.0));
+}
+
+#[test]
+fn alt_on_the_handle_sets_continuity() {
+    let mut ed = graph_on_ball();
+    run(
+        &mut ed,
+        "click-curve-key translation.y 24\ndrag-curve-handle translation.y 24 30 0 alt",
+    );
+    let k = key_at(&ed, 24.0).unwrap();
+    assert!(k.continuity > 0.3, "{}", k.continuity);
+    assert_eq!(k.bias, 0.0);
+}
+
+#[test]
+fn a_locked_channel_keeps_its_keys_and_a_hidden_one_is_not_drawn() {
+    let mut ed = graph_on_ball();
+    let list = graph_list(&ed);
+    // Channel rows under the list header: translation.x, .y, .z.
+    let row_y = (list.y + 2 * 16 + 8) as f32;
+    ui_input::click(&mut ed, ((list.x + 22) as f32, row_y));
+    let before = y_of(key_at(&ed, 24.0).unwrap());
+    run(&mut ed, "drag-curve-key translation.y 24 0 -20");
+    assert_eq!(y_of(key_at(&ed, 24.0).unwrap()), before, "locked");
+    ui_input::click(&mut ed, ((list.x + 8) as f32, row_y));
+    let err = script::run(&mut ed, "click-curve-key translation.y 24", Path::new("s"));
+    assert!(err.is_err(), "a hidden curve's keys cannot be aimed at");
+}
+
+fn graph_list(ed: &Editor) -> animed::ui::Rect {
+    animed::editor::graph::Areas::new(ed.layout().key_rows).list
+}
+
+#[test]
+fn a_box_selects_keys_and_the_key_panel_follows() {
+    let mut ed = graph_on_ball();
+    let a = animed::editor::graph::Areas::new(ed.layout().key_rows);
+    let p = a.plot;
+    ui_input::drag_via(
+        &mut ed,
+        &[
+            ((p.x + 2) as f32, (p.y + 2) as f32),
+            ((p.right() - 2) as f32, (p.bottom() - 2) as f32),
+        ],
+        Mods::NONE,
+    );
+    let sel = ed.selected_keys();
+    assert!(sel.len() >= 3, "keys in view selected: {sel:?}");
+    assert!(sel.iter().all(|k| k.property == Property::Translation));
+}
+
+#[test]
+fn the_frame_band_scrubs_and_the_wheel_zooms() {
+    let mut ed = graph_on_ball();
+    let a = animed::editor::graph::Areas::new(ed.layout().key_rows);
+    let v = ed.graph().unwrap().view;
+    let x = v.frame_to_x(a.plot, 30.0);
+    ui_input::click(&mut ed, (x, (a.band.y + 5) as f32));
+    assert_eq!(ed.current_frame(), 30.0);
+    let span = v.f1 - v.f0;
+    let (cx, cy) = (
+        (a.plot.x + a.plot.w / 2) as f32,
+        (a.plot.y + a.plot.h / 2) as f32,
+    );
+    ed.handle(Event::MouseMove {
+        x: cx,
+        y: cy,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::Wheel {
+        delta: 2.0,
+        x: cx,
+        y: cy,
+        mods: Mods::NONE,
+    });
+    let z = ed.graph().unwrap().view;
+    assert!(z.f1 - z.f0 < span * 0.8, "zoomed in on frames");
+    ed.handle(Event::Wheel {
+        delta: -2.0,
+        x: cx,
+        y: cy,
+        mods: Mods::ctrl(),
+    });
+    let zv = ed.graph().unwrap().view;
+    assert!(
+        zv.v1 - zv.v0 > (z.v1 - z.v0) * 1.2,
+        "Ctrl+wheel zooms values"
+    );
+    ed.handle(Event::KeyDown {
+        key: K::Home,
+        mods: Mods::NONE,
+    });
+    assert_eq!(ed.graph().unwrap().view, v, "Home frames all again");
+    // Middle drag pans.
+    ed.handle(Event::MouseDown {
+        button: MouseButton::Middle,
+        x: cx,
+        y: cy,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::MouseMove {
+        x: cx + 40.0,
+        y: cy,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::MouseUp {
+        button: MouseButton::Middle,
+        x: cx + 40.0,
+        y: cy,
+        mods: Mods::NONE,
+    });
+    assert!(ed.graph().unwrap().view.f0 < v.f0);
+}
+
+#[test]
+fn graph_goldens() {
+    let mut ed = graph_on_ball();
+    golden::check("editor_graph_open", &ed.render_frame());
+    run(
+        &mut ed,
+        "drag-curve-key translation.y 24 0 -20\nclick-curve-key translation.y 24\ndrag-curve-handle translation.y 24 25 -12",
+    );
+    // Home over the graph frames all again, handle and all.
+    run(&mut ed, "move 300 250\nkey home");
+    golden::check("editor_graph_shaped", &ed.render_frame());
+    run(&mut ed, "key n");
+    golden::check("editor_graph_normalised", &ed.render_frame());
+}
+
+/// No file of `src/editor/` imports another that (through others)
+/// imports it back. An edge A → B is any path in A's non-test code that
+/// names module B (`use super::b::…`, `crate::editor::b::…`, a child
+/// `b::…` in a module file, a `use` group); `mod b;` declarations are not
+/// edges, and re-exports are followed to the file that defines the item.
+#[test]
+fn editor_files_import_no_cycle() {
+    use std::collections::{BTreeMap, BTreeSet};
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files: BTreeMap<Vec<String>, String> = BTreeMap::new();
+    let mut stack = vec![root.join("editor")];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                let rel = p.strip_prefix(&root).unwrap().with_extension("");
+                let mut m: Vec<String> = rel
+                    .iter()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .collect();
+                if m.last().is_some_and(|l| l == "mod") {
+                    m.pop();
+                }
+                let text = std::fs::read_to_string(&p).unwrap();
+                // Test modules sit at the ends of files; comments go.
+                let code = text.split("#[cfg(test)]").next().unwrap_or("");
+                let code: String = code
+                    .lines()
+                    .map(|l| l.split("//").next().unwrap_or(""))
+                    .collect::<Vec<_>>()
+                    .join("\n");
+                files.insert(m, code);
+            }
+        }
+    }
+    let is_mod = |m: &[String]| files.contains_key(m);
+    // Expands `a::{b, c::{d}}` into full paths.
+    fn expand(tree: &str) -> Vec<String> {
+        let tree = tree.trim();
+        let Some(i) = tree.find('{') else {
+            return vec![tree.split(" as ").next().unwrap_or("").trim().to_string()];
+        };
+        let (prefix, inner) = (
+            &tree[..i],
+            &tree[i + 1..tree.rfind('}').unwrap_or(tree.len())],
+        );
+        let (mut parts, mut depth, mut cur) = (Vec::new(), 0, String::new());
+        for c in inner.chars() {
+            match c {
+                ',' if depth == 0 => parts.push(std::mem::take(&mut cur)),
+                _ => {
+                    depth += (c == '{') as i32 - (c == '}') as i32;
+                    cur.push(c);
+                }
+            }
+        }
+        parts.push(cur);
+        parts
+            .iter()
+            .filter(|p| !p.trim().is_empty())
+            .flat_map(|p| expand(p))
+            .map(|e| format!("{prefix}{e}"))
+            .collect()
+    }
+    let resolve = |here: &[String], path: &str| -> Option<Vec<String>> {
+        let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
+        let mut cur: Vec<String> = here.to_vec();
+        let mut rest = &segs[..];
+        match segs.first()? {
+            &"crate" => {
+                cur.clear();
+                rest = &segs[1..];
+            }
+            &"super" | &"self" => {
+                while let Some(s) = rest.first().filter(|s| **s == "super" || **s == "self") {
+                    if *s == "super" {
+                        cur.pop();
+                    }
+                    rest = &rest[1..];
+                }
+            }
+            first => {
+                let mut child = cur.clone();
+                child.push(first.to_string());
+                if !is_mod(&child) {
+                    return None;
+                }
+            }
+        }
+        for s in rest {
+            let mut next = cur.clone();
+            next.push(s.to_string());
+            if is_mod(&next) {
+                cur = next;
+            } else {
+                break;
+            }
+        }
+        Some(cur)
+    };
+    let mut edges: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = BTreeMap::new();
+    for (m, code) in &files {
+        let mut paths = Vec::new();
+        // `use` statements (at a line's start, maybe `pub`), to their `;`.
+        let mut at = 0;
+        for line in code.split_inclusive('\n') {
+            let t = line.trim_start();
+            let t = t
+                .strip_prefix("pub(crate) ")
+                .or(t.strip_prefix("pub(super) "))
+                .unwrap_or(t);
+            let t = t.strip_prefix("pub ").unwrap_or(t);
+            if let Some(rest) = t.strip_prefix("use ") {
+                let start = at + (line.len() - rest.len());
+                if let Some(tree) = code[start..].split(';').next() {
+                    paths.extend(expand(tree));
+                }
+            }
+            at += line.len();
+        }
+        for w in code.split(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')) {
+            if w.contains("::") {
+                paths.push(w.to_string());
+            }
+        }
+        for p in paths {
+            if let Some(t) = resolve(m, &p) {
+                if &t != m && t.first().is_some_and(|f| f == "editor") && files.contains_key(&t) {
+                    edges.entry(m.clone()).or_default().insert(t);
+                }
+            }
+        }
+    }
+    // A cycle shows as a path back to its start (depth-first search).
+    fn cycle_from(
+        n: &Vec<String>,
+        edges: &BTreeMap<Vec<String>, BTreeSet<Vec<String>>>,
+        path: &mut Vec<Vec<String>>,
+        done: &mut BTreeSet<Vec<String>>,
+    ) -> Option<Vec<Vec<String>>> {
+        if let Some(i) = path.iter().position(|p| p == n) {
+            return Some(path[i..].to_vec());
+        }
+        if !done.insert(n.clone()) {
+            return None;
+        }
+        path.push(n.clone());
+        for t in edges.get(n).into_iter().flatten() {
+            if let Some(c) = cycle_from(t, edges, path, done) {
+                return Some(c);
+            }
+        }
+        path.pop();
+        None
+    }
+    let total: usize = edges.values().map(BTreeSet::len).sum();
+    assert!(
+        total > 50,
+        "the scan found the editor's imports ({total} edges)"
+    );
+    let mut done = BTreeSet::new();
+    for n in files.keys() {
+        let mut path = Vec::new();
+        if let Some(c) = cycle_from(n, &edges, &mut path, &mut done) {
+            let names: Vec<String> = c.iter().map(|m| m.join("/")).collect();
+            panic!("import cycle in src/editor: {}", names.join(" -> "));
+        }
+    }
+}
