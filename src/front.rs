@@ -87,8 +87,8 @@ pub struct RenderSpec {
     /// The light at the camera ([`Headlight::Auto`]: VRML97 files decide
     /// through NavigationInfo, others get it on).
     pub headlight: Headlight,
-    /// Anti-aliasing samples per pixel: 1 (none), 4 or 8 (multisampling,
-    /// see `render::RenderOptions::aa`); other values are an error.
+    /// Anti-aliasing samples per pixel. Only 1 (no anti-aliasing) is
+    /// supported today; other values are an error.
     pub aa: u32,
     /// Worker threads, 0 = one per core. Never changes the picture.
     pub threads: usize,
@@ -189,9 +189,9 @@ impl RenderSpec {
         if !self.time.is_finite() {
             return bad(format!("time {} is not a finite number", self.time));
         }
-        if ![1, 4, 8].contains(&self.aa) {
+        if self.aa != 1 {
             return bad(format!(
-                "aa {}: samples per pixel must be 1, 4 or 8",
+                "aa {}: only 1 sample per pixel is supported in this version",
                 self.aa
             ));
         }
@@ -228,7 +228,6 @@ pub fn render(scene: &Scene, spec: &RenderSpec) -> Result<Image> {
         background: spec.background.map(glam::Vec3::from),
         headlight: spec.headlight,
         threads: spec.threads,
-        aa: spec.aa,
     };
     let invalid = |m: String| Error::new(ErrorKind::Invalid, m);
     // Another clip than the playing one: draw a copy that plays it (the
@@ -292,7 +291,7 @@ mod tests {
             RenderSpec::new(0, 10),
             RenderSpec::new(20_000, 10),
             RenderSpec::new(10, 10).at(f32::NAN),
-            RenderSpec::new(10, 10).aa(3),
+            RenderSpec::new(10, 10).aa(4),
             RenderSpec::new(10, 10).background([f32::INFINITY, 0.0, 0.0]),
         ] {
             let err = render(&scene, &spec).unwrap_err();
