@@ -47,11 +47,12 @@ cleanup() {
 }
 trap cleanup EXIT
 
-for _ in $(seq 1 50); do
+# Up to 30 s: on a loaded 2-core machine Xvfb has taken more than 5 s.
+for _ in $(seq 1 300); do
   xdotool getdisplaygeometry >/dev/null 2>&1 && break
   sleep 0.1
 done
-xdotool getdisplaygeometry >/dev/null 2>&1 || fail "Xvfb did not start on $DISPLAY"
+xdotool getdisplaygeometry >/dev/null 2>&1 || fail "Xvfb did not start on $DISPLAY within 30 s"
 
 # Recovery copies of the untitled demo go here, not to the real home.
 export XDG_STATE_HOME="$OUT/state"

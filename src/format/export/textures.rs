@@ -3,6 +3,7 @@
 //! VRML/Inventor `SFImage` text, and texture transforms across the two
 //! families' different orders.
 
+use super::text::Out;
 use crate::scene::{Image, ImageSource, Scene, TexTransform, TexTransformOrder};
 use glam::{Mat2, Vec2};
 use std::borrow::Cow;
@@ -148,6 +149,18 @@ pub fn sfimage(image: &Image) -> (String, Vec<String>) {
         })
         .collect();
     (head, rows)
+}
+
+/// Writes the `image` field of a PixelTexture / Texture2: the [`sfimage`]
+/// header, then one indented line per row.
+pub fn image_field(out: &mut Out, image: &Image) {
+    let (head, rows) = sfimage(image);
+    out.line(&format!("image {head}"));
+    out.depth += 1;
+    for r in rows {
+        out.line(&r);
+    }
+    out.depth -= 1;
 }
 
 /// `t` rewritten in `order` so that it maps texture coordinates exactly as

@@ -36,7 +36,7 @@ use crate::format::export::options::{ChannelReport, InventorVersion, WriteOption
 use crate::format::export::plan::WritePlan;
 use crate::format::export::sampling::{per_frame_keys, slerp_shortest, Sample, Tolerances};
 use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
-use crate::format::export::textures::sfimage;
+use crate::format::export::textures::image_field;
 use crate::scene::{
     Camera, CameraKind, ImageSource, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene,
     Shape, TextureModel, Transform, Wrap,
@@ -621,13 +621,7 @@ impl Writer<'_> {
         match &image.source {
             ImageSource::File { url, .. } => self.out.line(&format!("filename {}", quoted(url))),
             ImageSource::Inline => {
-                let (head, rows) = sfimage(image);
-                self.out.line(&format!("image {head}"));
-                self.out.depth += 1;
-                for r in rows {
-                    self.out.line(&r);
-                }
-                self.out.depth -= 1;
+                image_field(&mut self.out, image);
             }
         }
         if t.wrap_s == Wrap::Clamp {

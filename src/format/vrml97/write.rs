@@ -20,7 +20,7 @@ use crate::format::export::options::{ChannelReport, WriteOptions, WriteReport};
 use crate::format::export::plan::WritePlan;
 use crate::format::export::sampling::{per_frame_keys, Tolerances};
 use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
-use crate::format::export::textures::{sfimage, transform_in};
+use crate::format::export::textures::{image_field, transform_in};
 use crate::scene::{
     Camera, CameraKind, ImageSource, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene,
     Shape, TexTransformOrder, Texture, TextureModel, Transform, Wrap,
@@ -329,13 +329,7 @@ impl Writer<'_> {
             }
             ImageSource::Inline => {
                 self.out.open("texture PixelTexture");
-                let (head, rows) = sfimage(image);
-                self.out.line(&format!("image {head}"));
-                self.out.depth += 1;
-                for r in rows {
-                    self.out.line(&r);
-                }
-                self.out.depth -= 1;
+                image_field(&mut self.out, image);
             }
         }
         if t.wrap_s == Wrap::Clamp {
