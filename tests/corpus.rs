@@ -222,3 +222,140 @@ fn corpus_loads() {
         );
     }
 }
+
+/// What an export → import must keep: shapes, triangles, lights, cameras,
+/// tracks and their keys (the key note carries them).
+#[derive(Debug, PartialEq)]
+struct Summary {
+    nodes: usize,
+    shapes: usize,
+    triangles: usize,
+    lights: usize,
+    cameras: usize,
+    tracks: usize,
+    keys: usize,
+}
+
+fn summary(s: &animed::scene::Scene) -> Summary {
+    use animed::scene::NodeKind;
+    let count = |f: &dyn Fn(&NodeKind) -> bool| s.nodes.iter().filter(|n| f(&n.kind)).count();
+    let keys = s
+        .animation
+        .tracks
+        .iter()
+        .map(|t| match &t.keys {
+            animed::anim::Keys::Scalar(k) => k.len(),
+            animed::anim::Keys::Vec3(k) => k.len(),
+            animed::anim::Keys::Rotation(k) => k.len(),
+            animed::anim::Keys::Bool(k) => k.len(),
+        })
+        .sum();
+    Summary {
+        nodes: s.nodes.len(),
+        shapes: count(&|k| matches!(k, NodeKind::Shape(_))),
+        triangles: scene_triangles(s),
+        lights: count(&|k| matches!(k, NodeKind::Light(_))),
+        cameras: count(&|k| matches!(k, NodeKind::Camera(_))),
+        tracks: s.animation.tracks.len(),
+        keys,
+    }
+}
+
+/// Every corpus file that loads is written as .wrl and as .iv, read back,
+/// written and read again: the first import keeps the original's shapes,
+/// triangles, lights, cameras, tracks and keys, the second equals the
+/// first in every count (nodes included: export is a fixed point), and
+/// every written file reads back (never deeper than the reader's limit).
+#[test]
+fn corpus_round_trips_through_both_writers() {
+    use animed::format::{load_bytes, save::to_bytes, OutputFormat, WriteOptions};
+    let dir = shared_dir().join("corpus");
+    let manifest = dir.join("MANIFEST.tsv");
+    let Ok(text) = std::fs::read_to_string(&manifest) else {
+        eprintln!(
+            "\n\n!!!!!!!! CORPUS NOT FOUND at {} — corpus ROUND-TRIP test did NOT run.\n\
+             !!!!!!!! Set ANIMED_SHARED=/path/to/shared to run it.\n\n",
+            manifest.display()
+        );
+        return;
+    };
+    let t0 = Instant::now();
+    let only = std::env::var("CORPUS_ONLY").ok();
+    let opts = WriteOptions::default();
+    let (mut tried, mut failures, mut node_diffs) = (0, Vec::new(), Vec::new());
+    let mut biggest_ratio = (0.0f64, String::new());
+    for line in text.lines().skip(1) {
+        let rel = line.split('\t').next().unwrap_or("");
+        if rel.is_empty() || only.as_ref().is_some_and(|o| !rel.contains(o.as_str())) {
+            continue;
+        }
+        let path = dir.join(rel);
+        let Ok(original) = animed::format::load(&path) else {
+            continue;
+        };
+        tried += 1;
+        let want = summary(&original.scene);
+        let in_size = std::fs::metadata(&path)
+            .map(|m| m.len())
+            .unwrap_or(1)
+            .max(1);
+        for (ext, format) in [
+            ("wrl", OutputFormat::Vrml97),
+            ("iv", OutputFormat::Inventor),
+        ] {
+            let name = Path::new(rel).with_extension(ext);
+            let (bytes, _) = to_bytes(&original.scene, format, &opts);
+            let ratio = bytes.len() as f64 / in_size as f64;
+            if ratio > biggest_ratio.0 {
+                biggest_ratio = (ratio, format!("{rel} → .{ext}"));
+            }
+            let first = match load_bytes(&bytes, &name) {
+                Ok(l) => l,
+                Err(e) => {
+                    failures.push(format!("{rel} → .{ext}: does not read back: {e}"));
+                    continue;
+                }
+            };
+            let got = summary(&first.scene);
+            let kept = |s: &Summary| (s.shapes, s.triangles, s.lights, s.cameras, s.tracks, s.keys);
+            if kept(&got) != kept(&want) {
+                failures.push(format!("{rel} → .{ext}: {want:?} became {got:?}"));
+                continue;
+            }
+            if got.nodes != want.nodes {
+                node_diffs.push(format!(
+                    "{rel} → .{ext}: {} → {} nodes",
+                    want.nodes, got.nodes
+                ));
+            }
+            let (again, _) = to_bytes(&first.scene, format, &opts);
+            match load_bytes(&again, &name) {
+                Ok(second) if summary(&second.scene) == got => {}
+                Ok(second) => failures.push(format!(
+                    "{rel} → .{ext} twice: {got:?} became {:?}",
+                    summary(&second.scene)
+                )),
+                Err(e) => failures.push(format!("{rel} → .{ext} twice: {e}")),
+            }
+        }
+    }
+    println!(
+        "\ncorpus round trip: {tried} files × 2 formats in {:.1} s; largest output/input size ratio {:.1} ({})",
+        t0.elapsed().as_secs_f64(),
+        biggest_ratio.0,
+        biggest_ratio.1
+    );
+    for d in &node_diffs {
+        println!("  node count changes on the first export (then stable): {d}");
+    }
+    assert!(
+        only.is_some() || tried > 100,
+        "only {tried} corpus files loaded"
+    );
+    assert!(
+        failures.is_empty(),
+        "{} round-trip failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

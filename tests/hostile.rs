@@ -9,6 +9,8 @@
 
 #[path = "hostile/gen.rs"]
 mod gen;
+#[path = "hostile/holes.rs"]
+mod holes;
 #[path = "hostile/memory.rs"]
 mod memory;
 #[path = "hostile/reading.rs"]

@@ -37,8 +37,8 @@ pub struct Args {
     /// formats: on).
     #[arg(long, default_value = "auto", value_parser = parse_headlight)]
     pub headlight: Headlight,
-    /// Worker threads (0 = all cores); the picture is the same for any count.
-    #[arg(long, default_value_t = 0)]
+    /// Worker threads (0 = all cores, at most 256); the picture is the same for any count.
+    #[arg(long, default_value_t = 0, value_parser = parse_threads)]
     pub threads: usize,
     /// Anti-aliasing: samples per pixel, 1 (off), 4 or 8.
     #[arg(long, default_value_t = 1, value_parser = parse_aa)]
@@ -201,6 +201,19 @@ pub fn parse_style(s: &str) -> Result<RenderStyle, String> {
         "points" | "point" => Ok(RenderStyle::Points),
         "hidden" => Ok(RenderStyle::Hidden),
         _ => Err(format!("style {s:?} is not filled, lines or points")),
+    }
+}
+
+/// Most `--threads`: more only costs memory and start-up time.
+pub const MAX_THREADS: usize = 256;
+
+/// A `--threads` count: 0 (all cores) ..= [`MAX_THREADS`].
+pub fn parse_threads(s: &str) -> Result<usize, String> {
+    match s.trim().parse::<usize>() {
+        Ok(n) if n <= MAX_THREADS => Ok(n),
+        _ => Err(format!(
+            "threads {s:?} is not a count from 0 (all cores) to {MAX_THREADS}"
+        )),
     }
 }
 

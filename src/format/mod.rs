@@ -79,6 +79,8 @@ pub fn load_bytes_with(
 }
 
 fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
+    // A UTF-8 byte-order mark (some Windows editors write one) is not text.
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     if gzip::is_gzip(bytes) {
         let plain = gzip::decompress(bytes).map_err(|m| LoadError::new(path, 0, 0, m))?;
         return load_bytes_nested(&plain, path, depth);

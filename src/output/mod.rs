@@ -48,6 +48,23 @@ impl RangeArgs<'_> {
     }
 }
 
+/// Memory the frames drawn at once may take together: frames are big
+/// (colour, depth, ids, an RGBA copy: 16 bytes a pixel), so huge frames
+/// are drawn fewer at a time, one at the least.
+pub const FRAMES_IN_FLIGHT_BYTES: u64 = 1 << 30;
+
+/// How many frames a range draws at once: `spec.threads` (0 = one per
+/// core), capped so their buffers fit [`FRAMES_IN_FLIGHT_BYTES`].
+pub fn frames_at_once(spec: &FrameSpec) -> usize {
+    let asked = match spec.threads {
+        0 => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        n => n,
+    };
+    let per_frame = (spec.width as u64 * spec.height as u64 * 16).max(1);
+    let fit = (FRAMES_IN_FLIGHT_BYTES / per_frame).max(1) as usize;
+    asked.min(fit)
+}
+
 /// `animed render --range/--frames [--shard] -o PATTERN`: checks the
 /// arguments, then renders every frame of the range that belongs to the
 /// shard as `spec` says (the picture `render --time t` gives), on
@@ -68,10 +85,7 @@ pub fn render_range(scene: &Scene, spec: &FrameSpec, args: RangeArgs) -> Result<
         .unwrap_or_default();
     let pattern = Pattern::from_path(args.output)?;
     let mut job = SequenceJob::new(range, shard, pattern)?;
-    job.workers = match spec.threads {
-        0 => std::thread::available_parallelism().map_or(1, |n| n.get()),
-        n => n,
-    };
+    job.workers = frames_at_once(spec);
     job.progress = ProgressMode::detect();
     job.run(|t| render_at(scene, spec, t))
 }

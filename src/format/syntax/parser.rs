@@ -35,6 +35,20 @@ impl Options {
 
 type PResult<T> = Result<T, (Pos, String)>;
 
+/// `nan`, `inf`, `infinity` (any case, any sign) where a value stands:
+/// VRML has no such numbers, and reading them as words would silently
+/// give the field its default.
+fn not_a_number_word(w: &str, pos: Pos) -> PResult<()> {
+    let bare = w.trim_start_matches(['+', '-']).to_ascii_lowercase();
+    if matches!(bare.as_str(), "nan" | "inf" | "infinity") {
+        return Err((
+            pos,
+            format!("'{w}' is not a number VRML allows (field values must be finite)"),
+        ));
+    }
+    Ok(())
+}
+
 fn lex_err(e: LexError) -> (Pos, String) {
     (e.pos, e.message)
 }
@@ -537,7 +551,8 @@ impl Parser<'_> {
                 if self.is_node_start()? {
                     return Ok(Value::Nodes(self.node_statement()?.into_iter().collect()));
                 }
-                self.next()?;
+                let (_, wpos) = self.next()?;
+                not_a_number_word(&w, wpos)?;
                 let mut words = vec![w];
                 // Bit masks written without parentheses: `SIDES | TOP`.
                 while self.peek()? == Tok::Punct(b'|') {
@@ -568,6 +583,9 @@ impl Parser<'_> {
         while let Ok(t) = self.lx.peek() {
             let Tok::Num(n) = t.tok else { break };
             let pos = t.pos;
+            if !n.is_finite() {
+                return Err((pos, "number out of range (VRML numbers are finite)".into()));
+            }
             self.count_number(pos)?;
             v.push(n);
             self.lx.next_token().map_err(lex_err)?;
@@ -624,6 +642,7 @@ impl Parser<'_> {
                     match self.next()? {
                         (Tok::RBracket, _) => return Ok(Value::Words(words)),
                         (Tok::Ident(w), p) => {
+                            not_a_number_word(&w, p)?;
                             self.count_string(p, w.len())?;
                             words.push(w)
                         }

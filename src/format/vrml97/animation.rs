@@ -290,6 +290,21 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
         let Some((fractions, values)) = interpolator_values(&p.interp) else {
             continue;
         };
+        let n = match &values {
+            Values::Scalar(v) => v.len(),
+            Values::Vec3(v) | Values::Color(v) => v.len(),
+            Values::Rotation(v) => v.len(),
+        };
+        if n != fractions.len() && n > 0 && !fractions.is_empty() {
+            let msg = format!(
+                "{}: {} key times but {n} keyValues (VRML97 wants one value per key); \
+                 the first {} of each are used",
+                p.interp.kind,
+                fractions.len(),
+                n.min(fractions.len())
+            );
+            b.warn(p.interp.pos, &msg);
+        }
         match make_keys(&fractions, values, p.clock, fps, p.property) {
             Ok(keys) => {
                 let target = Target {

@@ -34,6 +34,9 @@ struct Writer<'a> {
     written_materials: Vec<bool>,
     written_meshes: Vec<bool>,
     report: WriteReport,
+    /// Raw matrices that lost shear when written: how many, and the path
+    /// of the first (warned once at the end, not once per node).
+    lossy_matrices: (usize, Option<String>),
 }
 
 /// Prints `scene` as a VRML97 file.
@@ -45,6 +48,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         written_materials: vec![false; scene.materials.len()],
         written_meshes: vec![false; scene.meshes.len()],
         report: WriteReport::default(),
+        lossy_matrices: (0, None),
     };
     w.out.line("#VRML V2.0 utf8");
     w.out
@@ -70,7 +74,30 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         w.node(root);
     }
     w.animation(opts);
+    if let (n, Some(first)) = &w.lossy_matrices {
+        w.report.warnings.push(format!(
+            "{n} node(s) had a matrix with shear, written as translation/rotation/scale \
+             (the shear is lost), first `{first}`"
+        ));
+    }
     (w.out.text, w.report)
+}
+
+/// `Root/Arm/Hand`: the names from the root down (`#N` for unnamed nodes).
+fn node_path(scene: &Scene, id: NodeId) -> String {
+    let mut parts = Vec::new();
+    let mut cur = Some(id);
+    while let Some(c) = cur {
+        let n = scene.node(c);
+        parts.push(if n.name.is_empty() {
+            format!("#{}", c.0)
+        } else {
+            n.name.clone()
+        });
+        cur = n.parent;
+    }
+    parts.reverse();
+    parts.join("/")
 }
 
 fn def(name: &Option<String>) -> String {
@@ -127,10 +154,7 @@ impl Writer<'_> {
         let merged = match node.transform.extra {
             Some(m) if self.transform_is_free(id) => {
                 let (s, r, t) = m.to_scale_rotation_translation();
-                self.report.warnings.push(format!(
-                    "node `{}`: a raw matrix was written as translation/rotation/scale (shear, if any, is lost)",
-                    node.name
-                ));
+                self.raw_matrix(id, &m);
                 own = Transform {
                     translation: t,
                     rotation: r,
@@ -145,10 +169,7 @@ impl Writer<'_> {
             // VRML97 has no matrix node: an outer Transform with the
             // matrix's scale, rotation and translation (shear is lost).
             let (s, r, t) = m.to_scale_rotation_translation();
-            self.report.warnings.push(format!(
-                "node `{}`: a raw matrix was written as translation/rotation/scale (shear, if any, is lost)",
-                node.name
-            ));
+            self.raw_matrix(id, &m);
             self.out.open("Transform");
             self.transform_fields(&Transform {
                 translation: t,
@@ -179,6 +200,20 @@ impl Writer<'_> {
         for _ in 0..closes {
             self.out.close("]");
             self.out.close("}");
+        }
+    }
+
+    /// Notes a raw matrix written as translation/rotation/scale if that
+    /// loses something (shear).
+    fn raw_matrix(&mut self, id: NodeId, m: &glam::Mat4) {
+        let (s, r, t) = m.to_scale_rotation_translation();
+        let back = glam::Mat4::from_scale_rotation_translation(s, r, t);
+        let tol = 1e-4 * m.to_cols_array().iter().fold(1.0f32, |a, v| a.max(v.abs()));
+        if !back.abs_diff_eq(*m, tol) {
+            self.lossy_matrices.0 += 1;
+            if self.lossy_matrices.1.is_none() {
+                self.lossy_matrices.1 = Some(node_path(self.scene, id));
+            }
         }
     }
 
