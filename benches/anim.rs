@@ -4,7 +4,7 @@
 //!
 //! Run: `cargo bench --bench anim` (about 15 s).
 
-use animed::anim::{evaluate_into, synthetic, Pose, Track};
+use animed::internals::anim::{evaluate_into, synthetic, Pose, Track};
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use std::hint::black_box;
 use std::time::Duration;

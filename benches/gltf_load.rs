@@ -3,8 +3,8 @@
 //! with `format::load_bytes`, the whole reader from container to scene.
 //! `cargo bench --bench gltf_load`.
 
-use animed::format::{self, WriteOptions};
-use animed::scene::{Material, Mesh, Node, NodeKind, Scene, Shape};
+use animed::internals::format::{self, WriteOptions};
+use animed::internals::scene::{Material, Mesh, Node, NodeKind, Scene, Shape};
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::Vec3;
 use std::path::Path;

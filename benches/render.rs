@@ -1,10 +1,10 @@
 //! `cargo bench --bench render`: the same scenes as `animed bench`, at
 //! 1280×720 with all cores.
 
-use animed::anim::evaluate;
-use animed::render::job::{find_camera, view_for};
-use animed::render::{bench_scenes, render_into, Frame, RenderOptions};
-use animed::scene::Scene;
+use animed::internals::anim::evaluate;
+use animed::internals::render::job::{find_camera, view_for};
+use animed::internals::render::{bench_scenes, render_into, Frame, RenderOptions};
+use animed::internals::scene::Scene;
 use criterion::{criterion_group, criterion_main, Criterion};
 
 const W: u32 = 1280;
@@ -42,7 +42,7 @@ fn benches(c: &mut Criterion) {
         "small_triangles_100k",
         &bench_scenes::small_triangles(100_000, aspect),
     );
-    if let Ok(demo) = animed::format::demo() {
+    if let Ok(demo) = animed::internals::format::demo() {
         frame(c, "demo", &demo.scene);
         // Multisampling: depth/coverage per sample plus the resolve.
         frame_aa(c, "demo_aa4", &demo.scene, 4);

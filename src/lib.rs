@@ -51,33 +51,14 @@ pub use picture::Image;
 pub use render::job::Headlight;
 pub use scene::Scene;
 
-// The application's modules. The binary, the tests and the benches use
-// them by these root paths, so they stay public, but hidden from the docs:
-// a user finds them under [`internals`], whose name says what they are.
-#[doc(hidden)]
-pub mod anim;
+// The application's modules live under [`internals`]; the crate itself
+// reaches them by their short root paths (`crate::scene`, ...) through the
+// crate-private re-exports below, so only `animed::internals::…` is public.
+pub(crate) use internals::{anim, editor, format, input, output, render, scene, ui, viewer};
 #[cfg(feature = "window")]
-#[doc(hidden)]
-pub mod app;
+pub(crate) use internals::app;
 #[cfg(feature = "cli")]
-#[doc(hidden)]
-pub mod cli;
-#[doc(hidden)]
-pub mod editor;
-#[doc(hidden)]
-pub mod format;
-#[doc(hidden)]
-pub mod input;
-#[doc(hidden)]
-pub mod output;
-#[doc(hidden)]
-pub mod render;
-#[doc(hidden)]
-pub mod scene;
-#[doc(hidden)]
-pub mod ui;
-#[doc(hidden)]
-pub mod viewer;
+pub(crate) use internals::cli;
 
 /// The application's internals: the scene model, the animation maths, the
 /// readers and writers, the renderer's stages, the editor, the viewer and
@@ -85,15 +66,20 @@ pub mod viewer;
 /// application and change between versions without notice; build on the
 /// crate root ([`load`], [`render()`], [`compare()`], [`check`], [`Error`])
 /// where you can. Reaching into them is fine for tools that track animed
-/// closely. (Their old paths at the crate root, `animed::scene` and so on,
-/// still work but are hidden and may go away.)
+/// closely.
+#[path = "."]
 pub mod internals {
+    pub mod anim;
     #[cfg(feature = "window")]
-    #[doc(inline)]
-    pub use crate::app;
+    pub mod app;
     #[cfg(feature = "cli")]
-    #[doc(inline)]
-    pub use crate::cli;
-    #[doc(inline)]
-    pub use crate::{anim, editor, format, input, output, render, scene, ui, viewer};
+    pub mod cli;
+    pub mod editor;
+    pub mod format;
+    pub mod input;
+    pub mod output;
+    pub mod render;
+    pub mod scene;
+    pub mod ui;
+    pub mod viewer;
 }

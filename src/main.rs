@@ -1,3 +1,3 @@
 fn main() {
-    std::process::exit(animed::cli::run());
+    std::process::exit(animed::internals::cli::run());
 }

@@ -1,10 +1,10 @@
 //! `evaluate` / `evaluate_into`: every target kind, hierarchy, visibility,
 //! seconds → frames, repeat modes, and no scene mutation.
 
-use animed::anim::{
+use animed::internals::anim::{
     evaluate, evaluate_into, Interp, Key, Keys, Pose, Property, Repeat, Target, TargetRef, Track,
 };
-use animed::scene::{
+use animed::internals::scene::{
     Camera, CameraKind, Light, LightKind, Material, Node, NodeId, NodeKind, Scene, Transform,
 };
 use glam::{Quat, Vec3};
@@ -105,13 +105,13 @@ fn scene() -> (Scene, Ids) {
             Keys::Vec3(vec![lin(0.0, Vec3::Z), lin(10.0, Vec3::Z * 3.0)]),
         ),
         track(
-            TargetRef::Material(animed::scene::MaterialId(0)),
+            TargetRef::Material(animed::internals::scene::MaterialId(0)),
             Property::Diffuse,
             Repeat::Constant,
             Keys::Vec3(vec![lin(0.0, Vec3::ZERO), lin(10.0, Vec3::ONE)]),
         ),
         track(
-            TargetRef::Material(animed::scene::MaterialId(0)),
+            TargetRef::Material(animed::internals::scene::MaterialId(0)),
             Property::Transparency,
             Repeat::Constant,
             Keys::Scalar(vec![lin(0.0, 0.0), lin(10.0, 0.5)]),

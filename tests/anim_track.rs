@@ -1,11 +1,11 @@
 //! Track construction errors, key editing, values ⇄ numbers and the
 //! Animation helpers.
 
-use animed::anim::{
+use animed::internals::anim::{
     Animation, Interp, Key, KeyParams, Keys, Property, Repeat, Target, TargetRef, Track,
     TrackError, Value, ValueKind,
 };
-use animed::scene::{MaterialId, NodeId};
+use animed::internals::scene::{MaterialId, NodeId};
 use glam::{Quat, Vec3};
 
 fn node(p: Property) -> Target {

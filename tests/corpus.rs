@@ -33,11 +33,11 @@ fn coin_tris(col: &str) -> Option<usize> {
     col.split('/').next()?.trim().parse().ok()
 }
 
-fn scene_triangles(s: &animed::scene::Scene) -> usize {
+fn scene_triangles(s: &animed::internals::scene::Scene) -> usize {
     s.walk()
         .into_iter()
         .filter_map(|id| match &s.node(id).kind {
-            animed::scene::NodeKind::Shape(sh) if s.node(id).visible => {
+            animed::internals::scene::NodeKind::Shape(sh) if s.node(id).visible => {
                 s.meshes.get(sh.mesh.0 as usize).map(|m| m.triangles.len())
             }
             _ => None,
@@ -109,7 +109,7 @@ fn corpus_loads() {
             c.coin_reads += 1;
         }
         let t0 = Instant::now();
-        let r = std::panic::catch_unwind(|| animed::format::load(&path));
+        let r = std::panic::catch_unwind(|| animed::internals::format::load(&path));
         let dt = t0.elapsed().as_secs_f64();
         if dt > 2.0 {
             slow.push(format!("{dt:.1}s {rel}"));
@@ -236,18 +236,18 @@ struct Summary {
     keys: usize,
 }
 
-fn summary(s: &animed::scene::Scene) -> Summary {
-    use animed::scene::NodeKind;
+fn summary(s: &animed::internals::scene::Scene) -> Summary {
+    use animed::internals::scene::NodeKind;
     let count = |f: &dyn Fn(&NodeKind) -> bool| s.nodes.iter().filter(|n| f(&n.kind)).count();
     let keys = s
         .animation
         .tracks
         .iter()
         .map(|t| match &t.keys {
-            animed::anim::Keys::Scalar(k) => k.len(),
-            animed::anim::Keys::Vec3(k) => k.len(),
-            animed::anim::Keys::Rotation(k) => k.len(),
-            animed::anim::Keys::Bool(k) => k.len(),
+            animed::internals::anim::Keys::Scalar(k) => k.len(),
+            animed::internals::anim::Keys::Vec3(k) => k.len(),
+            animed::internals::anim::Keys::Rotation(k) => k.len(),
+            animed::internals::anim::Keys::Bool(k) => k.len(),
         })
         .sum();
     Summary {
@@ -268,7 +268,7 @@ fn summary(s: &animed::scene::Scene) -> Summary {
 /// every written file reads back (never deeper than the reader's limit).
 #[test]
 fn corpus_round_trips_through_both_writers() {
-    use animed::format::{load_bytes, save::to_bytes, OutputFormat, WriteOptions};
+    use animed::internals::format::{load_bytes, save::to_bytes, OutputFormat, WriteOptions};
     let dir = shared_dir().join("corpus");
     let manifest = dir.join("MANIFEST.tsv");
     let Ok(text) = std::fs::read_to_string(&manifest) else {
@@ -290,7 +290,7 @@ fn corpus_round_trips_through_both_writers() {
             continue;
         }
         let path = dir.join(rel);
-        let Ok(original) = animed::format::load(&path) else {
+        let Ok(original) = animed::internals::format::load(&path) else {
             continue;
         };
         tried += 1;

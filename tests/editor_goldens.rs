@@ -5,9 +5,9 @@
 #[path = "common/golden.rs"]
 mod golden;
 
-use animed::editor::panel::WidgetKind;
-use animed::editor::{script, Editor};
-use animed::scene::{NodeId, Scene};
+use animed::internals::editor::panel::WidgetKind;
+use animed::internals::editor::{script, Editor};
+use animed::internals::scene::{NodeId, Scene};
 use std::path::{Path, PathBuf};
 
 // 480×320: the smallest size at which every panel row fits (the side panel
@@ -24,7 +24,7 @@ fn data(name: &str) -> PathBuf {
 /// The editor on the frozen copy of the demo stage.
 fn stage(w: u32, h: u32) -> Editor {
     let path = data("editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
+    let loaded = animed::internals::format::load(&path).expect("the stage loads");
     Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), w, h)
 }
 
@@ -119,7 +119,7 @@ fn lines_style() {
     let mut ed = stage(W, H);
     let (x, y) = at(&ed, "ViewStyle");
     run(&mut ed, &format!("click {x} {y}\nclick {x} {y}"));
-    assert_eq!(ed.view_style(), Some(animed::scene::RenderStyle::Lines));
+    assert_eq!(ed.view_style(), Some(animed::internals::scene::RenderStyle::Lines));
     check("editor_lines_style", &mut ed);
 }
 
@@ -162,7 +162,7 @@ fn light_gizmos() {
         let (x, y) = at(&ed, which);
         run(&mut ed, &format!("click {x} {y}"));
     }
-    assert_eq!(animed::editor::ops::lights(ed.scene()).len(), 3);
+    assert_eq!(animed::internals::editor::ops::lights(ed.scene()).len(), 3);
     run(&mut ed, "key home\nwheel -1 150 150");
     check("editor_light_gizmos", &mut ed);
 }

@@ -9,9 +9,9 @@ mod golden;
 #[path = "common/ui_input.rs"]
 mod ui_input;
 
-use animed::anim::{Interp, Key, Property, Target, TargetRef, Value};
-use animed::editor::{script, Editor, Event, Key as K, Mods, MouseButton};
-use animed::scene::NodeId;
+use animed::internals::anim::{Interp, Key, Property, Target, TargetRef, Value};
+use animed::internals::editor::{script, Editor, Event, Key as K, Mods, MouseButton};
+use animed::internals::scene::NodeId;
 use std::path::{Path, PathBuf};
 
 const W: u32 = 480;
@@ -21,7 +21,7 @@ const H: u32 = 320;
 /// 48, 72, 96, linear).
 fn stage() -> Editor {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
+    let loaded = animed::internals::format::load(&path).expect("the stage loads");
     Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), W, H)
 }
 
@@ -94,7 +94,7 @@ fn dragging_a_key_up_raises_its_value_and_one_undo_restores_it() {
     let steps = ed.history().labels().count();
     let world = |ed: &Editor| {
         let s = ed.scene();
-        animed::editor::motion_path::world_at(s, &s.animation, ball(ed), 24.0)
+        animed::internals::editor::motion_path::world_at(s, &s.animation, ball(ed), 24.0)
             .w_axis
             .y
     };
@@ -193,14 +193,14 @@ fn a_locked_channel_keeps_its_keys_and_a_hidden_one_is_not_drawn() {
     assert!(err.is_err(), "a hidden curve's keys cannot be aimed at");
 }
 
-fn graph_list(ed: &Editor) -> animed::ui::Rect {
-    animed::editor::graph::Areas::new(ed.layout().key_rows).list
+fn graph_list(ed: &Editor) -> animed::internals::ui::Rect {
+    animed::internals::editor::graph::Areas::new(ed.layout().key_rows).list
 }
 
 #[test]
 fn a_box_selects_keys_and_the_key_panel_follows() {
     let mut ed = graph_on_ball();
-    let a = animed::editor::graph::Areas::new(ed.layout().key_rows);
+    let a = animed::internals::editor::graph::Areas::new(ed.layout().key_rows);
     let p = a.plot;
     ui_input::drag_via(
         &mut ed,
@@ -218,7 +218,7 @@ fn a_box_selects_keys_and_the_key_panel_follows() {
 #[test]
 fn the_frame_band_scrubs_and_the_wheel_zooms() {
     let mut ed = graph_on_ball();
-    let a = animed::editor::graph::Areas::new(ed.layout().key_rows);
+    let a = animed::internals::editor::graph::Areas::new(ed.layout().key_rows);
     let v = ed.graph().unwrap().view;
     let x = v.frame_to_x(a.plot, 30.0);
     ui_input::click(&mut ed, (x, (a.band.y + 5) as f32));

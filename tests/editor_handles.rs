@@ -7,9 +7,9 @@ mod golden;
 
 #[path = "common/ui_input.rs"]
 mod ui_input;
-use animed::anim::{Property, Target, TargetRef};
-use animed::editor::manip::Handle;
-use animed::editor::{Editor, Event, Key, Mods, MouseButton};
+use animed::internals::anim::{Property, Target, TargetRef};
+use animed::internals::editor::manip::Handle;
+use animed::internals::editor::{Editor, Event, Key, Mods, MouseButton};
 use ui_input::*;
 
 /// A point `at` of the way along arrow `axis` (1..=3) and the screen
@@ -175,7 +175,7 @@ fn dragging_an_animated_object_without_record_is_pending_until_k() {
         })
         .unwrap();
     let k = t.key(t.key_index_at(0.0).expect("key at frame 0")).unwrap();
-    assert_eq!(k.value, animed::anim::Value::Vec3(shown1));
+    assert_eq!(k.value, animed::internals::anim::Value::Vec3(shown1));
 }
 
 #[test]

@@ -8,10 +8,10 @@ mod golden;
 
 #[path = "common/ui_input.rs"]
 mod ui_input;
-use animed::anim::{Interp, Property, Target, TargetRef, Value};
-use animed::editor::keystrip::{KeyRef, Row};
-use animed::editor::{Editor, Event, Key, Mods};
-use animed::scene::{Node, NodeId, Scene, Transform};
+use animed::internals::anim::{Interp, Property, Target, TargetRef, Value};
+use animed::internals::editor::keystrip::{KeyRef, Row};
+use animed::internals::editor::{Editor, Event, Key, Mods};
+use animed::internals::scene::{Node, NodeId, Scene, Transform};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
 use ui_input::*;
@@ -113,13 +113,13 @@ fn strip_has_a_summary_row_and_a_row_per_property_and_folds() {
     let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
     assert_eq!(rows, vec![Row::Summary, Row::Track(T), Row::Track(S)]);
     let l = ed.layout();
-    assert_eq!(l.key_rows.h, 3 * animed::ui::layout::KEY_ROW_H);
+    assert_eq!(l.key_rows.h, 3 * animed::internals::ui::layout::KEY_ROW_H);
     // The fold triangle sits in the summary row's name cell.
     let (_, r) = ed.key_strip_layout()[0];
     click(&mut ed, (r.x as f32 + 6.0, r.y as f32 + 7.0));
     let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
     assert_eq!(rows, vec![Row::Summary]);
-    assert_eq!(ed.layout().key_rows.h, animed::ui::layout::KEY_ROW_H);
+    assert_eq!(ed.layout().key_rows.h, animed::internals::ui::layout::KEY_ROW_H);
     // Nothing animated selected: no strip.
     ed.select(Some(NodeId(1)));
     assert_eq!(ed.layout().key_rows.h, 0);
@@ -150,7 +150,7 @@ fn click_selects_shift_adds_and_toggles_summary_selects_a_frame() {
     assert!(selected(&ed).is_empty());
     assert_eq!(
         ed.mode(),
-        animed::editor::Mode::Select,
+        animed::internals::editor::Mode::Select,
         "Esc cleared keys only"
     );
 }
@@ -326,7 +326,7 @@ fn typing_tension_in_the_key_panel_changes_the_curve_and_the_motion_path() {
     assert!(ed.key_panel_shown());
     let steps = ed.history().labels().count();
     let before = sample_x(&ed, bx, 24.0);
-    let path0 = animed::editor::motion_path::path(ed.scene(), bx, &[24.0])[0];
+    let path0 = animed::internals::editor::motion_path::path(ed.scene(), bx, &[24.0])[0];
     type_into(&mut ed, "Field(Key(Tension))", "1");
     let t = ed.scene().animation.track(target(bx, T)).unwrap();
     assert_eq!(t.key(2).unwrap().tension, 1.0);
@@ -336,7 +336,7 @@ fn typing_tension_in_the_key_panel_changes_the_curve_and_the_motion_path() {
         (after - before).abs() > 0.05,
         "curve at 24: {before} -> {after}"
     );
-    let path1 = animed::editor::motion_path::path(ed.scene(), bx, &[24.0])[0];
+    let path1 = animed::internals::editor::motion_path::path(ed.scene(), bx, &[24.0])[0];
     assert!(
         (path1 - path0).length() > 0.05,
         "motion path moved: {path0} -> {path1}"
@@ -448,7 +448,7 @@ fn interpolation_step_holds_values_and_the_node_panel_stays_reachable() {
 
 fn stage() -> Editor {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
+    let loaded = animed::internals::format::load(&path).expect("the stage loads");
     Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), 480, 320)
 }
 
@@ -559,22 +559,22 @@ fn scripts_aim_at_keys_and_key_fields_by_name() {
                   type 0.5\n\
                   key enter\n\
                   click-key summary 30 shift\n";
-    animed::editor::script::run(&mut ed, script, Path::new("keys.txt")).expect("script runs");
+    animed::internals::editor::script::run(&mut ed, script, Path::new("keys.txt")).expect("script runs");
     assert_eq!(frames(&ed, bx, T), vec![0.0, 14.0, 20.0]);
     let t = ed.scene().animation.track(target(bx, T)).unwrap();
     assert_eq!(t.key(1).unwrap().tension, 0.5);
     assert_eq!(selected(&ed), vec![(T, 14.0), (S, 30.0)]);
     // No key there: the line is named.
     let e =
-        animed::editor::script::run(&mut ed, "key esc\nclick-key scale 11\n", Path::new("k.txt"))
+        animed::internals::editor::script::run(&mut ed, "key esc\nclick-key scale 11\n", Path::new("k.txt"))
             .unwrap_err();
     assert_eq!((e.line, e.column), (2, 1));
     assert!(e.message.contains("no key at frame 11"), "{}", e.message);
-    let e = animed::editor::script::run(&mut ed, "click-key wobble 1\n", Path::new("k.txt"))
+    let e = animed::internals::editor::script::run(&mut ed, "click-key wobble 1\n", Path::new("k.txt"))
         .unwrap_err();
     assert_eq!((e.line, e.column), (1, 11));
     assert!(e.message.contains("unknown key strip row"), "{}", e.message);
-    let e = animed::editor::script::run(&mut ed, "click-field Key(Nope)\n", Path::new("k.txt"))
+    let e = animed::internals::editor::script::run(&mut ed, "click-field Key(Nope)\n", Path::new("k.txt"))
         .unwrap_err();
     assert!(e.message.contains("no field"), "{}", e.message);
 }
@@ -586,7 +586,7 @@ fn busy_light() -> (Editor, NodeId) {
         None,
         Node::new(
             "Spot",
-            animed::scene::NodeKind::Light(animed::scene::Light::spot()),
+            animed::internals::scene::NodeKind::Light(animed::internals::scene::Light::spot()),
         ),
     );
     let vals: [(Property, Value); 8] = [
@@ -613,7 +613,7 @@ fn busy_light() -> (Editor, NodeId) {
 fn too_many_rows_end_in_a_more_row_and_bool_keys_toggle() {
     let (mut ed, id) = busy_light();
     let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
-    let cap = (ed.layout().key_rows.h / animed::ui::layout::KEY_ROW_H) as usize;
+    let cap = (ed.layout().key_rows.h / animed::internals::ui::layout::KEY_ROW_H) as usize;
     assert!(cap < 9, "the strip is capped ({cap} rows)");
     assert_eq!(rows.len(), cap);
     assert_eq!(rows[0], Row::Summary);
@@ -711,7 +711,7 @@ fn tcb_on_a_linear_key_makes_it_a_spline_key() {
 #[test]
 fn script_select_step_uses_the_list() {
     let mut ed = stage();
-    animed::editor::script::run(
+    animed::internals::editor::script::run(
         &mut ed,
         "select Spinner\nclick-key rotation 24\n",
         Path::new("s.txt"),
@@ -721,6 +721,6 @@ fn script_select_step_uses_the_list() {
     assert_eq!(ed.selection(), Some(sp));
     assert_eq!(selected(&ed), vec![(Property::Rotation, 24.0)]);
     let e =
-        animed::editor::script::run(&mut ed, "select Nobody\n", Path::new("s.txt")).unwrap_err();
+        animed::internals::editor::script::run(&mut ed, "select Nobody\n", Path::new("s.txt")).unwrap_err();
     assert!(e.message.contains("no node named Nobody"), "{}", e.message);
 }

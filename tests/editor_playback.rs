@@ -3,15 +3,15 @@
 
 #[path = "common/ui_input.rs"]
 mod ui_input;
-use animed::editor::panel::WidgetKind;
-use animed::editor::{Editor, Event, Key, Mods, MouseButton};
-use animed::scene::NodeId;
+use animed::internals::editor::panel::WidgetKind;
+use animed::internals::editor::{Editor, Event, Key, Mods, MouseButton};
+use animed::internals::scene::NodeId;
 use std::path::{Path, PathBuf};
 use ui_input::*;
 
 fn stage() -> (Editor, NodeId) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
+    let loaded = animed::internals::format::load(&path).expect("the stage loads");
     let mut ed = Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), 480, 320);
     let pyr = ed.scene().find_node("Pyramid").expect("node in the stage");
     ed.select(Some(pyr));

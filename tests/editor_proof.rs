@@ -11,10 +11,10 @@
 #[path = "common/golden.rs"]
 mod golden;
 
-use animed::anim::{Interp, Property, Target, TargetRef, Track, Value};
-use animed::editor::script::{self, Step};
-use animed::editor::Editor;
-use animed::scene::{NodeId, Scene};
+use animed::internals::anim::{Interp, Property, Target, TargetRef, Track, Value};
+use animed::internals::editor::script::{self, Step};
+use animed::internals::editor::Editor;
+use animed::internals::scene::{NodeId, Scene};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
 
@@ -152,7 +152,7 @@ fn proof_session_animates_the_demo_through_the_ui() {
     check_keys(ed.scene());
     // The saved file brings every key back exactly.
     let saved = dir.join("proof.wrl");
-    let loaded = animed::format::load(&saved).expect("proof.wrl loads");
+    let loaded = animed::internals::format::load(&saved).expect("proof.wrl loads");
     check_keys(&loaded.scene);
     for t in &ed.scene().animation.tracks {
         let back = loaded
@@ -164,8 +164,8 @@ fn proof_session_animates_the_demo_through_the_ui() {
     }
     // What `animed render --time` shows of the saved file is what the
     // editor shows at that frame (both evaluate the same keys).
-    let a = animed::anim::evaluate(ed.scene(), 1.5);
-    let b = animed::anim::evaluate(&loaded.scene, 1.5);
+    let a = animed::internals::anim::evaluate(ed.scene(), 1.5);
+    let b = animed::internals::anim::evaluate(&loaded.scene, 1.5);
     let p = node(ed.scene(), "Pyramid").0 as usize;
     assert!((a.world[p].w_axis - b.world[p].w_axis).length() < 1e-5);
     std::fs::remove_dir_all(&dir).ok();

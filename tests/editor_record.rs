@@ -7,9 +7,9 @@ mod golden;
 
 #[path = "common/ui_input.rs"]
 mod ui_input;
-use animed::anim::{Property, Target, TargetRef, Value};
-use animed::editor::{Editor, Key, Mods};
-use animed::scene::{Light, LightKind, Node, NodeId, NodeKind, Scene, Transform};
+use animed::internals::anim::{Property, Target, TargetRef, Value};
+use animed::internals::editor::{Editor, Key, Mods};
+use animed::internals::scene::{Light, LightKind, Node, NodeId, NodeKind, Scene, Transform};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
 use ui_input::*;
@@ -218,7 +218,7 @@ fn light_fields_and_switch_record_light_keys() {
 #[test]
 fn recording_editor_golden() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
+    let loaded = animed::internals::format::load(&path).expect("the stage loads");
     let mut ed = Editor::new(loaded.scene, Some(PathBuf::from("stage.wrl")), 480, 320);
     let ball = ed
         .scene()

@@ -3,11 +3,11 @@
 //! untouched, and a second session recovers the copy and saves the edits.
 //! Also the recovery dialog's other answers, driven in-process.
 
-use animed::anim::{Property, Target, TargetRef, Value};
-use animed::editor::panel::WidgetKind;
-use animed::editor::recovery::recovery_path;
-use animed::editor::{After, Editor, Event, Key, Mods};
-use animed::scene::NodeId;
+use animed::internals::anim::{Property, Target, TargetRef, Value};
+use animed::internals::editor::panel::WidgetKind;
+use animed::internals::editor::recovery::recovery_path;
+use animed::internals::editor::{After, Editor, Event, Key, Mods};
+use animed::internals::scene::NodeId;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -26,8 +26,8 @@ fn dir(tag: &str) -> PathBuf {
 /// The demo scene saved as `dir/scene.wrl`.
 fn demo_file(d: &Path) -> PathBuf {
     let p = d.join("scene.wrl");
-    let demo = animed::format::demo().expect("the bundled demo loads");
-    animed::format::save(&demo.scene, &p, &Default::default()).unwrap();
+    let demo = animed::internals::format::demo().expect("the bundled demo loads");
+    animed::internals::format::save(&demo.scene, &p, &Default::default()).unwrap();
     p
 }
 
@@ -44,7 +44,7 @@ fn centre(ed: &Editor, pred: impl Fn(&WidgetKind) -> bool) -> (i32, i32) {
 /// at frame 0 and x = -4 at frame 10 (two translation keys), then idles in
 /// real time so autosave fires. Returns it and the object.
 fn editing_script(scene: &Path) -> (String, NodeId) {
-    let loaded = animed::format::load(scene).unwrap();
+    let loaded = animed::internals::format::load(scene).unwrap();
     let mut ed = Editor::new(loaded.scene, Some(scene.to_path_buf()), SIZE.0, SIZE.1);
     let (row, node) = ed
         .widgets()
@@ -61,14 +61,14 @@ fn editing_script(scene: &Path) -> (String, NodeId) {
     s += &"key right\n".repeat(10);
     // The first key adds key strip rows, which moves the panel: find the
     // field again in an editor that ran the steps so far.
-    animed::editor::script::run(&mut ed, &s, Path::new("s1.txt")).expect("script runs");
+    animed::internals::editor::script::run(&mut ed, &s, Path::new("s1.txt")).expect("script runs");
     let tx = centre(&ed, |k| format!("{k:?}") == "Field(Translation(0))");
     s += &format!("click {} {}\ntype -4\nkey enter\n", tx.0, tx.1);
     s += "sleep-ms 60000\n";
     (s, node)
 }
 
-fn translation_keys(scene: &animed::scene::Scene, id: NodeId) -> Vec<(f32, Value)> {
+fn translation_keys(scene: &animed::internals::scene::Scene, id: NodeId) -> Vec<(f32, Value)> {
     let t = scene.animation.track(Target {
         of: TargetRef::Node(id),
         property: Property::Translation,
@@ -133,7 +133,7 @@ fn a_killed_session_is_recovered_and_saved() {
         original,
         "the scene file is untouched"
     );
-    let autosaved = animed::format::load(&copy).expect("the copy loads");
+    let autosaved = animed::internals::format::load(&copy).expect("the copy loads");
     let k = translation_keys(&autosaved.scene, node);
     assert_eq!(key_x(&k, 0.0), Some(2.5), "{k:?}");
     assert_eq!(key_x(&k, 10.0), Some(-4.0), "{k:?}");
@@ -150,7 +150,7 @@ fn a_killed_session_is_recovered_and_saved() {
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(!copy.exists(), "saving deletes the recovery copy");
-    let saved = animed::format::load(&scene).expect("the saved scene loads");
+    let saved = animed::internals::format::load(&scene).expect("the saved scene loads");
     let k = translation_keys(&saved.scene, node);
     assert_eq!(key_x(&k, 0.0), Some(2.5), "{k:?}");
     assert_eq!(key_x(&k, 10.0), Some(-4.0), "{k:?}");
@@ -177,10 +177,10 @@ fn key(ed: &mut Editor, k: Key) {
 /// moved to x = 7; an editor that opened the scene.
 fn crashed(d: &Path) -> (PathBuf, Editor) {
     let scene = demo_file(d);
-    let mut moved = animed::format::load(&scene).unwrap().scene;
+    let mut moved = animed::internals::format::load(&scene).unwrap().scene;
     moved.nodes[0].transform.translation.x = 7.0;
     let copy = recovery_path(&scene);
-    animed::format::save(&moved, &copy, &Default::default()).unwrap();
+    animed::internals::format::save(&moved, &copy, &Default::default()).unwrap();
     // Newer than the scene, whatever the file system's time resolution.
     let f = std::fs::OpenOptions::new()
         .write(true)
@@ -251,18 +251,18 @@ fn open_saved_keeps_the_copy_and_discard_deletes_it() {
 fn discarding_unsaved_changes_deletes_this_sessions_copy() {
     let d = dir("discard");
     let scene = demo_file(&d);
-    let loaded = animed::format::load(&scene).unwrap();
+    let loaded = animed::internals::format::load(&scene).unwrap();
     let mut ed = Editor::new(loaded.scene, Some(scene.clone()), SIZE.0, SIZE.1);
     ed.set_autosave_interval(Some(1.0));
     let x = centre(&ed, |k| matches!(k, WidgetKind::Row { .. }));
     ed.handle(Event::MouseDown {
-        button: animed::editor::MouseButton::Left,
+        button: animed::internals::editor::MouseButton::Left,
         x: x.0 as f32,
         y: x.1 as f32,
         mods: Mods::NONE,
     });
     ed.handle(Event::MouseUp {
-        button: animed::editor::MouseButton::Left,
+        button: animed::internals::editor::MouseButton::Left,
         x: x.0 as f32,
         y: x.1 as f32,
         mods: Mods::NONE,
@@ -289,7 +289,7 @@ fn discarding_unsaved_changes_deletes_this_sessions_copy() {
 fn closing_the_window_asks_once_then_keeps_the_work_in_the_copy() {
     let d = dir("close");
     let scene = demo_file(&d);
-    let loaded = animed::format::load(&scene).unwrap();
+    let loaded = animed::internals::format::load(&scene).unwrap();
     let mut ed = Editor::new(loaded.scene, Some(scene.clone()), SIZE.0, SIZE.1);
     // Nothing unsaved: the window just closes.
     assert!(!ed.close_requested());
@@ -306,9 +306,9 @@ fn closing_the_window_asks_once_then_keeps_the_work_in_the_copy() {
     let msg = ed.window_closed().expect("says where the work went");
     let copy = recovery_path(&scene);
     assert!(msg.contains(&copy.display().to_string()), "{msg}");
-    let kept = animed::format::load(&copy).expect("the copy loads");
+    let kept = animed::internals::format::load(&copy).expect("the copy loads");
     // Node ids may differ after a round trip; compare by name.
-    let named = |sc: &animed::scene::Scene| {
+    let named = |sc: &animed::internals::scene::Scene| {
         let mut v: Vec<String> = sc
             .animation
             .tracks

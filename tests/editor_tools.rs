@@ -8,10 +8,10 @@ mod golden;
 
 #[path = "common/ui_input.rs"]
 mod ui_input;
-use animed::anim::{Property, Target, TargetRef, Value};
-use animed::editor::manip::{Handle, Tool, ARROW_PX};
-use animed::editor::{Editor, Event, Key, Mods};
-use animed::scene::{NodeId, NodeKind};
+use animed::internals::anim::{Property, Target, TargetRef, Value};
+use animed::internals::editor::manip::{Handle, Tool, ARROW_PX};
+use animed::internals::editor::{Editor, Event, Key, Mods};
+use animed::internals::scene::{NodeId, NodeKind};
 use glam::{Quat, Vec3};
 use std::f32::consts::PI;
 use std::path::Path;
@@ -106,10 +106,10 @@ fn ring_drag_turns_about_its_axis_by_the_arc_as_one_step() {
 
 #[test]
 fn ring_drag_on_a_parented_node_turns_it_about_the_world_axis() {
-    use animed::scene::{Node, Transform};
+    use animed::internals::scene::{Node, Transform};
     use glam::Mat4;
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let mut scene = animed::format::load(&path).expect("the stage loads").scene;
+    let mut scene = animed::internals::format::load(&path).expect("the stage loads").scene;
     // A parent turned and scaled, a child with a raw matrix
     // (Inventor MatrixTransform) before its own transform.
     let parent = scene.add_node(
@@ -133,7 +133,7 @@ fn ring_drag_on_a_parented_node_turns_it_about_the_world_axis() {
     let mut ed = Editor::new(scene, None, 480, 320);
     ed.select(Some(child));
     key(&mut ed, Key::Char('e'), Mods::NONE);
-    let world = |ed: &Editor| animed::anim::evaluate(ed.scene(), 0.0).world[child.0 as usize];
+    let world = |ed: &Editor| animed::internals::anim::evaluate(ed.scene(), 0.0).world[child.0 as usize];
     let w0 = world(&ed);
     let t0 = grabbable(&mut ed, Handle::Ring(1), 0.5);
     ring_drag(&mut ed, Handle::Ring(1), t0, t0 + 0.5, Mods::NONE);
@@ -583,7 +583,7 @@ fn onion_skin_shows_copies_at_the_neighbouring_keys() {
     };
     let fps = ed.scene().settings.fps;
     for f in [24.0, 48.0] {
-        let pose = animed::anim::evaluate(ed.scene(), f / fps);
+        let pose = animed::internals::anim::evaluate(ed.scene(), f / fps);
         let w = pose.world[ball.0 as usize].w_axis.truncate();
         let p = ed.pixel_of(w).unwrap();
         assert!(
@@ -660,7 +660,7 @@ fn scripts_drag_handles_by_name() {
     let mut ed = stage();
     let pyr = node(&ed, "Pyramid");
     let script = "select Pyramid\nkey e\ndrag-handle y 30 0\nkey t\ndrag-handle uniform 70 0\nkey w\ndrag-handle body 10 5\n";
-    animed::editor::script::run(&mut ed, script, Path::new("s.txt")).expect("the script runs");
+    animed::internals::editor::script::run(&mut ed, script, Path::new("s.txt")).expect("the script runs");
     let n = ed.scene().node(pyr);
     let (axis, angle) = n.transform.rotation.to_axis_angle();
     assert!(
@@ -674,7 +674,7 @@ fn scripts_drag_handles_by_name() {
         vec!["Rotate Pyramid", "Scale Pyramid", "Move Pyramid"]
     );
     // A handle the tool does not have stops the session at its line.
-    let e = animed::editor::script::run(
+    let e = animed::internals::editor::script::run(
         &mut ed,
         "key e\n\ndrag-handle uniform 5 5\n",
         Path::new("s.txt"),

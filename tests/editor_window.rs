@@ -2,8 +2,8 @@
 //! driven by xdotool. Without Xvfb/xdotool/ImageMagick it fails in CI
 //! (`CI=true`) and says loudly that it skipped otherwise.
 
-use animed::editor::panel::WidgetKind;
-use animed::editor::Editor;
+use animed::internals::editor::panel::WidgetKind;
+use animed::internals::editor::Editor;
 use std::process::Command;
 
 #[test]
@@ -27,7 +27,7 @@ fn window_smoke() {
         .find(|w| format!("{:?}", w.kind) == "Field(Translation(0))")
         .expect("a selected object shows its translation");
     let vp = l.viewport;
-    let geom = |r: animed::ui::Rect| format!("{}x{}+{}+{}", r.w, r.h, r.x, r.y);
+    let geom = |r: animed::internals::ui::Rect| format!("{}x{}+{}+{}", r.w, r.h, r.x, r.y);
     let out = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("window-smoke");
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/window_smoke.sh");
     let status = Command::new("bash")

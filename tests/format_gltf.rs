@@ -6,12 +6,12 @@
 mod gltf_corpus;
 mod gltf_node;
 
-use animed::anim::{
+use animed::internals::anim::{
     evaluate, Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value,
 };
-use animed::format::gltf::{read, to_bytes, ReadOptions};
-use animed::format::{self, WriteOptions};
-use animed::scene::{Clip, LightKind, Node, NodeKind, Scene};
+use animed::internals::format::gltf::{read, to_bytes, ReadOptions};
+use animed::internals::format::{self, WriteOptions};
+use animed::internals::scene::{Clip, LightKind, Node, NodeKind, Scene};
 use glam::{Quat, Vec3};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -109,7 +109,7 @@ fn materials_lights_and_cameras_map_as_documented() {
     assert_eq!(cam.description, "Front");
     assert_eq!(cam.near, Some(0.5));
     assert!(
-        matches!(cam.kind, animed::scene::CameraKind::Perspective { height_angle } if height_angle == 0.8)
+        matches!(cam.kind, animed::internals::scene::CameraKind::Perspective { height_angle } if height_angle == 0.8)
     );
     assert_eq!(
         s.settings.headlight,
@@ -265,7 +265,7 @@ fn authored() -> Scene {
     ]);
     let hop = Clip {
         name: "Hop".into(),
-        animation: animed::anim::Animation {
+        animation: animed::internals::anim::Animation {
             tracks: vec![
                 Track::new(t(Property::Translation), Repeat::Constant, tcb).unwrap(),
                 Track::new(
@@ -394,10 +394,10 @@ fn convert_writes_gltf_and_glb() {
 #[test]
 fn a_static_light_and_camera_keep_their_placement() {
     let mut s = Scene::new();
-    let mut light = animed::scene::Light::new(LightKind::Point);
+    let mut light = animed::internals::scene::Light::new(LightKind::Point);
     light.location = Vec3::new(1.0, 2.0, 3.0);
     s.add_node(None, Node::new("Bulb", NodeKind::Light(light.clone())));
-    let cam = animed::scene::Camera {
+    let cam = animed::internals::scene::Camera {
         position: Vec3::new(0.0, 1.0, 5.0),
         orientation: Quat::from_rotation_x(-0.3),
         ..Default::default()

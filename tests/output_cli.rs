@@ -3,7 +3,7 @@
 //! render at the same time byte for byte, a GIF decodes to the PNG frames
 //! within the palette bound, and bad arguments fail with a clear message.
 
-use animed::output::FrameRange;
+use animed::internals::output::FrameRange;
 use image::AnimationDecoder;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

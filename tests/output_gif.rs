@@ -6,8 +6,8 @@
 //! and every 8×8 block (the dither tile) averages to within
 //! [`MAX_BLOCK_ERR`] levels of the original per channel.
 
-use animed::output::{FrameRange, Pattern, SequenceJob, Shard};
-use animed::render::Frame;
+use animed::internals::output::{FrameRange, Pattern, SequenceJob, Shard};
+use animed::internals::render::Frame;
 use image::AnimationDecoder;
 
 /// Measured 0.46 and 1.5 on this test's frames.
@@ -119,10 +119,10 @@ fn round_trip(rainbow: bool) -> (f64, f64) {
 fn smooth_shading_survives_the_palette() {
     // The test means something only if the frames have more colours than
     // a GIF can hold.
-    let mut all = animed::output::palette::Histogram::default();
+    let mut all = animed::internals::output::palette::Histogram::default();
     for i in 0..12 {
         let f = synthetic(i as f32 * 0.04 / 0.44, 200, 150, false);
-        all.merge(&animed::output::palette::Histogram::of_pixels(&f.color));
+        all.merge(&animed::internals::output::palette::Histogram::of_pixels(&f.color));
     }
     assert!(all.colours.len() > 2000, "{} colours", all.colours.len());
     let (mean, block) = round_trip(false);

@@ -6,8 +6,8 @@
 #[path = "common/golden.rs"]
 mod golden;
 
-use animed::output::FrameRange;
-use animed::render::job::{render_at, FrameSpec};
+use animed::internals::output::FrameRange;
+use animed::internals::render::job::{render_at, FrameSpec};
 use std::path::PathBuf;
 
 fn data(name: &str) -> PathBuf {
@@ -25,7 +25,7 @@ fn spec() -> FrameSpec {
 }
 
 fn check_range(file: &str, golden_prefix: &str, range: &str) {
-    let scene = animed::format::load(&data(file))
+    let scene = animed::internals::format::load(&data(file))
         .unwrap_or_else(|e| panic!("{file}: {e}"))
         .scene;
     assert!(

@@ -6,14 +6,14 @@
 #[path = "common/golden.rs"]
 mod golden;
 
-use animed::render::job::{render_at, FrameSpec, Headlight};
+use animed::internals::render::job::{render_at, FrameSpec, Headlight};
 use std::path::Path;
 
-fn draw(file: &str, time: f32) -> animed::render::Frame {
+fn draw(file: &str, time: f32) -> animed::internals::render::Frame {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/data/readers")
         .join(file);
-    let loaded = animed::format::load(&path).expect("test file loads");
+    let loaded = animed::internals::format::load(&path).expect("test file loads");
     let spec = FrameSpec {
         width: 240,
         height: 180,

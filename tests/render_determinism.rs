@@ -11,9 +11,9 @@
 #[path = "common/golden.rs"]
 mod golden;
 
-use animed::render::job::{render_at, FrameSpec, Headlight};
-use animed::render::Frame;
-use animed::scene::RenderStyle;
+use animed::internals::render::job::{render_at, FrameSpec, Headlight};
+use animed::internals::render::Frame;
+use animed::internals::scene::RenderStyle;
 use std::path::PathBuf;
 
 fn root() -> PathBuf {
@@ -34,8 +34,8 @@ fn same(a: &Frame, b: &Frame) -> bool {
 /// 1, 2 and 7 threads: byte-identical colour, depth and ids.
 #[test]
 fn thread_count_never_changes_the_picture() {
-    let demo = animed::format::demo().expect("bundled demo loads").scene;
-    let oak = animed::format::load(&root().join("tests/data/oak_leafless.obj"))
+    let demo = animed::internals::format::demo().expect("bundled demo loads").scene;
+    let oak = animed::internals::format::load(&root().join("tests/data/oak_leafless.obj"))
         .unwrap()
         .scene;
     let cases = [
@@ -89,7 +89,7 @@ fn release_cases() -> Vec<(&'static str, FrameSpec)> {
 
 #[test]
 fn test_profile_matches_release_binary_exactly() {
-    let oak = animed::format::load(&root().join("tests/data/oak_leafless.obj"))
+    let oak = animed::internals::format::load(&root().join("tests/data/oak_leafless.obj"))
         .unwrap()
         .scene;
     for (name, spec) in release_cases() {
@@ -134,7 +134,7 @@ fn cli_binary_matches_release_binary_exactly() {
 /// purpose, rerun with UPDATE_GOLDENS=1 and look at the picture.
 #[test]
 fn demo_scene() {
-    let demo = animed::format::demo().expect("bundled demo loads").scene;
+    let demo = animed::internals::format::demo().expect("bundled demo loads").scene;
     let spec = FrameSpec {
         width: 320,
         height: 240,

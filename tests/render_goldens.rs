@@ -5,9 +5,9 @@
 #[path = "common/golden.rs"]
 mod golden;
 
-use animed::anim::evaluate;
-use animed::render::{render, Frame, RenderOptions, View};
-use animed::scene::{
+use animed::internals::anim::evaluate;
+use animed::internals::render::{render, Frame, RenderOptions, View};
+use animed::internals::scene::{
     mesh_from_polygons, primitives, Camera, CameraKind, Light, LightKind, Material, Mesh, Node,
     NodeId, NodeKind, PolyOptions, RenderStyle, Scene, Shape, Transform,
 };
@@ -579,7 +579,7 @@ fn shared_dir() -> std::path::PathBuf {
 #[test]
 fn obj_with_mtl() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/oak_leafless.obj");
-    let loaded = animed::format::load(&path).unwrap();
+    let loaded = animed::internals::format::load(&path).unwrap();
     assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
     let s = loaded.scene;
     // The MTL's Ks 0.5 and Ns 96 arrived.

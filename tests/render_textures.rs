@@ -8,10 +8,10 @@
 #[path = "common/golden.rs"]
 mod golden;
 
-use animed::format::load_bytes;
-use animed::render::job::{render_at, FrameSpec};
-use animed::render::Frame;
-use animed::scene::{Scene, TextureModel};
+use animed::internals::format::load_bytes;
+use animed::internals::render::job::{render_at, FrameSpec};
+use animed::internals::render::Frame;
+use animed::internals::scene::{Scene, TextureModel};
 use glam::Vec3;
 use std::path::{Path, PathBuf};
 

@@ -2,9 +2,9 @@
 //! and the second export is byte-identical.
 mod writers_common;
 
-use animed::format::save::{to_bytes, OutputFormat};
-use animed::format::{load_bytes, WriteOptions};
-use animed::scene::Scene;
+use animed::internals::format::save::{to_bytes, OutputFormat};
+use animed::internals::format::{load_bytes, WriteOptions};
+use animed::internals::scene::Scene;
 use std::path::Path;
 
 fn export(s: &Scene) -> Vec<u8> {

@@ -4,10 +4,10 @@
 //! byte-identical (VRML97 and Inventor).
 mod writers_common;
 
-use animed::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
-use animed::format::save::{to_bytes, OutputFormat};
-use animed::format::{load_bytes, WriteOptions};
-use animed::scene::{Camera, Light, LightKind, Material, Node, NodeKind, Scene, Shape};
+use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
+use animed::internals::format::save::{to_bytes, OutputFormat};
+use animed::internals::format::{load_bytes, WriteOptions};
+use animed::internals::scene::{Camera, Light, LightKind, Material, Node, NodeKind, Scene, Shape};
 use glam::{Quat, Vec3};
 use proptest::prelude::*;
 use std::path::Path;
@@ -123,7 +123,7 @@ fn random_scene(seed: u64) -> Scene {
         {
             continue;
         }
-        use animed::anim::ValueKind as K;
+        use animed::internals::anim::ValueKind as K;
         let keys = match property.kind() {
             K::Scalar => Keys::Scalar(random_keys(&mut r, |r| r.f(0.0, 1.0), false)),
             K::Vec3 | K::Color => Keys::Vec3(random_keys(

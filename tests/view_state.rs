@@ -1,13 +1,13 @@
 //! `animed view` without a window: the viewer state machine driven by
 //! events, as the window loop drives it.
 
-use animed::editor::{Event, Key, Mods, MouseButton};
-use animed::render::job::Headlight;
-use animed::render::Frame;
-use animed::viewer::{Eye, Viewer, ViewerOptions};
+use animed::internals::editor::{Event, Key, Mods, MouseButton};
+use animed::internals::render::job::Headlight;
+use animed::internals::render::Frame;
+use animed::internals::viewer::{Eye, Viewer, ViewerOptions};
 
 fn demo() -> Viewer {
-    let scene = animed::format::demo().expect("demo loads").scene;
+    let scene = animed::internals::format::demo().expect("demo loads").scene;
     let opts = ViewerOptions {
         width: 320,
         height: 240,
@@ -110,7 +110,7 @@ fn headlight_and_viewpoints_cycle() {
 
 #[test]
 fn an_unknown_viewpoint_is_an_error_naming_the_choices() {
-    let scene = animed::format::demo().unwrap().scene;
+    let scene = animed::internals::format::demo().unwrap().scene;
     let opts = ViewerOptions {
         viewpoint: Some("nowhere".into()),
         ..ViewerOptions::default()
@@ -146,19 +146,19 @@ fn scrubbing_the_bar_seeks_and_draw_shows_scene_and_bar() {
     assert_eq!((frame.width, frame.height), (w, h));
     // The scene area is the render of that time through the same camera:
     // compare its top rows with render_at at the clock's time.
-    let spec = animed::render::job::FrameSpec {
+    let spec = animed::internals::render::job::FrameSpec {
         width: w,
         height: h - 40,
         ..Default::default()
     };
-    let alone = animed::render::job::render_at(v.scene(), &spec, v.clock().time()).unwrap();
+    let alone = animed::internals::render::job::render_at(v.scene(), &spec, v.clock().time()).unwrap();
     let rows = 60 * w as usize;
     assert_eq!(&frame.color[..rows], &alone.color[..rows]);
     // The bar fills the bottom rows (its panel colour, text aside).
     let bar_row = (h as usize - 2) * w as usize;
     let panel = frame.color[bar_row..bar_row + w as usize]
         .iter()
-        .filter(|&&c| c == animed::ui::theme::PANEL_DARK)
+        .filter(|&&c| c == animed::internals::ui::theme::PANEL_DARK)
         .count();
     assert!(panel > w as usize / 2, "{panel} of {w} bar pixels");
 }

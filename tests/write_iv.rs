@@ -1,11 +1,11 @@
 //! The Inventor writer, checked on scenes built in code.
 mod writers_common;
 
-use animed::format::save::{to_bytes, OutputFormat};
-use animed::format::{InventorVersion, WriteOptions};
-use animed::scene::Scene;
+use animed::internals::format::save::{to_bytes, OutputFormat};
+use animed::internals::format::{InventorVersion, WriteOptions};
+use animed::internals::scene::Scene;
 
-fn iv(s: &Scene, version: InventorVersion) -> (String, animed::format::WriteReport) {
+fn iv(s: &Scene, version: InventorVersion) -> (String, animed::internals::format::WriteReport) {
     let opts = WriteOptions {
         inventor_version: version,
         ..Default::default()

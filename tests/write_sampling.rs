@@ -3,10 +3,10 @@
 //! linear tracks cost no more keys than they have.
 mod writers_common;
 
-use animed::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value};
-use animed::format::export::channels::channels;
-use animed::format::sampling::{angle_between, slerp_shortest, Tolerances};
-use animed::scene::{Node, Scene};
+use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value};
+use animed::internals::format::export::channels::channels;
+use animed::internals::format::sampling::{angle_between, slerp_shortest, Tolerances};
+use animed::internals::scene::{Node, Scene};
 use glam::{Quat, Vec3};
 use proptest::prelude::*;
 
@@ -79,7 +79,7 @@ proptest! {
     ) {
         let keys = build(&raw, |v| Vec3::new(v[0], v[1], v[2]));
         let track = Track {
-            target: Target { of: TargetRef::Node(animed::scene::NodeId(0)), property: Property::Translation },
+            target: Target { of: TargetRef::Node(animed::internals::scene::NodeId(0)), property: Property::Translation },
             repeat: if looped { Repeat::Loop } else { Repeat::Constant },
             keys: Keys::Vec3(keys),
         };
@@ -105,7 +105,7 @@ proptest! {
     fn played_rotation_stays_within_tolerance(raw in prop::collection::vec(key_strategy(), 1..6)) {
         let keys = build(&raw, |v| Quat::from_axis_angle(Vec3::new(v[0], v[1], v[2] + 2.5).normalize(), v[3] * 2.0));
         let track = Track {
-            target: Target { of: TargetRef::Node(animed::scene::NodeId(0)), property: Property::Rotation },
+            target: Target { of: TargetRef::Node(animed::internals::scene::NodeId(0)), property: Property::Rotation },
             repeat: Repeat::Constant,
             keys: Keys::Rotation(keys),
         };
@@ -135,7 +135,7 @@ fn linear_keys_are_kept_as_they_are() {
         .collect();
     let track = Track {
         target: Target {
-            of: TargetRef::Node(animed::scene::NodeId(0)),
+            of: TargetRef::Node(animed::internals::scene::NodeId(0)),
             property: Property::Translation,
         },
         repeat: Repeat::Constant,
@@ -150,19 +150,19 @@ fn linear_keys_are_kept_as_they_are() {
 #[test]
 fn spline_keys_cost_fewer_keys_than_per_frame_baking_at_default_tolerance() {
     let s = writers_common::demo_scene();
-    let (_, report) = animed::format::save::to_bytes(
+    let (_, report) = animed::internals::format::save::to_bytes(
         &s,
-        animed::format::OutputFormat::Vrml97,
-        &animed::format::WriteOptions::default(),
+        animed::internals::format::OutputFormat::Vrml97,
+        &animed::internals::format::WriteOptions::default(),
     );
     let (w, p) = (report.written_keys(), report.per_frame_keys());
     println!("demo: {w} keys written, {p} per frame");
     assert!(w < p, "{w} >= {p}");
     // Looser tolerance, fewer keys.
-    let (_, loose) = animed::format::save::to_bytes(
+    let (_, loose) = animed::internals::format::save::to_bytes(
         &s,
-        animed::format::OutputFormat::Vrml97,
-        &animed::format::WriteOptions {
+        animed::internals::format::OutputFormat::Vrml97,
+        &animed::internals::format::WriteOptions {
             tolerance: 0.01,
             angle_tolerance: 1.0,
             ..Default::default()

@@ -1,9 +1,9 @@
 //! The VRML97 writer, checked on scenes built in code.
 mod writers_common;
 
-use animed::format::save::{to_bytes, OutputFormat};
-use animed::format::WriteOptions;
-use animed::scene::{Node, Scene};
+use animed::internals::format::save::{to_bytes, OutputFormat};
+use animed::internals::format::WriteOptions;
+use animed::internals::scene::{Node, Scene};
 use std::collections::HashSet;
 use std::io::Read as _;
 
@@ -142,7 +142,7 @@ fn textures_are_written_as_image_and_pixel_textures_with_coordinates() {
     // Saved into another folder: the url climbs to the file that was read.
     let out = dir.join("out").join("scene.wrl");
     std::fs::create_dir_all(out.parent().unwrap()).unwrap();
-    let report = animed::format::save(&scene, &out, &WriteOptions::default()).unwrap();
+    let report = animed::internals::format::save(&scene, &out, &WriteOptions::default()).unwrap();
     let text = std::fs::read_to_string(&out).unwrap();
     for needle in [
         "texture ImageTexture {\n",
@@ -187,13 +187,13 @@ fn copy_textures_copies_each_file_once_and_points_the_output_at_the_copies() {
     let elsewhere = dir.join("elsewhere");
     std::fs::create_dir_all(&elsewhere).unwrap();
     std::fs::write(elsewhere.join("brick.png"), b"another").unwrap();
-    other.source = animed::scene::ImageSource::File {
+    other.source = animed::internals::scene::ImageSource::File {
         url: "brick.png".into(),
         path: elsewhere.join("brick.png"),
     };
     scene.add_image(other).unwrap();
     let copies = dir.join("out/textures");
-    let copied = animed::format::export::textures::copy_textures(&mut scene, &copies).unwrap();
+    let copied = animed::internals::format::export::textures::copy_textures(&mut scene, &copies).unwrap();
     assert_eq!(copied.len(), 2);
     assert_eq!(
         std::fs::read(copies.join("brick.png")).unwrap(),
@@ -204,15 +204,15 @@ fn copy_textures_copies_each_file_once_and_points_the_output_at_the_copies() {
         b"another"
     );
     let out = dir.join("out/scene.wrl");
-    animed::format::save(&scene, &out, &WriteOptions::default()).unwrap();
+    animed::internals::format::save(&scene, &out, &WriteOptions::default()).unwrap();
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(text.contains("url \"textures/brick.png\""), "{text}");
     // info lists the textures with their users.
-    let loaded = animed::format::Loaded {
+    let loaded = animed::internals::format::Loaded {
         scene,
         warnings: Vec::new(),
     };
-    let d = animed::cli::info::describe(&loaded);
+    let d = animed::internals::cli::info::describe(&loaded);
     let t = &d["textures"];
     assert_eq!(t.as_array().unwrap().len(), 3, "{t}");
     // In memory the url is the copy's path; `save` made it relative above.

@@ -17,7 +17,7 @@ fuzz_target!(|data: &[u8]| {
         Some((_, rest)) => ("fuzz.gltf", rest.to_vec()),
         None => ("fuzz.gltf", Vec::new()),
     };
-    if let Err(e) = animed::format::load_bytes(&body, Path::new(name)) {
+    if let Err(e) = animed::internals::format::load_bytes(&body, Path::new(name)) {
         assert!(e.to_string().starts_with(name));
     }
 });

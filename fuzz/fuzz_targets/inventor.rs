@@ -7,8 +7,8 @@ use std::path::Path;
 /// The input budget, smaller than the defaults so that every run is quick
 /// (the defaults' memory bound is checked by `tests/hostile.rs`); libFuzzer
 /// itself caps memory too (`fuzz/run.sh`: -rss_limit_mb / -malloc_limit_mb).
-fn limits() -> animed::format::limits::Limits {
-    animed::format::limits::Limits {
+fn limits() -> animed::internals::format::limits::Limits {
+    animed::internals::format::limits::Limits {
         max_bytes: 4 << 20,
         max_nodes: 100_000,
         max_depth: 256,
@@ -25,7 +25,7 @@ fuzz_target!(|data: &[u8]| {
     };
     let mut src = header.to_vec();
     src.extend_from_slice(body);
-    if let Err(e) = animed::format::load_bytes_with(&src, Path::new("fuzz.iv"), limits()) {
+    if let Err(e) = animed::internals::format::load_bytes_with(&src, Path::new("fuzz.iv"), limits()) {
         assert!(e.to_string().starts_with("fuzz.iv:"));
     }
 });

@@ -1,6 +1,6 @@
 //! Every byte string lexes to tokens or a positioned error, never a panic.
 #![no_main]
-use animed::format::lexer::{read_header, Lexer, Tok};
+use animed::internals::format::lexer::{read_header, Lexer, Tok};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

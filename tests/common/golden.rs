@@ -21,7 +21,7 @@
 #![allow(dead_code)]
 
 use animed::check::{verify, Options, Status};
-use animed::render::Frame;
+use animed::internals::render::Frame;
 use animed::{Allowance, Image, Tolerance};
 use std::path::PathBuf;
 

@@ -2,7 +2,7 @@
 //! drags in eight steps, widgets found by their debug name.
 #![allow(dead_code)] // each test file uses only some of these
 
-use animed::editor::{Editor, Event, Key, Mods, MouseButton};
+use animed::internals::editor::{Editor, Event, Key, Mods, MouseButton};
 
 pub fn key(ed: &mut Editor, k: Key, mods: Mods) {
     ed.handle(Event::KeyDown { key: k, mods });
@@ -93,7 +93,7 @@ pub fn type_into(ed: &mut Editor, field: &str, text: &str) {
 /// The editor (480×320) on the frozen copy of the demo stage.
 pub fn stage() -> Editor {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let loaded = animed::format::load(&path).expect("the stage loads");
+    let loaded = animed::internals::format::load(&path).expect("the stage loads");
     Editor::new(
         loaded.scene,
         Some(std::path::PathBuf::from("stage.wrl")),
@@ -102,6 +102,6 @@ pub fn stage() -> Editor {
     )
 }
 
-pub fn node(ed: &Editor, name: &str) -> animed::scene::NodeId {
+pub fn node(ed: &Editor, name: &str) -> animed::internals::scene::NodeId {
     ed.scene().find_node(name).expect("node in the stage")
 }

@@ -8,10 +8,10 @@
 #[path = "../common/golden.rs"]
 mod golden;
 
-use animed::anim::evaluate;
-use animed::format;
-use animed::render::job::{render_at, FrameSpec, Headlight};
-use animed::scene::Scene;
+use animed::internals::anim::evaluate;
+use animed::internals::format;
+use animed::internals::render::job::{render_at, FrameSpec, Headlight};
+use animed::internals::scene::Scene;
 use std::path::{Path, PathBuf};
 
 fn corpus() -> Option<PathBuf> {

@@ -118,7 +118,7 @@ pub fn three_sample(npm: &Path, file: &Path, clip: usize, times: &[f32]) -> serd
 
 /// animed's local transform equals three.js's within 1e-4 relative
 /// (rotations: 1e-4 rad).
-pub fn assert_same_trs(ours: &animed::scene::Transform, tr: &serde_json::Value, what: &str) {
+pub fn assert_same_trs(ours: &animed::internals::scene::Transform, tr: &serde_json::Value, what: &str) {
     let get = |k: &str| -> Vec<f32> {
         tr[k]
             .as_array()
@@ -219,7 +219,7 @@ fn three_js_plays_written_files_like_animed() {
     };
     let mut compared = 0usize;
     for file in &files {
-        let loaded = animed::format::load(file).unwrap();
+        let loaded = animed::internals::format::load(file).unwrap();
         let scene = loaded.scene;
         for (clip_index, clip) in scene.clip_refs().iter().enumerate() {
             let mut s = scene.clone();
@@ -230,7 +230,7 @@ fn three_js_plays_written_files_like_animed() {
                 .collect();
             let v = three_sample(&npm, file, clip_index, &times);
             for (i, &t) in times.iter().enumerate() {
-                let pose = animed::anim::evaluate(&s, t);
+                let pose = animed::internals::anim::evaluate(&s, t);
                 for tr in v[i]["nodes"].as_object().unwrap().values() {
                     let Some(id) = s.find_node(tr["name"].as_str().unwrap()) else {
                         continue;

@@ -1,7 +1,8 @@
 //! The smaller holes, each with its fix: CLI values checked, BOM read,
-//! NaN/inf refused, key/keyValue mismatch warned, one warning per kind.
+//! NaN/inf refused, words in number fields warned at their column,
+//! key/keyValue mismatch warned, one warning per kind.
 
-use animed::format::load_bytes;
+use animed::internals::format::load_bytes;
 use std::path::Path;
 use std::process::Command;
 
@@ -33,21 +34,21 @@ fn cli_values_out_of_range_are_errors() {
 
 #[test]
 fn huge_frames_are_drawn_fewer_at_a_time() {
-    use animed::render::FrameSpec;
+    use animed::internals::render::FrameSpec;
     let spec = FrameSpec {
         width: 8192,
         height: 8192,
         threads: 8,
         ..FrameSpec::default()
     };
-    assert_eq!(animed::output::frames_at_once(&spec), 1);
+    assert_eq!(animed::internals::output::frames_at_once(&spec), 1);
     let small = FrameSpec {
         width: 320,
         height: 240,
         threads: 8,
         ..FrameSpec::default()
     };
-    assert_eq!(animed::output::frames_at_once(&small), 8);
+    assert_eq!(animed::internals::output::frames_at_once(&small), 8);
 }
 
 #[test]
@@ -101,10 +102,10 @@ fn a_lossy_matrix_is_warned_once_with_the_nodes_path() {
     }
     text += "}\n";
     let l = load_bytes(text.as_bytes(), Path::new("m.iv")).unwrap();
-    let (_, report) = animed::format::save::to_bytes(
+    let (_, report) = animed::internals::format::save::to_bytes(
         &l.scene,
-        animed::format::OutputFormat::Vrml97,
-        &animed::format::WriteOptions::default(),
+        animed::internals::format::OutputFormat::Vrml97,
+        &animed::internals::format::WriteOptions::default(),
     );
     let shear: Vec<&String> = report
         .warnings
@@ -117,4 +118,45 @@ fn a_lossy_matrix_is_warned_once_with_the_nodes_path() {
         "{}",
         shear[0]
     );
+}
+
+#[test]
+fn a_word_or_string_in_a_number_field_is_warned_at_its_column() {
+    for (src, col) in [
+        ("DEF T TimeSensor { cycleInterval \"x\" loop TRUE }", 34),
+        ("Transform { scale TRUE }", 19),
+        ("Shape { geometry Sphere { radius big } }", 34),
+    ] {
+        let text = format!("#VRML V2.0 utf8\nGroup {{}}\n{src}\n");
+        let l = load_bytes(text.as_bytes(), Path::new("w.wrl")).unwrap();
+        let w = l.warnings.join("\n");
+        assert!(w.contains(&format!("w.wrl:3:{col}:")), "{src}: {w}");
+        assert!(w.contains("takes numbers"), "{src}: {w}");
+    }
+}
+
+#[test]
+fn a_huge_duration_on_a_looping_track_writes_a_bounded_file() {
+    let dir = std::env::temp_dir().join(format!("animed-holes-dur-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("loop.wrl");
+    let fs = f.to_str().unwrap();
+    let (code, e) = animed(&["key", "new", fs, "--box", "B"]);
+    assert_eq!(code, 0, "{e}");
+    for (frame, x) in [("0", "0,0,0"), ("12", "1,0,0"), ("24", "0,0,0")] {
+        let (code, e) = animed(&[
+            "key", "set", fs, "--target", "B.translation", "--frame", frame, "--value", x,
+            "--repeat", "loop",
+        ]);
+        assert_eq!(code, 0, "{e}");
+    }
+    let (code, e) = animed(&["key", "settings", fs, "--duration", "1e30"]);
+    assert_eq!(code, 0, "{e}");
+    let len = std::fs::metadata(&f).unwrap().len();
+    // The first wave wrote 683 MB here; the sampler stops at a bounded
+    // number of breaks per channel.
+    assert!(len < 16 << 20, "{len} bytes");
+    let l = animed::internals::format::load(&f).unwrap();
+    assert_eq!(l.scene.animation.tracks.len(), 1);
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -2,8 +2,8 @@
 //! offending node, naming the limit and how to raise it.
 
 use super::gen;
-use animed::format::limits::Limits;
-use animed::format::{load, load_bytes_with, LoadError};
+use animed::internals::format::limits::Limits;
+use animed::internals::format::{load, load_bytes_with, LoadError};
 use std::path::{Path, PathBuf};
 
 fn load_small(bytes: &[u8], name: &str, lim: Limits) -> Result<usize, LoadError> {
@@ -43,7 +43,7 @@ fn a_1000_level_proto_chain_is_a_depth_error_not_a_stack_overflow() {
 
 #[test]
 fn nesting_at_the_largest_depth_allowed_fits_a_2_mib_stack() {
-    let deepest = animed::format::limits::DEPTH_CEILING;
+    let deepest = animed::internals::format::limits::DEPTH_CEILING;
     let lim = Limits {
         max_depth: deepest,
         ..Limits::default()
@@ -194,7 +194,7 @@ fn an_inline_used_many_times_pays_for_every_copy() {
         max_nodes: 20_000,
         ..Limits::default()
     };
-    let e = animed::format::load_with(&f, lim).unwrap_err().to_string();
+    let e = animed::internals::format::load_with(&f, lim).unwrap_err().to_string();
     assert!(e.contains("--max-nodes"), "{e}");
     // Inlines nest: the included file's depth adds to the includer's.
     std::fs::write(dir.join("deep.wrl"), gen::nested_groups(20)).unwrap();
@@ -206,7 +206,7 @@ fn an_inline_used_many_times_pays_for_every_copy() {
         max_depth: 15,
         ..Limits::default()
     };
-    let e = animed::format::load_with(&outer, lim)
+    let e = animed::internals::format::load_with(&outer, lim)
         .unwrap_err()
         .to_string();
     assert!(e.contains("--max-depth"), "{e}");

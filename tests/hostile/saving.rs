@@ -209,14 +209,14 @@ fn concurrent_key_edits_of_one_file_all_land() {
 
 #[test]
 fn a_file_changed_since_it_was_read_is_not_overwritten() {
-    use animed::format::export::atomic::Stamp;
+    use animed::internals::format::export::atomic::Stamp;
     let dir = temp_dir("stamp");
     let f = dir.join("s.wrl");
     std::fs::write(&f, b"one").unwrap();
     let stamp = Stamp::of(&f).unwrap();
     stamp.check(&f).unwrap();
     // Another writer replaces it (a new file, as every save does).
-    animed::format::save::write_atomic(&f, b"two").unwrap();
+    animed::internals::format::save::write_atomic(&f, b"two").unwrap();
     let e = stamp.check(&f).unwrap_err().to_string();
     assert!(e.contains("changed since it was read"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
@@ -227,8 +227,8 @@ fn the_editor_does_not_overwrite_a_file_changed_since_it_was_opened() {
     let dir = temp_dir("edsave");
     let f = dir.join("s.wrl");
     std::fs::write(&f, animed_demo_text()).unwrap();
-    let loaded = animed::format::load(&f).unwrap();
-    let mut ed = animed::editor::Editor::new(loaded.scene, Some(f.clone()), 160, 120);
+    let loaded = animed::internals::format::load(&f).unwrap();
+    let mut ed = animed::internals::editor::Editor::new(loaded.scene, Some(f.clone()), 160, 120);
     // Saving onto the file it opened works, again and again.
     ed.save_to(&f).unwrap();
     ed.save_to(&f).unwrap();

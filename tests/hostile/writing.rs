@@ -2,7 +2,7 @@
 //! linearly with the scene.
 
 use super::gen;
-use animed::format::{load, load_bytes, save, SaveError, WriteOptions};
+use animed::internals::format::{load, load_bytes, save, SaveError, WriteOptions};
 use std::path::{Path, PathBuf};
 
 fn temp_dir(tag: &str) -> PathBuf {
@@ -12,11 +12,11 @@ fn temp_dir(tag: &str) -> PathBuf {
     d
 }
 
-fn counts(s: &animed::scene::Scene) -> (usize, usize) {
+fn counts(s: &animed::internals::scene::Scene) -> (usize, usize) {
     let shapes = s
         .nodes
         .iter()
-        .filter(|n| matches!(n.kind, animed::scene::NodeKind::Shape(_)))
+        .filter(|n| matches!(n.kind, animed::internals::scene::NodeKind::Shape(_)))
         .count();
     (s.nodes.len(), shapes)
 }
@@ -72,9 +72,9 @@ fn a_scene_too_deep_to_read_back_is_refused_not_written() {
 fn output_size_grows_linearly_with_depth() {
     let size = |n: usize, ext: &str| {
         let s = load_bytes(&gen::nested_separators(n), Path::new("c.iv")).unwrap();
-        let (b, _) = animed::format::save::to_bytes(
+        let (b, _) = animed::internals::format::save::to_bytes(
             &s.scene,
-            animed::format::OutputFormat::from_path(Path::new(ext)).unwrap(),
+            animed::internals::format::OutputFormat::from_path(Path::new(ext)).unwrap(),
             &WriteOptions::default(),
         );
         b.len() as f64

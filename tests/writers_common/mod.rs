@@ -1,8 +1,8 @@
 //! Scenes built in code for the writer tests (no reader needed).
 #![allow(dead_code)]
 
-use animed::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
-use animed::scene::{
+use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
+use animed::internals::scene::{
     Camera, Light, LightKind, Material, Mesh, Node, NodeId, NodeKind, Scene, Shape, Transform,
 };
 use glam::{Quat, Vec3};
@@ -221,7 +221,7 @@ pub fn demo_scene() -> Scene {
 /// t, turned by a VRML97 texture transform), `Decal` a 2x1 inline RGBA image
 /// with Inventor's DECAL model; plus an untextured cube after them.
 pub fn textured_scene(brick: &std::path::Path) -> Scene {
-    use animed::scene::{Image, ImageSource, TexTransform, Texture, TextureModel, Wrap};
+    use animed::internals::scene::{Image, ImageSource, TexTransform, Texture, TextureModel, Wrap};
     use glam::Vec2;
     let mut s = Scene::new();
     let quad = |name: &str| {

@@ -4,6 +4,8 @@
 //! Rules that need every built-in node's field types (ROUTE type checks,
 //! ROUTEs from/to plain fields) are not checked here.
 
+use super::Value;
+
 /// Built-in VRML97/X3D fields and events that hold nodes (SFNode or
 /// MFNode) in every node that has them. An IS that binds one of them to a
 /// non-node interface field (or the reverse) is a type mismatch. (`color`
@@ -89,6 +91,50 @@ pub(super) fn is_event_name(field: &str) -> bool {
         || field == "removeChildren"
 }
 
+/// Built-in VRML97 fields that hold numbers in every node that has them
+/// (SFFloat, SFTime, SFInt32 and the numeric vectors, §5). A string or a
+/// bare word there would otherwise be dropped and the default used without
+/// a word, so the reader says so at the value's own position.
+const NUMBER_FIELDS: &[&str] = &[
+    "ambientIntensity",
+    "beamWidth",
+    "bottomRadius",
+    "center",
+    "creaseAngle",
+    "cutOffAngle",
+    "cycleInterval",
+    "fieldOfView",
+    "height",
+    "intensity",
+    "radius",
+    "rotation",
+    "scale",
+    "shininess",
+    "spacing",
+    "speed",
+    "startTime",
+    "stopTime",
+    "translation",
+    "transparency",
+    "visibilityLimit",
+    "whichChoice",
+];
+
+/// The message for a built-in number field given a string or a word.
+pub(super) fn number_field_mismatch(field: &str, value: &Value) -> Option<String> {
+    if !NUMBER_FIELDS.contains(&field) {
+        return None;
+    }
+    let found = match value {
+        Value::Strs(s) => format!("the string \"{}\"", s.first().map_or("", String::as_str)),
+        Value::Words(w) => format!("'{}'", w.first().map_or("", String::as_str)),
+        _ => return None,
+    };
+    Some(format!(
+        "'{field}' takes numbers, found {found}; the default is used (§5)"
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -124,6 +170,16 @@ mod tests {
         assert!(is_type_mismatch("children", "kids", "MFNode").is_none());
         assert!(is_type_mismatch("translation", "t", "SFVec3f").is_none());
         assert!(is_type_mismatch("on", "n", "SFNode").is_some());
+    }
+
+    #[test]
+    fn number_fields_refuse_strings_and_words() {
+        let m = number_field_mismatch("cycleInterval", &Value::Strs(vec!["x".into()]));
+        assert!(m.unwrap().contains("the string \"x\""));
+        assert!(number_field_mismatch("radius", &Value::Words(vec!["TRUE".into()])).is_some());
+        assert!(number_field_mismatch("radius", &Value::Nums(vec![1.0])).is_none());
+        assert!(number_field_mismatch("radius", &Value::Is("r".into())).is_none());
+        assert!(number_field_mismatch("url", &Value::Strs(vec!["a".into()])).is_none());
     }
 
     #[test]

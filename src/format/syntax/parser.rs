@@ -402,8 +402,14 @@ impl Parser<'_> {
                 }
                 _ => {}
             }
+            let vpos = self.lx.peek().map_or(fpos, |t| t.pos);
             let value = self.value()?;
             self.check_field(kind, &name, &value, fpos);
+            if self.opts.vrml97 && !self.is_proto_name(kind) {
+                if let Some(m) = checks::number_field_mismatch(&name, &value) {
+                    self.warn(vpos, m);
+                }
+            }
             fields.push(Field {
                 name,
                 value,
