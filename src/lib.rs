@@ -54,11 +54,11 @@ pub use scene::Scene;
 // The application's modules live under [`internals`]; the crate itself
 // reaches them by their short root paths (`crate::scene`, ...) through the
 // crate-private re-exports below, so only `animed::internals::…` is public.
-pub(crate) use internals::{anim, editor, format, input, output, render, scene, ui, viewer};
+pub(crate) use internals::{anim, editor, format, input, render, scene, ui};
 #[cfg(feature = "window")]
-pub(crate) use internals::app;
+pub(crate) use internals::{app, viewer};
 #[cfg(feature = "cli")]
-pub(crate) use internals::cli;
+pub(crate) use internals::{cli, output};
 
 /// The application's internals: the scene model, the animation maths, the
 /// readers and writers, the renderer's stages, the editor, the viewer and

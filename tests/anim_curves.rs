@@ -2,7 +2,9 @@
 //! equivalence, passing through keys, C¹ continuity (also with uneven key
 //! spacing), tension, continuity, bias, step, ease and looping.
 
-use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value};
+use animed::internals::anim::{
+    Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value,
+};
 use animed::internals::scene::NodeId;
 use glam::Vec3;
 

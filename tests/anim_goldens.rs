@@ -10,7 +10,9 @@ mod golden;
 use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
 use animed::internals::render::job::{render_at, FrameSpec, Headlight};
 use animed::internals::scene::primitives::{box_mesh, sphere};
-use animed::internals::scene::{Camera, Light, LightKind, Material, Node, NodeKind, Scene, Shape, Transform};
+use animed::internals::scene::{
+    Camera, Light, LightKind, Material, Node, NodeKind, Scene, Shape, Transform,
+};
 use glam::{Quat, Vec3};
 
 fn track(target: Target, keys: Keys) -> Track {

@@ -2,7 +2,9 @@
 //! through their keys, loops repeat with their period, rotations stay unit
 //! length, and Track::new accepts exactly the sorted, in-range key lists.
 
-use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value};
+use animed::internals::anim::{
+    Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value,
+};
 use animed::internals::scene::NodeId;
 use glam::{Quat, Vec3};
 use proptest::prelude::*;

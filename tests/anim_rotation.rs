@@ -2,7 +2,9 @@
 //! 270° over three keys), squad-TCB = Shoemake's squad at TCB 0, C¹ angular
 //! velocity at keys (also with uneven spacing), loop wrap and ease.
 
-use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value};
+use animed::internals::anim::{
+    Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value,
+};
 use animed::internals::scene::NodeId;
 use glam::{Quat, Vec3};
 use std::f32::consts::PI;

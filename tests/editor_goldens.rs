@@ -119,7 +119,10 @@ fn lines_style() {
     let mut ed = stage(W, H);
     let (x, y) = at(&ed, "ViewStyle");
     run(&mut ed, &format!("click {x} {y}\nclick {x} {y}"));
-    assert_eq!(ed.view_style(), Some(animed::internals::scene::RenderStyle::Lines));
+    assert_eq!(
+        ed.view_style(),
+        Some(animed::internals::scene::RenderStyle::Lines)
+    );
     check("editor_lines_style", &mut ed);
 }
 

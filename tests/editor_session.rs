@@ -4,7 +4,9 @@
 #[path = "common/ui_input.rs"]
 mod ui_input;
 use animed::internals::editor::{script, Editor, Event, Key, Mode, Mods, MouseButton};
-use animed::internals::scene::{Light, LightKind, Material, Mesh, Node, NodeId, NodeKind, Scene, Shape};
+use animed::internals::scene::{
+    Light, LightKind, Material, Mesh, Node, NodeId, NodeKind, Scene, Shape,
+};
 use glam::Vec3;
 use std::path::Path;
 use ui_input::*;
@@ -27,9 +29,9 @@ fn scene() -> Scene {
     for (name, x) in [("Left", -2.0), ("Right", 2.0)] {
         let g = s.add_node(
             None,
-            Node::group(name).with_transform(animed::internals::scene::Transform::from_translation(
-                Vec3::new(x, 1.0, 0.0),
-            )),
+            Node::group(name).with_transform(
+                animed::internals::scene::Transform::from_translation(Vec3::new(x, 1.0, 0.0)),
+            ),
         );
         s.add_node(
             Some(g),
@@ -254,9 +256,15 @@ fn grid_style_and_playback_toggles() {
     assert!(!ed.grid_shown());
     let (x, y) = find(&ed, "ViewStyle");
     click(&mut ed, x, y);
-    assert_eq!(ed.view_style(), Some(animed::internals::scene::RenderStyle::Filled));
+    assert_eq!(
+        ed.view_style(),
+        Some(animed::internals::scene::RenderStyle::Filled)
+    );
     click(&mut ed, x, y);
-    assert_eq!(ed.view_style(), Some(animed::internals::scene::RenderStyle::Lines));
+    assert_eq!(
+        ed.view_style(),
+        Some(animed::internals::scene::RenderStyle::Lines)
+    );
     // Object style applies to the object's whole subtree.
     ed.select(Some(NodeId(0)));
     let (x, y) = find(&ed, "ObjectStyle");

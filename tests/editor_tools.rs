@@ -109,7 +109,9 @@ fn ring_drag_on_a_parented_node_turns_it_about_the_world_axis() {
     use animed::internals::scene::{Node, Transform};
     use glam::Mat4;
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
-    let mut scene = animed::internals::format::load(&path).expect("the stage loads").scene;
+    let mut scene = animed::internals::format::load(&path)
+        .expect("the stage loads")
+        .scene;
     // A parent turned and scaled, a child with a raw matrix
     // (Inventor MatrixTransform) before its own transform.
     let parent = scene.add_node(
@@ -133,7 +135,8 @@ fn ring_drag_on_a_parented_node_turns_it_about_the_world_axis() {
     let mut ed = Editor::new(scene, None, 480, 320);
     ed.select(Some(child));
     key(&mut ed, Key::Char('e'), Mods::NONE);
-    let world = |ed: &Editor| animed::internals::anim::evaluate(ed.scene(), 0.0).world[child.0 as usize];
+    let world =
+        |ed: &Editor| animed::internals::anim::evaluate(ed.scene(), 0.0).world[child.0 as usize];
     let w0 = world(&ed);
     let t0 = grabbable(&mut ed, Handle::Ring(1), 0.5);
     ring_drag(&mut ed, Handle::Ring(1), t0, t0 + 0.5, Mods::NONE);
@@ -660,7 +663,8 @@ fn scripts_drag_handles_by_name() {
     let mut ed = stage();
     let pyr = node(&ed, "Pyramid");
     let script = "select Pyramid\nkey e\ndrag-handle y 30 0\nkey t\ndrag-handle uniform 70 0\nkey w\ndrag-handle body 10 5\n";
-    animed::internals::editor::script::run(&mut ed, script, Path::new("s.txt")).expect("the script runs");
+    animed::internals::editor::script::run(&mut ed, script, Path::new("s.txt"))
+        .expect("the script runs");
     let n = ed.scene().node(pyr);
     let (axis, angle) = n.transform.rotation.to_axis_angle();
     assert!(

@@ -122,7 +122,9 @@ fn smooth_shading_survives_the_palette() {
     let mut all = animed::internals::output::palette::Histogram::default();
     for i in 0..12 {
         let f = synthetic(i as f32 * 0.04 / 0.44, 200, 150, false);
-        all.merge(&animed::internals::output::palette::Histogram::of_pixels(&f.color));
+        all.merge(&animed::internals::output::palette::Histogram::of_pixels(
+            &f.color,
+        ));
     }
     assert!(all.colours.len() > 2000, "{} colours", all.colours.len());
     let (mean, block) = round_trip(false);

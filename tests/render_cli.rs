@@ -114,10 +114,14 @@ fn view_all_matches_coin_for_rotated_and_scaled_scenes() {
     ];
     for (body, pos, (near, far)) in cases {
         let text = format!("#Inventor V2.1 ascii\n{body}\n");
-        let loaded =
-            animed::internals::format::load_bytes(text.as_bytes(), std::path::Path::new("probe.iv")).unwrap();
+        let loaded = animed::internals::format::load_bytes(
+            text.as_bytes(),
+            std::path::Path::new("probe.iv"),
+        )
+        .unwrap();
         let pose = animed::internals::anim::evaluate(&loaded.scene, 0.0);
-        let (_, cam) = animed::internals::render::View::view_all_camera(&loaded.scene, &pose, 640.0 / 480.0);
+        let (_, cam) =
+            animed::internals::render::View::view_all_camera(&loaded.scene, &pose, 640.0 / 480.0);
         let close = |a: f32, b: f32| (a - b).abs() <= 2e-3 * b.abs().max(1.0);
         assert!(
             close(cam.position.x, pos[0])

@@ -34,7 +34,9 @@ fn same(a: &Frame, b: &Frame) -> bool {
 /// 1, 2 and 7 threads: byte-identical colour, depth and ids.
 #[test]
 fn thread_count_never_changes_the_picture() {
-    let demo = animed::internals::format::demo().expect("bundled demo loads").scene;
+    let demo = animed::internals::format::demo()
+        .expect("bundled demo loads")
+        .scene;
     let oak = animed::internals::format::load(&root().join("tests/data/oak_leafless.obj"))
         .unwrap()
         .scene;
@@ -134,7 +136,9 @@ fn cli_binary_matches_release_binary_exactly() {
 /// purpose, rerun with UPDATE_GOLDENS=1 and look at the picture.
 #[test]
 fn demo_scene() {
-    let demo = animed::internals::format::demo().expect("bundled demo loads").scene;
+    let demo = animed::internals::format::demo()
+        .expect("bundled demo loads")
+        .scene;
     let spec = FrameSpec {
         width: 320,
         height: 240,

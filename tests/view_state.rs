@@ -151,7 +151,8 @@ fn scrubbing_the_bar_seeks_and_draw_shows_scene_and_bar() {
         height: h - 40,
         ..Default::default()
     };
-    let alone = animed::internals::render::job::render_at(v.scene(), &spec, v.clock().time()).unwrap();
+    let alone =
+        animed::internals::render::job::render_at(v.scene(), &spec, v.clock().time()).unwrap();
     let rows = 60 * w as usize;
     assert_eq!(&frame.color[..rows], &alone.color[..rows]);
     // The bar fills the bottom rows (its panel colour, text aside).

@@ -3,7 +3,9 @@
 //! linear tracks cost no more keys than they have.
 mod writers_common;
 
-use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value};
+use animed::internals::anim::{
+    Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value,
+};
 use animed::internals::format::export::channels::channels;
 use animed::internals::format::sampling::{angle_between, slerp_shortest, Tolerances};
 use animed::internals::scene::{Node, Scene};

@@ -193,7 +193,8 @@ fn copy_textures_copies_each_file_once_and_points_the_output_at_the_copies() {
     };
     scene.add_image(other).unwrap();
     let copies = dir.join("out/textures");
-    let copied = animed::internals::format::export::textures::copy_textures(&mut scene, &copies).unwrap();
+    let copied =
+        animed::internals::format::export::textures::copy_textures(&mut scene, &copies).unwrap();
     assert_eq!(copied.len(), 2);
     assert_eq!(
         std::fs::read(copies.join("brick.png")).unwrap(),

@@ -118,7 +118,11 @@ pub fn three_sample(npm: &Path, file: &Path, clip: usize, times: &[f32]) -> serd
 
 /// animed's local transform equals three.js's within 1e-4 relative
 /// (rotations: 1e-4 rad).
-pub fn assert_same_trs(ours: &animed::internals::scene::Transform, tr: &serde_json::Value, what: &str) {
+pub fn assert_same_trs(
+    ours: &animed::internals::scene::Transform,
+    tr: &serde_json::Value,
+    what: &str,
+) {
     let get = |k: &str| -> Vec<f32> {
         tr[k]
             .as_array()

@@ -34,7 +34,7 @@ fn cli_values_out_of_range_are_errors() {
 
 #[test]
 fn huge_frames_are_drawn_fewer_at_a_time() {
-    use animed::internals::render::FrameSpec;
+    use animed::internals::render::job::FrameSpec;
     let spec = FrameSpec {
         width: 8192,
         height: 8192,
@@ -145,8 +145,17 @@ fn a_huge_duration_on_a_looping_track_writes_a_bounded_file() {
     assert_eq!(code, 0, "{e}");
     for (frame, x) in [("0", "0,0,0"), ("12", "1,0,0"), ("24", "0,0,0")] {
         let (code, e) = animed(&[
-            "key", "set", fs, "--target", "B.translation", "--frame", frame, "--value", x,
-            "--repeat", "loop",
+            "key",
+            "set",
+            fs,
+            "--target",
+            "B.translation",
+            "--frame",
+            frame,
+            "--value",
+            x,
+            "--repeat",
+            "loop",
         ]);
         assert_eq!(code, 0, "{e}");
     }

@@ -194,7 +194,9 @@ fn an_inline_used_many_times_pays_for_every_copy() {
         max_nodes: 20_000,
         ..Limits::default()
     };
-    let e = animed::internals::format::load_with(&f, lim).unwrap_err().to_string();
+    let e = animed::internals::format::load_with(&f, lim)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("--max-nodes"), "{e}");
     // Inlines nest: the included file's depth adds to the includer's.
     std::fs::write(dir.join("deep.wrl"), gen::nested_groups(20)).unwrap();

@@ -50,7 +50,7 @@ impl Editor {
     }
 
     /// Frames a newly selected object's curves.
-    pub(in crate::editor) fn graph_follow(&mut self) {
+    pub(in crate::internals::editor) fn graph_follow(&mut self) {
         if !self.graph_shown {
             return;
         }
@@ -61,7 +61,7 @@ impl Editor {
     }
 
     /// Offers `ev` to the graph: `Some(redraw)` when it took it.
-    pub(in crate::editor) fn graph_event(&mut self, ev: &Event) -> Option<bool> {
+    pub(in crate::internals::editor) fn graph_event(&mut self, ev: &Event) -> Option<bool> {
         if !self.graph_shown {
             return None;
         }
@@ -81,7 +81,7 @@ impl Editor {
     }
 
     /// Applies a component's intents; `Some(redraw)` when it took the event.
-    pub(in crate::editor) fn apply_response(&mut self, r: Response) -> Option<bool> {
+    pub(in crate::internals::editor) fn apply_response(&mut self, r: Response) -> Option<bool> {
         for i in r.intents {
             match i {
                 Intent::Preview(after) => {
@@ -117,7 +117,7 @@ impl Editor {
     }
 
     /// Shift+F6 and the toolbar button.
-    pub(in crate::editor) fn graph_shortcut(&mut self, key: Key, m: Mods) -> bool {
+    pub(in crate::internals::editor) fn graph_shortcut(&mut self, key: Key, m: Mods) -> bool {
         if key == Key::F(6) && m.shift && !m.ctrl {
             self.toggle_graph();
             return true;
@@ -125,7 +125,7 @@ impl Editor {
         false
     }
 
-    pub(in crate::editor) fn draw_graph(&self, p: &mut Painter, l: &Layout) {
+    pub(in crate::internals::editor) fn draw_graph(&self, p: &mut Painter, l: &Layout) {
         if l.key_rows.is_empty() {
             return;
         }

@@ -20,7 +20,7 @@ impl Editor {
         redraw
     }
 
-    pub(in crate::editor) fn dispatch(&mut self, ev: Event) -> bool {
+    pub(in crate::internals::editor) fn dispatch(&mut self, ev: Event) -> bool {
         match ev {
             Event::Resize { width, height } => {
                 let changed = (width.max(1), height.max(1)) != (self.width, self.height);
@@ -55,7 +55,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn tick(&mut self, time: f64) -> bool {
+    pub(in crate::internals::editor) fn tick(&mut self, time: f64) -> bool {
         let status = self.autosave_tick(time);
         let Some(pb) = &mut self.playback else {
             return status;
@@ -71,7 +71,7 @@ impl Editor {
         changed || status
     }
 
-    pub(in crate::editor) fn toggle_play(&mut self) {
+    pub(in crate::internals::editor) fn toggle_play(&mut self) {
         self.playback = match self.playback {
             Some(_) => None,
             None => Some(Playback {
@@ -81,13 +81,13 @@ impl Editor {
         };
     }
 
-    pub(in crate::editor) fn stop_playback(&mut self) {
+    pub(in crate::internals::editor) fn stop_playback(&mut self) {
         self.playback = None;
     }
 
     // ----- mouse -----
 
-    pub(in crate::editor) fn mouse_move(&mut self, x: f32, y: f32, mods: Mods) -> bool {
+    pub(in crate::internals::editor) fn mouse_move(&mut self, x: f32, y: f32, mods: Mods) -> bool {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
         if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
@@ -148,13 +148,13 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn seek_to_x(&mut self, x: f32) {
+    pub(in crate::internals::editor) fn seek_to_x(&mut self, x: f32) {
         let l = self.layout();
         self.stop_playback();
         self.frame = l.x_to_frame(x, self.scene.settings.duration).round();
     }
 
-    pub(in crate::editor) fn mouse_down(
+    pub(in crate::internals::editor) fn mouse_down(
         &mut self,
         button: MouseButton,
         x: f32,
@@ -235,7 +235,13 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn mouse_up(&mut self, button: MouseButton, x: f32, y: f32, mods: Mods) {
+    pub(in crate::internals::editor) fn mouse_up(
+        &mut self,
+        button: MouseButton,
+        x: f32,
+        y: f32,
+        mods: Mods,
+    ) {
         if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
             self.graph_event(&Event::MouseUp { button, x, y, mods });
             return;
@@ -272,7 +278,13 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn wheel(&mut self, delta: f32, x: f32, y: f32, mods: Mods) -> bool {
+    pub(in crate::internals::editor) fn wheel(
+        &mut self,
+        delta: f32,
+        x: f32,
+        y: f32,
+        mods: Mods,
+    ) -> bool {
         if self.dialog.is_some() {
             return false;
         }
@@ -320,14 +332,14 @@ impl Editor {
         false
     }
 
-    pub(in crate::editor) fn step_frame(&mut self, d: f32) {
+    pub(in crate::internals::editor) fn step_frame(&mut self, d: f32) {
         self.stop_playback();
         self.frame = (self.frame.round() + d).clamp(0.0, self.scene.settings.duration);
     }
 
     // ----- fields -----
 
-    pub(in crate::editor) fn field_base(&self, id: FieldId) -> Option<Base> {
+    pub(in crate::internals::editor) fn field_base(&self, id: FieldId) -> Option<Base> {
         if id == FieldId::Frame {
             return Some(Base::Frame(self.frame));
         }
@@ -342,7 +354,11 @@ impl Editor {
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
     }
 
-    pub(in crate::editor) fn field_value(&self, id: FieldId, base: &Base) -> Option<FieldValue> {
+    pub(in crate::internals::editor) fn field_value(
+        &self,
+        id: FieldId,
+        base: &Base,
+    ) -> Option<FieldValue> {
         match base {
             Base::Frame(f) => Some(FieldValue::Number(*f)),
             Base::Settings(s) => id.read_settings(s),
@@ -353,7 +369,7 @@ impl Editor {
 
     /// Shows `value` in the scene as if `id` had been set (from `base`).
     /// Returns the command that would record it.
-    pub(in crate::editor) fn field_command(
+    pub(in crate::internals::editor) fn field_command(
         &self,
         id: FieldId,
         base: &Base,
@@ -380,7 +396,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
+    pub(in crate::internals::editor) fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
         self.stop_playback();
         if let Base::Keys(a, k) = base {
             self.drag_key_field(id, a, k, dx);
@@ -400,7 +416,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
+    pub(in crate::internals::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
         let label = format!("Drag {id:?}");
         match base {
             Base::Frame(_) => {}
@@ -429,7 +445,7 @@ impl Editor {
     }
 
     /// Ends typing into a field: parses and records the value.
-    pub(in crate::editor) fn commit_edit(&mut self) {
+    pub(in crate::internals::editor) fn commit_edit(&mut self) {
         let Some(edit) = self.edit.take() else { return };
         let value = if edit.field.is_text() {
             FieldValue::Text(edit.text.clone())
@@ -469,7 +485,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn text(&mut self, s: &str) -> bool {
+    pub(in crate::internals::editor) fn text(&mut self, s: &str) -> bool {
         if let Some(b) = &mut self.browser {
             if self.dialog.is_none() {
                 b.input.extend(s.chars().filter(|c| !c.is_control()));
@@ -490,7 +506,7 @@ impl Editor {
 
     // ----- picking -----
 
-    pub(in crate::editor) fn pick(&mut self, x: f32, y: f32) {
+    pub(in crate::internals::editor) fn pick(&mut self, x: f32, y: f32) {
         let hit = self.pick_at(x, y);
         self.selection = hit;
         match hit {
@@ -504,7 +520,7 @@ impl Editor {
 
     // ----- keyboard -----
 
-    pub(in crate::editor) fn key_down(&mut self, key: Key, mods: Mods) {
+    pub(in crate::internals::editor) fn key_down(&mut self, key: Key, mods: Mods) {
         if self.recovery_key(key) {
             return;
         }
@@ -555,7 +571,7 @@ impl Editor {
     }
 
     /// Esc during a drag: put back what the drag changed.
-    pub(in crate::editor) fn cancel_drag(&mut self) {
+    pub(in crate::internals::editor) fn cancel_drag(&mut self) {
         if let Drag::Field { id, base, .. } = std::mem::take(&mut self.drag) {
             match base {
                 Base::Frame(f) => self.frame = f,
@@ -577,7 +593,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn shortcut(&mut self, key: Key, m: Mods) {
+    pub(in crate::internals::editor) fn shortcut(&mut self, key: Key, m: Mods) {
         match (key, m.ctrl, m.shift) {
             (Key::Char('n'), true, _) => self.run_action(Action::New),
             (Key::Char('o'), true, _) => self.run_action(Action::Open),
@@ -616,7 +632,7 @@ impl Editor {
     }
 
     /// Runs `then` now, or first asks what to do with unsaved changes.
-    pub(in crate::editor) fn ask_unsaved(&mut self, then: After) {
+    pub(in crate::internals::editor) fn ask_unsaved(&mut self, then: After) {
         if self.is_dirty() {
             self.dialog = Some(Dialog {
                 message: "Save changes first?".into(),
@@ -627,7 +643,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn continue_with(&mut self, then: After) {
+    pub(in crate::internals::editor) fn continue_with(&mut self, then: After) {
         match then {
             After::Quit => self.quit = true,
             After::New => self.new_scene(),
@@ -636,7 +652,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn run_action(&mut self, a: Action) {
+    pub(in crate::internals::editor) fn run_action(&mut self, a: Action) {
         if self.recovery_action(a) {
             return;
         }
@@ -743,7 +759,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn cycle_object_style(&mut self) {
+    pub(in crate::internals::editor) fn cycle_object_style(&mut self) {
         let Some(sel) = self.selection else { return };
         let next = match self.scene.node(sel).style {
             RenderStyle::Filled => RenderStyle::Lines,
@@ -764,7 +780,7 @@ impl Editor {
         self.execute(&format!("Draw as {next:?}"), Command::Group(cmds));
     }
 
-    pub(in crate::editor) fn delete_selection(&mut self) {
+    pub(in crate::internals::editor) fn delete_selection(&mut self) {
         let Some(sel) = self.selection else {
             self.set_status("Nothing selected to delete", false);
             return;
@@ -785,7 +801,7 @@ impl Editor {
 
     // ----- modal boxes -----
 
-    pub(in crate::editor) fn click_modal(&mut self, x: f32, y: f32) {
+    pub(in crate::internals::editor) fn click_modal(&mut self, x: f32, y: f32) {
         let Some(widget) = self.widget_at(x, y) else {
             return;
         };
@@ -817,7 +833,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn browser_key(&mut self, key: Key, _mods: Mods) {
+    pub(in crate::internals::editor) fn browser_key(&mut self, key: Key, _mods: Mods) {
         let rows = {
             let r = self.browser_rect();
             ((r.h - 3 * 16 - 20) / 16).max(1) as usize
@@ -844,7 +860,7 @@ impl Editor {
     }
 
     /// Enter / the accept button: a folder is entered, a file is used.
-    pub(in crate::editor) fn browser_accept(&mut self) {
+    pub(in crate::internals::editor) fn browser_accept(&mut self) {
         let Some(b) = &mut self.browser else { return };
         let path = b.resolved();
         if path.is_dir() {

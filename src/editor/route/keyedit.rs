@@ -10,7 +10,7 @@ use crate::editor::Editor;
 
 impl Editor {
     /// Replaces the animation with `after` as one undo step.
-    pub(in crate::editor) fn apply_key_edit(
+    pub(in crate::internals::editor) fn apply_key_edit(
         &mut self,
         label: &str,
         after: Animation,
@@ -33,7 +33,7 @@ impl Editor {
         self.set_status(label, false);
     }
 
-    pub(in crate::editor) fn delete_selected_keys(&mut self) {
+    pub(in crate::internals::editor) fn delete_selected_keys(&mut self) {
         let keys = self.selected_keys();
         let Some(sel) = self.selection else { return };
         match delete(&self.scene.animation, &keys) {
@@ -65,7 +65,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn paste_keys(&mut self) {
+    pub(in crate::internals::editor) fn paste_keys(&mut self) {
         let Some(sel) = self.selection else {
             self.set_status("Select something to paste keys onto", false);
             return;

@@ -19,12 +19,12 @@ impl Editor {
     }
 
     /// Rows the key panel needs (for the side panel split).
-    pub(in crate::editor) fn key_panel_rows(&self) -> i32 {
+    pub(in crate::internals::editor) fn key_panel_rows(&self) -> i32 {
         6 + self.selected_keys().len().min(4) as i32
     }
 
     /// The number a key field shows (the primary key's).
-    pub(in crate::editor) fn key_field_number(
+    pub(in crate::internals::editor) fn key_field_number(
         &self,
         f: KeyField,
         anim: &Animation,
@@ -35,20 +35,26 @@ impl Editor {
     }
 
     /// Text of a key panel field.
-    pub(in crate::editor) fn key_field_text(&self, f: KeyField, max_chars: usize) -> String {
+    pub(in crate::internals::editor) fn key_field_text(
+        &self,
+        f: KeyField,
+        max_chars: usize,
+    ) -> String {
         self.key_field_number(f, &self.scene.animation, &self.selected_keys())
             .map(|x| format_fit(x, max_chars))
             .unwrap_or_default()
     }
 
     /// The base of a key field drag or edit: the animation and the keys.
-    pub(in crate::editor) fn key_field_base(&self) -> Option<(Box<Animation>, Vec<KeyRef>)> {
+    pub(in crate::internals::editor) fn key_field_base(
+        &self,
+    ) -> Option<(Box<Animation>, Vec<KeyRef>)> {
         let keys = self.selected_keys();
         (!keys.is_empty()).then(|| (Box::new(self.scene.animation.clone()), keys))
     }
 
     /// The value a field started from.
-    pub(in crate::editor) fn key_field_start(
+    pub(in crate::internals::editor) fn key_field_start(
         &self,
         id: FieldId,
         anim: &Animation,
@@ -59,7 +65,7 @@ impl Editor {
     }
 
     /// A drag on a key field: previews `field` = start + dx · step.
-    pub(in crate::editor) fn drag_key_field(
+    pub(in crate::internals::editor) fn drag_key_field(
         &mut self,
         id: FieldId,
         base: &Animation,
@@ -80,7 +86,11 @@ impl Editor {
     }
 
     /// Release of a key field drag: one undo step.
-    pub(in crate::editor) fn finish_key_field_drag(&mut self, id: FieldId, before: Box<Animation>) {
+    pub(in crate::internals::editor) fn finish_key_field_drag(
+        &mut self,
+        id: FieldId,
+        before: Box<Animation>,
+    ) {
         let after = Box::new(self.scene.animation.clone());
         self.push_applied(
             &format!("Drag key {id:?}"),
@@ -89,7 +99,7 @@ impl Editor {
     }
 
     /// Esc during a key field drag.
-    pub(in crate::editor) fn cancel_key_field_drag(
+    pub(in crate::internals::editor) fn cancel_key_field_drag(
         &mut self,
         before: Animation,
         keys: Vec<KeyRef>,
@@ -100,7 +110,7 @@ impl Editor {
     }
 
     /// Enter in a key field: sets the typed number on the selected keys.
-    pub(in crate::editor) fn commit_key_field(&mut self, id: FieldId, x: f32) {
+    pub(in crate::internals::editor) fn commit_key_field(&mut self, id: FieldId, x: f32) {
         let FieldId::Key(f) = id else { return };
         let keys = self.selected_keys();
         match set_field(&self.scene.animation, &keys, f, x) {
@@ -113,7 +123,7 @@ impl Editor {
     }
 
     /// Key panel buttons.
-    pub(in crate::editor) fn key_action(&mut self, a: KeyAction) {
+    pub(in crate::internals::editor) fn key_action(&mut self, a: KeyAction) {
         let keys = self.selected_keys();
         match a {
             KeyAction::ShowNode => self.keys.node_panel = true,
@@ -157,7 +167,7 @@ impl Editor {
     }
 
     /// The key panel's widgets in the properties section `r`.
-    pub(in crate::editor) fn key_panel_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn key_panel_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         let keys = self.selected_keys();
         let Some(primary) = keys.first().copied() else {
             return;
@@ -272,7 +282,11 @@ impl Editor {
 
     /// "Keys" at the right of the node properties header while keys are
     /// selected but the node is shown.
-    pub(in crate::editor) fn key_panel_switch(&self, header: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn key_panel_switch(
+        &self,
+        header: Rect,
+        out: &mut Vec<Widget>,
+    ) {
         if self.keys.node_panel && !self.selected_keys().is_empty() {
             let bw = text::width("Keys") + 6;
             out.push(button(
@@ -285,7 +299,7 @@ impl Editor {
     }
 
     /// The node panel's compact list of the selection's key frames.
-    pub(in crate::editor) fn key_list_row(&self, r: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn key_list_row(&self, r: Rect, out: &mut Vec<Widget>) {
         let Some(sel) = self.selection else { return };
         let frames = crate::editor::record::key_frames(&self.scene.animation, Some(sel));
         if frames.is_empty() {
@@ -304,7 +318,7 @@ impl Editor {
 impl Editor {
     /// Rows of the properties section: the key panel's, or the node's plus
     /// its key list row.
-    pub(in crate::editor) fn section_rows(&self) -> i32 {
+    pub(in crate::internals::editor) fn section_rows(&self) -> i32 {
         if self.key_panel_shown() {
             self.key_panel_rows()
         } else {

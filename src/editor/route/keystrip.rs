@@ -28,7 +28,7 @@ impl Editor {
         out
     }
 
-    pub(in crate::editor) fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
+    pub(in crate::internals::editor) fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
         self.keys.selected = keys;
         self.remember_key_selection();
         self.keys.node_panel = false;
@@ -39,7 +39,7 @@ impl Editor {
 
     /// Notes the key selection for the current animation (nothing for an
     /// empty selection).
-    pub(in crate::editor) fn remember_key_selection(&mut self) {
+    pub(in crate::internals::editor) fn remember_key_selection(&mut self) {
         if self.keys.selected.is_empty() {
             return;
         }
@@ -63,7 +63,7 @@ impl Editor {
     /// went away is replaced by the selection remembered with the animation
     /// now shown (undo of a move selects the keys where they were), else
     /// the missing keys are dropped.
-    pub(in crate::editor) fn key_selection_after_change(&mut self) {
+    pub(in crate::internals::editor) fn key_selection_after_change(&mut self) {
         let anim = &self.scene.animation;
         if self.keys.selected.iter().all(|k| k.get(anim).is_some()) {
             self.remember_key_selection();
@@ -92,7 +92,7 @@ impl Editor {
     }
 
     /// Rows the strip wants (0 when the selection is not animated).
-    pub(in crate::editor) fn key_strip_rows(&self) -> usize {
+    pub(in crate::internals::editor) fn key_strip_rows(&self) -> usize {
         let Some(sel) = self.selection else { return 0 };
         let props = animated_properties(&self.scene.animation, sel);
         match (props.len(), self.keys.collapsed) {
@@ -199,7 +199,7 @@ impl Editor {
     }
 
     /// Whether `x` is on the current-frame line (within 2 px).
-    pub(in crate::editor) fn near_cursor(&self, x: f32) -> bool {
+    pub(in crate::internals::editor) fn near_cursor(&self, x: f32) -> bool {
         let l = self.layout();
         let dur = self.scene.settings.duration;
         let cx = l
@@ -209,7 +209,11 @@ impl Editor {
     }
 
     /// Keys whose markers lie in the box between two window points.
-    pub(in crate::editor) fn keys_in_box(&self, a: (f32, f32), b: (f32, f32)) -> Vec<KeyRef> {
+    pub(in crate::internals::editor) fn keys_in_box(
+        &self,
+        a: (f32, f32),
+        b: (f32, f32),
+    ) -> Vec<KeyRef> {
         let l = self.layout();
         let dur = self.scene.settings.duration;
         let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
@@ -231,7 +235,7 @@ impl Editor {
     }
 
     /// The selection box being dragged, if any (for drawing).
-    pub(in crate::editor) fn key_box(&self) -> Option<Rect> {
+    pub(in crate::internals::editor) fn key_box(&self) -> Option<Rect> {
         match &self.keys.drag {
             Some(StripDrag::Box { from, to, .. }) => {
                 let x = from.0.min(to.0) as i32;
@@ -247,7 +251,7 @@ impl Editor {
     // ----- mouse -----
 
     /// A left press in the key rows.
-    pub(in crate::editor) fn key_strip_press(&mut self, x: f32, y: f32, mods: Mods) {
+    pub(in crate::internals::editor) fn key_strip_press(&mut self, x: f32, y: f32, mods: Mods) {
         let Some(hit) = self.key_strip_hit(x, y) else {
             return;
         };
@@ -315,7 +319,7 @@ impl Editor {
     }
 
     /// Mouse move during a strip drag (`None` when no strip drag runs).
-    pub(in crate::editor) fn key_strip_move(&mut self, x: f32, y: f32) -> Option<bool> {
+    pub(in crate::internals::editor) fn key_strip_move(&mut self, x: f32, y: f32) -> Option<bool> {
         // Taken out so `self` can be borrowed; put back changed in place.
         let mut drag = self.keys.drag.take()?;
         let redraw = match &mut drag {
@@ -355,7 +359,7 @@ impl Editor {
     }
 
     /// Shows `keys` moved (or scaled) for a drag from `x0` to `x`.
-    pub(in crate::editor) fn retime_preview(
+    pub(in crate::internals::editor) fn retime_preview(
         &mut self,
         x0: f32,
         x: f32,
@@ -392,7 +396,7 @@ impl Editor {
     }
 
     /// Release of a strip drag; false when none ran.
-    pub(in crate::editor) fn key_strip_release(&mut self) -> bool {
+    pub(in crate::internals::editor) fn key_strip_release(&mut self) -> bool {
         let Some(drag) = self.keys.drag.take() else {
             return false;
         };
@@ -433,7 +437,7 @@ impl Editor {
     }
 
     /// Esc during a strip drag: puts back what it changed.
-    pub(in crate::editor) fn cancel_strip_drag(&mut self) {
+    pub(in crate::internals::editor) fn cancel_strip_drag(&mut self) {
         match self.keys.drag.take() {
             Some(StripDrag::Keys { base, keys, .. }) => {
                 self.scene.animation = *base;
@@ -450,7 +454,7 @@ impl Editor {
     /// Keys the strip handles (returns true when it used the key): Esc
     /// cancels a strip drag or clears the key selection, Delete removes
     /// selected keys, Ctrl+C copies them, Ctrl+V pastes at the current frame.
-    pub(in crate::editor) fn key_strip_key(&mut self, key: KeyName, m: Mods) -> bool {
+    pub(in crate::internals::editor) fn key_strip_key(&mut self, key: KeyName, m: Mods) -> bool {
         if self.keys.drag.is_some() {
             if key == KeyName::Escape {
                 self.cancel_strip_drag();

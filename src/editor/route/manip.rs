@@ -30,7 +30,7 @@ impl Editor {
     /// What `tool`'s handles act on for the selection (`None` when that
     /// tool has nothing to change there: a directional light cannot move, a
     /// point light cannot turn, a light cannot scale).
-    pub(in crate::editor) fn target(&mut self, tool: Tool) -> Option<Target> {
+    pub(in crate::internals::editor) fn target(&mut self, tool: Tool) -> Option<Target> {
         let id = self.selection?;
         let pose = self.pose().clone();
         let world = *pose.world.get(id.0 as usize)?;
@@ -128,7 +128,13 @@ impl Editor {
 
     /// Starts a drag of `h` grabbed at pixel (x, y) (false when the grab
     /// point cannot be found, e.g. a plane seen edge-on).
-    pub(in crate::editor) fn start_drag(&mut self, h: Handle, t: Target, x: f32, y: f32) -> bool {
+    pub(in crate::internals::editor) fn start_drag(
+        &mut self,
+        h: Handle,
+        t: Target,
+        x: f32,
+        y: f32,
+    ) -> bool {
         let proj = self.projector();
         let back = self.camera.back();
         let (mut grab, mut along, mut ring_axis, mut edge_on) = (t.pivot, 0.0, Vec3::Z, None);
@@ -196,7 +202,7 @@ impl Editor {
     /// Mouse down in the viewport: starts a handle drag when one is hit
     /// (true), or arms a body drag when the press is on the selection
     /// (false: the click still picks on release unless the mouse moves).
-    pub(in crate::editor) fn handles_press(&mut self, x: f32, y: f32) -> bool {
+    pub(in crate::internals::editor) fn handles_press(&mut self, x: f32, y: f32) -> bool {
         self.manip.armed = None;
         let tool = self.manip.tool;
         if let Some(h) = self.handle_at(x, y) {
@@ -220,7 +226,12 @@ impl Editor {
 
     /// Mouse move: drags the active handle, or updates the hover highlight.
     /// `Some(redraw)` when the handles took the event.
-    pub(in crate::editor) fn handles_move(&mut self, x: f32, y: f32, mods: Mods) -> Option<bool> {
+    pub(in crate::internals::editor) fn handles_move(
+        &mut self,
+        x: f32,
+        y: f32,
+        mods: Mods,
+    ) -> Option<bool> {
         if self.manip.drag.is_none() {
             if let Some((h, at)) = self.manip.armed {
                 if !matches!(self.drag, Drag::Pick { .. })
@@ -264,7 +275,12 @@ impl Editor {
 
     /// The status line during a drag: the moved value, the angle turned or
     /// the new scale ("deg": the UI font has no degree sign).
-    pub(in crate::editor) fn readout(&self, d: &HandleDrag, n: &Node, mods: Mods) -> String {
+    pub(in crate::internals::editor) fn readout(
+        &self,
+        d: &HandleDrag,
+        n: &Node,
+        mods: Mods,
+    ) -> String {
         use crate::editor::fields::format_number as f;
         let name = ops::display_name(&self.scene, d.t.id);
         let v3 = |v: Vec3| format!("{} {} {}", f(v.x), f(v.y), f(v.z));
@@ -309,7 +325,7 @@ impl Editor {
 
     /// The node as drag `d` makes it with the mouse at (x, y) (`None` when
     /// the mouse ray misses what the handle needs, e.g. a plane edge-on).
-    pub(in crate::editor) fn dragged_node(
+    pub(in crate::internals::editor) fn dragged_node(
         &mut self,
         d: &HandleDrag,
         x: f32,
@@ -407,7 +423,12 @@ impl Editor {
     }
 
     /// Previews `node` (shown over its tracks as a pending change).
-    pub(in crate::editor) fn show_moved(&mut self, id: NodeId, property: Property, node: Node) {
+    pub(in crate::internals::editor) fn show_moved(
+        &mut self,
+        id: NodeId,
+        property: Property,
+        node: Node,
+    ) {
         let c = Command::SetNode {
             id,
             before: Box::new(self.scene.node(id).clone()),
@@ -424,7 +445,7 @@ impl Editor {
 
     /// Mouse up: ends a handle drag as one undo step (with a key in record
     /// mode). False when no handle drag was running.
-    pub(in crate::editor) fn handles_release(&mut self) -> bool {
+    pub(in crate::internals::editor) fn handles_release(&mut self) -> bool {
         self.manip.armed = None;
         let Some(d) = self.manip.drag.take() else {
             return false;
@@ -458,7 +479,7 @@ impl Editor {
     /// Keys for the handles: during a drag Esc cancels it and other keys
     /// are ignored; otherwise W / E / T pick the tool and O toggles the
     /// onion skin. True when the key was taken.
-    pub(in crate::editor) fn handles_key(&mut self, key: Key, mods: Mods) -> bool {
+    pub(in crate::internals::editor) fn handles_key(&mut self, key: Key, mods: Mods) -> bool {
         let Some(d) = &self.manip.drag else {
             if mods.ctrl || mods.alt {
                 return false;
@@ -495,7 +516,7 @@ impl Editor {
     }
 
     /// Draws the current tool's handles for the selection over the viewport.
-    pub(in crate::editor) fn draw_handles(&mut self, p: &mut Painter) {
+    pub(in crate::internals::editor) fn draw_handles(&mut self, p: &mut Painter) {
         if self.mode != crate::editor::Mode::Select {
             return;
         }

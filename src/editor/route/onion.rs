@@ -14,7 +14,7 @@ impl Editor {
     }
 
     /// O / toolbar: shows or hides the onion skin.
-    pub(in crate::editor) fn toggle_onion(&mut self) {
+    pub(in crate::internals::editor) fn toggle_onion(&mut self) {
         self.onion.on = !self.onion.on;
         let s = if self.onion.on { "on" } else { "off" };
         self.set_status(&format!("Onion skin {s}"), false);
@@ -29,7 +29,7 @@ impl Editor {
     }
 
     /// Re-renders the copies when their inputs changed.
-    pub(in crate::editor) fn update_onion(&mut self, w: u32, h: u32) {
+    pub(in crate::internals::editor) fn update_onion(&mut self, w: u32, h: u32) {
         let Some(sel) = self.selection.filter(|_| self.onion.on) else {
             self.onion.ghosts.clear();
             self.onion.key = None;
@@ -82,7 +82,7 @@ impl Editor {
 
     /// Blends the copies over the viewport part of `frame` (after the
     /// viewport layer was copied there).
-    pub(in crate::editor) fn blit_onion(&mut self, frame: &mut Frame, vp: Rect) {
+    pub(in crate::internals::editor) fn blit_onion(&mut self, frame: &mut Frame, vp: Rect) {
         let (w, h) = (self.layer.frame.width, self.layer.frame.height);
         self.update_onion(w, h);
         self.onion.blend(&self.layer.frame, frame, vp);

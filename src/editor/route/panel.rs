@@ -13,7 +13,7 @@ use crate::ui::{Rect, SidePanel};
 
 impl Editor {
     /// Property rows the selection needs (for the side panel split).
-    pub(in crate::editor) fn prop_rows(&self) -> i32 {
+    pub(in crate::internals::editor) fn prop_rows(&self) -> i32 {
         match self.selection.map(|s| &self.scene.node(s).kind) {
             None => 1,
             Some(NodeKind::Light(l)) => match l.kind {
@@ -37,7 +37,7 @@ impl Editor {
     }
 
     /// Scrolls the objects and lights lists so the selection's row shows.
-    pub(in crate::editor) fn reveal_selection(&mut self) {
+    pub(in crate::internals::editor) fn reveal_selection(&mut self) {
         let Some(sel) = self.selection else { return };
         if self.revealed == Some(sel) {
             return;
@@ -68,7 +68,7 @@ impl Editor {
     }
 
     /// Visible rows of a list section.
-    pub(in crate::editor) fn list_capacity(r: Rect) -> usize {
+    pub(in crate::internals::editor) fn list_capacity(r: Rect) -> usize {
         ((r.h - ROW).max(0) / ROW) as usize
     }
 
@@ -86,7 +86,7 @@ impl Editor {
         out
     }
 
-    pub(in crate::editor) fn toolbar_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn toolbar_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         let style = match self.view_style {
             None => "Own",
             Some(s) => style_name(s),
@@ -137,7 +137,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn scene_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn scene_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         let (h, rest) = r.take_top(ROW);
         out.push(w(h, WidgetKind::Header("Scene".into())));
         let row = Rect::new(rest.x + 2, rest.y + 1, rest.w - 4, ROW);
@@ -153,7 +153,12 @@ impl Editor {
         );
     }
 
-    pub(in crate::editor) fn list_widgets(&self, r: Rect, list: List, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn list_widgets(
+        &self,
+        r: Rect,
+        list: List,
+        out: &mut Vec<Widget>,
+    ) {
         let (h, body) = r.take_top(ROW);
         let rows: Vec<(NodeId, usize)> = match list {
             List::Objects => ops::objects(&self.scene),
@@ -242,7 +247,7 @@ impl Editor {
         }
     }
 
-    pub(in crate::editor) fn prop_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn prop_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         if self.key_panel_shown() {
             self.key_panel_widgets(r, out);
             return;
@@ -355,7 +360,7 @@ impl Editor {
         self.key_panel_switch(h, out);
     }
 
-    pub(in crate::editor) fn controls_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn controls_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         let y = r.y + 1;
         let h = CONTROLS_H - 2;
         let mut x = r.x + 4;

@@ -24,7 +24,7 @@ impl Editor {
     }
 
     /// The pose at `t` seconds with a pending change shown over its tracks.
-    pub(in crate::editor) fn evaluate_shown(&self, t: f32) -> crate::anim::Pose {
+    pub(in crate::internals::editor) fn evaluate_shown(&self, t: f32) -> crate::anim::Pose {
         let Some(p) = self.pending() else {
             return crate::anim::evaluate(&self.scene, t);
         };
@@ -42,7 +42,11 @@ impl Editor {
     /// plus keys at the current frame for `props`, as one command. The
     /// change's `before` becomes the node as stored (not as posed), so undo
     /// restores exactly what was there.
-    pub(in crate::editor) fn recorded(&mut self, c: Command, props: &[Property]) -> Command {
+    pub(in crate::internals::editor) fn recorded(
+        &mut self,
+        c: Command,
+        props: &[Property],
+    ) -> Command {
         let Command::SetNode { id, after, .. } = c else {
             return c;
         };
@@ -100,7 +104,7 @@ impl Editor {
     /// properties; with nothing pending, K keys the whole transform
     /// (objects) or all light fields (lights), as Blender's default keying
     /// set does.
-    pub(in crate::editor) fn insert_keys(&mut self) {
+    pub(in crate::internals::editor) fn insert_keys(&mut self) {
         let Some(sel) = self.selection else {
             self.set_status("Select something to key (K)", false);
             return;
@@ -132,7 +136,7 @@ impl Editor {
 
     /// Up / Down: the next (`dir` > 0) or previous key of the selection
     /// (of any track with nothing selected).
-    pub(in crate::editor) fn jump_key(&mut self, dir: i32) {
+    pub(in crate::internals::editor) fn jump_key(&mut self, dir: i32) {
         let frames = key_frames(&self.scene.animation, self.selection);
         let eps = crate::anim::KEY_EPS;
         let f = self.frame;

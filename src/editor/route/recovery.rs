@@ -42,7 +42,7 @@ impl Editor {
     /// Called on every tick (`now` in seconds): writes the recovery copy
     /// when unsaved changes have waited long enough. Returns true when the
     /// status line changed.
-    pub(in crate::editor) fn autosave_tick(&mut self, now: f64) -> bool {
+    pub(in crate::internals::editor) fn autosave_tick(&mut self, now: f64) -> bool {
         if !self.is_dirty() {
             self.autosave.since = None;
             if let Some(p) = self.autosave.written.take() {
@@ -89,7 +89,7 @@ impl Editor {
     }
 
     /// Deletes this session's recovery copy (changes saved or discarded).
-    pub(in crate::editor) fn forget_recovery(&mut self) {
+    pub(in crate::internals::editor) fn forget_recovery(&mut self) {
         if let Some(p) = self.autosave.written.take() {
             remove(&p);
         }
@@ -99,7 +99,7 @@ impl Editor {
 
     /// After a successful save (the scene was at `old` before): the copies
     /// of both names are out of date.
-    pub(in crate::editor) fn saved_recovery(&mut self, old: Option<&Path>) {
+    pub(in crate::internals::editor) fn saved_recovery(&mut self, old: Option<&Path>) {
         self.forget_recovery();
         if old.is_none() {
             remove(&untitled_path());
@@ -111,7 +111,7 @@ impl Editor {
 
     /// A new scene replaced the old one (its changes were saved or
     /// discarded before).
-    pub(in crate::editor) fn reset_recovery(&mut self) {
+    pub(in crate::internals::editor) fn reset_recovery(&mut self) {
         self.forget_recovery();
         self.autosave.offer = None;
     }
@@ -145,7 +145,7 @@ impl Editor {
 
     /// Keys of the recovery dialog: Enter or R recovers, D discards the
     /// copy, O or Esc opens the saved file. True when the key was taken.
-    pub(in crate::editor) fn recovery_key(&mut self, key: Key) -> bool {
+    pub(in crate::internals::editor) fn recovery_key(&mut self, key: Key) -> bool {
         if !self
             .dialog
             .as_ref()
@@ -167,7 +167,7 @@ impl Editor {
     /// Discard = Discard copy, Cancel = Open saved); also drops this
     /// session's copy when unsaved changes are discarded. True when the
     /// action was handled here.
-    pub(in crate::editor) fn recovery_action(&mut self, a: Action) -> bool {
+    pub(in crate::internals::editor) fn recovery_action(&mut self, a: Action) -> bool {
         let recovering = self
             .dialog
             .as_ref()
@@ -209,7 +209,7 @@ impl Editor {
     /// Loads the recovery copy into the editor as one undoable change (undo
     /// shows the saved file again); the file name stays the scene's, so
     /// Ctrl+S writes the original.
-    pub(in crate::editor) fn recover_from(&mut self, copy: &Path) {
+    pub(in crate::internals::editor) fn recover_from(&mut self, copy: &Path) {
         match crate::format::load(copy) {
             Ok(l) => {
                 let before = Box::new(self.scene.clone());
