@@ -56,11 +56,12 @@ fail=0
 report=$OUT/report.txt
 : >"$report"
 
-# Non-background mask of $1 (background colour $2 as r,g,b in 0..1) into $3.
+# Non-background mask of $1 (background colour $2 as r,g,b in 0..1) into $3
+# (non-background turns white first, so black objects count too).
 mask() {
   local hex
   hex=$(awk -F, '{printf "#%02x%02x%02x", $1*255+0.5, $2*255+0.5, $3*255+0.5}' <<<"$2")
-  /usr/bin/convert "$1" -alpha off -fuzz 4% -fill black -opaque "$hex" -fill white +opaque black \
+  /usr/bin/convert "$1" -alpha off -fuzz 4% -fill white +opaque "$hex" -fill black -opaque "$hex" \
     -colorspace Gray -threshold 50% "$3"
 }
 

@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# How much of the corpus animed draws like Coin 4.0 does (issue 19, item 5).
+#
+# For every ../shared/corpus file that Coin reads and draws something for
+# (MANIFEST.tsv: coin_reads = yes, coin_tris_lines_points not 0/0/0), render
+# it with Coin (through pivy, ../shared/tools/coin_render.py) and with
+# `animed render` at the same size, time 0, the same background colour and
+# headlight rule, and compare silhouettes: the non-background pixels of each
+# picture, intersection over union. A file matches at IoU >= 0.95 (files
+# with their own Background: see one() below). Prints
+# the share that match and writes every file's figures to
+# $OUT/report.tsv (default target/coin-corpus/), worst first, with the
+# pairs side by side as $OUT/pairs/NAME.png for a person to look at.
+#
+#   bash tests/coin_corpus.sh            # every file (about 240; minutes)
+#   EVERY=5 bash tests/coin_corpus.sh    # every 5th file (what CI runs)
+#   ANIMED=target/release/animed bash tests/coin_corpus.sh
+#
+# Lighting differs on purpose (Coin lights per vertex, animed per pixel), so
+# colours are not compared here; silhouettes show geometry, camera, framing
+# and what each reader skips. Exit 0 after a run (the share is a figure to
+# quote, not a gate), 3 when a tool is missing (said loudly: not a pass).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$(pwd)
+OUT=${OUT:-$ROOT/target/coin-corpus}
+SHARED=${ANIMED_SHARED:-$ROOT/../shared}
+EVERY=${EVERY:-1}
+W=160
+H=120
+BG=0.31,0.07,0.27
+
+missing=()
+[ -f "$SHARED/corpus/MANIFEST.tsv" ] || missing+=("$SHARED/corpus (set ANIMED_SHARED)")
+[ -f "$SHARED/tools/coin_render.py" ] || missing+=("$SHARED/tools/coin_render.py")
+[ -x /usr/bin/convert ] || missing+=(imagemagick)
+command -v Xvfb >/dev/null 2>&1 || missing+=(xvfb)
+/usr/bin/python3 -c 'import pivy, PySide2, OpenGL' >/dev/null 2>&1 \
+  || missing+=("python3-pivy/python3-pyside2.qtgui/python3-opengl")
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!"
+  echo "coin_corpus: NOT RUN — missing: ${missing[*]}"
+  echo "This is not a pass. See ../shared/REFERENCE-RENDERERS.md."
+  echo "!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!"
+  exit 3
+fi
+
+if [ -z "${ANIMED:-}" ]; then
+  cargo build --quiet || exit 1
+  ANIMED=${CARGO_TARGET_DIR:-$ROOT/target}/debug/animed
+fi
+export ANIMED SHARED OUT W H BG
+rm -rf "$OUT"
+mkdir -p "$OUT/pairs" "$OUT/tmp"
+
+DISP=:$((90 + RANDOM % 400))
+Xvfb "$DISP" -screen 0 1024x768x24 +extension GLX +render -noreset >/dev/null 2>&1 &
+XPID=$!
+trap 'kill $XPID 2>/dev/null' EXIT
+export DISPLAY=$DISP
+sleep 2
+
+# The files Coin draws something for, every $EVERY-th of them.
+awk -F'\t' -v every="$EVERY" \
+  'NR > 1 && $7 == "yes" && $6 != "" && $6 != "0/0/0" { if (n++ % every == 0) print $1 }' \
+  "$SHARED/corpus/MANIFEST.tsv" >"$OUT/files.txt"
+
+# One file: prints "score<TAB>path<TAB>note". A file with its own
+# Background (Coin draws it whatever --bg says) is rendered with it on both
+# sides and scored pixel by pixel: the share of pixels whose colours differ
+# by at most 12% (ImageMagick fuzz), "bg" in the note.
+one() {
+  local rel=$1 name tmp a b hex inter union iou note="" own_bg=0 bgargs
+  grep -q 'Background' "$SHARED/corpus/$rel" 2>/dev/null && own_bg=1
+  if [ $own_bg = 1 ]; then bgargs=(); else bgargs=(--bg "$BG"); fi
+  name=$(tr '/ ' '__' <<<"$rel")
+  tmp=$OUT/tmp/$name
+  a=$tmp.coin.png
+  b=$tmp.animed.png
+  (cd "$(dirname "$SHARED/corpus/$rel")" && timeout 60 env LD_PRELOAD=/usr/lib/x86_64-linux-gnu/libGL.so.1 \
+    /usr/bin/python3 "$SHARED/tools/coin_render.py" "$SHARED/corpus/$rel" "$a" $W $H \
+    --time 0 "${bgargs[@]}" --headlight auto) >"$tmp.coin.log" 2>&1
+  timeout 60 "$ANIMED" render "$SHARED/corpus/$rel" --time 0 --size ${W}x${H} "${bgargs[@]}" \
+    --headlight auto -o "$b" >"$tmp.animed.log" 2>&1 || note="animed failed: $(tail -1 "$tmp.animed.log")"
+  if [ ! -s "$a" ]; then
+    printf 'nan\t%s\tCoin wrote no picture\n' "$rel"
+    return
+  fi
+  if [ ! -s "$b" ]; then
+    printf '0\t%s\t%s\n' "$rel" "${note:-animed wrote no picture}"
+    return
+  fi
+  /usr/bin/convert "$a" "$b" +append "$OUT/pairs/$name.png"
+  if [ $own_bg = 1 ]; then
+    local differ
+    differ=$(/usr/bin/compare -metric AE -fuzz 12% "$a" "$b" null: 2>&1 | sed -E 's/^([0-9.e+]+).*/\1/')
+    awk -v d="$differ" -v n=$((W * H)) -v rel="$rel" 'BEGIN { printf "%.4f\t%s\tbg\n", 1 - d / n, rel }'
+    return
+  fi
+  hex=$(awk -F, '{printf "#%02x%02x%02x", $1*255+0.5, $2*255+0.5, $3*255+0.5}' <<<"$BG")
+  for p in "$a" "$b"; do
+    # Everything that is not the background turns white first (so black
+    # objects count), then the background turns black.
+    /usr/bin/convert "$p" -alpha off -fuzz 3% -fill white +opaque "$hex" -fill black -opaque "$hex" \
+      -colorspace Gray -threshold 50% "$p.mask.png"
+  done
+  inter=$(/usr/bin/convert "$a.mask.png" "$b.mask.png" -compose multiply -composite -format '%[fx:mean*w*h]' info:)
+  union=$(/usr/bin/convert "$a.mask.png" "$b.mask.png" -compose lighten -composite -format '%[fx:mean*w*h]' info:)
+  iou=$(awk -v i="$inter" -v u="$union" 'BEGIN { if (u == 0) print "nan"; else printf "%.4f", i / u }')
+  [ "$iou" = nan ] && note="Coin drew nothing at time 0"
+  printf '%s\t%s\t%s\n' "$iou" "$rel" "$note"
+}
+export -f one
+
+xargs -a "$OUT/files.txt" -d '\n' -P 2 -I{} bash -c 'one "$@"' _ {} >"$OUT/raw.tsv"
+sort -g "$OUT/raw.tsv" >"$OUT/report.tsv"
+
+awk -F'\t' '
+  $1 == "nan" { skipped++; next }
+  { n++; if ($1 >= 0.95) ok++ }
+  END {
+    printf "coin_corpus: %d of %d files match Coin (silhouette IoU >= 0.95): %.1f%%", ok, n, n ? 100 * ok / n : 0
+    if (skipped) printf " (%d skipped: Coin drew nothing)", skipped
+    printf "\n"
+  }' "$OUT/report.tsv" | tee "$OUT/summary.txt"
+echo "coin_corpus: worst files (IoU, path, note) — all in $OUT/report.tsv, pictures in $OUT/pairs/:"
+awk -F'\t' '$1 != "nan" && $1 < 0.95' "$OUT/report.tsv" | head -15
