@@ -20,7 +20,11 @@ fn hover(ed: &mut Editor, (x, y): (f32, f32)) {
 /// A point inside the key strip rows (or the timeline when it has none).
 fn over_strip(ed: &Editor) -> (f32, f32) {
     let l = ed.layout();
-    let r = if l.key_rows.h > 0 { l.key_rows } else { l.ruler };
+    let r = if l.key_rows.h > 0 {
+        l.key_rows
+    } else {
+        l.ruler
+    };
     ((r.x + r.w / 2) as f32, (r.y + r.h / 2) as f32)
 }
 
@@ -84,7 +88,10 @@ fn clamped_and_refused_typed_values_are_said() {
     assert!(t.contains("Fps: 500") && t.contains("set to 240"), "{t}");
     type_into(&mut ed, "Field(Frame)", "99999");
     let t = &ed.status().text;
-    assert!(t.starts_with("Frame: 99999") && t.contains("frames 0 to"), "{t}");
+    assert!(
+        t.starts_with("Frame: 99999") && t.contains("frames 0 to"),
+        "{t}"
+    );
     type_into(&mut ed, "Field(Duration)", "abc");
     assert!(ed.status().error && ed.status().text.contains("'abc' is not a number"));
     // A value taken as typed says nothing about clamping.
@@ -135,7 +142,10 @@ fn new_lights_are_placed_in_view() {
         let at = find(&ed, which);
         click(&mut ed, at);
         let id = ed.selection().expect("the new light is selected");
-        assert!(visible(&mut ed, id), "{which} after turning {turn}: off-screen");
+        assert!(
+            visible(&mut ed, id),
+            "{which} after turning {turn}: off-screen"
+        );
     }
 }
 

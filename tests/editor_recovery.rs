@@ -350,10 +350,7 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
     let probe = Editor::with_demo(SIZE.0, SIZE.1);
     let row = centre(&probe, |k| matches!(k, WidgetKind::Row { .. }));
     let demo_objects = object_count(probe.scene());
-    let script = format!(
-        "click {} {}\nkey delete\nsleep-ms 60000\n",
-        row.0, row.1
-    );
+    let script = format!("click {} {}\nkey delete\nsleep-ms 60000\n", row.0, row.1);
     let s1 = d.join("s1.txt");
     std::fs::write(&s1, script).unwrap();
     let mut child = Command::new(env!("CARGO_BIN_EXE_animed"))
@@ -383,7 +380,10 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
     two.add_node(None, animed::scene::Node::group("One"));
     two.add_node(None, animed::scene::Node::group("Two"));
     animed::format::save(&two, &older, &Default::default()).unwrap();
-    let f = std::fs::OpenOptions::new().write(true).open(&older).unwrap();
+    let f = std::fs::OpenOptions::new()
+        .write(true)
+        .open(&older)
+        .unwrap();
     f.set_modified(std::time::SystemTime::now() - Duration::from_secs(3600))
         .unwrap();
 
@@ -402,7 +402,10 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
     assert!(lines[0].contains(&format!("{n} objects")), "{out}");
     assert!(lines[0].contains(&copy.display().to_string()), "{out}");
     assert!(lines[0].contains("s ago"), "{out}");
-    assert!(lines[1].starts_with("2  ") && lines[1].contains("2 objects"), "{out}");
+    assert!(
+        lines[1].starts_with("2  ") && lines[1].contains("2 objects"),
+        "{out}"
+    );
     assert!(lines[1].contains("60 min ago"), "{out}");
 
     // The next start offers both, the newest marked.
@@ -434,7 +437,10 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
     assert!(ed.is_dirty(), "recovered work is unsaved");
     assert!(ed.status().text.contains("Recovered"), "{:?}", ed.status());
     assert!(!copy.exists(), "taken over by this session");
-    let mine = copies.join(format!("untitled-{}.animed-recovery.wrl", std::process::id()));
+    let mine = copies.join(format!(
+        "untitled-{}.animed-recovery.wrl",
+        std::process::id()
+    ));
     assert!(mine.exists());
     assert!(older.exists(), "the other session is kept");
     // Saving under a name deletes this session's copy.
@@ -446,7 +452,11 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
     assert_eq!(ed.offer_untitled(&copies), 1);
     key(&mut ed, Key::Escape);
     assert!(ed.dialog().is_none() && older.exists());
-    assert!(ed.status().text.contains("recover --list"), "{:?}", ed.status());
+    assert!(
+        ed.status().text.contains("recover --list"),
+        "{:?}",
+        ed.status()
+    );
     let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
     ed.offer_untitled(&copies);
     key(&mut ed, Key::Char('d'));
@@ -471,6 +481,9 @@ fn the_status_line_shows_autosaves() {
     assert!(ed.handle(Event::Tick { time: 2.5 }), "redraws the status");
     let t = &ed.status().text;
     assert!(t.starts_with("Autosaved unsaved changes at "), "{t}");
-    assert!(t.contains("UTC") && t.contains(".scene.wrl.animed-recovery.wrl"), "{t}");
+    assert!(
+        t.contains("UTC") && t.contains(".scene.wrl.animed-recovery.wrl"),
+        "{t}"
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }

@@ -45,13 +45,19 @@ pub fn run(args: Args) -> i32 {
     };
     match &args.output {
         Some(out) => {
-            let saved = crate::format::load(&s.path).map_err(|e| e.to_string()).and_then(|l| {
-                crate::format::save(&l.scene, out, &Default::default())
-                    .map_err(|e| e.to_string())
-            });
+            let saved = crate::format::load(&s.path)
+                .map_err(|e| e.to_string())
+                .and_then(|l| {
+                    crate::format::save(&l.scene, out, &Default::default())
+                        .map_err(|e| e.to_string())
+                });
             match saved {
                 Ok(_) => {
-                    println!("wrote {} (the copy {} is kept)", out.display(), s.path.display());
+                    println!(
+                        "wrote {} (the copy {} is kept)",
+                        out.display(),
+                        s.path.display()
+                    );
                     0
                 }
                 Err(e) => {

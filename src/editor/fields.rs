@@ -242,13 +242,15 @@ pub fn clamp_note(name: &str, typed: f32, kept: f32) -> Option<String> {
         return None;
     }
     let (t, k) = (format_number(typed), format_number(kept));
-    Some(if (typed.round() - kept).abs() <= 1e-6 * typed.abs().max(1.0) {
-        format!("{name}: {t} rounded to {k} (whole numbers only)")
-    } else if kept < typed {
-        format!("{name}: {t} is above the largest allowed value; set to {k}")
-    } else {
-        format!("{name}: {t} is below the smallest allowed value; set to {k}")
-    })
+    Some(
+        if (typed.round() - kept).abs() <= 1e-6 * typed.abs().max(1.0) {
+            format!("{name}: {t} rounded to {k} (whole numbers only)")
+        } else if kept < typed {
+            format!("{name}: {t} is above the largest allowed value; set to {k}")
+        } else {
+            format!("{name}: {t} is below the smallest allowed value; set to {k}")
+        },
+    )
 }
 
 pub fn parse_number(s: &str) -> Option<f32> {

@@ -719,7 +719,19 @@ impl Editor {
                 if which != ops::NewLight::Directional {
                     // Where the user looks, not somewhere off-screen.
                     let cam = &self.camera;
-                    let at = ops::in_view_spot(cam.target, cam.back(), cam.distance);
+                    let spot = ops::in_view_spot(cam.target, cam.back(), cam.distance);
+                    // Beside, not on top of, lights already placed there.
+                    let right = glam::Vec3::Y.cross(cam.back()).normalize_or(glam::Vec3::X);
+                    let taken = |p: glam::Vec3| {
+                        self.scene.nodes.iter().any(|n| {
+                            n.light()
+                                .is_some_and(|l| (l.location - p).length() < 0.05 * cam.distance)
+                        })
+                    };
+                    let at = (0..5)
+                        .map(|k| spot - right * (0.12 * k as f32 * cam.distance))
+                        .find(|p| !taken(*p))
+                        .unwrap_or(spot);
                     if let crate::scene::NodeKind::Light(l) = &mut after.nodes[id.0 as usize].kind {
                         l.location = at;
                         l.direction = (c - at).normalize_or(glam::Vec3::NEG_Y);
@@ -750,7 +762,11 @@ impl Editor {
             Action::ObjectStyle => self.cycle_object_style(),
             Action::Delete => self.delete_selection(),
             Action::DialogCancel => {
-                if self.dialog.take().is_some_and(|d| d.then == After::DeleteObject) {
+                if self
+                    .dialog
+                    .take()
+                    .is_some_and(|d| d.then == After::DeleteObject)
+                {
                     self.set_status("Nothing deleted", false);
                 }
             }

@@ -456,10 +456,9 @@ impl Editor {
         let mut out = Vec::new();
         let then = self.dialog.as_ref().map(|d| d.then);
         let (heading, labels) = match then {
-            Some(After::Recover) if !self.autosave.untitled.is_empty() => (
-                "Recovery copies",
-                ["Not now", "Discard copy", "Recover"],
-            ),
+            Some(After::Recover) if !self.autosave.untitled.is_empty() => {
+                ("Recovery copies", ["Not now", "Discard copy", "Recover"])
+            }
             Some(After::Recover) => ("Recovery copy", ["Open saved", "Discard copy", "Recover"]),
             Some(After::DeleteObject) => ("Delete", ["Cancel", "", "Delete"]),
             _ => ("Unsaved changes", ["Cancel", "Discard", "Save"]),

@@ -190,7 +190,11 @@ impl Editor {
         let list = &self.autosave.untitled;
         if list.is_empty() {
             self.autosave.offer = None;
-            if self.dialog.as_ref().is_some_and(|d| d.then == After::Recover) {
+            if self
+                .dialog
+                .as_ref()
+                .is_some_and(|d| d.then == After::Recover)
+            {
                 self.dialog = None;
             }
             return;
@@ -317,7 +321,10 @@ impl Editor {
             Action::DialogDiscard => {
                 let s = self.autosave.untitled.remove(i);
                 remove(&s.path);
-                self.set_status(&format!("Deleted the recovery copy {}", s.path.display()), false);
+                self.set_status(
+                    &format!("Deleted the recovery copy {}", s.path.display()),
+                    false,
+                );
                 self.show_untitled_offer();
             }
             Action::DialogCancel => {
@@ -326,7 +333,10 @@ impl Editor {
                 self.autosave.offer = None;
                 self.dialog = None;
                 self.set_status(
-                    &format!("Kept {n} recovery cop{} for later (`animed recover --list`)", if n == 1 { "y" } else { "ies" }),
+                    &format!(
+                        "Kept {n} recovery cop{} for later (`animed recover --list`)",
+                        if n == 1 { "y" } else { "ies" }
+                    ),
                     false,
                 );
             }
@@ -364,7 +374,10 @@ impl Editor {
             copy.to_path_buf()
         };
         self.autosave.written = Some(taken);
-        self.set_status("Recovered untitled work: Ctrl+S saves it under a name", false);
+        self.set_status(
+            "Recovered untitled work: Ctrl+S saves it under a name",
+            false,
+        );
     }
 
     /// Loads the recovery copy into the editor as one undoable change (undo
@@ -418,7 +431,7 @@ impl Editor {
             Ok(p) => {
                 let how = match &self.path {
                     Some(_) => "open the scene again to recover them",
-                    None => "open it with `animed edit` and save it under a name",
+                    None => "animed offers it at the next start; `animed recover --list` shows it",
                 };
                 format!(
                     "window closed with unsaved changes; they are in the recovery copy {} ({how})",
