@@ -158,3 +158,13 @@ pub fn vrml1_sibling_groups(n: usize) -> Vec<u8> {
     s += "}\n";
     s.into_bytes()
 }
+
+/// VRML 1.0 with `n` sibling DEF'd Transforms, each moving what follows.
+pub fn vrml1_sibling_transforms(n: usize) -> Vec<u8> {
+    let mut s = String::from("#VRML V1.0 ascii\nSeparator {\n");
+    for i in 0..n {
+        s += &format!("DEF T{i} Transform {{ translation 0.01 0 0 }} Cube {{}}\n");
+    }
+    s += "}\n";
+    s.into_bytes()
+}

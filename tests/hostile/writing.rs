@@ -85,3 +85,54 @@ fn output_size_grows_linearly_with_depth() {
         assert!(b / a < 5.0, "{ext}: {a} → {b} bytes");
     }
 }
+
+/// The deepest parent chain in the scene.
+fn scene_depth(s: &animed::internals::scene::Scene) -> usize {
+    (0..s.nodes.len())
+        .map(|i| {
+            let mut d = 0;
+            let mut p = s.nodes[i].parent;
+            while let Some(id) = p {
+                d += 1;
+                p = s.nodes[id.0 as usize].parent;
+            }
+            d
+        })
+        .max()
+        .unwrap_or(0)
+}
+
+#[test]
+fn sibling_chains_stay_shallow_and_write_back_on_a_small_stack() {
+    // graz.wrl in the corpus has 4,167 sibling DEF'd Groups; each used to
+    // nest the rest, and writing the 4,108-deep scene overflowed a 2 MiB
+    // stack. Named Groups now nest nothing after them unless a named
+    // transform inside moves what follows, and chains of named transforms
+    // stop nesting at a bounded depth.
+    let run = || {
+        let dir = temp_dir("wchain");
+        for (tag, bytes) in [
+            ("groups", gen::vrml1_sibling_groups(3000)),
+            ("transforms", gen::vrml1_sibling_transforms(3000)),
+        ] {
+            let src = load_bytes(&bytes, Path::new("v1.wrl")).unwrap();
+            let (_, shapes) = counts(&src.scene);
+            assert_eq!(shapes, 3000, "{tag}");
+            assert!(scene_depth(&src.scene) <= 130, "{tag}: {}", scene_depth(&src.scene));
+            for name in ["out.wrl", "out.iv"] {
+                let f = dir.join(name);
+                save(&src.scene, &f, &WriteOptions::default())
+                    .unwrap_or_else(|e| panic!("{tag} {name}: {e}"));
+                let back = load(&f).unwrap_or_else(|e| panic!("{tag} {name}: {e}"));
+                assert_eq!(counts(&back.scene).1, 3000, "{tag} {name}");
+            }
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    };
+    std::thread::Builder::new()
+        .stack_size(2 << 20)
+        .spawn(run)
+        .unwrap()
+        .join()
+        .expect("fits a 2 MiB stack");
+}

@@ -63,7 +63,15 @@ struct Cursor {
     world: Mat4,
     /// Inside a Separator (lights there are scoped).
     separated: bool,
+    /// Scene depth of `parent` (0 at the top).
+    depth: u32,
 }
+
+/// How deep named transforms may nest the scene when they follow each other
+/// as siblings (each moves what follows, so each nests the rest). Beyond it
+/// their matrices are merged into what follows, so the scene stays shallow
+/// enough to write back and to walk on a small stack.
+const MAX_CHAIN_DEPTH: u32 = 128;
 
 #[derive(Hash, PartialEq, Eq)]
 struct MeshKey {
@@ -119,6 +127,7 @@ impl Builder {
             pending: Mat4::IDENTITY,
             world: Mat4::IDENTITY,
             separated: false,
+            depth: 0,
         };
         for n in &parsed.roots {
             self.node(n, &mut st, &mut cur);
@@ -239,6 +248,7 @@ impl Builder {
                         pending: Mat4::IDENTITY,
                         world: cur.world * cur.pending,
                         separated: true,
+                        depth: cur.depth + 1,
                     };
                     let mut saved = st.clone();
                     self.children(n, &mut saved, &mut inner);
@@ -252,10 +262,26 @@ impl Builder {
                 if name.is_empty() {
                     self.children(n, st, cur);
                 } else if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
-                    cur.world *= cur.pending;
-                    cur.parent = Some(id);
-                    cur.pending = Mat4::IDENTITY;
-                    self.children(n, st, cur);
+                    let mut inner = Cursor {
+                        parent: Some(id),
+                        pending: Mat4::IDENTITY,
+                        world: cur.world * cur.pending,
+                        separated: cur.separated,
+                        depth: cur.depth + 1,
+                    };
+                    self.children(n, st, &mut inner);
+                    if inner.parent == Some(id) {
+                        // Only static transforms inside (or none): later
+                        // siblings take them as pending instead of nesting
+                        // under the group. Exporters write thousands of
+                        // sibling DEF'd Groups (graz.wrl: 4,167), which
+                        // nested that deep and could not be written back.
+                        cur.pending *= inner.pending;
+                    } else {
+                        // A named (animatable) transform inside moves what
+                        // follows: keep following it.
+                        *cur = inner;
+                    }
                 }
             }
             "Switch" | "Blinker" => {
@@ -332,9 +358,22 @@ impl Builder {
             cur.pending *= t.matrix();
             return;
         }
+        if cur.depth >= MAX_CHAIN_DEPTH {
+            self.warn_once(
+                "chain",
+                n.pos,
+                &format!(
+                    "more than {MAX_CHAIN_DEPTH} nested levels of named transforms: \
+                     '{name}' and later ones are merged into what follows (not animated)"
+                ),
+            );
+            cur.pending *= t.matrix();
+            return;
+        }
         if let Some(id) = self.add(n.pos, cur, Node::group(name).with_transform(t)) {
             cur.world *= self.scene.node(id).transform.matrix();
             cur.parent = Some(id);
+            cur.depth += 1;
             cur.pending = Mat4::IDENTITY;
             if animated {
                 if let Err(e) = super::animated::add_track(&mut self.scene, n, id) {

@@ -160,3 +160,20 @@ fn engine_connections_are_read_and_ignored() {
     assert!(l.scene.find_node("A").is_some());
     assert!(l.warnings.iter().any(|w| w.contains("connections")));
 }
+
+#[test]
+fn named_groups_pass_their_transforms_on_without_nesting_what_follows() {
+    let l = load(
+        "#VRML V1.0 ascii\nSeparator {\n DEF G1 Group { Translation { translation 1 0 0 } }\n DEF G2 Group { Translation { translation 0 1 0 } DEF A Cube {} }\n DEF B Sphere {}\n DEF T Transform { translation 0 0 1 }\n DEF G3 Group { Translation { translation 1 0 0 } }\n DEF C Cone {}\n}",
+    );
+    let s = &l.scene;
+    let find = |n: &str| s.find_node(n).unwrap();
+    let pos = |n: &str| world(s, find(n)).transform_point3(Vec3::ZERO);
+    assert_eq!(pos("A"), Vec3::new(1.0, 1.0, 0.0));
+    assert_eq!(pos("B"), Vec3::new(1.0, 1.0, 0.0));
+    assert_eq!(pos("C"), Vec3::new(2.0, 1.0, 1.0));
+    // B follows G2 but is not its child; C follows the named transform T.
+    let parent = |n: &str| s.node(find(n)).parent;
+    assert_eq!(parent("B"), parent("G1"));
+    assert_eq!(parent("C"), Some(find("T")));
+}
