@@ -233,6 +233,9 @@ fn save(scene: &Scene, path: &Path) -> Result<(), String> {
     Ok(())
 }
 
+/// The longest scene `--duration` sets, in frames.
+const MAX_DURATION_FRAMES: f32 = 100_000.0;
+
 fn apply_timing(scene: &mut Scene, t: &Timing) -> Result<(), String> {
     if let Some(fps) = t.fps {
         if !(fps.is_finite() && fps > 0.0) {
@@ -243,6 +246,15 @@ fn apply_timing(scene: &mut Scene, t: &Timing) -> Result<(), String> {
     if let Some(d) = t.duration {
         if !(d.is_finite() && d > 0.0) {
             return Err("--duration must be a positive number of frames".into());
+        }
+        // The .wrl/.iv writers unroll looping tracks over the whole
+        // duration (about 46 bytes per frame for a TCB loop): 1e30 frames
+        // once wrote a 683 MB file. 100,000 frames is 69 minutes at 24 fps
+        // and writes under 5 MB.
+        if d > MAX_DURATION_FRAMES {
+            return Err(format!(
+                "--duration {d}: at most {MAX_DURATION_FRAMES} frames (69 minutes at 24 fps)"
+            ));
         }
         scene.settings.duration = d;
     }

@@ -64,7 +64,7 @@ fn a_utf8_byte_order_mark_is_read() {
 #[test]
 fn nan_and_infinity_are_refused_where_they_stand() {
     for (src, col) in [
-        ("DEF T TimeSensor { cycleInterval nan loop TRUE }", 35),
+        ("DEF T TimeSensor { cycleInterval nan loop TRUE }", 34),
         ("Transform { translation 0 NaN 0 }", 27),
         ("Transform { scale 1e999 1 1 }", 19),
         ("Transform { translation inf 0 0 }", 25),
@@ -159,12 +159,18 @@ fn a_huge_duration_on_a_looping_track_writes_a_bounded_file() {
         ]);
         assert_eq!(code, 0, "{e}");
     }
+    // The first wave wrote 683 MB here: the duration is refused, the file
+    // left as it was.
+    let before = std::fs::read(&f).unwrap();
     let (code, e) = animed(&["key", "settings", fs, "--duration", "1e30"]);
+    assert_eq!(code, 1, "{e}");
+    assert!(e.contains("at most 100000 frames"), "{e}");
+    assert_eq!(std::fs::read(&f).unwrap(), before);
+    // The longest duration allowed still writes a bounded file.
+    let (code, e) = animed(&["key", "settings", fs, "--duration", "100000"]);
     assert_eq!(code, 0, "{e}");
     let len = std::fs::metadata(&f).unwrap().len();
-    // The first wave wrote 683 MB here; the sampler stops at a bounded
-    // number of breaks per channel.
-    assert!(len < 16 << 20, "{len} bytes");
+    assert!(len < 8 << 20, "{len} bytes");
     let l = animed::internals::format::load(&f).unwrap();
     assert_eq!(l.scene.animation.tracks.len(), 1);
     std::fs::remove_dir_all(&dir).ok();

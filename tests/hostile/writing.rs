@@ -118,7 +118,11 @@ fn sibling_chains_stay_shallow_and_write_back_on_a_small_stack() {
             let src = load_bytes(&bytes, Path::new("v1.wrl")).unwrap();
             let (_, shapes) = counts(&src.scene);
             assert_eq!(shapes, 3000, "{tag}");
-            assert!(scene_depth(&src.scene) <= 130, "{tag}: {}", scene_depth(&src.scene));
+            assert!(
+                scene_depth(&src.scene) <= 130,
+                "{tag}: {}",
+                scene_depth(&src.scene)
+            );
             for name in ["out.wrl", "out.iv"] {
                 let f = dir.join(name);
                 save(&src.scene, &f, &WriteOptions::default())

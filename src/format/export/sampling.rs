@@ -245,7 +245,7 @@ pub fn slerp_shortest(a: Quat, b: Quat, f: f32) -> Quat {
 /// Keys a per-frame bake of `duration` frames would need (frames 0..=duration).
 pub fn per_frame_keys(duration: f32) -> usize {
     if duration.is_finite() && duration > 0.0 {
-        duration.ceil() as usize + 1
+        (duration.ceil() as usize).saturating_add(1)
     } else {
         1
     }

@@ -596,6 +596,13 @@ impl Parser<'_> {
             v.push(n);
             self.lx.next_token().map_err(lex_err)?;
         }
+        // `0 NaN 0`: the word would otherwise be read as the next field's
+        // name and the field keep only its first numbers.
+        if let Ok(t) = self.lx.peek() {
+            if let Tok::Ident(w) = &t.tok {
+                not_a_number_word(w, t.pos)?;
+            }
+        }
         Ok(())
     }
 
