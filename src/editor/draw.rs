@@ -108,7 +108,7 @@ impl Editor {
         for w in &widgets {
             self.draw_widget(p, w);
         }
-        if let Drag::ListDrag {
+        if let Drag::RowMove {
             node, moved: true, ..
         } = &self.drag
         {

@@ -30,7 +30,7 @@ pub(super) enum Drag {
     },
     /// Pressed on an object list row: a drag drops it onto another row
     /// (parent) or onto the list's empty space (top level).
-    ListDrag {
+    RowMove {
         node: NodeId,
         at: (f32, f32),
         moved: bool,

@@ -164,11 +164,11 @@ impl Editor {
                 true
             }
             Drag::Pick { .. } => false,
-            Drag::ListDrag { node, at, moved } => {
+            Drag::RowMove { node, at, moved } => {
                 if !moved && (x - at.0).abs().max((y - at.1).abs()) < DRAG_SLOP {
                     return false;
                 }
-                self.drag = Drag::ListDrag {
+                self.drag = Drag::RowMove {
                     node,
                     at,
                     moved: true,
@@ -278,7 +278,7 @@ impl Editor {
                 self.commit_edit();
                 self.selection = Some(node);
                 if list == List::Objects {
-                    self.drag = Drag::ListDrag {
+                    self.drag = Drag::RowMove {
                         node,
                         at: (x, y),
                         moved: false,
@@ -322,7 +322,7 @@ impl Editor {
             Drag::Pick { at } if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP => {
                 self.pick(x, y);
             }
-            Drag::ListDrag {
+            Drag::RowMove {
                 node, moved: true, ..
             } => self.drop_in_list(node, x, y),
             _ => {}
