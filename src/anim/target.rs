@@ -1,5 +1,6 @@
 //! The one list of animatable properties and their value types.
 
+use super::Weights;
 use crate::scene::{MaterialId, NodeId};
 use glam::{Quat, Vec3};
 
@@ -12,6 +13,8 @@ pub enum ValueKind {
     Color,
     Rotation,
     Bool,
+    /// Morph-target weights: a vector of N (the mesh's target count).
+    Weights,
 }
 
 /// A sampled or keyed value.
@@ -21,6 +24,7 @@ pub enum Value {
     Vec3(Vec3),
     Rotation(Quat),
     Bool(bool),
+    Weights(Weights),
 }
 
 macro_rules! properties {
@@ -39,7 +43,7 @@ macro_rules! properties {
                 match self { $(Property::$var => ValueKind::$kind,)* }
             }
             /// Which kind of target owns this property: "node", "light",
-            /// "camera" or "material".
+            /// "camera", "shape" (a shape node's mesh) or "material".
             pub fn owner(self) -> &'static str {
                 match self { $(Property::$var => stringify!($owner),)* }
             }
@@ -68,6 +72,7 @@ properties! {
     Specular => "specularColor", Color, material;
     Transparency => "transparency", Scalar, material;
     Shininess => "shininess", Scalar, material;
+    MorphWeights => "weights", Weights, shape;
 }
 
 impl Property {
@@ -82,6 +87,7 @@ impl Property {
             "emissive" => Some(Property::Emissive),
             "specular" => Some(Property::Specular),
             "fov" => Some(Property::CameraFov),
+            "morph" | "morphweights" => Some(Property::MorphWeights),
             _ => None,
         };
         alias.or_else(|| {
