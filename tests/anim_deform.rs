@@ -10,7 +10,7 @@ use animed::anim::{
     evaluate, Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Weights,
 };
 use animed::render::job::{render_at, FrameSpec, Headlight};
-use animed::scene::primitives::{cylinder, sphere};
+use animed::scene::primitives::sphere;
 use animed::scene::{
     Camera, Light, LightKind, Material, Mesh, MorphTarget, Morphs, Node, NodeId, NodeKind, Scene,
     Shape, Skin, SkinWeights, Transform,

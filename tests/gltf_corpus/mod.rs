@@ -193,10 +193,9 @@ fn boxes_by_name(meshes: &serde_json::Value) -> std::collections::BTreeMap<Strin
         let e = out
             .entry(m["name"].as_str().unwrap().to_string())
             .or_insert([[f64::MAX; 3], [f64::MIN; 3]]);
-        for i in 0..3 {
-            e[0][i] = e[0][i].min(v("min")[i]);
-            e[1][i] = e[1][i].max(v("max")[i]);
-        }
+        let (lo, hi) = (v("min"), v("max"));
+        e[0] = [0, 1, 2].map(|i| e[0][i].min(lo[i]));
+        e[1] = [0, 1, 2].map(|i| e[1][i].max(hi[i]));
     }
     out
 }
