@@ -8,6 +8,7 @@ pub mod edit;
 pub mod info;
 mod info_deform;
 pub mod key;
+pub mod recover;
 pub mod render;
 pub mod sample;
 pub mod view;
@@ -90,6 +91,8 @@ pub enum Command {
     Key(key::Args),
     /// Screenshot tests: render scenes and compare them with golden PNGs.
     Check(check::Args),
+    /// List autosaved untitled work (`--list`), or recover one session.
+    Recover(recover::Args),
 }
 
 /// Runs the CLI; returns the process exit code.
@@ -113,5 +116,6 @@ pub fn run() -> i32 {
         Some(Command::Sample(a)) => sample::run(a),
         Some(Command::Key(a)) => key::run(a),
         Some(Command::Check(a)) => check::run_cli(a),
+        Some(Command::Recover(a)) => recover::run(a),
     }
 }
