@@ -239,17 +239,7 @@ struct Summary {
 fn summary(s: &animed::internals::scene::Scene) -> Summary {
     use animed::internals::scene::NodeKind;
     let count = |f: &dyn Fn(&NodeKind) -> bool| s.nodes.iter().filter(|n| f(&n.kind)).count();
-    let keys = s
-        .animation
-        .tracks
-        .iter()
-        .map(|t| match &t.keys {
-            animed::internals::anim::Keys::Scalar(k) => k.len(),
-            animed::internals::anim::Keys::Vec3(k) => k.len(),
-            animed::internals::anim::Keys::Rotation(k) => k.len(),
-            animed::internals::anim::Keys::Bool(k) => k.len(),
-        })
-        .sum();
+    let keys = s.animation.tracks.iter().map(|t| t.keys.len()).sum();
     Summary {
         nodes: s.nodes.len(),
         shapes: count(&|k| matches!(k, NodeKind::Shape(_))),

@@ -566,23 +566,32 @@ fn scripts_aim_at_keys_and_key_fields_by_name() {
                   type 0.5\n\
                   key enter\n\
                   click-key summary 30 shift\n";
-    animed::internals::editor::script::run(&mut ed, script, Path::new("keys.txt")).expect("script runs");
+    animed::internals::editor::script::run(&mut ed, script, Path::new("keys.txt"))
+        .expect("script runs");
     assert_eq!(frames(&ed, bx, T), vec![0.0, 14.0, 20.0]);
     let t = ed.scene().animation.track(target(bx, T)).unwrap();
     assert_eq!(t.key(1).unwrap().tension, 0.5);
     assert_eq!(selected(&ed), vec![(T, 14.0), (S, 30.0)]);
     // No key there: the line is named.
-    let e =
-        animed::internals::editor::script::run(&mut ed, "key esc\nclick-key scale 11\n", Path::new("k.txt"))
-            .unwrap_err();
+    let e = animed::internals::editor::script::run(
+        &mut ed,
+        "key esc\nclick-key scale 11\n",
+        Path::new("k.txt"),
+    )
+    .unwrap_err();
     assert_eq!((e.line, e.column), (2, 1));
     assert!(e.message.contains("no key at frame 11"), "{}", e.message);
-    let e = animed::internals::editor::script::run(&mut ed, "click-key wobble 1\n", Path::new("k.txt"))
-        .unwrap_err();
+    let e =
+        animed::internals::editor::script::run(&mut ed, "click-key wobble 1\n", Path::new("k.txt"))
+            .unwrap_err();
     assert_eq!((e.line, e.column), (1, 11));
     assert!(e.message.contains("unknown key strip row"), "{}", e.message);
-    let e = animed::internals::editor::script::run(&mut ed, "click-field Key(Nope)\n", Path::new("k.txt"))
-        .unwrap_err();
+    let e = animed::internals::editor::script::run(
+        &mut ed,
+        "click-field Key(Nope)\n",
+        Path::new("k.txt"),
+    )
+    .unwrap_err();
     assert!(e.message.contains("no field"), "{}", e.message);
 }
 
@@ -749,7 +758,7 @@ fn script_select_step_uses_the_list() {
     let sp = ed.scene().find_node("Spinner").unwrap();
     assert_eq!(ed.selection(), Some(sp));
     assert_eq!(selected(&ed), vec![(Property::Rotation, 24.0)]);
-    let e =
-        animed::internals::editor::script::run(&mut ed, "select Nobody\n", Path::new("s.txt")).unwrap_err();
+    let e = animed::internals::editor::script::run(&mut ed, "select Nobody\n", Path::new("s.txt"))
+        .unwrap_err();
     assert!(e.message.contains("no node named Nobody"), "{}", e.message);
 }

@@ -289,7 +289,13 @@ impl Editor {
         }
     }
 
-    pub(in crate::internals::editor) fn mouse_up(&mut self, button: MouseButton, x: f32, y: f32, mods: Mods) {
+    pub(in crate::internals::editor) fn mouse_up(
+        &mut self,
+        button: MouseButton,
+        x: f32,
+        y: f32,
+        mods: Mods,
+    ) {
         if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
             self.graph_event(&Event::MouseUp { button, x, y, mods });
             return;
@@ -329,7 +335,13 @@ impl Editor {
         }
     }
 
-    pub(in crate::internals::editor) fn wheel(&mut self, delta: f32, x: f32, y: f32, mods: Mods) -> bool {
+    pub(in crate::internals::editor) fn wheel(
+        &mut self,
+        delta: f32,
+        x: f32,
+        y: f32,
+        mods: Mods,
+    ) -> bool {
         if self.dialog.is_some() {
             return false;
         }
@@ -402,7 +414,11 @@ impl Editor {
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
     }
 
-    pub(in crate::internals::editor) fn field_value(&self, id: FieldId, base: &Base) -> Option<FieldValue> {
+    pub(in crate::internals::editor) fn field_value(
+        &self,
+        id: FieldId,
+        base: &Base,
+    ) -> Option<FieldValue> {
         match base {
             Base::Frame(f) => Some(FieldValue::Number(*f)),
             Base::Settings(s) => id.read_settings(s),
@@ -891,7 +907,12 @@ impl Editor {
 
     /// The end of an object list drag: onto another object's row puts the
     /// dragged one under it; onto the list's empty space, at the top level.
-    pub(in crate::internals::editor) fn drop_in_list(&mut self, node: crate::scene::NodeId, x: f32, y: f32) {
+    pub(in crate::internals::editor) fn drop_in_list(
+        &mut self,
+        node: crate::scene::NodeId,
+        x: f32,
+        y: f32,
+    ) {
         let target = self.widget_at(x, y).and_then(|w| match w.kind {
             WidgetKind::Row {
                 node: t,

@@ -35,14 +35,20 @@ impl Editor {
     }
 
     /// Text of a key panel field.
-    pub(in crate::internals::editor) fn key_field_text(&self, f: KeyField, max_chars: usize) -> String {
+    pub(in crate::internals::editor) fn key_field_text(
+        &self,
+        f: KeyField,
+        max_chars: usize,
+    ) -> String {
         self.key_field_number(f, &self.scene.animation, &self.selected_keys())
             .map(|x| format_fit(x, max_chars))
             .unwrap_or_default()
     }
 
     /// The base of a key field drag or edit: the animation and the keys.
-    pub(in crate::internals::editor) fn key_field_base(&self) -> Option<(Box<Animation>, Vec<KeyRef>)> {
+    pub(in crate::internals::editor) fn key_field_base(
+        &self,
+    ) -> Option<(Box<Animation>, Vec<KeyRef>)> {
         let keys = self.selected_keys();
         (!keys.is_empty()).then(|| (Box::new(self.scene.animation.clone()), keys))
     }
@@ -80,7 +86,11 @@ impl Editor {
     }
 
     /// Release of a key field drag: one undo step.
-    pub(in crate::internals::editor) fn finish_key_field_drag(&mut self, id: FieldId, before: Box<Animation>) {
+    pub(in crate::internals::editor) fn finish_key_field_drag(
+        &mut self,
+        id: FieldId,
+        before: Box<Animation>,
+    ) {
         let after = Box::new(self.scene.animation.clone());
         self.push_applied(
             &format!("Drag key {id:?}"),
@@ -280,7 +290,11 @@ impl Editor {
 
     /// "Keys" at the right of the node properties header while keys are
     /// selected but the node is shown.
-    pub(in crate::internals::editor) fn key_panel_switch(&self, header: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn key_panel_switch(
+        &self,
+        header: Rect,
+        out: &mut Vec<Widget>,
+    ) {
         if self.keys.node_panel && !self.selected_keys().is_empty() {
             let bw = text::width("Keys") + 6;
             out.push(button(
@@ -315,7 +329,12 @@ impl Editor {
     }
 
     /// Line `i` of the node panel's list of the selection's key frames.
-    pub(in crate::internals::editor) fn key_list_row(&self, i: usize, r: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn key_list_row(
+        &self,
+        i: usize,
+        r: Rect,
+        out: &mut Vec<Widget>,
+    ) {
         let lines = self.key_list_lines();
         let Some(line) = lines.get(i) else { return };
         let (a, b) = r.take_left(5 * CHAR_W);
