@@ -23,6 +23,7 @@ pub mod obj;
 pub mod polygons;
 pub mod sgi_image;
 pub mod syntax;
+pub mod text;
 pub mod textures;
 pub mod vrml97;
 

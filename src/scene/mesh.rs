@@ -1,4 +1,4 @@
-use super::{Morphs, SkinWeights};
+use super::{Morphs, SkinWeights, TextSpec};
 use glam::{Vec2, Vec3};
 
 /// Geometry ready to draw: indexed triangles, lines and points over one
@@ -28,6 +28,10 @@ pub struct Mesh {
     /// Joint influences per vertex when the mesh is skinned (the skin itself
     /// is `Node::skin` of the shape); `None` otherwise.
     pub skin_weights: Option<Box<SkinWeights>>,
+    /// The strings and font style this mesh was built from, for a Text
+    /// node (VRML97 Text, VRML 1.0 AsciiText, Inventor Text2/Text3):
+    /// writers write the node again instead of the triangles.
+    pub text: Option<Box<TextSpec>>,
 }
 
 impl Mesh {

@@ -16,6 +16,7 @@ mod node;
 pub mod normals;
 pub mod primitives;
 mod skin;
+mod text;
 mod texture;
 mod transform;
 
@@ -34,6 +35,7 @@ pub use normals::{
     mesh_from_polygons, mesh_from_polygons_textured, Binding, MeshError, PolyOptions, TexCoords,
 };
 pub use skin::{InfluenceReport, Skin, SkinId, SkinWeights, MAX_JOINTS};
+pub use text::{FontFamily, Justify, TextKind, TextSpec};
 pub use texture::{TexTransform, TexTransformOrder, Texture, TextureModel, Wrap};
 pub use transform::Transform;
 

@@ -142,8 +142,10 @@ impl Builder {
         if let Some(e) = self.fatal {
             return Err(e);
         }
+        let mut scene = self.scene;
+        super::text::size_text2(&mut scene);
         Ok(Loaded {
-            scene: self.scene,
+            scene,
             warnings: self.warnings,
         })
     }
@@ -336,9 +338,7 @@ impl Builder {
                     self.scene.info.push(s);
                 }
             }
-            "AsciiText" | "Text2" | "Text3" => {
-                self.warn_once(kind, n.pos, &format!("{kind} is not supported; skipped"));
-            }
+            "AsciiText" | "Text2" | "Text3" => self.text(n, st, cur, name),
             k if IGNORED.contains(&k) => {}
             k => {
                 let declared = n.field("fields").is_some();
@@ -421,6 +421,23 @@ impl Builder {
             }
         };
         let Some(mesh) = mesh else { return };
+        let material = self.material(st);
+        let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
+        node.style = st.style;
+        self.add(n.pos, cur, node);
+    }
+
+    /// A text node: its mesh is built per instance (the font is state).
+    fn text(&mut self, n: &NodeRef, st: &State, cur: &Cursor, name: String) {
+        let mut msgs = Vec::new();
+        let m = super::text::mesh(n, st, &mut msgs);
+        for (pos, msg) in msgs {
+            let k = format!("{}:{msg}", n.kind);
+            self.warn_once(&k, pos, &msg);
+        }
+        let Some(mut m) = m else { return };
+        m.name = name.clone();
+        let mesh = self.scene.add_mesh(m);
         let material = self.material(st);
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
         node.style = st.style;

@@ -6,7 +6,9 @@ mod animated;
 mod build;
 mod shapes;
 mod state;
+mod text;
 pub mod write;
+mod write_text;
 
 use super::syntax::{self, Options};
 use super::vrml97::fmt_warning;

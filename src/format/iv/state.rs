@@ -51,6 +51,10 @@ pub struct State {
     pub style: RenderStyle,
     /// LightModel BASE_COLOR: shapes are unlit.
     pub unlit: bool,
+    /// Font (Inventor) or FontStyle (VRML 1.0) for the text nodes.
+    pub font: Option<NodeRef>,
+    /// ProfileCoordinate2 and LinearProfile: Text3's extrusion.
+    pub profile: (Option<NodeRef>, Option<NodeRef>),
 }
 
 impl State {
@@ -68,6 +72,8 @@ impl State {
             crease_angle: if vrml1 { 0.5 } else { 0.0 },
             style: RenderStyle::Filled,
             unlit: false,
+            font: None,
+            profile: (None, None),
         }
     }
 
@@ -110,6 +116,9 @@ impl State {
                     };
                 }
             }
+            "Font" | "FontStyle" => self.font = Some(n.clone()),
+            "ProfileCoordinate2" => self.profile.0 = Some(n.clone()),
+            "LinearProfile" => self.profile.1 = Some(n.clone()),
             "LightModel" => self.unlit = first_word(n, "model") == "BASE_COLOR",
             _ => return false,
         }

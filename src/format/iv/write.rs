@@ -520,6 +520,10 @@ impl Writer<'_> {
         };
         self.material(s.material.0 as usize, mesh);
         self.texture(s.material.0 as usize, mesh);
+        if let Some(t) = super::write_text::writable(mesh).filter(|_| !self.v1) {
+            super::write_text::write(&mut self.out, &def(faces_name), t);
+            return;
+        }
         let has_normals = !mesh.normals.is_empty() && mesh.normals.len() == mesh.positions.len();
         let key = mesh_key(mesh);
         let hints = if mesh.solid {

@@ -30,10 +30,7 @@ pub fn mesh(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
         "ElevationGrid" => elevation_grid(g, textured, msgs),
         "Extrusion" => extrusion(g, textured, msgs),
         "Box" | "Sphere" | "Cone" | "Cylinder" => primitive(g, textured),
-        "Text" => {
-            msgs.push((g.pos, "Text is not supported; skipped".into()));
-            None
-        }
+        "Text" => super::text::mesh(g, textured, msgs),
         k => {
             msgs.push((
                 g.pos,

@@ -6,7 +6,9 @@ mod animation;
 mod appearance;
 mod build;
 mod geometry;
+mod text;
 pub mod write;
+mod write_text;
 
 use super::lexer::Pos;
 use super::syntax::{self, Options};

@@ -5,7 +5,8 @@
 //! * Each scene node is a `Transform` (or just its content when the
 //!   transform is the identity and nothing animates it; see `export::plan`).
 //! * Shapes: `IndexedFaceSet` with per-vertex normals and colours,
-//!   `IndexedLineSet`, `PointSet`; shared meshes and materials are DEF/USE.
+//!   `IndexedLineSet`, `PointSet`, `Text` (`write_text`); shared meshes
+//!   and materials are DEF/USE.
 //! * The clock: `TimeSensor { cycleInterval = duration / fps, loop TRUE }`;
 //!   key fractions are `frame / duration`.
 //! * Interpolators are sampled adaptively (`sampling`), visibility and light
@@ -426,6 +427,10 @@ impl Writer<'_> {
         }
         if can_def {
             self.written_meshes[mi] = true;
+        }
+        if let Some(t) = super::write_text::writable(mesh) {
+            super::write_text::write(&mut self.out, &def(&name), t);
+            return;
         }
         self.out
             .open(&format!("geometry {}IndexedFaceSet", def(&name)));

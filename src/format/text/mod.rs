@@ -1,0 +1,126 @@
+//! Text as geometry: the embedded fonts (`font`), glyph outlines to
+//! triangles with holes (`tessellate`), lines and justification
+//! (`layout`), and the mesh (`mesh`). The readers turn their Text nodes
+//! into a [`TextSpec`](crate::scene::TextSpec) and call [`text_mesh`];
+//! the spec stays on the mesh so writers can write the node again.
+
+pub mod font;
+pub mod layout;
+pub mod mesh;
+pub mod tessellate;
+
+pub use mesh::{text_mesh, MAX_GLYPHS};
+
+use crate::scene::{FontFamily, Justify, TextSpec};
+
+/// Replaces values no text can be drawn with (non-finite or non-positive
+/// size, non-finite or negative spacing) by the defaults, saying so.
+pub fn sanitize(spec: &mut TextSpec, default_size: f32, msgs: &mut Vec<String>) {
+    if !(spec.size.is_finite() && spec.size > 0.0) {
+        msgs.push(format!(
+            "font size {} is not positive; {default_size} used",
+            spec.size
+        ));
+        spec.size = default_size;
+    }
+    if !(spec.spacing.is_finite() && spec.spacing >= 0.0) {
+        msgs.push(format!(
+            "spacing {} is not a non-negative number; 1 used",
+            spec.spacing
+        ));
+        spec.spacing = 1.0;
+    }
+    if !spec.max_extent.is_finite() || spec.max_extent < 0.0 {
+        msgs.push(format!("maxExtent {} ignored", spec.max_extent));
+        spec.max_extent = 0.0;
+    }
+}
+
+/// A VRML97 family name (§6.20.2: "SERIF", "SANS", "TYPEWRITER"); other
+/// names are browser-dependent, so `None`.
+pub fn family(name: &str) -> Option<FontFamily> {
+    match name {
+        "SERIF" => Some(FontFamily::Serif),
+        "SANS" => Some(FontFamily::Sans),
+        "TYPEWRITER" => Some(FontFamily::Typewriter),
+        _ => None,
+    }
+}
+
+/// A justification word of VRML97 (FIRST/BEGIN/MIDDLE/END) or of VRML 1.0
+/// and Inventor (LEFT/CENTER/RIGHT).
+pub fn justify(word: &str) -> Option<Justify> {
+    match word {
+        "FIRST" => Some(Justify::First),
+        "BEGIN" | "LEFT" => Some(Justify::Begin),
+        "MIDDLE" | "CENTER" => Some(Justify::Middle),
+        "END" | "RIGHT" => Some(Justify::End),
+        _ => None,
+    }
+}
+
+/// Inventor's `Font.name` ("Times-Roman", "Helvetica-Bold", "Courier",
+/// "defaultFont", fontconfig-like "Sans:Bold Italic") → family, bold,
+/// italic. Unknown names are the default serif face, as Coin's default
+/// font is a serif one.
+pub fn inventor_font(name: &str) -> (FontFamily, bool, bool) {
+    let l = name.to_ascii_lowercase();
+    let family = if ["courier", "mono", "typewriter", "fixed"]
+        .iter()
+        .any(|k| l.contains(k))
+    {
+        FontFamily::Typewriter
+    } else if ["helvetica", "arial", "sans", "verdana", "utopia"]
+        .iter()
+        .any(|k| l.contains(k))
+    {
+        FontFamily::Sans
+    } else {
+        FontFamily::Serif
+    };
+    let bold = l.contains("bold");
+    let italic = l.contains("italic") || l.contains("oblique");
+    (family, bold, italic)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inventor_font_names() {
+        assert_eq!(
+            inventor_font("Times-Roman"),
+            (FontFamily::Serif, false, false)
+        );
+        assert_eq!(
+            inventor_font("Helvetica-BoldOblique"),
+            (FontFamily::Sans, true, true)
+        );
+        assert_eq!(
+            inventor_font("Courier-Bold"),
+            (FontFamily::Typewriter, true, false)
+        );
+        assert_eq!(
+            inventor_font("defaultFont"),
+            (FontFamily::Serif, false, false)
+        );
+        assert_eq!(
+            inventor_font("DejaVu Sans:Italic"),
+            (FontFamily::Sans, false, true)
+        );
+    }
+
+    #[test]
+    fn bad_sizes_fall_back() {
+        let mut s = TextSpec {
+            size: f32::NAN,
+            spacing: -1.0,
+            ..TextSpec::default()
+        };
+        let mut m = Vec::new();
+        sanitize(&mut s, 1.0, &mut m);
+        assert_eq!((s.size, s.spacing), (1.0, 1.0));
+        assert_eq!(m.len(), 2);
+    }
+}

@@ -1,0 +1,106 @@
+//! Text nodes drawn as geometry: goldens of hand-written scenes
+//! (`tests/data/text/`: VRML97 Text + FontStyle families, styles,
+//! justification and directions; Inventor Text3 with sides) and one corpus
+//! file (VRML 1.0 AsciiText, compared side by side with Coin 4 before it
+//! was kept), plus what text must do for framing and picking.
+
+#[path = "common/golden.rs"]
+mod golden;
+
+use animed::internals::render::job::{render_at, FrameSpec, Headlight};
+use animed::internals::render::Frame;
+use animed::internals::scene::{NodeKind, Scene};
+use std::path::Path;
+
+fn load(file: &str) -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/text")
+        .join(file);
+    animed::internals::format::load(&path)
+        .expect("test file loads")
+        .scene
+}
+
+fn draw(scene: &Scene, w: u32, h: u32) -> Frame {
+    let spec = FrameSpec {
+        width: w,
+        height: h,
+        viewpoint: None,
+        style: None,
+        background: Some(glam::Vec3::new(0.3, 0.1, 0.3)),
+        headlight: Headlight::Auto,
+        threads: 0,
+        aa: 1,
+    };
+    render_at(scene, &spec, 0.0).expect("renders")
+}
+
+/// SERIF / SANS / TYPEWRITER in PLAIN, BOLD, ITALIC, BOLDITALIC, each line
+/// centred on x = 0 (justify MIDDLE); '8', 'O', '&', '@' show the holes.
+#[test]
+fn golden_text_families_and_styles() {
+    golden::check("text_vrml97_styles", &draw(&load("styles.wrl"), 320, 240));
+}
+
+/// END/END against the axes, a vertical column, right-to-left, `length`
+/// and `maxExtent`.
+#[test]
+fn golden_text_justify_and_directions() {
+    golden::check("text_vrml97_layout", &draw(&load("layout.wrl"), 320, 240));
+}
+
+/// Inventor Text3 extruded (parts ALL, lit sides) and a flat two-line Text3.
+#[test]
+fn golden_text3_extruded() {
+    golden::check("text_iv_text3", &draw(&load("text3.iv"), 240, 180));
+}
+
+/// castle-engine demo-models `text/vrml_1/text_textured.wrl`: two
+/// AsciiTexts, the second one rotated back (its textures are missing, so
+/// both are plain, as in Coin's picture of it).
+#[test]
+fn golden_ascii_text_corpus_file() {
+    golden::check(
+        "text_vrml1_text_textured",
+        &draw(&load("text_textured.wrl"), 320, 240),
+    );
+}
+
+/// A file holding only text is framed on the text (view-all counts it),
+/// and every text pixel picks its Shape node.
+#[test]
+fn text_is_framed_and_picked() {
+    let s = load("styles.wrl");
+    let f = draw(&s, 160, 120);
+    let shapes: Vec<u32> = s
+        .nodes
+        .iter()
+        .enumerate()
+        .filter(|(_, n)| matches!(n.kind, NodeKind::Shape(_)))
+        .map(|(i, _)| i as u32 + 1)
+        .collect();
+    assert_eq!(shapes.len(), 4);
+    for id in &shapes {
+        let n = f.ids.iter().filter(|i| *i == id).count();
+        assert!(n > 50, "text shape {id} covers {n} pixels");
+    }
+    // Without its Viewpoint the view-all camera frames the text: ink
+    // reaches near both sides of the picture.
+    let src = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/text/styles.wrl"),
+    )
+    .unwrap()
+    .replace("Viewpoint { position 0 0 9 }", "");
+    let dir = std::env::temp_dir().join(format!("animed-text-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("noview.wrl");
+    std::fs::write(&p, src).unwrap();
+    let s = animed::internals::format::load(&p).unwrap().scene;
+    let f = draw(&s, 160, 120);
+    let cols: Vec<u32> = (0..f.width)
+        .filter(|&x| (0..f.height).any(|y| f.ids[(y * f.width + x) as usize] != 0))
+        .collect();
+    let (lo, hi) = (cols[0], *cols.last().unwrap());
+    assert!(lo < 40 && hi > 120, "text spans columns {lo}..{hi} of 160");
+    std::fs::remove_dir_all(&dir).ok();
+}
