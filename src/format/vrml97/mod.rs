@@ -7,6 +7,7 @@ mod appearance;
 mod build;
 mod geometry;
 pub mod write;
+mod write_morph;
 
 use super::lexer::Pos;
 use super::syntax::{self, Options};
