@@ -649,3 +649,135 @@ fn morphing_sphere_at_three_weights_matches_goldens() {
         golden::check(&format!("deform_morph_w{i}"), f);
     }
 }
+
+/// A quad whose four points a CoordinateInterpolator moves (keys at 0,
+/// 0.3 and 1 of a 2 s looping cycle).
+const COORD_WRL: &str = "#VRML V2.0 utf8
+DEF T TimeSensor { cycleInterval 2 loop TRUE }
+DEF Quad Shape { appearance Appearance { material Material {} }
+  geometry IndexedFaceSet { coord DEF C Coordinate { point [0 0 0, 1 0 0, 1 1 0, 0 1 0] }
+    coordIndex [0 1 2 3 -1] } }
+DEF CI CoordinateInterpolator { key [0, 0.3, 1]
+  keyValue [0 0 0, 1 0 0, 1 1 0, 0 1 0,
+            0 0 0.5, 2 0 0, 1 2 0, 0 1 -1,
+            0 0 0, 1 0 0, 1 1 0, 0 1 0] }
+ROUTE T.fraction_changed TO CI.set_fraction
+ROUTE CI.value_changed TO C.set_point
+";
+
+#[test]
+fn coordinate_interpolator_plays_the_spec_linear_interpolation() {
+    let loaded =
+        animed::internals::format::load_bytes(COORD_WRL.as_bytes(), std::path::Path::new("q.wrl"))
+            .unwrap_or_else(|e| panic!("{e}"));
+    assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+    let s = loaded.scene;
+    let id = s.find_node("Quad").expect("the shape");
+    let points = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::Y];
+    assert_eq!(
+        s.meshes[0].positions, points,
+        "one vertex per point, in order"
+    );
+    let keys = [0.0f32, 0.3, 1.0];
+    let kv: [[Vec3; 4]; 3] = [
+        points,
+        [
+            Vec3::new(0.0, 0.0, 0.5),
+            Vec3::new(2.0, 0.0, 0.0),
+            Vec3::new(1.0, 2.0, 0.0),
+            Vec3::new(0.0, 1.0, -1.0),
+        ],
+        points,
+    ];
+    // VRML97 §4.6.8: linear interpolation of keyValue at the cycle fraction.
+    let spec = |t: f32| -> [Vec3; 4] {
+        let f = (t / 2.0).fract();
+        let i = if f < keys[1] { 0 } else { 1 };
+        let s = (f - keys[i]) / (keys[i + 1] - keys[i]);
+        [0, 1, 2, 3].map(|p| kv[i][p].lerp(kv[i + 1][p], s))
+    };
+    for t in [0.0f32, 0.13, 0.6, 0.61, 0.9, 1.37, 1.99, 2.5, 3.3] {
+        let pose = evaluate(&s, t);
+        let d = pose.deformed(id).expect("the quad is morphed");
+        for (p, want) in d.positions.iter().zip(spec(t)) {
+            assert!(close(*p, want, 1e-5), "t={t}: {p} vs {want}");
+        }
+    }
+}
+
+#[test]
+fn vrml97_writer_plays_morphs_and_skins_as_coordinate_interpolators() {
+    use animed::internals::format::save::{to_bytes, OutputFormat};
+    for (name, s) in [("blob", morphing_sphere()), ("tube", bending_cylinder())] {
+        let (bytes, report) = to_bytes(
+            &s,
+            OutputFormat::Vrml97,
+            &animed::internals::format::WriteOptions::default(),
+        );
+        let text = String::from_utf8(bytes.clone()).unwrap();
+        assert!(
+            text.contains("CoordinateInterpolator") && text.contains("NormalInterpolator"),
+            "{name}"
+        );
+        assert!(
+            text.contains(".set_point") && text.contains(".set_vector"),
+            "{name}"
+        );
+        assert!(
+            report.warnings.iter().all(|w| !w.contains("weights")),
+            "{:?}",
+            report.warnings
+        );
+        let back = animed::internals::format::load_bytes(&bytes, std::path::Path::new("x.wrl"))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let r = back.scene;
+        // Inside the cycle: the written TimeSensor loops, so at 2 s it is
+        // back at the start where animed's hold keeps the last key.
+        for t in [0.0f32, 0.5, 1.0, 1.5, 1.9] {
+            // Each shape's drawn vertices in world space, both sides.
+            let world_points = |sc: &Scene| -> Vec<Vec3> {
+                let p = evaluate(sc, t);
+                let (i, _) = sc
+                    .nodes
+                    .iter()
+                    .enumerate()
+                    .find(|(_, n)| matches!(n.kind, NodeKind::Shape(_)))
+                    .unwrap();
+                let d = p.deformed(NodeId(i as u32)).expect("deformed");
+                if d.world_space {
+                    d.positions.clone()
+                } else {
+                    d.positions
+                        .iter()
+                        .map(|v| p.world[i].transform_point3(*v))
+                        .collect()
+                }
+            };
+            let (a, b) = (world_points(&s), world_points(&r));
+            // The reader drops vertices no face uses, so match by place:
+            // every vertex read back lies on one written (within the export
+            // tolerance, 0.1% of the diagonal, sampled per frame; the blob's
+            // step keys become one-frame ramps, and 0, 1, 2 s are key
+            // times), and the boxes agree.
+            assert!(a.len().abs_diff(b.len()) <= 4, "{} vs {}", a.len(), b.len());
+            let worst = b
+                .iter()
+                .map(|y| {
+                    a.iter()
+                        .map(|x| (*x - *y).length())
+                        .fold(f32::MAX, f32::min)
+                })
+                .fold(0.0, f32::max);
+            assert!(worst < 0.02, "{name} t={t}: worst {worst}");
+            let bx = |v: &[Vec3]| {
+                v.iter()
+                    .fold((Vec3::MAX, Vec3::MIN), |(l, h), p| (l.min(*p), h.max(*p)))
+            };
+            let ((la, ha), (lb, hb)) = (bx(&a), bx(&b));
+            assert!(
+                close(la, lb, 0.02) && close(ha, hb, 0.02),
+                "{name} t={t}: {la} {ha} vs {lb} {hb}"
+            );
+        }
+    }
+}

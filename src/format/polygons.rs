@@ -3,7 +3,7 @@
 //! so that one bad index costs one face (or the colours), not the shape.
 
 use crate::format::lexer::Pos;
-use crate::scene::normals::{mesh_from_polygons_textured, Binding, PolyOptions, TexCoords};
+use crate::scene::normals::{mesh_from_polygons_corners, Binding, PolyOptions, TexCoords};
 use crate::scene::Mesh;
 use glam::{Vec2, Vec3};
 
@@ -53,11 +53,24 @@ pub fn build(
 pub fn build_textured(
     positions: &[Vec3],
     faces: Vec<Vec<u32>>,
+    opts: PolyOptions,
+    texcoords: Option<TexCoords>,
+    pos: Pos,
+    msgs: &mut Vec<(Pos, String)>,
+) -> Option<Mesh> {
+    build_textured_corners(positions, faces, opts, texcoords, pos, msgs).map(|(m, _)| m)
+}
+
+/// [`build_textured`] that also returns the output vertex of every face
+/// corner (see `scene::mesh_from_polygons_corners`).
+pub fn build_textured_corners(
+    positions: &[Vec3],
+    faces: Vec<Vec<u32>>,
     mut opts: PolyOptions,
     mut texcoords: Option<TexCoords>,
     pos: Pos,
     msgs: &mut Vec<(Pos, String)>,
-) -> Option<Mesh> {
+) -> Option<(Mesh, Vec<u32>)> {
     let n_before = faces.iter().filter(|f| !f.is_empty()).count();
     let faces = drop_bad(faces, positions.len());
     let dropped = n_before - faces.iter().filter(|f| !f.is_empty()).count();
@@ -71,7 +84,7 @@ pub fn build_textured(
         ));
     }
     for _ in 0..4 {
-        match mesh_from_polygons_textured(positions, &faces, &opts, texcoords.as_ref()) {
+        match mesh_from_polygons_corners(positions, &faces, &opts, texcoords.as_ref()) {
             Ok(m) => return Some(m),
             Err(e) => {
                 if texcoords.is_some() {

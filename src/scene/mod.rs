@@ -32,7 +32,8 @@ pub use mesh::Mesh;
 pub use morph::{MorphTarget, Morphs};
 pub use node::{Node, NodeKind, RenderStyle, Shape};
 pub use normals::{
-    mesh_from_polygons, mesh_from_polygons_textured, Binding, MeshError, PolyOptions, TexCoords,
+    mesh_from_polygons, mesh_from_polygons_corners, mesh_from_polygons_textured, Binding,
+    MeshError, PolyOptions, TexCoords,
 };
 pub use skin::{InfluenceReport, Skin, SkinId, SkinWeights, MAX_JOINTS};
 pub use text::{FontFamily, Justify, TextKind, TextSpec};

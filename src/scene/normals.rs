@@ -116,6 +116,19 @@ pub fn mesh_from_polygons_textured(
     opts: &PolyOptions,
     texcoords: Option<&TexCoords>,
 ) -> Result<Mesh, MeshError> {
+    mesh_from_polygons_corners(positions, faces, opts, texcoords).map(|(m, _)| m)
+}
+
+/// [`mesh_from_polygons_textured`] that also returns, for every face
+/// corner in order (faces of fewer than 3 corners included), the output
+/// vertex it became: what a morph needs to follow the file's points into
+/// the welded mesh.
+pub fn mesh_from_polygons_corners(
+    positions: &[Vec3],
+    faces: &[Vec<u32>],
+    opts: &PolyOptions,
+    texcoords: Option<&TexCoords>,
+) -> Result<(Mesh, Vec<u32>), MeshError> {
     for (f, face) in faces.iter().enumerate() {
         check_indices(f, face, positions.len(), "coordinate")?;
     }
@@ -147,6 +160,7 @@ pub fn mesh_from_polygons_textured(
     };
     type Key = (u32, [u32; 3], [u32; 3], [u32; 2]);
     let mut welded: HashMap<Key, u32> = HashMap::new();
+    let mut corners: Vec<u32> = Vec::with_capacity(faces.iter().map(Vec::len).sum());
     let mut corner = 0usize;
     for face in faces {
         let n = face.len();
@@ -170,6 +184,7 @@ pub fn mesh_from_polygons_textured(
             });
             out.push(idx);
         }
+        corners.extend_from_slice(&out);
         corner += n;
         if n < 3 {
             continue;
@@ -180,7 +195,7 @@ pub fn mesh_from_polygons_textured(
                 .push(if opts.ccw { t } else { [t[0], t[2], t[1]] });
         }
     }
-    Ok(mesh)
+    Ok((mesh, corners))
 }
 
 /// A line mesh from VRML IndexedLineSet polylines; `colors` is bound per

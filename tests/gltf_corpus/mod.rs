@@ -182,6 +182,88 @@ fn skinned_bunny_golden_at_two_times() {
     golden::check("gltf_bunny_run_t025", &b);
 }
 
+/// Compares `animed sample --bounds` with three.js on `f` for `clips` at
+/// four times inside each clip; returns how many boxes were compared.
+fn compare_bounds(f: &Path, clips: &[usize], npm: &Path) -> usize {
+    let rel = f.display().to_string();
+    let mut compared = 0;
+    let scene = format::load(f).unwrap_or_else(|e| panic!("{e}")).scene;
+    for &clip in clips {
+        let mut s = scene.clone();
+        s.play_clip_index(clip).unwrap();
+        let end = s.duration_seconds();
+        let times: Vec<f32> = [0.0, 0.3, 0.61, 0.95].iter().map(|k| k * end).collect();
+        let list: Vec<String> = times.iter().map(|t| t.to_string()).collect();
+        let ours = std::process::Command::new(env!("CARGO_BIN_EXE_animed"))
+            .args([
+                "sample",
+                f.to_str().unwrap(),
+                "--bounds",
+                "--json",
+                "--animation",
+            ])
+            .arg(clip.to_string())
+            .args(["--times", &list.join(",")])
+            .output()
+            .unwrap();
+        assert!(
+            ours.status.success(),
+            "{}",
+            String::from_utf8_lossy(&ours.stderr)
+        );
+        let ours: serde_json::Value = serde_json::from_slice(&ours.stdout).unwrap();
+        let three = std::process::Command::new("node")
+            .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/gltf/three_bounds.mjs"))
+            .arg(f)
+            .arg(clip.to_string())
+            .arg(list.join(","))
+            .env("NPM_DIR", npm)
+            .output()
+            .unwrap();
+        assert!(
+            three.status.success(),
+            "{}",
+            String::from_utf8_lossy(&three.stderr)
+        );
+        let three: serde_json::Value = serde_json::from_slice(&three.stdout).unwrap();
+        for (i, t) in times.iter().enumerate() {
+            let (a, b) = (
+                boxes_by_name(&ours[i]["meshes"]),
+                boxes_by_name(&three[i]["meshes"]),
+            );
+            assert_eq!(
+                ours[i]["meshes"].as_array().unwrap().len(),
+                three[i]["meshes"].as_array().unwrap().len()
+            );
+            let (lo, hi) = b
+                .values()
+                .fold(([f64::MAX; 3], [f64::MIN; 3]), |(lo, hi), bx| {
+                    (
+                        [0, 1, 2].map(|k| lo[k].min(bx[0][k])),
+                        [0, 1, 2].map(|k| hi[k].max(bx[1][k])),
+                    )
+                });
+            let diag = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt();
+            for (name, bx) in &b {
+                let ours = a
+                    .get(name)
+                    .unwrap_or_else(|| panic!("{rel}: no mesh {name} in animed's output"));
+                for k in 0..2 {
+                    for c in 0..3 {
+                        let d = (ours[k][c] - bx[k][c]).abs();
+                        assert!(
+                            d <= 0.01 * diag,
+                            "{rel} clip {clip} t={t} mesh {name}: animed {ours:?} three.js {bx:?} (diagonal {diag})"
+                        );
+                    }
+                }
+                compared += 1;
+            }
+        }
+    }
+    compared
+}
+
 /// Per-name union of `[{"name","min","max"}]` boxes.
 fn boxes_by_name(meshes: &serde_json::Value) -> std::collections::BTreeMap<String, [[f64; 3]; 2]> {
     let mut out = std::collections::BTreeMap::new();
@@ -227,80 +309,33 @@ fn deformed_bounds_match_three_js() {
     let mut compared = 0;
     for (rel, clips) in cases {
         let f = dir.join("castle-engine-demo-models").join(rel);
-        let scene = format::load(&f).unwrap_or_else(|e| panic!("{e}")).scene;
-        for &clip in clips {
-            let mut s = scene.clone();
-            s.play_clip_index(clip).unwrap();
-            let end = s.duration_seconds();
-            let times: Vec<f32> = [0.0, 0.3, 0.61, 0.95].iter().map(|k| k * end).collect();
-            let list: Vec<String> = times.iter().map(|t| t.to_string()).collect();
-            let ours = std::process::Command::new(env!("CARGO_BIN_EXE_animed"))
-                .args([
-                    "sample",
-                    f.to_str().unwrap(),
-                    "--bounds",
-                    "--json",
-                    "--animation",
-                ])
-                .arg(clip.to_string())
-                .args(["--times", &list.join(",")])
-                .output()
-                .unwrap();
-            assert!(
-                ours.status.success(),
-                "{}",
-                String::from_utf8_lossy(&ours.stderr)
-            );
-            let ours: serde_json::Value = serde_json::from_slice(&ours.stdout).unwrap();
-            let three = std::process::Command::new("node")
-                .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/gltf/three_bounds.mjs"))
-                .arg(&f)
-                .arg(clip.to_string())
-                .arg(list.join(","))
-                .env("NPM_DIR", &npm)
-                .output()
-                .unwrap();
-            assert!(
-                three.status.success(),
-                "{}",
-                String::from_utf8_lossy(&three.stderr)
-            );
-            let three: serde_json::Value = serde_json::from_slice(&three.stdout).unwrap();
-            for (i, t) in times.iter().enumerate() {
-                let (a, b) = (
-                    boxes_by_name(&ours[i]["meshes"]),
-                    boxes_by_name(&three[i]["meshes"]),
-                );
-                assert_eq!(
-                    ours[i]["meshes"].as_array().unwrap().len(),
-                    three[i]["meshes"].as_array().unwrap().len()
-                );
-                let (lo, hi) = b
-                    .values()
-                    .fold(([f64::MAX; 3], [f64::MIN; 3]), |(lo, hi), bx| {
-                        (
-                            [0, 1, 2].map(|k| lo[k].min(bx[0][k])),
-                            [0, 1, 2].map(|k| hi[k].max(bx[1][k])),
-                        )
-                    });
-                let diag = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt();
-                for (name, bx) in &b {
-                    let ours = a
-                        .get(name)
-                        .unwrap_or_else(|| panic!("{rel}: no mesh {name} in animed's output"));
-                    for k in 0..2 {
-                        for c in 0..3 {
-                            let d = (ours[k][c] - bx[k][c]).abs();
-                            assert!(
-                                d <= 0.01 * diag,
-                                "{rel} clip {clip} t={t} mesh {name}: animed {ours:?} three.js {bx:?} (diagonal {diag})"
-                            );
-                        }
-                    }
-                    compared += 1;
-                }
-            }
-        }
+        compared += compare_bounds(&f, clips, &npm);
     }
-    assert!(compared >= 56, "only {compared} boxes compared");
+    // What animed writes (skins, morph targets, weights channels) plays the
+    // same in three.js.
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("deformed_written");
+    std::fs::create_dir_all(&out).unwrap();
+    for (src, clips) in [
+        ("Bunny.gltf", &[3usize, 9][..]),
+        ("monkey_morph.glb", &[0, 1, 2][..]),
+    ] {
+        let written = out.join(format!("{src}.glb"));
+        let st = std::process::Command::new(env!("CARGO_BIN_EXE_animed"))
+            .arg("convert")
+            .arg(
+                Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("tests/data/gltf/corpus")
+                    .join(src),
+            )
+            .arg(&written)
+            .output()
+            .unwrap();
+        assert!(
+            st.status.success(),
+            "{}",
+            String::from_utf8_lossy(&st.stderr)
+        );
+        compared += compare_bounds(&written, clips, &npm);
+    }
+    assert!(compared >= 84, "only {compared} boxes compared");
 }

@@ -166,6 +166,9 @@ fn written(dir: &Path) -> Vec<PathBuf> {
     for (src, stem) in [
         ("assets/demo.wrl", "demo"),
         ("tests/data/gltf/animated.gltf", "animated"),
+        // Skins and morph targets (with weights channels) written by animed.
+        ("tests/data/gltf/corpus/Bunny.gltf", "bunny"),
+        ("tests/data/gltf/corpus/monkey_morph.glb", "monkey"),
     ] {
         for ext in ["gltf", "glb"] {
             let o = dir.join(format!("{stem}.{ext}"));

@@ -455,6 +455,20 @@ pub fn apply(note: &Note, scene: &mut Scene) -> Result<(), String> {
                     .ok_or_else(|| format!("no material named `{}` in the scene", t.name))?,
             ),
         };
+        // Weights keyed for targets the file no longer has as such (a .wrl
+        // plays a morph as a CoordinateInterpolator, read back with one
+        // target per key): keep the reader's track, which plays the file.
+        if t.property == Property::MorphWeights && !weights_fit(scene, of, &t.keys) {
+            tracks.extend(
+                scene
+                    .animation
+                    .tracks
+                    .iter()
+                    .filter(|k| k.target.of == of && k.target.property == t.property)
+                    .cloned(),
+            );
+            continue;
+        }
         tracks.push(Track {
             target: Target {
                 of,
@@ -463,6 +477,16 @@ pub fn apply(note: &Note, scene: &mut Scene) -> Result<(), String> {
             repeat: t.repeat,
             keys: t.keys.clone(),
         });
+    }
+    // Morph weights the reader made from the file (a .wrl's
+    // CoordinateInterpolator) that the note does not key: the only record of
+    // a deformation (a skin's, say) that the file plays.
+    for t in &scene.animation.tracks {
+        if t.target.property == Property::MorphWeights
+            && !tracks.iter().any(|k| k.target == t.target)
+        {
+            tracks.push(t.clone());
+        }
     }
     let mut hidden = Vec::new();
     for name in &note.hidden {
@@ -495,6 +519,27 @@ pub fn apply(note: &Note, scene: &mut Scene) -> Result<(), String> {
     }
     scene.animation.tracks = tracks;
     Ok(())
+}
+
+/// Whether weights keys have one number per morph target of the shape
+/// (or of each morphed child shape of a group).
+fn weights_fit(scene: &Scene, of: TargetRef, keys: &Keys) -> bool {
+    let TargetRef::Node(id) = of else {
+        return false;
+    };
+    let Keys::Weights(k) = keys else {
+        return false;
+    };
+    let count = |id: crate::scene::NodeId| match &scene.node(id).kind {
+        NodeKind::Shape(s) => scene
+            .meshes
+            .get(s.mesh.0 as usize)
+            .and_then(|m| m.morph.as_ref())
+            .map(|m| m.len()),
+        _ => None,
+    };
+    let n = count(id).or_else(|| scene.node(id).children.iter().find_map(|&c| count(c)));
+    n.is_some_and(|n| k.iter().all(|k| k.value.len() == n))
 }
 
 /// The post-load hook: if the scene's info holds an animed key note, take

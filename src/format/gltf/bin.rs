@@ -90,6 +90,22 @@ impl Bin {
         self.accessors.len() - 1
     }
 
+    /// Unsigned-short VEC4 vertex attribute (JOINTS_0).
+    pub fn joints(&mut self, data: &[[u16; 4]]) -> usize {
+        let mut bytes = Vec::with_capacity(data.len() * 8);
+        for j in data.iter().flatten() {
+            bytes.extend_from_slice(&j.to_le_bytes());
+        }
+        let view = self.view(&bytes, Some(34962));
+        self.accessors.push(json!({
+            "bufferView": view,
+            "componentType": 5123,
+            "count": data.len(),
+            "type": "VEC4",
+        }));
+        self.accessors.len() - 1
+    }
+
     /// Unsigned-int index accessor (element array buffer).
     pub fn indices(&mut self, data: &[u32]) -> usize {
         let mut bytes = Vec::with_capacity(data.len() * 4);

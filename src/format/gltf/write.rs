@@ -73,6 +73,86 @@ fn node_names(scene: &Scene) -> Vec<String> {
     names
 }
 
+/// A mesh's morph targets as glTF `targets` (POSITION and NORMAL deltas).
+fn morph_targets(mesh: &crate::scene::Mesh, bin: &mut Bin) -> Option<Json> {
+    let m = mesh.morph.as_deref()?;
+    let flat = |v: &[Vec3]| -> Vec<f32> { v.iter().flat_map(|p| p.to_array()).collect() };
+    Some(Json::Array(
+        m.targets()
+            .iter()
+            .map(|t| {
+                let mut o =
+                    json!({ "POSITION": bin.floats(&flat(t.positions()), 3, true, Some(34962)) });
+                if !t.normals().is_empty() && !mesh.normals.is_empty() {
+                    o["NORMAL"] = json!(bin.floats(&flat(t.normals()), 3, false, Some(34962)));
+                }
+                o
+            })
+            .collect(),
+    ))
+}
+
+/// glTF skins for the skinned shapes written (`(scene node, scene skin)`),
+/// one per scene skin, and each shape node's `skin`. A skin whose joints
+/// were not all written is left out (the shape is then drawn unskinned).
+fn write_skins(
+    scene: &Scene,
+    skinned: &[(usize, usize)],
+    slots: &NodeSlots,
+    nodes: &mut [Json],
+    bin: &mut Bin,
+) -> Vec<Json> {
+    let mut out = Vec::new();
+    let mut made: BTreeMap<usize, usize> = BTreeMap::new();
+    for &(node, k) in skinned {
+        let Some(skin) = scene.skins.get(k) else {
+            continue;
+        };
+        let gi = match made.get(&k) {
+            Some(&g) => g,
+            None => {
+                let joints: Option<Vec<usize>> = skin
+                    .joints()
+                    .iter()
+                    .map(|j| slots.node.get(j.0 as usize).copied().flatten())
+                    .collect();
+                let Some(joints) = joints else { continue };
+                let ibm: Vec<f32> = skin
+                    .inverse_bind()
+                    .iter()
+                    .flat_map(|m| m.to_cols_array())
+                    .collect();
+                let mut sj = json!({
+                    "joints": joints,
+                    "inverseBindMatrices": bin.floats(&ibm, 16, false, None),
+                });
+                if !skin.name.is_empty() {
+                    sj["name"] = json!(skin.name);
+                }
+                if let Some(root) = skin
+                    .skeleton
+                    .and_then(|r| slots.node.get(r.0 as usize).copied().flatten())
+                {
+                    sj["skeleton"] = json!(root);
+                }
+                out.push(sj);
+                made.insert(k, out.len() - 1);
+                out.len() - 1
+            }
+        };
+        if let Some(Json::Object(o)) = slots
+            .node
+            .get(node)
+            .copied()
+            .flatten()
+            .and_then(|g| nodes.get_mut(g))
+        {
+            o.insert("skin".into(), json!(gi));
+        }
+    }
+    out
+}
+
 fn is_trs(t: &Transform) -> bool {
     t.center == Vec3::ZERO && t.scale_orientation == Quat::IDENTITY && t.extra.is_none()
 }
@@ -195,6 +275,15 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
         node: vec![None; n],
         part: vec![None; n],
         matrix: vec![false; n],
+        morphed: (0..n)
+            .map(|i| match &scene.nodes[i].kind {
+                NodeKind::Shape(s) => scene
+                    .meshes
+                    .get(s.mesh.0 as usize)
+                    .is_some_and(|m| m.morph.is_some()),
+                _ => false,
+            })
+            .collect(),
     };
     let mut next = 0usize;
     for id in &order {
@@ -220,6 +309,9 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     // mesh made from it.
     let mut attr_cache: BTreeMap<u32, Json> = BTreeMap::new();
     let mut index_cache: BTreeMap<u32, Vec<(usize, u32)>> = BTreeMap::new();
+    let mut target_cache: BTreeMap<u32, Option<Json>> = BTreeMap::new();
+    // (scene node, scene skin) of every skinned shape written.
+    let mut skinned: Vec<(usize, usize)> = Vec::new();
 
     for id in &order {
         let i = id.0 as usize;
@@ -273,6 +365,15 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                         mesh.normals.iter().flat_map(|p| p.to_array()).collect();
                                     a["NORMAL"] = json!(bin.floats(&f, 3, false, Some(34962)));
                                 }
+                                if let Some(sw) = mesh.skin_weights.as_deref() {
+                                    if sw.len() == mesh.positions.len() {
+                                        a["JOINTS_0"] = json!(bin.joints(sw.joints()));
+                                        let f: Vec<f32> =
+                                            sw.weights().iter().flatten().copied().collect();
+                                        a["WEIGHTS_0"] =
+                                            json!(bin.floats(&f, 4, false, Some(34962)));
+                                    }
+                                }
                                 if colored && mesh.colors.len() == mesh.positions.len() {
                                     let f: Vec<f32> = mesh
                                         .colors
@@ -293,15 +394,23 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                 .map(|(data, mode)| (bin.indices(&data), mode))
                                 .collect()
                         });
+                        let targets = target_cache
+                            .entry(sh.mesh.0)
+                            .or_insert_with(|| morph_targets(mesh, &mut bin))
+                            .clone();
                         let prims: Vec<Json> = indexed
                             .iter()
                             .map(|&(idx, mode)| {
-                                json!({
+                                let mut p = json!({
                                     "attributes": attrs.clone(),
                                     "indices": idx,
                                     "material": mat,
                                     "mode": mode,
-                                })
+                                });
+                                if let Some(t) = &targets {
+                                    p["targets"] = t.clone();
+                                }
+                                p
                             })
                             .collect();
                         if prims.is_empty() {
@@ -311,12 +420,21 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                         if !mesh.name.is_empty() {
                             mj["name"] = json!(mesh.name);
                         }
+                        if let Some(m) = mesh.morph.as_deref() {
+                            mj["weights"] = nums(m.default_weights());
+                            let names: Vec<&str> =
+                                m.targets().iter().map(|t| t.name.as_str()).collect();
+                            mj["extras"] = json!({ "targetNames": names });
+                        }
                         meshes.push(mj);
                         mesh_cache.insert((sh.mesh.0, sh.material.0), meshes.len() - 1);
                         meshes.len() - 1
                     }
                 };
                 content.insert("mesh".into(), json!(m));
+                if let Some(k) = node.skin {
+                    skinned.push((i, k.0 as usize));
+                }
             }
             NodeKind::Light(l) => {
                 let p = punctual_from_light(l, reference);
@@ -410,6 +528,8 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
         }
     }
 
+    let skins = write_skins(scene, &skinned, &slots, &mut nodes, &mut bin);
+
     let tol = Tolerances::new(scene_diagonal(scene), opts.tolerance, opts.angle_tolerance);
     let clips = scene.clip_refs();
     let anims = animations(scene, &clips, &slots, &names, &tol, &mut bin, &mut report);
@@ -468,6 +588,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     };
     put(&mut doc, "nodes", nodes);
     put(&mut doc, "meshes", meshes);
+    put(&mut doc, "skins", skins);
     put(&mut doc, "materials", materials);
     put(&mut doc, "cameras", cameras);
     put(&mut doc, "animations", anims);

@@ -16,7 +16,7 @@
 use super::bin::Bin;
 use crate::anim::hermite::{kb_in, kb_out, Tcb};
 use crate::anim::repeat::{after, before};
-use crate::anim::{Interp, Key, Keys, Property, Repeat, TargetRef, Track, Value};
+use crate::anim::{Interp, Key, Keys, Property, Repeat, TargetRef, Track, Value, Weights};
 use crate::format::export::channels::{channels, Channel};
 use crate::format::export::sampling::{per_frame_keys, Tolerances};
 use crate::format::export::{ChannelReport, WriteReport};
@@ -32,6 +32,9 @@ pub struct NodeSlots {
     pub part: Vec<Option<usize>>,
     /// The node is written as a matrix (its TRS cannot be animated).
     pub matrix: Vec<bool>,
+    /// The node is a shape whose mesh has morph targets (its `weights`
+    /// can be animated).
+    pub morphed: Vec<bool>,
 }
 
 fn tcb<V>(k: &Key<V>) -> Tcb {
@@ -62,6 +65,9 @@ fn slot(slots: &NodeSlots, of: TargetRef, p: Property) -> Option<(usize, &'stati
             Some((slots.part.get(i).copied()??, "translation"))
         }
         Property::CameraOrientation => Some((slots.part.get(i).copied()??, "rotation")),
+        Property::MorphWeights if *slots.morphed.get(i)? => {
+            Some((slots.node.get(i).copied()??, "weights"))
+        }
         _ => None,
     }
 }
@@ -148,6 +154,10 @@ fn exact(track: &Track, fps: f32) -> Option<Written> {
                 keys: k.len(),
             })
         }
+        Keys::Weights(k) if no_ease(k) && k.first()?.frame >= 0.0 => {
+            let width = k.iter().map(|k| k.value.len()).max()?;
+            exact_weights(k, width, fps)
+        }
         Keys::Rotation(k) if no_ease(k) && k.first()?.frame >= 0.0 => {
             let segs = &k[..k.len() - 1];
             let interp = if segs.iter().all(|k| k.interp == Interp::Linear) {
@@ -169,6 +179,73 @@ fn exact(track: &Track, fps: f32) -> Option<Written> {
         }
         _ => None,
     }
+}
+
+/// Weights keys as STEP, LINEAR or CUBICSPLINE (Kochanek-Bartels tangents
+/// per component, as for vectors above), `width` numbers per value.
+fn exact_weights(k: &[Key<Weights>], width: usize, fps: f32) -> Option<Written> {
+    let sec = |f: f32| f / fps;
+    let segs = &k[..k.len() - 1];
+    let times: Vec<f32> = k.iter().map(|k| sec(k.frame)).collect();
+    let flat = |v: &mut Vec<f32>, w: &Weights| {
+        let s = w.as_slice();
+        v.extend((0..width).map(|c| s.get(c).copied().unwrap_or(0.0)));
+    };
+    let all = |i: Interp| segs.iter().all(|k| k.interp == i);
+    if all(Interp::Step) && k.len() > 1 || all(Interp::Linear) {
+        let mut values = Vec::with_capacity(k.len() * width);
+        k.iter().for_each(|k| flat(&mut values, &k.value));
+        return Some(Written {
+            times,
+            values,
+            width,
+            interp: if all(Interp::Linear) {
+                "LINEAR"
+            } else {
+                "STEP"
+            },
+            keys: k.len(),
+        });
+    }
+    if segs.iter().any(|k| k.interp == Interp::Step) {
+        return None;
+    }
+    let zero = Weights::zeros(width);
+    let mut tin = vec![zero; k.len()];
+    let mut tout = vec![zero; k.len()];
+    for i in 0..segs.len() {
+        let (k0, k1) = (&k[i], &k[i + 1]);
+        let chord = k1.value - k0.value;
+        let len = k1.frame - k0.frame;
+        let (m0, m1) = if k0.interp == Interp::Linear {
+            (chord, chord)
+        } else {
+            let prev =
+                before(k, i, Repeat::Constant).map(|(j, f)| (k0.value - k[j].value, k0.frame - f));
+            let next = after(k, i + 1, Repeat::Constant)
+                .map(|(j, f)| (k[j].value - k1.value, f - k1.frame));
+            (
+                kb_out(prev, (chord, len), tcb(k0)),
+                kb_in((chord, len), next, tcb(k1)),
+            )
+        };
+        let dt = sec(len);
+        tout[i] = m0 * (1.0 / dt);
+        tin[i + 1] = m1 * (1.0 / dt);
+    }
+    let mut values = Vec::with_capacity(k.len() * 3 * width);
+    for (i, key) in k.iter().enumerate() {
+        flat(&mut values, &tin[i]);
+        flat(&mut values, &key.value);
+        flat(&mut values, &tout[i]);
+    }
+    Some(Written {
+        times,
+        values,
+        width,
+        interp: "CUBICSPLINE",
+        keys: k.len(),
+    })
 }
 
 /// A sampled channel as LINEAR keys; jumps (two samples at one time) get
@@ -193,10 +270,15 @@ fn sampled(ch: &Channel, fps: f32, rotation: bool) -> Written {
             Value::Vec3(v) => values.extend_from_slice(&v.to_array()),
             Value::Rotation(q) => values.extend_from_slice(&q.to_array()),
             Value::Scalar(s) => values.extend_from_slice(&[s, s, s]),
-            Value::Bool(_) | Value::Weights(_) => values.extend_from_slice(&[0.0, 0.0, 0.0]),
+            Value::Weights(w) => values.extend_from_slice(w.as_slice()),
+            Value::Bool(_) => values.extend_from_slice(&[0.0, 0.0, 0.0]),
         }
     }
-    let width = if rotation { 4 } else { 3 };
+    let width = match ch.samples.first() {
+        Some((_, Value::Weights(w))) => w.len().max(1),
+        _ if rotation => 4,
+        _ => 3,
+    };
     Written {
         keys: times.len(),
         times,
@@ -283,7 +365,9 @@ pub fn animations(
                 per_frame_keys: per_frame_keys(clip.duration),
             });
             let input = bin.floats(&w.times, 1, true, None);
-            let output = bin.floats(&w.values, w.width, false, None);
+            // Weights outputs are SCALAR (N per key), others one element per key.
+            let elem = if path == "weights" { 1 } else { w.width };
+            let output = bin.floats(&w.values, elem, false, None);
             samplers.push(json!({
                 "input": input,
                 "output": output,

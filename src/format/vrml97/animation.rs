@@ -7,10 +7,13 @@
 //! (VRML97 §6.10), so each colour segment is subdivided with HSV-blended keys.
 
 use super::build::Builder;
-use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
+use super::geometry;
+use crate::anim::{
+    Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Weights, MAX_MORPH_TARGETS,
+};
 use crate::format::hsv::{hsv_to_rgb, lerp_hsv, rgb_to_hsv};
 use crate::format::syntax::{AstNode, NodeRef, Route};
-use crate::scene::{NodeKind, Settings};
+use crate::scene::{NodeId, NodeKind, Settings};
 use glam::{Quat, Vec3};
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -156,6 +159,8 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
         property: Property,
     }
     let mut pending: Vec<Pending> = Vec::new();
+    // CoordinateInterpolators: (interpolator, clock, Coordinate node).
+    let mut coord_pending: Vec<(NodeRef, Clock, *const AstNode)> = Vec::new();
     for r in routes {
         let mut sources = Vec::new();
         resolve(&r.from, &r.from_field, &mut sources, 0);
@@ -188,15 +193,31 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             );
             continue;
         }
-        if matches!(
-            interp.kind.as_str(),
-            "CoordinateInterpolator" | "NormalInterpolator"
-        ) {
-            let msg = format!(
-                "{} (vertex morphing) is not held by the scene model; not imported",
-                interp.kind
+        if interp.kind == "NormalInterpolator" {
+            b.warn_once(
+                "NormalInterpolator",
+                interp.pos,
+                "NormalInterpolator is not imported: the normals of a shape morphed by a \
+                 CoordinateInterpolator are recomputed at every key instead",
             );
-            b.warn_once(&interp.kind.clone(), interp.pos, &msg);
+            continue;
+        }
+        if interp.kind == "CoordinateInterpolator" {
+            let mut targets = Vec::new();
+            resolve(&r.to, &r.to_field, &mut targets, 0);
+            for (t, f) in targets {
+                let t = t.effective();
+                if t.kind == "Coordinate" && field_name(&f) == "point" {
+                    coord_pending.push((interp.clone(), c, Rc::as_ptr(&t)));
+                } else {
+                    let msg = format!(
+                        "animating {}.{} is not supported; not imported",
+                        t.kind,
+                        field_name(&f)
+                    );
+                    b.warn_once(&msg.clone(), r.pos, &msg);
+                }
+            }
             continue;
         }
         let mut targets = Vec::new();
@@ -254,16 +275,20 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             }
         }
     }
-    if pending.is_empty() {
+    if pending.is_empty() && coord_pending.is_empty() {
         return;
     }
     // One frame rate for the whole file.
     let mut seconds = Vec::new();
-    for p in &pending {
-        if let Some(keys) = p.interp.nums("key") {
-            seconds.extend(keys.iter().map(|k| p.clock.start + k * p.clock.cycle));
+    let clocks = pending
+        .iter()
+        .map(|p| (&p.interp, p.clock))
+        .chain(coord_pending.iter().map(|(i, c, _)| (i, *c)));
+    for (interp, clock) in clocks.clone() {
+        if let Some(keys) = interp.nums("key") {
+            seconds.extend(keys.iter().map(|k| clock.start + k * clock.cycle));
         }
-        seconds.push(p.clock.start + p.clock.cycle);
+        seconds.push(clock.start + clock.cycle);
     }
     // Tracks grafted from Inline files already use the current frame rate.
     let fps = if b.scene.animation.tracks.is_empty() {
@@ -275,9 +300,8 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
         fps,
         ..b.scene.settings.clone()
     };
-    let end = pending
-        .iter()
-        .map(|p| (p.clock.start + p.clock.cycle) * fps as f64)
+    let end = clocks
+        .map(|(_, c)| (c.start + c.cycle) * fps as f64)
         .fold(0.0f64, f64::max);
     settings.duration = if b.scene.animation.tracks.is_empty() {
         end as f32
@@ -325,6 +349,117 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                 }
             }
             Err(msg) => b.warn(p.interp.pos, &msg),
+        }
+    }
+    for (interp, c, coord) in coord_pending {
+        import_coordinates(b, &interp, c, coord, fps);
+    }
+}
+
+/// A CoordinateInterpolator as morph targets plus a weights track.
+///
+/// Why targets (and not a per-key vertex track): key i's point set becomes
+/// target i (its offsets from the Coordinate's points) and the weights are
+/// one-hot at each key with linear keys in between, so between keys i and
+/// i+1 the mesh is B + (1−s)(Kᵢ−B) + s(Kᵢ₊₁−B) = (1−s)Kᵢ + sKᵢ₊₁: exactly
+/// the spec's linear interpolation of keyValue. It needs nothing beyond the
+/// morph model glTF also uses (keys, the key note, the editor and every
+/// writer treat it as any weights track), and evaluation touches only the
+/// two targets with non-zero weights. The cost: at most
+/// [`MAX_MORPH_TARGETS`] keys per interpolator.
+fn import_coordinates(
+    b: &mut Builder,
+    interp: &NodeRef,
+    c: Clock,
+    coord: *const AstNode,
+    fps: f32,
+) {
+    let fractions: Vec<f64> = interp.nums("key").unwrap_or(&[]).to_vec();
+    let kv = interp.nums("keyValue").unwrap_or(&[]);
+    let n = fractions.len();
+    let users = b.coord_users.get(&coord).cloned().unwrap_or_default();
+    if users.is_empty() {
+        b.warn(
+            interp.pos,
+            "CoordinateInterpolator drives a Coordinate no IndexedFaceSet uses; not imported",
+        );
+        return;
+    }
+    if n == 0 || !kv.len().is_multiple_of(3 * n) {
+        b.warn(
+            interp.pos,
+            "CoordinateInterpolator keyValue is not one point set per key; not imported",
+        );
+        return;
+    }
+    if n > MAX_MORPH_TARGETS {
+        let msg = format!(
+            "CoordinateInterpolator has {n} keys; animed holds at most {MAX_MORPH_TARGETS} per mesh; not imported"
+        );
+        b.warn(interp.pos, &msg);
+        return;
+    }
+    if fractions
+        .windows(2)
+        .any(|w| w[1] < w[0] || !w[0].is_finite() || !w[1].is_finite())
+    {
+        b.warn(
+            interp.pos,
+            "interpolator keys are not in ascending order; not imported",
+        );
+        return;
+    }
+    let per = kv.len() / n;
+    let keys: Vec<Vec<Vec3>> = kv
+        .chunks_exact(per)
+        .map(|k| {
+            k.chunks_exact(3)
+                .map(|p| Vec3::new(p[0] as f32, p[1] as f32, p[2] as f32))
+                .collect()
+        })
+        .collect();
+    let onehot: Vec<Weights> = (0..n)
+        .map(|i| {
+            let mut w = Weights::zeros(n);
+            w.as_mut_slice()[i] = 1.0;
+            w
+        })
+        .collect();
+    let frame = |k: f64| ((c.start + k * c.cycle) * fps as f64) as f32;
+    let repeat = if c.looping {
+        Repeat::Loop
+    } else {
+        Repeat::Constant
+    };
+    for (geom, textured, mesh) in users {
+        match geometry::ifs_morph(&geom, textured, &keys) {
+            Ok(m) => b.scene.meshes[mesh.0 as usize].morph = Some(Box::new(m)),
+            Err(e) => {
+                let msg = format!("CoordinateInterpolator not imported: {e}");
+                b.warn(interp.pos, &msg);
+                continue;
+            }
+        }
+        let shapes: Vec<NodeId> = (0..b.scene.nodes.len())
+            .map(|i| NodeId(i as u32))
+            .filter(|&id| matches!(&b.scene.node(id).kind, NodeKind::Shape(s) if s.mesh == mesh))
+            .collect();
+        for id in shapes {
+            let target = Target {
+                of: TargetRef::Node(id),
+                property: Property::MorphWeights,
+            };
+            match Track::new(
+                target,
+                repeat,
+                Keys::Weights(keyed(&fractions, &onehot, frame)),
+            ) {
+                Ok(t) => b.scene.animation.tracks.push(t),
+                Err(e) => {
+                    let msg = format!("CoordinateInterpolator not imported: {e}");
+                    b.warn(interp.pos, &msg);
+                }
+            }
         }
     }
 }

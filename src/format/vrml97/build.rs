@@ -54,6 +54,9 @@ pub struct Builder {
     pub(super) loader: textures::Loader,
     /// Meshes per geometry node, with and without texture coordinates.
     meshes: HashMap<(*const AstNode, bool), Option<MeshId>>,
+    /// IndexedFaceSets (and whether textured, and their mesh) per
+    /// Coordinate node: what a CoordinateInterpolator on it morphs.
+    pub(super) coord_users: HashMap<*const AstNode, Vec<(NodeRef, bool, MeshId)>>,
     unlit: Option<MaterialId>,
     default_material: Option<MaterialId>,
     warned: HashSet<String>,
@@ -83,6 +86,7 @@ impl Builder {
             texture_images: HashMap::new(),
             loader: textures::Loader::new(path),
             meshes: HashMap::new(),
+            coord_users: HashMap::new(),
             unlit: None,
             default_material: None,
             warned: HashSet::new(),
@@ -369,6 +373,14 @@ impl Builder {
                     self.warn_once(&key, pos, &msg);
                 }
                 self.meshes.insert((Rc::as_ptr(&geom), textured), m);
+                if let (Some(id), true) = (m, geom.kind == "IndexedFaceSet") {
+                    if let Some(coord) = geom.node("coord").map(|c| c.effective()) {
+                        self.coord_users
+                            .entry(Rc::as_ptr(&coord))
+                            .or_default()
+                            .push((geom.clone(), textured, id));
+                    }
+                }
                 m
             }
         };

@@ -15,7 +15,7 @@ use crate::format::syntax::AstNode;
 use crate::scene::normals::{
     mesh_from_points, mesh_from_polylines, Binding, PolyOptions, TexCoords,
 };
-use crate::scene::Mesh;
+use crate::scene::{Mesh, MorphTarget, Morphs};
 use glam::{Quat, Vec2, Vec3};
 
 type Msgs = Vec<(Pos, String)>;
@@ -109,6 +109,17 @@ fn texcoord_values(g: &AstNode) -> Option<Vec<Vec2>> {
 
 fn indexed_face_set(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     let positions = sub_values(g, "coord", "point").unwrap_or_default();
+    let (faces, opts, texcoords) = ifs_parts(g, textured, &positions);
+    polygons::build_textured(&positions, faces, opts, texcoords, g.pos, msgs)
+}
+
+/// An IndexedFaceSet's faces, options and texture coordinates (the
+/// default mapping from `positions`' bounding box when it has none).
+fn ifs_parts(
+    g: &AstNode,
+    textured: bool,
+    positions: &[Vec3],
+) -> (Vec<Vec<u32>>, PolyOptions, Option<TexCoords>) {
     let faces = split_index(&indices(g, "coordIndex"));
     let opts = PolyOptions {
         ccw: g.bool("ccw", true),
@@ -135,11 +146,77 @@ fn indexed_face_set(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh
             }
         }
         None => TexCoords {
-            values: bbox_texcoords(&positions),
+            values: bbox_texcoords(positions),
             index: None,
         },
     });
-    polygons::build_textured(&positions, faces, opts, texcoords, g.pos, msgs)
+    (faces, opts, texcoords)
+}
+
+/// Morph targets that make an IndexedFaceSet's mesh (as `mesh` builds it)
+/// take the point sets `keys` (each one point per `coord` point, as a
+/// CoordinateInterpolator's keyValue holds them): target i moves every
+/// vertex from its base point to key i's point, and its normal to the one
+/// the same polygons get at key i (normals are recomputed, as VRML
+/// browsers do when coordinates change, unless the node gives its own).
+pub fn ifs_morph(g: &AstNode, textured: bool, keys: &[Vec<Vec3>]) -> Result<Morphs, String> {
+    let base_points = sub_values(g, "coord", "point").unwrap_or_default();
+    let mut msgs = Vec::new();
+    let (faces, opts, texcoords) = ifs_parts(g, textured, &base_points);
+    let (base, corners) = polygons::build_textured_corners(
+        &base_points,
+        faces.clone(),
+        opts.clone(),
+        texcoords.clone(),
+        g.pos,
+        &mut msgs,
+    )
+    .ok_or("the IndexedFaceSet has no mesh")?;
+    // The first corner of each output vertex.
+    let mut first = vec![usize::MAX; base.positions.len()];
+    for (c, &v) in corners.iter().enumerate() {
+        if let Some(f) = first.get_mut(v as usize) {
+            if *f == usize::MAX {
+                *f = c;
+            }
+        }
+    }
+    let mut targets = Vec::with_capacity(keys.len());
+    for (i, points) in keys.iter().enumerate() {
+        if points.len() != base_points.len() {
+            return Err(format!(
+                "key {i} has {} points for the {} of the Coordinate",
+                points.len(),
+                base_points.len()
+            ));
+        }
+        let (m, kc) = polygons::build_textured_corners(
+            points,
+            faces.clone(),
+            opts.clone(),
+            texcoords.clone(),
+            g.pos,
+            &mut msgs,
+        )
+        .ok_or(format!("key {i} makes no mesh"))?;
+        if kc.len() != corners.len() {
+            return Err(format!("key {i} makes a different mesh"));
+        }
+        let at = |v: usize| first[v].min(kc.len().saturating_sub(1));
+        let dp = (0..base.positions.len())
+            .map(|v| m.positions[kc[at(v)] as usize] - base.positions[v])
+            .collect();
+        let dn =
+            if base.normals.len() == base.positions.len() && m.normals.len() == m.positions.len() {
+                (0..base.normals.len())
+                    .map(|v| m.normals[kc[at(v)] as usize] - base.normals[v])
+                    .collect()
+            } else {
+                Vec::new()
+            };
+        targets.push(MorphTarget::new(format!("key_{i}"), dp, dn));
+    }
+    Morphs::new(base.positions.len(), targets, Vec::new()).map_err(|e| e.to_string())
 }
 
 fn indexed_line_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {

@@ -8,6 +8,7 @@ mod build;
 mod geometry;
 mod text;
 pub mod write;
+mod write_morph;
 mod write_text;
 
 use super::lexer::Pos;

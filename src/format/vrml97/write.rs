@@ -11,9 +11,13 @@
 //!   key fractions are `frame / duration`.
 //! * Interpolators are sampled adaptively (`sampling`), visibility and light
 //!   `on` are folded into scale and intensity (`export::channels`).
+//! * Morphed and skinned shapes: their Coordinate and Normal are DEF'd and
+//!   driven by a CoordinateInterpolator and a NormalInterpolator sampled
+//!   from the poses (`write_morph`), so the deformation plays elsewhere.
 //! * Not in VRML97, so kept only in the key note: spot `dropOffRate`,
 //!   render styles, orthographic cameras (written as a Viewpoint).
 
+use super::write_morph::{self, Deforming};
 use crate::anim::{Property, TargetRef, Value};
 use crate::format::export::channels::{channels, scene_diagonal, Channel};
 use crate::format::export::keynote;
@@ -38,6 +42,9 @@ struct Writer<'a> {
     /// Raw matrices that lost shear when written: how many, and the path
     /// of the first (warned once at the end, not once per node).
     lossy_matrices: (usize, Option<String>),
+    /// Deforming shapes and the DEF names of their Coordinate and Normal,
+    /// by mesh index.
+    deforming: Vec<(Deforming, String, String)>,
 }
 
 /// Prints `scene` as a VRML97 file.
@@ -50,7 +57,21 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         written_meshes: vec![false; scene.meshes.len()],
         report: WriteReport::default(),
         lossy_matrices: (0, None),
+        deforming: Vec::new(),
     };
+    let (deforming, warnings) = write_morph::deforming(scene);
+    w.report.warnings.extend(warnings);
+    for d in deforming {
+        let base = scene.node(d.node).name.clone();
+        let base = if base.is_empty() {
+            format!("shape{}", d.node.0)
+        } else {
+            base
+        };
+        let coord = w.plan.internal(&format!("{base}_coord"));
+        let normal = w.plan.internal(&format!("{base}_normal"));
+        w.deforming.push((d, coord, normal));
+    }
     w.out.line("#VRML V2.0 utf8");
     w.out
         .line("# Written by animed. The animation plays from one looping TimeSensor");
@@ -437,9 +458,25 @@ impl Writer<'_> {
         if !mesh.solid {
             self.out.line("solid FALSE");
         }
-        self.coords(&mesh.positions);
+        let morph = self
+            .deforming
+            .iter()
+            .find(|(d, _, _)| d.mesh.0 as usize == mi)
+            .map(|(_, c, n)| (c.clone(), n.clone()));
+        match &morph {
+            Some((c, _)) => {
+                self.out.open(&format!("coord DEF {c} Coordinate"));
+                self.out
+                    .list("point", rows(&mesh.positions, 4, |v| vec3(*v), ","));
+                self.out.close("}");
+            }
+            None => self.coords(&mesh.positions),
+        }
         if !mesh.normals.is_empty() && mesh.normals.len() == mesh.positions.len() {
-            self.out.open("normal Normal");
+            match &morph {
+                Some((_, n)) => self.out.open(&format!("normal DEF {n} Normal")),
+                None => self.out.open("normal Normal"),
+            }
             self.out
                 .list("vector", rows(&mesh.normals, 4, |v| vec3(*v), ","));
             self.out.close("}");
@@ -588,7 +625,7 @@ impl Writer<'_> {
         }
         let tol = Tolerances::new(scene_diagonal(scene), opts.tolerance, opts.angle_tolerance);
         let chans = channels(scene, &tol);
-        if chans.is_empty() {
+        if chans.is_empty() && self.deforming.is_empty() {
             return;
         }
         if !(duration > 0.0 && fps > 0.0) {
@@ -669,6 +706,37 @@ impl Writer<'_> {
                 per_frame_keys: per_frame_keys(duration),
             });
         }
+        for (d, coord, normal) in self.deforming.clone() {
+            let s = write_morph::sample(scene, d, tol.distance);
+            let keys: Vec<f32> = s.frames.iter().map(|f| f / duration).collect();
+            let base = coord.trim_end_matches("_coord").to_string();
+            for (kind, values, target, field) in [
+                ("CoordinateInterpolator", &s.positions, &coord, "point"),
+                ("NormalInterpolator", &s.normals, &normal, "vector"),
+            ] {
+                if values.iter().any(|v| v.is_empty()) {
+                    continue;
+                }
+                let interp = self.plan.internal(&format!("{base}_{field}_morph"));
+                self.out.open(&format!("DEF {interp} {kind}"));
+                self.out.list("key", rows(&keys, 8, |k| num(*k), ","));
+                let flat: Vec<Vec3> = values.iter().flatten().copied().collect();
+                self.out.list("keyValue", rows(&flat, 4, |v| vec3(*v), ","));
+                self.out.close("}");
+                routes.push(format!(
+                    "ROUTE {clock}.fraction_changed TO {interp}.set_fraction"
+                ));
+                routes.push(format!(
+                    "ROUTE {interp}.value_changed TO {target}.set_{field}"
+                ));
+            }
+            self.report.channels.push(ChannelReport {
+                name: format!("{coord}.point"),
+                authored_keys: s.candidates,
+                written_keys: s.frames.len(),
+                per_frame_keys: per_frame_keys(duration),
+            });
+        }
         for r in routes {
             self.out.line(&r);
         }
@@ -731,7 +799,8 @@ impl Writer<'_> {
             Property::Shininess => Some("shininess"),
             _ => None,
         };
-        if f.is_none() {
+        // Morph weights play through the CoordinateInterpolator instead.
+        if f.is_none() && ch.property != Property::MorphWeights {
             let who = self
                 .plan
                 .target_name(ch.of, ch.property)
