@@ -144,7 +144,10 @@ fn xml_errors_have_positions() {
     // roxmltree places a mismatched end tag at its '<'.
     assert_eq!(
         e,
-        format!("{}:5:1: XML: expected 'Shape' tag, not 'Scene'", p.display())
+        format!(
+            "{}:5:1: XML: expected 'Shape' tag, not 'Scene'",
+            p.display()
+        )
     );
     let e = format::load_bytes(b"<?xml version='1.0'?><Foo/>", &p)
         .unwrap_err()
