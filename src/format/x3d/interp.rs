@@ -112,7 +112,11 @@ impl Curve {
             _ => 3,
         };
         let count = keys.len().min(kv.len() / width);
-        if count == 0 || keys[..count].windows(2).any(|w| !(w[1] >= w[0])) {
+        if count == 0
+            || keys[..count]
+                .windows(2)
+                .any(|w| w[1].partial_cmp(&w[0]).is_none_or(|o| o.is_lt()))
+        {
             return None;
         }
         let keys = keys[..count].to_vec();

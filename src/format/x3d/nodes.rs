@@ -169,7 +169,7 @@ fn face_set(n: &mut AstNode, warnings: &mut Warnings) {
                 faces.push(c.to_vec());
             }
         }
-        idx.len() % k != 0
+        !idx.len().is_multiple_of(k)
     };
     let leftover = match kind.as_str() {
         "IndexedTriangleSet" => chunks(&index, 3, &mut faces),

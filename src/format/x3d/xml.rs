@@ -81,7 +81,6 @@ pub fn parse(bytes: &[u8]) -> Parsed {
             .saturating_mul(8)
             .saturating_add(1024)
             .min(u32::MAX as u64) as u32,
-        ..roxmltree::ParsingOptions::default()
     };
     let doc = match Document::parse_with_options(text, opts) {
         Ok(d) => d,
