@@ -316,3 +316,47 @@ fn corpus_next_x3d_files_load() {
     assert!(problems.is_empty(), "{problems:#?}");
     assert_eq!(loaded, files, "every corpus-next X3D file loads");
 }
+
+/// Both encodings at the deepest nesting any read allows fit a 2 MiB stack
+/// (parser, builder and drop each recurse once per level), and one level
+/// more is a depth error, not a stack overflow.
+#[test]
+fn deepest_nesting_fits_a_2_mib_stack() {
+    use animed::format::limits::{Limits, DEPTH_CEILING};
+    fn classic(levels: usize) -> Vec<u8> {
+        let mut s = String::from("#X3D V4.0 utf8\n");
+        s.push_str(&"Group { children [\n".repeat(levels));
+        s.push_str(&"] }\n".repeat(levels));
+        s.into_bytes()
+    }
+    fn xml(levels: usize) -> Vec<u8> {
+        let mut s = String::from("<X3D><Scene>");
+        s.push_str(&"<Group>".repeat(levels));
+        s.push_str(&"</Group>".repeat(levels));
+        s.push_str("</Scene></X3D>");
+        s.into_bytes()
+    }
+    let run = |bytes: Vec<u8>, name: &'static str| {
+        std::thread::Builder::new()
+            .stack_size(2 << 20)
+            .spawn(move || {
+                let lim = Limits {
+                    max_depth: DEPTH_CEILING,
+                    ..Limits::default()
+                };
+                format::load_bytes_with(&bytes, Path::new(name), lim)
+                    .map(|l| l.scene.nodes.len())
+                    .map_err(|e| e.to_string())
+            })
+            .unwrap()
+            .join()
+            .expect("no stack overflow")
+    };
+    let deep = DEPTH_CEILING as usize - 2;
+    assert_eq!(run(classic(deep), "deep.x3dv"), Ok(deep));
+    assert_eq!(run(xml(deep), "deep.x3d"), Ok(deep));
+    let e = run(xml(deep + 5), "deep.x3d").unwrap_err();
+    assert!(e.contains("--max-depth"), "{e}");
+    let e = run(classic(deep + 5), "deep.x3dv").unwrap_err();
+    assert!(e.contains("--max-depth"), "{e}");
+}

@@ -226,6 +226,9 @@ impl Parser<'_> {
     /// An X3D classic statement (ISO/IEC 19776-2 §6.2, §6.3.7): PROFILE,
     /// COMPONENT, UNIT and META are kept; EXPORT and IMPORT are read and
     /// skipped with a warning (animed does not connect Inline scenes).
+    /// Never inlined: its locals would grow the frame of `statement`, which
+    /// recurses once per nesting level.
+    #[inline(never)]
     fn x3d_statement(&mut self) -> PResult<()> {
         let (kw, pos) = self.ident("a statement")?;
         match kw.as_str() {
@@ -403,15 +406,9 @@ impl Parser<'_> {
             }
         }
         if let Some(def) = proto {
-            let hook = self.opts.rewrite.map(|r| (r, &self.head));
-            let (inst, routes, count) = expand(&def, &node, hook, &mut self.warnings)?;
-            self.nodes += count;
-            node.height = AstNode::height_of(&node.fields, Some(&inst));
-            node.proto = Some(inst);
-            self.scope().routes.extend(routes);
+            self.expand_into(&def, &mut node)?;
         } else if let Some(rewrite) = self.opts.rewrite {
-            rewrite(&mut node, &self.head, &mut self.warnings);
-            node.height = AstNode::height_of(&node.fields, None);
+            self.rewrite(rewrite, &mut node);
         }
         // PROTO expansion can nest far deeper than the text: what counts is
         // how deep following the node goes, from where it stands.
@@ -419,6 +416,26 @@ impl Parser<'_> {
             return Err(self.too_deep(pos));
         }
         Ok(Rc::new(node))
+    }
+
+    /// Expands a PROTO instance in place. Never inlined (see
+    /// `x3d_statement`): `node_body` recurses once per nesting level.
+    #[inline(never)]
+    fn expand_into(&mut self, def: &ProtoDef, node: &mut AstNode) -> PResult<()> {
+        let hook = self.opts.rewrite.map(|r| (r, &self.head));
+        let (inst, routes, count) = expand(def, node, hook, &mut self.warnings)?;
+        self.nodes += count;
+        node.height = AstNode::height_of(&node.fields, Some(&inst));
+        node.proto = Some(inst);
+        self.scope().routes.extend(routes);
+        Ok(())
+    }
+
+    /// Runs the reader's node rewrite. Never inlined (see `x3d_statement`).
+    #[inline(never)]
+    fn rewrite(&mut self, rewrite: Rewrite, node: &mut AstNode) {
+        rewrite(node, &self.head, &mut self.warnings);
+        node.height = AstNode::height_of(&node.fields, None);
     }
 
     fn node_fields(&mut self, kind: &str, pos: Pos) -> PResult<Vec<Field>> {
