@@ -133,6 +133,7 @@ pub fn row_name(p: Property) -> &'static str {
         Property::Emissive => "Emissive",
         Property::Specular => "Specular",
         Property::Transparency => "Transparent",
+        Property::MorphWeights => "Morph wts",
         Property::Shininess => "Shininess",
     }
 }

@@ -211,6 +211,7 @@ impl Editor {
                     field_row(out, r, name, lw, &[0, 1, 2].map(KeyField::Value));
                 }
                 Value::Scalar(_) => field_row(out, r, "Value", lw, &[KeyField::Value(0)]),
+                Value::Weights(w) => out.push(label(r, &format!("{} weights", w.len()), true)),
                 Value::Bool(b) => {
                     let (a, rest) = r.take_left(lw);
                     out.push(label(a, "Value", true));

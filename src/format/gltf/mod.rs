@@ -12,6 +12,7 @@ mod accessor;
 mod anim;
 mod bin;
 mod container;
+mod deform;
 mod lights;
 mod material;
 mod mesh;
