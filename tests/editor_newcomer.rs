@@ -440,3 +440,222 @@ fn newcomer_goldens() {
     });
     golden::check("editor_strip_scrolled", &ed.render_frame());
 }
+
+// ----- item 4: views -----
+
+#[test]
+fn numpad_views_ortho_and_the_scene_camera() {
+    use std::f32::consts::{FRAC_PI_2, PI};
+    let mut ed = stage();
+    let near = |a: f32, b: f32| (a - b).abs() < 1e-5;
+    key(&mut ed, Key::Num(1), Mods::NONE);
+    assert!(near(ed.camera().yaw, 0.0) && near(ed.camera().pitch, 0.0));
+    assert!(
+        ed.status().text.starts_with("Front view"),
+        "{:?}",
+        ed.status()
+    );
+    key(&mut ed, Key::Num(1), Mods::ctrl());
+    assert!(near(ed.camera().yaw, PI), "back");
+    key(&mut ed, Key::Num(3), Mods::NONE);
+    assert!(near(ed.camera().yaw, FRAC_PI_2), "right");
+    key(&mut ed, Key::Num(7), Mods::NONE);
+    assert!(near(ed.camera().pitch, FRAC_PI_2), "top");
+    // Straight down still draws a picture (no degenerate look-at).
+    let f = ed.render_frame();
+    let vp = ed.layout().viewport;
+    let c = f.color[((vp.y + vp.h / 2) as u32 * f.width + (vp.x + vp.w / 2) as u32) as usize];
+    assert_ne!(c, 0, "the top view shows the stage");
+    key(&mut ed, Key::Num(5), Mods::NONE);
+    assert!(ed.camera().ortho);
+    assert_eq!(ed.status().text, "Orthographic view");
+    key(&mut ed, Key::Num(5), Mods::NONE);
+    assert!(!ed.camera().ortho);
+    // Numpad 0 looks through the scene's camera, and again goes back.
+    let before = *ed.camera();
+    key(&mut ed, Key::Num(0), Mods::NONE);
+    let through = *ed.camera();
+    if ed.status().text.starts_with("Looking through") {
+        assert_ne!(through, before);
+        key(&mut ed, Key::Num(0), Mods::NONE);
+        assert_eq!(*ed.camera(), before, "back to the view before");
+    } else {
+        assert!(ed.status().text.contains("no camera"), "{:?}", ed.status());
+    }
+    // With a camera added at the view, numpad 0 sees what it sees.
+    key(&mut ed, Key::Num(1), Mods::NONE);
+    let front = *ed.camera();
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    let m = ed.menu().unwrap();
+    let i = m.items.iter().position(|i| i.label == "Camera").unwrap();
+    let r = m.item_rect(ed.layout().window, i);
+    click(&mut ed, ((r.x + 10) as f32, (r.y + 5) as f32));
+    assert!(ed
+        .scene()
+        .node(ed.selection().unwrap())
+        .name
+        .starts_with("Camera"));
+    key(&mut ed, Key::Num(3), Mods::NONE);
+    key(&mut ed, Key::Num(0), Mods::NONE);
+    let cam = ed.camera();
+    assert!(
+        (cam.eye() - front.eye()).length() < 1e-3,
+        "{:?} vs {:?}",
+        cam.eye(),
+        front.eye()
+    );
+    assert!((cam.back() - front.back()).length() < 1e-3);
+}
+
+#[test]
+fn the_viewport_context_menu_and_the_view_menu() {
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    let vp = ed.layout().viewport;
+    let at = ((vp.x + 30) as f32, (vp.y + 30) as f32);
+    ed.handle(Event::MouseMove {
+        x: at.0,
+        y: at.1,
+        mods: Mods::NONE,
+    });
+    for down in [true, false] {
+        let (button, mods) = (MouseButton::Right, Mods::NONE);
+        ed.handle(if down {
+            Event::MouseDown {
+                button,
+                x: at.0,
+                y: at.1,
+                mods,
+            }
+        } else {
+            Event::MouseUp {
+                button,
+                x: at.0,
+                y: at.1,
+                mods,
+            }
+        });
+    }
+    let m = ed.menu().expect("right-click opens the context menu");
+    assert_eq!(m.title, "Viewport");
+    let labels: Vec<&str> = m.items.iter().map(|i| i.label.as_str()).collect();
+    assert!(
+        labels.contains(&"Duplicate") && labels.contains(&"View..."),
+        "{labels:?}"
+    );
+    // View... → Top.
+    let i = labels.iter().position(|l| *l == "View...").unwrap();
+    let r = m.item_rect(ed.layout().window, i);
+    click(&mut ed, ((r.x + 10) as f32, (r.y + 5) as f32));
+    let m = ed.menu().expect("the View menu");
+    let shortcuts: Vec<&str> = m.items.iter().map(|i| i.shortcut.as_str()).collect();
+    assert!(shortcuts.contains(&"Num 7") && shortcuts.contains(&"Ctrl+Num 1"));
+    let i = m.items.iter().position(|i| i.label == "Top").unwrap();
+    let r = m.item_rect(ed.layout().window, i);
+    click(&mut ed, ((r.x + 10) as f32, (r.y + 5) as f32));
+    assert!((ed.camera().pitch - std::f32::consts::FRAC_PI_2).abs() < 1e-5);
+    // A right drag still pans (no menu).
+    let t0 = ed.camera().target;
+    let (button, mods) = (MouseButton::Right, Mods::NONE);
+    ed.handle(Event::MouseDown {
+        button,
+        x: at.0,
+        y: at.1,
+        mods,
+    });
+    ed.handle(Event::MouseMove {
+        x: at.0 + 40.0,
+        y: at.1,
+        mods,
+    });
+    ed.handle(Event::MouseUp {
+        button,
+        x: at.0 + 40.0,
+        y: at.1,
+        mods,
+    });
+    assert!(ed.menu().is_none());
+    assert_ne!(ed.camera().target, t0);
+}
+
+#[test]
+fn the_view_is_remembered_per_file_not_in_the_scene() {
+    let d = std::env::temp_dir().join(format!("animed-newcomer-views-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    let mem = d.join("views");
+    let file = d.join("scene.wrl");
+    let mut ed = stage();
+    ed.set_view_memory(Some(mem.clone()));
+    key(&mut ed, Key::Num(3), Mods::NONE);
+    key(&mut ed, Key::Num(5), Mods::NONE);
+    ed.save_to(&file).unwrap();
+    let saved = *ed.camera();
+    let text = std::fs::read_to_string(&file).unwrap();
+    assert!(!text.contains("ortho"), "the view is not in the scene");
+    let loaded = animed::internals::format::load(&file).unwrap();
+    let mut again = Editor::new(loaded.scene, Some(file.clone()), 480, 320);
+    assert_ne!(
+        *again.camera(),
+        saved,
+        "framed, not remembered, without memory"
+    );
+    again.set_view_memory(Some(mem.clone()));
+    assert_eq!(*again.camera(), saved);
+    // Opening the file in another editor recalls it too.
+    let mut other = Editor::new(Scene::new(), None, 480, 320);
+    other.set_view_memory(Some(mem));
+    other.open_file(&file).unwrap();
+    assert_eq!(*other.camera(), saved);
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn view_goldens() {
+    let mut ed = stage();
+    key(&mut ed, Key::Num(1), Mods::NONE);
+    key(&mut ed, Key::Num(5), Mods::NONE);
+    golden::check("editor_front_ortho", &ed.render_frame());
+    key(&mut ed, Key::Num(7), Mods::NONE);
+    golden::check("editor_top_ortho", &ed.render_frame());
+}
+
+// ----- item 3 (part): per-track repeat in the UI -----
+
+#[test]
+fn a_track_loops_from_the_key_panel() {
+    use animed::internals::anim::{Property, Repeat, Target, TargetRef};
+    let mut ed = big_stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    let m = ed
+        .key_marker_at(
+            animed::internals::editor::keystrip::Row::Track(Property::Translation),
+            24.0,
+        )
+        .expect("a translation key at 24");
+    click(&mut ed, m);
+    let t = Target {
+        of: TargetRef::Node(ball),
+        property: Property::Translation,
+    };
+    // The stage's ball loops; "hold" stops that, "loop" brings it back.
+    assert_eq!(ed.scene().animation.track(t).unwrap().repeat, Repeat::Loop);
+    let at = find(&ed, "Repeat(Constant)");
+    click(&mut ed, at);
+    assert_eq!(
+        ed.scene().animation.track(t).unwrap().repeat,
+        Repeat::Constant
+    );
+    assert_eq!(ed.status().text, "Track holds its end values");
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(ed.scene().animation.track(t).unwrap().repeat, Repeat::Loop);
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    let at = find(&ed, "Repeat(Constant)");
+    click(&mut ed, at);
+    let at = find(&ed, "Repeat(Loop)");
+    click(&mut ed, at);
+    assert_eq!(ed.scene().animation.track(t).unwrap().repeat, Repeat::Loop);
+    assert_eq!(ed.status().text, "Track loops its keys");
+}

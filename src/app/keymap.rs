@@ -72,6 +72,16 @@ pub fn key(k: K) -> Option<Key> {
         K::F10 => Key::F(10),
         K::F11 => Key::F(11),
         K::F12 => Key::F(12),
+        K::NumPad0 => Key::Num(0),
+        K::NumPad1 => Key::Num(1),
+        K::NumPad2 => Key::Num(2),
+        K::NumPad3 => Key::Num(3),
+        K::NumPad4 => Key::Num(4),
+        K::NumPad5 => Key::Num(5),
+        K::NumPad6 => Key::Num(6),
+        K::NumPad7 => Key::Num(7),
+        K::NumPad8 => Key::Num(8),
+        K::NumPad9 => Key::Num(9),
         _ => return None,
     })
 }

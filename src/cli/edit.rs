@@ -93,6 +93,7 @@ pub fn run(args: Args) -> i32 {
     if args.script.is_none() && args.screenshot.is_none() {
         // Untitled work a crash left behind is offered like a file's.
         ed.offer_untitled(&crate::editor::recovery::state_dir());
+        ed.set_view_memory(Some(view_memory()));
         ed.set_aa(args.aa.unwrap_or(WINDOW_AA));
         return window(ed);
     }
@@ -147,8 +148,14 @@ pub fn run_default() -> i32 {
         }
     }
     ed.offer_untitled(&crate::editor::recovery::state_dir());
+    ed.set_view_memory(Some(view_memory()));
     ed.set_aa(WINDOW_AA);
     window(ed)
+}
+
+/// Where the window's editor remembers each file's view.
+pub fn view_memory() -> std::path::PathBuf {
+    crate::editor::recovery::state_dir().join("views")
 }
 
 #[cfg(test)]

@@ -69,6 +69,7 @@ pub fn run(args: Args) -> i32 {
         None => {
             let mut ed = crate::editor::Editor::new(crate::scene::Scene::new(), None, 1024, 640);
             ed.recover_untitled(&s.path);
+            ed.set_view_memory(Some(super::edit::view_memory()));
             ed.set_aa(super::edit::WINDOW_AA);
             match crate::app::run(ed) {
                 Ok(()) => 0,

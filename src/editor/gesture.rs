@@ -35,6 +35,13 @@ pub(super) enum Drag {
         at: (f32, f32),
         moved: bool,
     },
+    /// Right button in the viewport: a drag pans, a click opens the
+    /// viewport's context menu.
+    Context {
+        at: (f32, f32),
+        last: (f32, f32),
+        moved: bool,
+    },
     /// Dragging the timeline's top edge: the key strip's height.
     StripResize {
         y0: f32,

@@ -22,6 +22,9 @@ pub enum KeyAction {
     Interp(Interp),
     /// Flip the value of boolean keys (light on, visible).
     ToggleBool,
+    /// The selected keys' tracks hold their end values / loop their key
+    /// range outside it (the track's repeat mode).
+    Repeat(crate::anim::Repeat),
     /// Show the node's properties / the key panel.
     ShowNode,
     ShowKeys,

@@ -41,6 +41,7 @@ mod route;
 mod screen;
 pub mod script;
 mod viewport;
+pub mod views;
 
 pub use crate::input::{Event, Key, Mods, MouseButton};
 
@@ -137,6 +138,10 @@ pub struct Editor {
     /// Bumped on every change to `scene` (commands and live previews).
     scene_rev: u64,
     camera: OrbitCamera,
+    /// The view before looking through the scene camera (numpad 0).
+    through: Option<OrbitCamera>,
+    /// Where views are remembered per file (`views.rs`), if anywhere.
+    view_memory: Option<PathBuf>,
     selection: Option<NodeId>,
     mode: Mode,
     frame: f32,
@@ -208,6 +213,8 @@ impl Editor {
             saved_revision: 0,
             scene_rev: 1,
             camera: OrbitCamera::default(),
+            through: None,
+            view_memory: None,
             selection: None,
             mode: Mode::Select,
             frame: 0.0,
@@ -465,6 +472,8 @@ impl Editor {
         let n = loaded.warnings.len();
         self.replace_scene(loaded.scene, Some(path.to_path_buf()));
         self.disk_stamp = stamp;
+        self.through = None;
+        self.recall_view();
         let msg = match n {
             0 => format!("Opened {}", path.display()),
             _ => format!("Opened {} ({n} warnings)", path.display()),
@@ -508,6 +517,7 @@ impl Editor {
         let old = self.path.replace(path.to_path_buf());
         self.saved_revision = self.history.revision();
         self.saved_recovery(old.as_deref());
+        self.remember_view();
         self.set_status(&format!("Saved {}", path.display()), false);
         Ok(())
     }

@@ -35,6 +35,14 @@ pub enum Action {
     AddMenu,
     /// Copy the selection with its tracks (Shift+D).
     Duplicate,
+    /// The Add menu at the mouse (the viewport's context menu).
+    AddMenuHere,
+    /// The View menu at the mouse.
+    ViewMenu,
+    /// A view command (numpad keys, the View menu).
+    View(super::views::ViewCmd),
+    /// Key the selection (K).
+    KeySelection,
     ToggleLight(NodeId),
     ObjectStyle,
     Delete,

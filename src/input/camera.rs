@@ -14,6 +14,9 @@ pub struct OrbitCamera {
     pub pitch: f32,
     /// Vertical field of view in radians.
     pub fov_y: f32,
+    /// Orthographic projection: the view volume is as tall as the
+    /// perspective one at the target (numpad 5 toggles).
+    pub ortho: bool,
 }
 
 impl Default for OrbitCamera {
@@ -24,6 +27,7 @@ impl Default for OrbitCamera {
             yaw: 0.6,
             pitch: 0.45,
             fov_y: std::f32::consts::FRAC_PI_4,
+            ortho: false,
         }
     }
 }
@@ -38,6 +42,16 @@ pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
         Vec4::new(s.y, u.y, -f.y, 0.0),
         Vec4::new(s.z, u.z, -f.z, 0.0),
         Vec4::new(-s.dot(eye), -u.dot(eye), f.dot(eye), 1.0),
+    )
+}
+
+/// OpenGL-style orthographic projection of the box ±hw × ±hh × [near, far].
+pub fn orthographic(hw: f32, hh: f32, near: f32, far: f32) -> Mat4 {
+    Mat4::from_cols(
+        Vec4::new(1.0 / hw.max(1e-9), 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 1.0 / hh.max(1e-9), 0.0, 0.0),
+        Vec4::new(0.0, 0.0, -2.0 / (far - near), 0.0),
+        Vec4::new(0.0, 0.0, -(far + near) / (far - near), 1.0),
     )
 }
 
@@ -79,10 +93,57 @@ impl OrbitCamera {
         let aspect = w.max(1) as f32 / h.max(1) as f32;
         let (near, far) = self.planes(radius);
         let eye = self.eye();
+        // Straight down or up (top/bottom views) +y is the view direction:
+        // the camera's own up vector (d back / d pitch) then; elsewhere +y,
+        // exactly as before.
+        let up = if self.pitch.abs() > 1.55 {
+            let (sy, cy) = self.yaw.sin_cos();
+            let (sp, cp) = self.pitch.sin_cos();
+            Vec3::new(-sp * sy, cp, -sp * cy)
+        } else {
+            Vec3::Y
+        };
+        let proj = if self.ortho {
+            let hh = self.distance * (self.fov_y * 0.5).tan();
+            orthographic(hh * aspect, hh, near, far)
+        } else {
+            perspective(self.fov_y, aspect, near, far)
+        };
         View {
-            view: look_at(eye, self.target, Vec3::Y),
-            proj: perspective(self.fov_y, aspect, near, far),
+            view: look_at(eye, self.target, up),
+            proj,
             eye,
+        }
+    }
+
+    /// An orbit camera that sees what `view` sees (less any roll): same
+    /// eye, direction and vertical field of view, orbiting the point where
+    /// the view direction passes the scene's centre (`sphere`).
+    pub fn from_view(view: &View, sphere: Option<(Vec3, f32)>) -> OrbitCamera {
+        let fwd = view.forward().normalize_or(Vec3::NEG_Z);
+        let back = -fwd;
+        let (centre, radius) = sphere.unwrap_or((view.eye + fwd * 10.0, 1.0));
+        let along = (centre - view.eye).dot(fwd);
+        let distance = if along > radius * 0.05 && along.is_finite() {
+            along
+        } else {
+            radius.max(1e-3) * 2.0
+        };
+        // proj.y_axis.y = 1 / tan(fov_y / 2) for a perspective projection;
+        // an orthographic one (w row = 0,0,0,1) gets the default 45°.
+        let p = view.proj;
+        let fov_y = if p.w_axis.w == 0.0 && p.y_axis.y > 0.0 {
+            2.0 * (1.0 / p.y_axis.y).atan()
+        } else {
+            std::f32::consts::FRAC_PI_4
+        };
+        OrbitCamera {
+            target: view.eye + fwd * distance,
+            distance,
+            yaw: back.x.atan2(back.z),
+            pitch: back.y.clamp(-1.0, 1.0).asin().clamp(-1.55, 1.55),
+            fov_y,
+            ortho: false,
         }
     }
 

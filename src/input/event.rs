@@ -61,6 +61,8 @@ pub enum Key {
     PageDown,
     Space,
     F(u8),
+    /// A numpad digit (0-9): the editor's standard views.
+    Num(u8),
 }
 
 impl Key {
@@ -83,6 +85,9 @@ impl Key {
             "pageup" => Key::PageUp,
             "pagedown" => Key::PageDown,
             "space" => Key::Space,
+            n if n.len() == 4 && n.starts_with("num") => {
+                Key::Num(n[3..].parse::<u8>().ok().filter(|d| *d <= 9)?)
+            }
             _ => {
                 let mut chars = l.chars();
                 match (chars.next(), chars.next()) {
@@ -161,5 +166,7 @@ mod tests {
         assert_eq!(Key::parse("f13"), None);
         assert_eq!(Key::parse("banana"), None);
         assert_eq!(Key::parse("delete"), Some(Key::Delete));
+        assert_eq!(Key::parse("num7"), Some(Key::Num(7)));
+        assert_eq!(Key::parse("numx"), None);
     }
 }

@@ -32,34 +32,10 @@ impl Eye {
     }
 }
 
-/// An orbit camera that sees what `view` sees (less any roll): same eye,
-/// direction and vertical field of view, orbiting the point where the view
-/// direction passes the scene's centre (`sphere`).
+/// An orbit camera that sees what `view` sees (less any roll); see
+/// [`OrbitCamera::from_view`].
 pub fn orbit_from_view(view: &View, sphere: Option<(Vec3, f32)>) -> OrbitCamera {
-    let fwd = view.forward().normalize_or(Vec3::NEG_Z);
-    let back = -fwd;
-    let (centre, radius) = sphere.unwrap_or((view.eye + fwd * 10.0, 1.0));
-    let along = (centre - view.eye).dot(fwd);
-    let distance = if along > radius * 0.05 && along.is_finite() {
-        along
-    } else {
-        radius.max(1e-3) * 2.0
-    };
-    // proj.y_axis.y = 1 / tan(fov_y / 2) for a perspective projection; an
-    // orthographic one (w row = 0,0,0,1) gets the default 45°.
-    let p = view.proj;
-    let fov_y = if p.w_axis.w == 0.0 && p.y_axis.y > 0.0 {
-        2.0 * (1.0 / p.y_axis.y).atan()
-    } else {
-        std::f32::consts::FRAC_PI_4
-    };
-    OrbitCamera {
-        target: view.eye + fwd * distance,
-        distance,
-        yaw: back.x.atan2(back.z),
-        pitch: back.y.clamp(-1.0, 1.0).asin().clamp(-1.55, 1.55),
-        fov_y,
-    }
+    OrbitCamera::from_view(view, sphere)
 }
 
 #[cfg(test)]
@@ -74,6 +50,7 @@ mod tests {
             yaw: 0.8,
             pitch: -0.3,
             fov_y: 0.9,
+            ortho: false,
         };
         let v = c.view(400, 300, 5.0);
         let back = orbit_from_view(&v, Some((c.target, 2.0)));

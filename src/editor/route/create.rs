@@ -7,6 +7,7 @@ use crate::editor::create::{self, NewThing};
 use crate::editor::menu::{Menu, MenuItem, Reply};
 use crate::editor::ops;
 use crate::editor::panel::Action;
+use crate::editor::views::ViewCmd;
 use crate::editor::Editor;
 use crate::input::Event;
 use crate::scene::{NodeId, Scene};
@@ -24,6 +25,21 @@ impl Editor {
             .map(|&t| MenuItem::new(t.label(), "", Action::Add(t)))
             .collect();
         self.menu = Some(Menu::new("Add (Shift+A)", items, (x, y)));
+    }
+
+    /// Right-click in the viewport: add, duplicate, delete, key, frame,
+    /// and the View menu.
+    pub fn open_context_menu(&mut self, x: i32, y: i32) {
+        let items = vec![
+            MenuItem::new("Add...", "Shift+A", Action::AddMenuHere),
+            MenuItem::new("Duplicate", "Shift+D", Action::Duplicate),
+            MenuItem::new("Delete", "Delete", Action::Delete),
+            MenuItem::new("Key the selection", "K", Action::KeySelection),
+            MenuItem::new("Frame selected", "F", Action::View(ViewCmd::FrameSelected)),
+            MenuItem::new("Frame all", "Home", Action::View(ViewCmd::FrameAll)),
+            MenuItem::new("View...", "Num 1 3 7 5 0", Action::ViewMenu),
+        ];
+        self.menu = Some(Menu::new("Viewport", items, (x, y)));
     }
 
     /// An open menu takes every input event; `None` when no menu is open

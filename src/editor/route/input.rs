@@ -164,6 +164,19 @@ impl Editor {
                 true
             }
             Drag::Pick { .. } => false,
+            Drag::Context { at, last, moved } => {
+                if !moved && (x - at.0).abs().max((y - at.1).abs()) < DRAG_SLOP {
+                    return false;
+                }
+                let h = self.layout().viewport.h as f32;
+                self.camera.pan(x - last.0, y - last.1, h);
+                self.drag = Drag::Context {
+                    at,
+                    last: (x, y),
+                    moved: true,
+                };
+                true
+            }
             Drag::RowMove { node, at, moved } => {
                 if !moved && (x - at.0).abs().max((y - at.1).abs()) < DRAG_SLOP {
                     return false;
@@ -233,7 +246,11 @@ impl Editor {
                 (MouseButton::Left, Mode::View) if mods.shift => Drag::Pan { last: (x, y) },
                 (MouseButton::Left, Mode::View) => Drag::Orbit { last: (x, y) },
                 (MouseButton::Left, Mode::Select) => Drag::Pick { at: (x, y) },
-                (MouseButton::Right, _) => Drag::Pan { last: (x, y) },
+                (MouseButton::Right, _) => Drag::Context {
+                    at: (x, y),
+                    last: (x, y),
+                    moved: false,
+                },
             };
             return;
         }
@@ -331,6 +348,7 @@ impl Editor {
             Drag::RowMove {
                 node, moved: true, ..
             } => self.drop_in_list(node, x, y),
+            Drag::Context { moved: false, .. } => self.open_context_menu(x as i32, y as i32),
             _ => {}
         }
     }
@@ -687,6 +705,11 @@ impl Editor {
                 self.open_add_menu(x as i32, y as i32);
             }
             (Key::Char('d'), false, true) => self.run_action(Action::Duplicate),
+            (Key::Num(n), ctrl, _) => {
+                if let Some(v) = crate::editor::views::ViewCmd::from_numpad(n, ctrl) {
+                    self.view_command(v);
+                }
+            }
             (Key::F(1), _, _) => self.set_help(true),
             (Key::Char('f'), false, _) => self.frame_selection(),
             (Key::Home, _, _) => self.frame_all(),
@@ -826,6 +849,16 @@ impl Editor {
             }
             Action::ObjectStyle => self.cycle_object_style(),
             Action::Add(what) => self.add_thing(what),
+            Action::AddMenuHere => {
+                let (x, y) = self.mouse;
+                self.open_add_menu(x as i32, y as i32);
+            }
+            Action::ViewMenu => {
+                let (x, y) = self.mouse;
+                self.open_view_menu(x as i32, y as i32);
+            }
+            Action::View(v) => self.view_command(v),
+            Action::KeySelection => self.insert_keys(),
             Action::Duplicate => self.duplicate_selection(),
             Action::AddMenu => {
                 let at = self

@@ -20,7 +20,7 @@ impl Editor {
 
     /// Rows the key panel needs (for the side panel split).
     pub(in crate::internals::editor) fn key_panel_rows(&self) -> i32 {
-        6 + self.selected_keys().len().min(4) as i32
+        7 + self.selected_keys().len().min(4) as i32
     }
 
     /// The number a key field shows (the primary key's).
@@ -151,6 +151,20 @@ impl Editor {
                     .is_some_and(|k| k.property.kind() == ValueKind::Rotation);
                 self.apply_key_edit(&format!("Interpolation {}", i.name(rot)), anim, Vec::new());
             }
+            KeyAction::Repeat(r) => {
+                let mut anim = self.scene.animation.clone();
+                for k in &keys {
+                    if let Some(t) = anim.track_mut(k.target()) {
+                        t.repeat = r;
+                    }
+                }
+                let label = match r {
+                    crate::anim::Repeat::Constant => "Track holds its end values",
+                    crate::anim::Repeat::Loop => "Track loops its keys",
+                };
+                self.apply_key_edit(label, anim, Vec::new());
+                self.set_status(label, false);
+            }
             KeyAction::ToggleBool => {
                 let Some(p) = keys.first() else { return };
                 let Some(Value::Bool(b)) = p.get(&self.scene.animation).map(|k| k.value) else {
@@ -269,6 +283,29 @@ impl Editor {
         }
         if let Some(r) = next() {
             field_row(out, r, "Ease", lw, &[KeyField::EaseIn, KeyField::EaseOut]);
+        }
+        if let Some(r) = next() {
+            // The track's repeat mode outside its keys (per track).
+            use crate::anim::Repeat;
+            let now = self
+                .scene
+                .animation
+                .track(primary.target())
+                .map(|t| t.repeat);
+            let (a, rest) = r.take_left(lw);
+            out.push(label(a, "After", true));
+            let bw = (rest.w - 2) / 2;
+            for (i, (name, rep)) in [("hold", Repeat::Constant), ("loop", Repeat::Loop)]
+                .into_iter()
+                .enumerate()
+            {
+                out.push(button(
+                    Rect::new(rest.x + i as i32 * (bw + 2), rest.y + 1, bw, rest.h - 2),
+                    name,
+                    Action::Key(KeyAction::Repeat(rep)),
+                    now == Some(rep),
+                ));
+            }
         }
         // The selected keys, one per row (frame and property).
         let shown = keys.len().min(4);

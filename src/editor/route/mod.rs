@@ -13,3 +13,4 @@ mod onion;
 mod panel;
 mod record;
 mod recovery;
+mod views;

@@ -423,6 +423,7 @@ impl Editor {
     /// went away), they are written to the recovery copy right away.
     /// Returns a line to print.
     pub fn window_closed(&mut self) -> Option<String> {
+        self.remember_view();
         if !self.is_dirty() || self.quit {
             self.forget_recovery();
             return None;
