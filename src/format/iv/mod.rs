@@ -6,6 +6,7 @@ mod animated;
 mod build;
 mod shapes;
 mod state;
+mod texture;
 pub mod write;
 
 use super::syntax::{self, Options};
@@ -52,3 +53,5 @@ pub fn read_nested(
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod texture_tests;
