@@ -190,7 +190,7 @@ impl RenderSpec {
         if !self.time.is_finite() {
             return bad(format!("time {} is not a finite number", self.time));
         }
-        if self.aa != 1 {
+        if ![1, 4, 8].contains(&self.aa) {
             return bad(format!(
                 "aa {}: samples per pixel are 1 (off), 4 or 8",
                 self.aa
@@ -307,7 +307,7 @@ mod tests {
             RenderSpec::new(0, 10),
             RenderSpec::new(20_000, 10),
             RenderSpec::new(10, 10).at(f32::NAN),
-            RenderSpec::new(10, 10).aa(4),
+            RenderSpec::new(10, 10).aa(3),
             RenderSpec::new(10, 10).background([f32::INFINITY, 0.0, 0.0]),
         ] {
             let err = render(&scene, &spec).unwrap_err();

@@ -266,9 +266,13 @@ fn delete_removes_selected_keys_not_the_object() {
     assert_eq!(ed.scene().node(bx).transform.scale, Vec3::ONE);
     key(&mut ed, Key::Char('z'), Mods::ctrl());
     assert_eq!(frames(&ed, bx, S), vec![10.0, 30.0]);
-    // With no keys selected Delete deletes the object again.
+    // With no keys selected, Delete over the strip asks before deleting
+    // the object (issue 17: never delete what has no focus unasked).
     key(&mut ed, Key::Escape, Mods::NONE);
     key(&mut ed, Key::Delete, Mods::NONE);
+    assert_eq!(ed.scene().nodes.len(), 2, "asked first");
+    assert!(ed.dialog().is_some());
+    key(&mut ed, Key::Enter, Mods::NONE);
     assert_eq!(ed.scene().nodes.len(), 1);
 }
 

@@ -7,7 +7,7 @@ use animed::anim::{Property, Target, TargetRef, Value};
 use animed::editor::panel::WidgetKind;
 use animed::editor::recovery::recovery_path;
 use animed::editor::{After, Editor, Event, Key, Mods};
-use animed::scene::NodeId;
+use animed::scene::{NodeId, Scene};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -329,5 +329,161 @@ fn closing_the_window_asks_once_then_keeps_the_work_in_the_copy() {
         "K keyed the object: {ours:?}"
     );
     assert_eq!(named(&kept.scene), ours, "every track kept");
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// Object rows of a scene (what the recovery list counts).
+fn object_count(s: &animed::scene::Scene) -> usize {
+    animed::editor::ops::objects(s).len()
+}
+
+/// Issue 17 item 5: an untitled session (the demo, never saved) is killed
+/// after autosaving; `animed recover --list` and the next start list it
+/// (newest first, with time and object count) beside an older one, and
+/// Recover brings the work back as unsaved untitled work.
+#[test]
+fn a_killed_untitled_session_is_listed_and_recovered() {
+    let d = dir("untitled");
+    let state = d.join("state");
+    let copies = state.join("animed");
+    // Select the first listed object and delete it: unsaved untitled work.
+    let probe = Editor::with_demo(SIZE.0, SIZE.1);
+    let row = centre(&probe, |k| matches!(k, WidgetKind::Row { .. }));
+    let demo_objects = object_count(probe.scene());
+    let script = format!("click {} {}\nkey delete\nsleep-ms 60000\n", row.0, row.1);
+    let s1 = d.join("s1.txt");
+    std::fs::write(&s1, script).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_animed"))
+        .args(["edit", "--script"])
+        .arg(&s1)
+        .args(["--size", &format!("{}x{}", SIZE.0, SIZE.1)])
+        .env("ANIMED_AUTOSAVE_SECS", "1")
+        .env("XDG_STATE_HOME", &state)
+        .spawn()
+        .expect("animed starts");
+    let copy = copies.join(format!("untitled-{}.animed-recovery.wrl", child.id()));
+    let t0 = Instant::now();
+    while !copy.exists() {
+        if let Some(st) = child.try_wait().unwrap() {
+            panic!("the session ended ({st}) before autosaving");
+        }
+        assert!(t0.elapsed() < Duration::from_secs(40), "no copy after 40 s");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    // Let the rename land, then SIGKILL (and reap, so the pid is gone).
+    std::thread::sleep(Duration::from_millis(200));
+    child.kill().unwrap();
+    child.wait().unwrap();
+    // An older session left behind by a process that no longer runs.
+    let older = copies.join("untitled-999999999.animed-recovery.wrl");
+    let mut two = Scene::new();
+    two.add_node(None, animed::scene::Node::group("One"));
+    two.add_node(None, animed::scene::Node::group("Two"));
+    animed::format::save(&two, &older, &Default::default()).unwrap();
+    let f = std::fs::OpenOptions::new()
+        .write(true)
+        .open(&older)
+        .unwrap();
+    f.set_modified(std::time::SystemTime::now() - Duration::from_secs(3600))
+        .unwrap();
+
+    // `animed recover --list`: newest first, time and object count.
+    let o = Command::new(env!("CARGO_BIN_EXE_animed"))
+        .args(["recover", "--list"])
+        .env("XDG_STATE_HOME", &state)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8_lossy(&o.stdout);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 2, "{out}");
+    let n = demo_objects - 1;
+    assert!(lines[0].starts_with("1  "), "{out}");
+    assert!(lines[0].contains(&format!("{n} objects")), "{out}");
+    assert!(lines[0].contains(&copy.display().to_string()), "{out}");
+    assert!(lines[0].contains("s ago"), "{out}");
+    assert!(
+        lines[1].starts_with("2  ") && lines[1].contains("2 objects"),
+        "{out}"
+    );
+    assert!(lines[1].contains("60 min ago"), "{out}");
+
+    // The next start offers both, the newest marked.
+    let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
+    assert_eq!(ed.offer_untitled(&copies), 2);
+    let dlg = ed.dialog().expect("the recovery list").clone();
+    assert_eq!(dlg.then, After::Recover);
+    let shown: Vec<&str> = dlg.message.lines().collect();
+    assert!(shown[1].starts_with("> 1  ") && shown[1].contains(&format!("{n} objects")));
+    assert!(shown[2].starts_with("  2  ") && shown[2].contains("2 objects"));
+    let labels: Vec<String> = ed
+        .dialog_widgets(&dlg.message)
+        .into_iter()
+        .filter_map(|w| match w.kind {
+            WidgetKind::Button { label, .. } => Some(label),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(labels, ["Not now", "Discard copy", "Recover"]);
+    // Down marks the older one, Up the newer again.
+    key(&mut ed, Key::Down);
+    assert!(ed.dialog().unwrap().message.contains("> 2  "));
+    key(&mut ed, Key::Up);
+    assert!(ed.dialog().unwrap().message.contains("> 1  "));
+    key(&mut ed, Key::Enter);
+    assert!(ed.dialog().is_none());
+    assert_eq!(object_count(ed.scene()), n, "the killed session's work");
+    assert_eq!(ed.path(), None, "still untitled");
+    assert!(ed.is_dirty(), "recovered work is unsaved");
+    assert!(ed.status().text.contains("Recovered"), "{:?}", ed.status());
+    assert!(!copy.exists(), "taken over by this session");
+    let mine = copies.join(format!(
+        "untitled-{}.animed-recovery.wrl",
+        std::process::id()
+    ));
+    assert!(mine.exists());
+    assert!(older.exists(), "the other session is kept");
+    // Saving under a name deletes this session's copy.
+    ed.save_to(&d.join("saved.wrl")).unwrap();
+    assert!(!mine.exists());
+
+    // Not now keeps the rest; Discard copy deletes the marked one.
+    let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
+    assert_eq!(ed.offer_untitled(&copies), 1);
+    key(&mut ed, Key::Escape);
+    assert!(ed.dialog().is_none() && older.exists());
+    assert!(
+        ed.status().text.contains("recover --list"),
+        "{:?}",
+        ed.status()
+    );
+    let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
+    ed.offer_untitled(&copies);
+    key(&mut ed, Key::Char('d'));
+    assert!(!older.exists() && ed.dialog().is_none());
+    let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
+    assert_eq!(ed.offer_untitled(&copies), 0);
+    assert!(ed.dialog().is_none(), "nothing left to offer");
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// The status line says when an autosave happened.
+#[test]
+fn the_status_line_shows_autosaves() {
+    let d = dir("status");
+    let scene = demo_file(&d);
+    let loaded = animed::format::load(&scene).unwrap();
+    let mut ed = Editor::new(loaded.scene, Some(scene.clone()), SIZE.0, SIZE.1);
+    ed.set_autosave_interval(Some(1.0));
+    ed.select(Some(NodeId(0)));
+    key(&mut ed, Key::Char('k'));
+    ed.handle(Event::Tick { time: 1.0 });
+    assert!(ed.handle(Event::Tick { time: 2.5 }), "redraws the status");
+    let t = &ed.status().text;
+    assert!(t.starts_with("Autosaved unsaved changes at "), "{t}");
+    assert!(
+        t.contains("UTC") && t.contains(".scene.wrl.animed-recovery.wrl"),
+        "{t}"
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }

@@ -97,8 +97,9 @@ hz=$(getconf CLK_TCK)
 echo "window_smoke: idle CPU $(awk "BEGIN{printf \"%.1f\", ($t1-$t0)*100/($hz*3)}")%"
 
 # Click: select an object in the list; the side panel changes.
-# A human click lasts ~100 ms (minifb only reports button levels per poll).
-xdotool mousemove $(at "$ROW_X" "$ROW_Y") mousedown 1 sleep 0.1 mouseup 1
+# A click is held 300 ms: minifb only reports button levels per poll, and
+# on a loaded machine a frame can take longer than a human 100 ms click.
+xdotool mousemove $(at "$ROW_X" "$ROW_Y") mousedown 1 sleep 0.3 mouseup 1
 sleep 0.5
 shot 1-selected
 n=$(diff_px 0-start 1-selected "$SIDE_GEOM")
@@ -129,7 +130,7 @@ echo "window_smoke: middle-drag changed $n viewport pixels"
 [ "${n%.*}" -gt 200 ] || fail "middle-drag did not orbit"
 
 # Typing into a field: click, type, Enter moves the object.
-xdotool mousemove $(at "$FIELD_X" "$FIELD_Y") mousedown 1 sleep 0.1 mouseup 1
+xdotool mousemove $(at "$FIELD_X" "$FIELD_Y") mousedown 1 sleep 0.3 mouseup 1
 sleep 0.3
 xdotool type --delay 50 "3"
 xdotool key Return
@@ -237,9 +238,9 @@ if command -v python3 >/dev/null 2>&1; then
   app_pid=$!
   find_window
   sleep 1
-  xdotool mousemove $(at "$ROW_X" "$ROW_Y") mousedown 1 sleep 0.1 mouseup 1
+  xdotool mousemove $(at "$ROW_X" "$ROW_Y") mousedown 1 sleep 0.3 mouseup 1
   sleep 0.3
-  xdotool mousemove $(at "$FIELD_X" "$FIELD_Y") mousedown 1 sleep 0.1 mouseup 1
+  xdotool mousemove $(at "$FIELD_X" "$FIELD_Y") mousedown 1 sleep 0.3 mouseup 1
   sleep 0.3
   xdotool type --delay 50 "5"
   xdotool key Return

@@ -91,6 +91,8 @@ pub fn run(args: Args) -> i32 {
         }
     };
     if args.script.is_none() && args.screenshot.is_none() {
+        // Untitled work a crash left behind is offered like a file's.
+        ed.offer_untitled(&crate::editor::recovery::state_dir());
         ed.set_aa(args.aa.unwrap_or(WINDOW_AA));
         return window(ed);
     }
@@ -144,6 +146,7 @@ pub fn run_default() -> i32 {
             return 1;
         }
     }
+    ed.offer_untitled(&crate::editor::recovery::state_dir());
     ed.set_aa(WINDOW_AA);
     window(ed)
 }

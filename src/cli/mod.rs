@@ -7,6 +7,7 @@ pub mod convert;
 pub mod edit;
 pub mod info;
 pub mod key;
+pub mod recover;
 pub mod render;
 pub mod sample;
 pub mod view;
@@ -89,6 +90,8 @@ pub enum Command {
     Key(key::Args),
     /// Screenshot tests: render scenes and compare them with golden PNGs.
     Check(check::Args),
+    /// List autosaved untitled work (`--list`), or recover one session.
+    Recover(recover::Args),
 }
 
 /// Runs the CLI; returns the process exit code.
@@ -112,5 +115,6 @@ pub fn run() -> i32 {
         Some(Command::Sample(a)) => sample::run(a),
         Some(Command::Key(a)) => key::run(a),
         Some(Command::Check(a)) => check::run_cli(a),
+        Some(Command::Recover(a)) => recover::run(a),
     }
 }

@@ -99,12 +99,22 @@ impl Browser {
     /// '/' is a path as a shell would read it (absolute, `~/…`, or relative
     /// to the working directory, which is how the shown folder is written).
     pub fn resolved(&self) -> PathBuf {
-        let t = self.input.trim();
+        let t = restart_at_root(self.input.trim());
         if t.contains('/') {
             expand_home(t)
         } else {
             self.dir.join(t)
         }
+    }
+
+    /// Typed text: a `/` or `~/` typed right after a folder's `/` starts
+    /// a new path (as in GTK's location bar), so typing an absolute path
+    /// over the shown folder never gives `DIR//typed/path`.
+    pub fn type_text(&mut self, s: &str) {
+        self.input.extend(s.chars().filter(|c| !c.is_control()));
+        let fresh = restart_at_root(&self.input).to_string();
+        self.input = fresh;
+        self.message = None;
     }
 
     /// Tab: completes the typed path to the longest common prefix of the
@@ -267,9 +277,33 @@ fn list(dir: &Path) -> std::io::Result<Vec<Entry>> {
     Ok(out)
 }
 
+/// The part of a typed path from its last restart: `DIR//abs/path` →
+/// `/abs/path`, `DIR/~/x` → `~/x`; anything else unchanged.
+pub fn restart_at_root(t: &str) -> &str {
+    let slash = t.rfind("//").map(|i| i + 1);
+    let home = t.rfind("/~/").map(|i| i + 1);
+    match slash.max(home) {
+        Some(i) => &t[i..],
+        None => t,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_typed_absolute_path_replaces_the_folder() {
+        assert_eq!(restart_at_root("/home/u//tmp/a.wrl"), "/tmp/a.wrl");
+        assert_eq!(restart_at_root("/home/u/~/a.wrl"), "~/a.wrl");
+        assert_eq!(restart_at_root("/home/u/a.wrl"), "/home/u/a.wrl");
+        let dir = std::env::temp_dir();
+        let mut b = Browser::new(Purpose::Open, &dir);
+        assert!(b.input.ends_with('/'), "{}", b.input);
+        b.type_text("/tmp/x.wrl");
+        assert_eq!(b.input, "/tmp/x.wrl");
+        assert_eq!(b.resolved(), PathBuf::from("/tmp/x.wrl"));
+    }
 
     /// A small folder tree; `tag` keeps parallel tests apart.
     fn tree(tag: &str) -> PathBuf {

@@ -85,6 +85,24 @@ impl FieldId {
         self == FieldId::Name
     }
 
+    /// The field's name in messages ("Fps", "Translation x", "Color g").
+    pub fn label(self) -> String {
+        let axis = |i: u8| ["x", "y", "z"][(i as usize).min(2)];
+        let rgb = |i: u8| ["r", "g", "b"][(i as usize).min(2)];
+        match self {
+            FieldId::Translation(i) => format!("Translation {}", axis(i)),
+            FieldId::Rotation(i) => format!("Rotation {}", axis(i)),
+            FieldId::Scale(i) => format!("Scale {}", axis(i)),
+            FieldId::LightColor(i) => format!("Color {}", rgb(i)),
+            FieldId::LightLocation(i) => format!("Location {}", axis(i)),
+            FieldId::LightDirection(i) => format!("Direction {}", axis(i)),
+            FieldId::LightIntensity => "Intensity".into(),
+            FieldId::LightCutOff => "Cut-off angle".into(),
+            FieldId::Key(k) => format!("Key {k:?}"),
+            other => format!("{other:?}"),
+        }
+    }
+
     /// Change per pixel of horizontal drag.
     pub fn drag_step(self) -> f32 {
         match self {
@@ -217,6 +235,24 @@ pub fn from_euler_degrees(e: Vec3) -> Quat {
 
 /// Parses a typed number; accepts a leading `+`, and simple `a+b`, `a-b`,
 /// `a*b`, `a/b` arithmetic as Blender does for quick offsets.
+/// What the status line says when a typed number was not taken as typed
+/// (clamped into range or rounded); `None` when it was.
+pub fn clamp_note(name: &str, typed: f32, kept: f32) -> Option<String> {
+    if (typed - kept).abs() <= 1e-6 * typed.abs().max(1.0) {
+        return None;
+    }
+    let (t, k) = (format_number(typed), format_number(kept));
+    Some(
+        if (typed.round() - kept).abs() <= 1e-6 * typed.abs().max(1.0) {
+            format!("{name}: {t} rounded to {k} (whole numbers only)")
+        } else if kept < typed {
+            format!("{name}: {t} is above the largest allowed value; set to {k}")
+        } else {
+            format!("{name}: {t} is below the smallest allowed value; set to {k}")
+        },
+    )
+}
+
 pub fn parse_number(s: &str) -> Option<f32> {
     let s = s.trim();
     if let Ok(x) = s.parse::<f32>() {
@@ -306,6 +342,18 @@ mod tests {
         assert_eq!(format_fit(-0.05, 2), "0");
         assert_eq!(format_fit(123.456, 6), "123.46");
         assert_eq!(format_fit(12345.0, 3), "12345");
+    }
+
+    #[test]
+    fn clamped_values_are_named() {
+        assert_eq!(clamp_note("Fps", 24.0, 24.0), None);
+        let n = clamp_note("Fps", 500.0, FieldId::Fps.clamp(500.0)).unwrap();
+        assert_eq!(n, "Fps: 500 is above the largest allowed value; set to 240");
+        let n = clamp_note("Fps", 24.4, FieldId::Fps.clamp(24.4)).unwrap();
+        assert_eq!(n, "Fps: 24.4 rounded to 24 (whole numbers only)");
+        let n = clamp_note("Intensity", -2.0, FieldId::LightIntensity.clamp(-2.0)).unwrap();
+        assert!(n.contains("below") && n.ends_with("set to 0"), "{n}");
+        assert_eq!(FieldId::LightColor(1).label(), "Color g");
     }
 
     #[test]

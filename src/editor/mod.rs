@@ -68,6 +68,9 @@ pub enum After {
     Open,
     /// The recovery question when opening a scene (see `recovery`).
     Recover,
+    /// Delete the selected object (asked when Delete is pressed over the
+    /// key strip with no key selected: the object is not what has focus).
+    DeleteObject,
 }
 
 /// A modal question.

@@ -194,6 +194,15 @@ pub fn add_light(scene: &mut Scene, which: NewLight, center: Vec3, r: f32) -> No
     scene.add_node(None, Node::new(name, NodeKind::Light(light)))
 }
 
+/// A point the orbit camera sees for sure: above, right of and in front
+/// of its `target` by fractions of the eye `distance` (at 45° field of view
+/// the visible half-height there is about 0.3·distance).
+pub fn in_view_spot(target: Vec3, back: Vec3, distance: f32) -> Vec3 {
+    let right = Vec3::Y.cross(back).normalize_or(Vec3::X);
+    let up = back.cross(right);
+    target + (up * 0.2 + right * 0.15 + back * 0.25) * distance
+}
+
 /// The scene without the subtree at `id`: the arena is compacted, ids in
 /// the tree and in tracks are remapped, tracks of removed nodes dropped.
 pub fn remove_subtree(scene: &Scene, id: NodeId) -> Scene {

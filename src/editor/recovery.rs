@@ -55,7 +55,12 @@ pub fn state_dir() -> PathBuf {
 
 /// The recovery copy of this process's untitled scene.
 pub fn untitled_path() -> PathBuf {
-    state_dir().join(format!("untitled-{}{SUFFIX}", std::process::id()))
+    untitled_in(&state_dir())
+}
+
+/// This process's untitled copy in `dir`.
+pub fn untitled_in(dir: &Path) -> PathBuf {
+    dir.join(format!("untitled-{}{SUFFIX}", std::process::id()))
 }
 
 /// The recovery copy beside `scene` and when it was written, if it exists
@@ -67,6 +72,85 @@ pub fn newer_copy(scene: &Path) -> Option<(PathBuf, SystemTime)> {
         Ok(saved) if saved >= copy => None,
         _ => Some((r, copy)),
     }
+}
+
+/// One untitled session's recovery copy left by an editor that is gone
+/// (crashed, killed, or closed without saving).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Session {
+    pub path: PathBuf,
+    pub written: SystemTime,
+    /// Objects in the copy (the object list's rows); `None` when the copy
+    /// does not load.
+    pub objects: Option<usize>,
+}
+
+impl Session {
+    /// "2026-11-30 02:41 UTC, 3 min ago, 4 objects" as seen at `now`.
+    pub fn describe(&self, now: SystemTime) -> String {
+        let what = match self.objects {
+            Some(1) => "1 object".to_string(),
+            Some(n) => format!("{n} objects"),
+            None => "unreadable".to_string(),
+        };
+        format!("{}, {what}", describe_time(self.written, now))
+    }
+}
+
+/// The process id in an untitled copy's name (`untitled-PID` + SUFFIX).
+pub fn untitled_pid(path: &Path) -> Option<u32> {
+    let name = path.file_name()?.to_str()?;
+    name.strip_prefix("untitled-")?
+        .strip_suffix(SUFFIX)?
+        .parse()
+        .ok()
+}
+
+/// Whether the editor that writes copies under `pid` still runs: this
+/// process, or a live process named animed (Linux `/proc`; elsewhere
+/// every other copy counts as left behind).
+pub fn session_alive(pid: u32) -> bool {
+    if pid == std::process::id() {
+        return true;
+    }
+    std::fs::read_to_string(format!("/proc/{pid}/comm"))
+        .is_ok_and(|c| c.trim_end().starts_with("animed"))
+}
+
+/// Every untitled recovery copy in `dir` whose editor is gone, newest
+/// first. Each copy is loaded once to count its objects.
+pub fn untitled_sessions(dir: &Path) -> Vec<Session> {
+    let Ok(rd) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut out: Vec<Session> = rd
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| untitled_pid(p).is_some_and(|pid| !session_alive(pid)))
+        .filter_map(|path| {
+            let written = std::fs::metadata(&path).and_then(|m| m.modified()).ok()?;
+            let objects = crate::format::load(&path)
+                .ok()
+                .map(|l| super::ops::objects(&l.scene).len());
+            Some(Session {
+                path,
+                written,
+                objects,
+            })
+        })
+        .collect();
+    out.sort_by(|a, b| b.written.cmp(&a.written).then(a.path.cmp(&b.path)));
+    out
+}
+
+/// The lines `animed recover --list` prints and the start-up dialog shows:
+/// `N  time, objects` (N counts from 1, newest first).
+pub fn session_lines(sessions: &[Session], now: SystemTime) -> Vec<String> {
+    sessions
+        .iter()
+        .enumerate()
+        .map(|(i, s)| format!("{}  {}", i + 1, s.describe(now)))
+        .collect()
 }
 
 /// Writes `scene` as a recovery copy (VRML97 with the key note, atomically).
@@ -94,6 +178,16 @@ pub fn describe_time(t: SystemTime, now: SystemTime) -> String {
         _ => format!("{} h ago", ago / 3600),
     };
     format!("{y:04}-{m:02}-{d:02} {hh:02}:{mm:02} UTC, {ago}")
+}
+
+/// "02:41:07 UTC": the time of day of `t`.
+pub fn clock_utc(t: SystemTime) -> String {
+    let secs = t
+        .duration_since(SystemTime::UNIX_EPOCH)
+        .map(|d| d.as_secs())
+        .unwrap_or(0);
+    let (h, m, s) = ((secs % 86_400) / 3600, (secs % 3600) / 60, secs % 60);
+    format!("{h:02}:{m:02}:{s:02} UTC")
 }
 
 /// Days since 1970-01-01 → (year, month, day) in the proleptic Gregorian
@@ -126,6 +220,13 @@ pub struct Autosave {
     pub(super) written: Option<PathBuf>,
     /// A crash's copy offered by the open dialog.
     pub(super) offer: Option<PathBuf>,
+    /// Untitled sessions offered at start (newest first) and the one the
+    /// dialog points at.
+    pub(super) untitled: Vec<Session>,
+    pub(super) chosen: usize,
+    /// Folder of untitled copies when not `state_dir()` (the one offered
+    /// from at start).
+    pub(super) dir: Option<PathBuf>,
     /// How long the last autosave took, in milliseconds.
     pub(super) last_ms: Option<f64>,
     /// Mouse buttons held: a drag may be previewing into the scene.
@@ -142,6 +243,9 @@ impl Default for Autosave {
             copied: None,
             written: None,
             offer: None,
+            untitled: Vec::new(),
+            chosen: 0,
+            dir: None,
             last_ms: None,
             buttons: 0,
             held_since: None,

@@ -15,9 +15,25 @@ impl Editor {
     /// Feeds one event; returns true when the picture needs redrawing.
     pub fn handle(&mut self, ev: Event) -> bool {
         self.autosave.note_input(&ev);
+        let (sel, status) = (self.selection, self.status.clone());
         let redraw = self.dispatch(ev);
+        if self.selection != sel && self.status == status {
+            // The line must not keep talking about the old selection.
+            self.status_for_selection();
+        }
         self.reveal_selection();
         redraw
+    }
+
+    /// "Selected NAME" for the selection, or an empty line without one.
+    pub(in crate::editor) fn status_for_selection(&mut self) {
+        match self.selection {
+            Some(id) => {
+                let name = ops::display_name(&self.scene, id);
+                self.set_status(&format!("Selected {name}"), false);
+            }
+            None => self.set_status("", false),
+        }
     }
 
     pub(in crate::editor) fn dispatch(&mut self, ev: Event) -> bool {
@@ -450,6 +466,11 @@ impl Editor {
             if let FieldValue::Number(x) = value {
                 self.stop_playback();
                 self.frame = x.round().clamp(0.0, self.scene.settings.duration);
+                let (x, f) = (x, self.frame);
+                if let Some(n) = crate::editor::fields::clamp_note("Frame", x, f) {
+                    let end = self.scene.settings.duration;
+                    self.set_status(&format!("{n} (the scene has frames 0 to {end})"), false);
+                }
             }
             return;
         }
@@ -464,16 +485,26 @@ impl Editor {
                     .collect();
                 let c = self.recorded(c, &props);
                 self.execute(&format!("Set {:?}", edit.field), c);
+                if let FieldValue::Number(x) = value {
+                    let kept = edit.field.clamp(x);
+                    let name = edit.field.label();
+                    if let Some(n) = crate::editor::fields::clamp_note(&name, x, kept) {
+                        self.set_status(&n, false);
+                    }
+                }
             }
-            None => self.set_status("cannot set that value here", true),
+            None => {
+                let name = edit.field.label();
+                let why = format!("{name}: cannot set '{}' here", edit.text);
+                self.set_status(&why, true)
+            }
         }
     }
 
     pub(in crate::editor) fn text(&mut self, s: &str) -> bool {
         if let Some(b) = &mut self.browser {
             if self.dialog.is_none() {
-                b.input.extend(s.chars().filter(|c| !c.is_control()));
-                b.message = None;
+                b.type_text(s);
                 return true;
             }
         }
@@ -595,7 +626,7 @@ impl Editor {
             (Key::Char('f'), false, _) => self.frame_selection(),
             (Key::Home, _, _) => self.frame_all(),
             (Key::Escape, _, _) => self.run_action(Action::Mode),
-            (Key::Delete, _, _) => self.run_action(Action::Delete),
+            (Key::Delete, _, _) => self.delete_key(),
             (Key::Char('r'), false, _) => self.run_action(Action::Record),
             (Key::Char('l'), false, _) => {
                 if let Some(s) = self.selection {
@@ -633,6 +664,7 @@ impl Editor {
             After::New => self.new_scene(),
             After::Open => self.browse(Purpose::Open, None),
             After::Recover => {}
+            After::DeleteObject => self.delete_selection(),
         }
     }
 
@@ -684,6 +716,27 @@ impl Editor {
                 let before = Box::new(self.scene.clone());
                 let mut after = self.scene.clone();
                 let id = ops::add_light(&mut after, which, c, r);
+                if which != ops::NewLight::Directional {
+                    // Where the user looks, not somewhere off-screen.
+                    let cam = &self.camera;
+                    let spot = ops::in_view_spot(cam.target, cam.back(), cam.distance);
+                    // Beside, not on top of, lights already placed there.
+                    let right = glam::Vec3::Y.cross(cam.back()).normalize_or(glam::Vec3::X);
+                    let taken = |p: glam::Vec3| {
+                        self.scene.nodes.iter().any(|n| {
+                            n.light()
+                                .is_some_and(|l| (l.location - p).length() < 0.05 * cam.distance)
+                        })
+                    };
+                    let at = (0..5)
+                        .map(|k| spot - right * (0.12 * k as f32 * cam.distance))
+                        .find(|p| !taken(*p))
+                        .unwrap_or(spot);
+                    if let crate::scene::NodeKind::Light(l) = &mut after.nodes[id.0 as usize].kind {
+                        l.location = at;
+                        l.direction = (c - at).normalize_or(glam::Vec3::NEG_Y);
+                    }
+                }
                 let name = after.node(id).name.clone();
                 self.execute(
                     &format!("Add {name}"),
@@ -708,13 +761,39 @@ impl Editor {
             }
             Action::ObjectStyle => self.cycle_object_style(),
             Action::Delete => self.delete_selection(),
-            Action::DialogCancel => self.dialog = None,
+            Action::DialogCancel => {
+                if self
+                    .dialog
+                    .take()
+                    .is_some_and(|d| d.then == After::DeleteObject)
+                {
+                    self.set_status("Nothing deleted", false);
+                }
+            }
+            Action::DialogDiscard
+                if self
+                    .dialog
+                    .as_ref()
+                    .is_some_and(|d| d.then == After::DeleteObject) =>
+            {
+                self.dialog = None;
+                self.set_status("Nothing deleted", false);
+            }
             Action::DialogDiscard => {
                 if let Some(d) = self.dialog.take() {
                     // Discarding: forget the changes before continuing.
                     self.saved_revision = self.history.revision();
                     self.continue_with(d.then);
                 }
+            }
+            Action::DialogSave
+                if self
+                    .dialog
+                    .as_ref()
+                    .is_some_and(|d| d.then == After::DeleteObject) =>
+            {
+                self.dialog = None;
+                self.delete_selection();
             }
             Action::DialogSave => {
                 if let Some(d) = self.dialog.take() {
@@ -762,6 +841,26 @@ impl Editor {
             })
             .collect();
         self.execute(&format!("Draw as {next:?}"), Command::Group(cmds));
+    }
+
+    /// Delete acts on what has focus: selected keys are taken by the key
+    /// strip before this; over the timeline with no key selected the
+    /// object is not what the user looks at, so it asks first.
+    pub(in crate::editor) fn delete_key(&mut self) {
+        let (x, y) = self.mouse;
+        let over_strip = self.layout().timeline.contains(x, y);
+        match self.selection {
+            Some(sel) if over_strip => {
+                let name = ops::display_name(&self.scene, sel);
+                self.dialog = Some(Dialog {
+                    message: format!(
+                        "No key is selected in the key strip.\nDelete the object {name} and its keys?"
+                    ),
+                    then: After::DeleteObject,
+                });
+            }
+            _ => self.run_action(Action::Delete),
+        }
     }
 
     pub(in crate::editor) fn delete_selection(&mut self) {

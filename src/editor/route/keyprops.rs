@@ -107,6 +107,11 @@ impl Editor {
             Ok((anim, refs)) => {
                 self.apply_key_edit(&format!("Set key {f:?}"), anim, Vec::new());
                 self.set_key_selection(refs);
+                let kept = keys.first().map(|k| f.clamp(k.property, x));
+                let note = kept.and_then(|k| crate::editor::fields::clamp_note(&id.label(), x, k));
+                if let Some(n) = note {
+                    self.set_status(&n, false);
+                }
             }
             Err(e) => self.set_status(&e, true),
         }

@@ -5,7 +5,7 @@ use crate::editor::fields::FieldId;
 use crate::editor::ops::{self, NewLight};
 #[allow(unused_imports)]
 use crate::editor::panel::*;
-use crate::editor::{Editor, Mode};
+use crate::editor::{After, Editor, Mode};
 use crate::scene::{LightKind, NodeId, NodeKind};
 use crate::ui::layout::{CONTROLS_H, ROW};
 use crate::ui::text::{self, CHAR_W};
@@ -442,11 +442,11 @@ impl Editor {
 
     pub fn dialog_rect(&self) -> Rect {
         let win = self.layout().window;
-        let bw = (win.w - 20).clamp(100, 360);
-        let lines = self
-            .dialog
-            .as_ref()
-            .map_or(1, |d| d.message.lines().count());
+        let msg = self.dialog.as_ref().map_or("", |d| d.message.as_str());
+        // Wide enough for the longest line (recovery lists), in the window.
+        let widest = msg.lines().map(text::width).max().unwrap_or(0) + 16;
+        let bw = widest.clamp(360, 640).min(win.w - 20).max(100);
+        let lines = msg.lines().count();
         let bh = (2 + lines.max(1) as i32) * ROW + 20;
         Rect::new((win.w - bw) / 2, (win.h - bh) / 2, bw, bh)
     }
@@ -454,14 +454,14 @@ impl Editor {
     pub fn dialog_widgets(&self, message: &str) -> Vec<Widget> {
         let r = self.dialog_rect();
         let mut out = Vec::new();
-        let recover = self
-            .dialog
-            .as_ref()
-            .is_some_and(|d| d.then == crate::editor::After::Recover);
-        let (heading, labels) = if recover {
-            ("Recovery copy", ["Open saved", "Discard copy", "Recover"])
-        } else {
-            ("Unsaved changes", ["Cancel", "Discard", "Save"])
+        let then = self.dialog.as_ref().map(|d| d.then);
+        let (heading, labels) = match then {
+            Some(After::Recover) if !self.autosave.untitled.is_empty() => {
+                ("Recovery copies", ["Not now", "Discard copy", "Recover"])
+            }
+            Some(After::Recover) => ("Recovery copy", ["Open saved", "Discard copy", "Recover"]),
+            Some(After::DeleteObject) => ("Delete", ["Cancel", "", "Delete"]),
+            _ => ("Unsaved changes", ["Cancel", "Discard", "Save"]),
         };
         let (title, rest) = r.take_top(ROW + 2);
         out.push(w(title, WidgetKind::Header(heading.into())));
@@ -479,6 +479,9 @@ impl Editor {
             Action::DialogDiscard,
             Action::DialogSave,
         ]) {
+            if l.is_empty() {
+                continue;
+            }
             let bw = text::width(l) + 10;
             x -= bw;
             out.push(button(

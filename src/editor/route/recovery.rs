@@ -25,6 +25,14 @@ impl Editor {
     pub fn recovery_file(&self) -> PathBuf {
         match &self.path {
             Some(p) => recovery_path(p),
+            None => self.untitled_file(),
+        }
+    }
+
+    /// Where this session's untitled work is autosaved.
+    fn untitled_file(&self) -> PathBuf {
+        match &self.autosave.dir {
+            Some(d) => untitled_in(d),
             None => untitled_path(),
         }
     }
@@ -66,7 +74,20 @@ impl Editor {
             return false;
         }
         match self.autosave_now() {
-            Ok(_) => false,
+            Ok(p) => {
+                // Say so: the user should see their work is safe.
+                let name = p.file_name().map(|n| n.to_string_lossy().to_string());
+                let when = clock_utc(SystemTime::now());
+                let what = match &self.path {
+                    Some(_) => "unsaved changes",
+                    None => "untitled work",
+                };
+                self.set_status(
+                    &format!("Autosaved {what} at {when} ({})", name.unwrap_or_default()),
+                    false,
+                );
+                true
+            }
             Err(e) => {
                 // Try again after another interval.
                 self.autosave.since = Some(now);
@@ -102,7 +123,7 @@ impl Editor {
     pub(in crate::editor) fn saved_recovery(&mut self, old: Option<&Path>) {
         self.forget_recovery();
         if old.is_none() {
-            remove(&untitled_path());
+            remove(&self.untitled_file());
         }
         if let Some(p) = &self.path {
             remove(&recovery_path(p));
@@ -143,6 +164,61 @@ impl Editor {
         self.autosave.offer.as_deref()
     }
 
+    /// At start: when untitled sessions left recovery copies in `dir` (the
+    /// state folder, see `state_dir`), lists them newest first in the
+    /// recovery dialog (unless another question is open). Returns how
+    /// many were offered.
+    pub fn offer_untitled(&mut self, dir: &Path) -> usize {
+        if self.dialog.is_some() {
+            return 0;
+        }
+        self.autosave.dir = Some(dir.to_path_buf());
+        self.autosave.untitled = untitled_sessions(dir);
+        self.autosave.chosen = 0;
+        self.show_untitled_offer();
+        self.autosave.untitled.len()
+    }
+
+    /// The untitled sessions the recovery dialog lists, newest first.
+    pub fn untitled_offers(&self) -> &[Session] {
+        &self.autosave.untitled
+    }
+
+    /// (Re)builds the dialog listing `autosave.untitled`; closes it when
+    /// none are left.
+    fn show_untitled_offer(&mut self) {
+        let list = &self.autosave.untitled;
+        if list.is_empty() {
+            self.autosave.offer = None;
+            if self
+                .dialog
+                .as_ref()
+                .is_some_and(|d| d.then == After::Recover)
+            {
+                self.dialog = None;
+            }
+            return;
+        }
+        let chosen = self.autosave.chosen.min(list.len() - 1);
+        self.autosave.chosen = chosen;
+        self.autosave.offer = Some(list[chosen].path.clone());
+        let mut message = String::from("Untitled work was autosaved and not saved:");
+        let lines = session_lines(list, SystemTime::now());
+        // At most 9 rows (keys 1-9 pick one); the rest wait their turn.
+        for (i, l) in lines.iter().enumerate().take(9) {
+            let mark = if i == chosen { ">" } else { " " };
+            message += &format!("\n{mark} {l}");
+        }
+        if lines.len() > 9 {
+            message += &format!("\n  ... and {} more", lines.len() - 9);
+        }
+        message += "\nRecover the marked one? (Up/Down or 1-9 choose)";
+        self.dialog = Some(Dialog {
+            message,
+            then: After::Recover,
+        });
+    }
+
     /// Keys of the recovery dialog: Enter or R recovers, D discards the
     /// copy, O or Esc opens the saved file. True when the key was taken.
     pub(in crate::editor) fn recovery_key(&mut self, key: Key) -> bool {
@@ -153,7 +229,27 @@ impl Editor {
         {
             return false;
         }
+        let untitled = !self.autosave.untitled.is_empty();
+        let n = self.autosave.untitled.len().min(9);
         let a = match key {
+            Key::Up | Key::Down if untitled => {
+                let c = self.autosave.chosen;
+                self.autosave.chosen = match key {
+                    Key::Up => c.saturating_sub(1),
+                    _ => (c + 1).min(n.saturating_sub(1)),
+                };
+                self.show_untitled_offer();
+                return true;
+            }
+            Key::Char(d @ '1'..='9') if untitled => {
+                let i = d as usize - '1' as usize;
+                if i >= n {
+                    return true;
+                }
+                self.autosave.chosen = i;
+                self.show_untitled_offer();
+                Action::DialogSave
+            }
             Key::Enter | Key::Char('r') => Action::DialogSave,
             Key::Char('d') => Action::DialogDiscard,
             Key::Escape | Key::Char('o') => Action::DialogCancel,
@@ -177,6 +273,9 @@ impl Editor {
                 self.forget_recovery();
             }
             return false;
+        }
+        if !self.autosave.untitled.is_empty() {
+            return self.untitled_action(a);
         }
         let copy = self.autosave.offer.take();
         match a {
@@ -204,6 +303,81 @@ impl Editor {
             }
         }
         true
+    }
+
+    /// The recovery dialog's buttons for untitled sessions: Recover loads
+    /// the marked one as new untitled work, Discard copy deletes it and
+    /// lists the rest, Not now keeps them all for the next start.
+    fn untitled_action(&mut self, a: Action) -> bool {
+        let i = self.autosave.chosen;
+        match a {
+            Action::DialogSave => {
+                let s = self.autosave.untitled.remove(i);
+                self.autosave.untitled.clear();
+                self.autosave.offer = None;
+                self.dialog = None;
+                self.recover_untitled(&s.path);
+            }
+            Action::DialogDiscard => {
+                let s = self.autosave.untitled.remove(i);
+                remove(&s.path);
+                self.set_status(
+                    &format!("Deleted the recovery copy {}", s.path.display()),
+                    false,
+                );
+                self.show_untitled_offer();
+            }
+            Action::DialogCancel => {
+                let n = self.autosave.untitled.len();
+                self.autosave.untitled.clear();
+                self.autosave.offer = None;
+                self.dialog = None;
+                self.set_status(
+                    &format!(
+                        "Kept {n} recovery cop{} for later (`animed recover --list`)",
+                        if n == 1 { "y" } else { "ies" }
+                    ),
+                    false,
+                );
+            }
+            _ => return false,
+        }
+        true
+    }
+
+    /// Opens an untitled session's copy as new untitled work: an empty
+    /// scene, then one undoable "Recover" step (so the work counts as
+    /// unsaved and keeps being autosaved). The copy becomes this session's
+    /// own, so a save or a clean quit deletes it.
+    pub fn recover_untitled(&mut self, copy: &Path) {
+        let loaded = match crate::format::load(copy) {
+            Ok(l) => l,
+            Err(e) => {
+                self.set_status(&format!("cannot recover: {e}"), true);
+                return;
+            }
+        };
+        self.replace_scene(crate::scene::Scene::new(), None);
+        let before = Box::new(self.scene.clone());
+        self.execute(
+            "Recover autosaved work",
+            Command::ReplaceScene {
+                before,
+                after: Box::new(loaded.scene),
+            },
+        );
+        self.frame_all();
+        let mine = self.untitled_file();
+        let taken = if copy == mine || std::fs::rename(copy, &mine).is_ok() {
+            mine
+        } else {
+            copy.to_path_buf()
+        };
+        self.autosave.written = Some(taken);
+        self.set_status(
+            "Recovered untitled work: Ctrl+S saves it under a name",
+            false,
+        );
     }
 
     /// Loads the recovery copy into the editor as one undoable change (undo
@@ -257,7 +431,7 @@ impl Editor {
             Ok(p) => {
                 let how = match &self.path {
                     Some(_) => "open the scene again to recover them",
-                    None => "open it with `animed edit` and save it under a name",
+                    None => "animed offers it at the next start; `animed recover --list` shows it",
                 };
                 format!(
                     "window closed with unsaved changes; they are in the recovery copy {} ({how})",
