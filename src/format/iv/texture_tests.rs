@@ -74,9 +74,9 @@ fn inline_image_points_binding_and_index() {
 
 #[test]
 fn wrap_models_and_blend_colour() {
-    let l = load(&format!(
-        "#Inventor V2.1 ascii\nSeparator {{ Texture2 {{ image 1 1 1 0x80 wrapS CLAMP model DECAL }} DEF A Cube {{}} }}\nSeparator {{ Texture2 {{ image 1 1 2 0x80ff wrapT CLAMP model BLEND blendColor 0 1 0 }} DEF B Sphere {{}} }}"
-    ));
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { Texture2 { image 1 1 1 0x80 wrapS CLAMP model DECAL } DEF A Cube {} }\nSeparator { Texture2 { image 1 1 2 0x80ff wrapT CLAMP model BLEND blendColor 0 1 0 } DEF B Sphere {} }",
+    );
     let s = &l.scene;
     let a = shape(s, "A").0.unwrap();
     assert_eq!(
