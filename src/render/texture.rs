@@ -213,11 +213,28 @@ impl Sampler {
     }
 }
 
-/// A texel index wrapped (repeat) or clamped into `0..n`.
+/// A texel index wrapped (repeat) or clamped into `0..n`. Indices come
+/// within a period or two of the image (the bilinear footprint of a
+/// coordinate already reduced to one period), so repeat wraps by one
+/// addition or subtraction and divides only in the rare rest (same result
+/// as `rem_euclid`, without an integer division per texel).
 #[inline]
 fn wrap(i: i64, n: i64, mode: Wrap) -> usize {
     match mode {
-        Wrap::Repeat => i.rem_euclid(n) as usize,
+        Wrap::Repeat => {
+            let j = if i < 0 {
+                i + n
+            } else if i >= n {
+                i - n
+            } else {
+                i
+            };
+            if (0..n).contains(&j) {
+                j as usize
+            } else {
+                i.rem_euclid(n) as usize
+            }
+        }
         Wrap::Clamp => i.clamp(0, n - 1) as usize,
     }
 }
