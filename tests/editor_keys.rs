@@ -112,17 +112,20 @@ fn strip_has_a_summary_row_and_a_row_per_property_and_folds() {
     let (mut ed, _) = editor();
     let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
     assert_eq!(rows, vec![Row::Summary, Row::Track(T), Row::Track(S)]);
+    // The strip's height never follows the rows (issue 17: stable layout).
     let l = ed.layout();
-    assert_eq!(l.key_rows.h, 3 * animed::ui::layout::KEY_ROW_H);
+    let h = l.key_rows.h;
+    assert!(h >= animed::ui::layout::KEY_ROW_H, "{h}");
     // The fold triangle sits in the summary row's name cell.
     let (_, r) = ed.key_strip_layout()[0];
     click(&mut ed, (r.x as f32 + 6.0, r.y as f32 + 7.0));
     let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
     assert_eq!(rows, vec![Row::Summary]);
-    assert_eq!(ed.layout().key_rows.h, animed::ui::layout::KEY_ROW_H);
-    // Nothing animated selected: no strip.
+    assert_eq!(ed.layout().key_rows.h, h);
+    // Nothing animated selected: the strip stays, with its summary row only.
     ed.select(Some(NodeId(1)));
-    assert_eq!(ed.layout().key_rows.h, 0);
+    assert_eq!(ed.layout().key_rows.h, h);
+    assert_eq!(ed.key_strip_layout().len(), 1);
 }
 
 #[test]
@@ -614,20 +617,42 @@ fn busy_light() -> (Editor, NodeId) {
 }
 
 #[test]
-fn too_many_rows_end_in_a_more_row_and_bool_keys_toggle() {
+fn too_many_rows_scroll_and_bool_keys_toggle() {
     let (mut ed, id) = busy_light();
     let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
     let cap = (ed.layout().key_rows.h / animed::ui::layout::KEY_ROW_H) as usize;
     assert!(cap < 9, "the strip is capped ({cap} rows)");
     assert_eq!(rows.len(), cap);
     assert_eq!(rows[0], Row::Summary);
-    assert_eq!(rows[1], Row::Track(Property::LightOn));
-    assert_eq!(*rows.last().unwrap(), Row::More(9 - (cap - 1)));
-    // A taller window fits every row.
+    assert_eq!(ed.key_strip_scroll(), (0, 9, cap));
+    // The wheel over the strip scrolls the rows (to the last ones).
+    let r = ed.layout().key_rows;
+    for _ in 0..20 {
+        ed.handle(Event::Wheel {
+            delta: -1.0,
+            x: (r.x + r.w / 2) as f32,
+            y: (r.y + 3) as f32,
+            mods: Mods::NONE,
+        });
+    }
+    let rows: Vec<Row> = ed.key_strip_layout().into_iter().map(|(r, _)| r).collect();
+    assert_eq!(*rows.last().unwrap(), Row::Track(Property::LightDropOff));
+    assert_eq!(ed.key_strip_scroll().0, 9 - cap);
+    // Back to the top; then a taller strip (drag its edge) fits every row.
+    for _ in 0..20 {
+        ed.handle(Event::Wheel {
+            delta: 1.0,
+            x: (r.x + r.w / 2) as f32,
+            y: (r.y + 3) as f32,
+            mods: Mods::NONE,
+        });
+    }
     ed.handle(Event::Resize {
         width: 640,
         height: 480,
     });
+    let top = ed.layout().timeline.y as f32;
+    drag(&mut ed, (20.0, top), (20.0, top - 200.0), Mods::NONE);
     assert_eq!(ed.key_strip_layout().len(), 9);
     // A boolean key: the panel's On/Off button flips it.
     click_marker(&mut ed, Row::Track(Property::LightOn), 10.0, Mods::NONE);

@@ -2,6 +2,8 @@
 //! layout, creating objects, standard views. Driven through events as the
 //! window and scripts drive it.
 
+#[path = "common/golden.rs"]
+mod golden;
 #[path = "common/ui_input.rs"]
 mod ui_input;
 use animed::editor::{After, Editor, Event, Key, Mods, MouseButton};
@@ -163,4 +165,278 @@ fn a_typed_absolute_path_replaces_the_browsers_folder() {
     let m = ed.browser().unwrap().message.clone().unwrap_or_default();
     assert!(m.contains("no file /no/such/place.wrl"), "{m}");
     assert!(!m.contains("//"), "{m}");
+}
+
+// ----- item 6: stable layout -----
+
+/// The stage in a window where every list row shows (800×600).
+fn big_stage() -> Editor {
+    let mut ed = stage();
+    ed.handle(Event::Resize {
+        width: 800,
+        height: 600,
+    });
+    ed
+}
+
+/// Every label's text fits its box, and no label runs into a field on its
+/// row.
+fn assert_text_fits(ed: &Editor) {
+    use animed::editor::panel::WidgetKind;
+    use animed::ui::text::width;
+    let ws = ed.widgets();
+    for w in &ws {
+        let WidgetKind::Label { text, .. } = &w.kind else {
+            continue;
+        };
+        assert!(
+            width(text) <= w.rect.w,
+            "label '{text}' ({} px) cut in a {} px box",
+            width(text),
+            w.rect.w
+        );
+        for f in &ws {
+            if matches!(f.kind, WidgetKind::Field(_))
+                && f.rect.y.abs_diff(w.rect.y) < 4
+                && f.rect.x >= w.rect.x
+            {
+                assert!(
+                    w.rect.x + width(text) + 2 <= f.rect.x,
+                    "label '{text}' runs into the field at x {}",
+                    f.rect.x
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn selecting_never_moves_the_viewport_or_the_side_panel() {
+    let mut ed = big_stage();
+    let before = ed.layout();
+    for name in ["Ball", "Ground", "Lamp", "SpotLamp"] {
+        let id = node(&ed, name);
+        let row = find(&ed, &format!("node: NodeId({})", id.0));
+        click(&mut ed, row);
+        assert_eq!(ed.selection(), Some(id));
+        let l = ed.layout();
+        assert_eq!(
+            (l.viewport, l.side, l.key_rows),
+            (before.viewport, before.side, before.key_rows),
+            "{name}"
+        );
+        assert_text_fits(&ed);
+    }
+}
+
+#[test]
+fn the_key_strip_resizes_by_its_edge_and_scrolls_its_rows() {
+    let mut ed = stage();
+    ed.select(Some(node(&ed, "Ball")));
+    let l = ed.layout();
+    let edge = (l.viewport.x as f32 + 40.0, l.timeline.y as f32);
+    // Drag the edge up by 30 px: the strip grows, the viewport shrinks.
+    drag(&mut ed, edge, (edge.0, edge.1 - 30.0), Mods::NONE);
+    let l2 = ed.layout();
+    assert_eq!(l2.key_rows.h, l.key_rows.h + 30);
+    assert_eq!(l2.viewport.h, l.viewport.h - 30);
+    // Down to one row: the rest scroll (wheel over the strip).
+    let edge = (edge.0, l2.timeline.y as f32);
+    drag(&mut ed, edge, (edge.0, edge.1 + 400.0), Mods::NONE);
+    let (first, all, cap) = ed.key_strip_scroll();
+    assert!(cap >= 1 && all > cap, "rows {all}, fit {cap}");
+    assert_eq!(first, 0);
+    let r = ed.layout().key_rows;
+    let at = ((r.x + r.w / 2) as f32, (r.y + r.h / 2) as f32);
+    ed.handle(Event::Wheel {
+        delta: -1.0,
+        x: at.0,
+        y: at.1,
+        mods: Mods::NONE,
+    });
+    assert_eq!(ed.key_strip_scroll().0, 1, "scrolled one row");
+    assert_eq!(
+        ed.current_frame(),
+        0.0,
+        "the wheel scrolled instead of stepping"
+    );
+}
+
+#[test]
+fn the_key_list_wraps_and_key_panel_labels_keep_clear() {
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    // Many keys: K at every 6th frame.
+    for _ in 0..12 {
+        key(&mut ed, Key::Char('k'), Mods::NONE);
+        for _ in 0..6 {
+            key(&mut ed, Key::Right, Mods::NONE);
+        }
+    }
+    assert_text_fits(&ed);
+    // The key panel (a key selected): "Value", "Frame" clear of their fields.
+    let m = ed
+        .key_marker_at(animed::editor::keystrip::Row::Summary, 0.0)
+        .expect("a key at frame 0");
+    click(&mut ed, m);
+    assert_text_fits(&ed);
+}
+
+// ----- item 1: create -----
+
+#[test]
+fn shift_a_adds_a_unit_box_at_the_orbit_centre_selected_and_named() {
+    let mut ed = Editor::new(Scene::new(), None, 480, 320);
+    let vp = ed.layout().viewport;
+    hover(&mut ed, ((vp.x + 60) as f32, (vp.y + 60) as f32));
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    let m = ed.menu().expect("Shift+A opens the Add menu");
+    let labels: Vec<&str> = m.items.iter().map(|i| i.label.as_str()).collect();
+    assert_eq!(
+        labels,
+        [
+            "Box",
+            "Sphere",
+            "Cone",
+            "Cylinder",
+            "Plane",
+            "Empty",
+            "Camera",
+            "Point light",
+            "Spot light",
+            "Directional light"
+        ]
+    );
+    // Click "Box".
+    let r = m.item_rect(ed.layout().window, 0);
+    click(&mut ed, ((r.x + 10) as f32, (r.y + 5) as f32));
+    assert!(ed.menu().is_none());
+    let b = ed.selection().expect("the box is selected");
+    let s = ed.scene();
+    assert_eq!(s.node(b).name, "Box1");
+    assert_eq!(s.node(b).transform.translation, ed.camera().target);
+    let mesh = s.nodes.iter().find_map(|n| match &n.kind {
+        animed::scene::NodeKind::Shape(sh) => Some(&s.meshes[sh.mesh.0 as usize]),
+        _ => None,
+    });
+    let (lo, hi) = mesh.unwrap().bounds().unwrap();
+    assert_eq!(hi - lo, glam::Vec3::ONE, "a unit box in an empty scene");
+    assert!(ed.status().text.starts_with("Added Box1"));
+    // Again (by keyboard): a second, uniquely named box; undo removes it.
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    key(&mut ed, Key::Char('b'), Mods::NONE);
+    assert_eq!(ed.scene().node(ed.selection().unwrap()).name, "Box2");
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert!(ed.scene().find_node("Box2").is_none());
+    // Esc closes the menu without adding.
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    key(&mut ed, Key::Escape, Mods::NONE);
+    assert!(ed.menu().is_none());
+    assert!(ed.scene().find_node("Box2").is_none());
+}
+
+#[test]
+fn every_add_menu_item_adds_something_selected_and_in_a_sized_scene_bigger() {
+    let mut ed = stage();
+    let at = find(&ed, "AddMenu");
+    let mut names = std::collections::HashSet::new();
+    for i in 0..10 {
+        click(&mut ed, at);
+        let m = ed.menu().expect("the toolbar's Add opens the menu");
+        let r = m.item_rect(ed.layout().window, i);
+        click(&mut ed, ((r.x + 10) as f32, (r.y + 5) as f32));
+        let id = ed.selection().expect("selected");
+        assert!(
+            names.insert(ed.scene().node(id).name.clone()),
+            "unique names"
+        );
+    }
+    assert!(ed.scene().find_node("Camera1").is_some());
+    // Sized to the view: the stage is framed from further than 10 units.
+    let sphere = ed.scene().find_node("Sphere1").unwrap();
+    let shape = ed.scene().node(sphere).children[0];
+    let animed::scene::NodeKind::Shape(sh) = &ed.scene().node(shape).kind else {
+        panic!("a shape")
+    };
+    let (lo, hi) = ed.scene().meshes[sh.mesh.0 as usize].bounds().unwrap();
+    assert!(hi.x - lo.x >= 2.0, "{}", hi.x - lo.x);
+}
+
+#[test]
+fn shift_d_duplicates_with_tracks_and_list_drags_parent() {
+    use animed::anim::{Property, Target, TargetRef};
+    let mut ed = big_stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    key(&mut ed, Key::Char('d'), Mods::shift());
+    let copy = ed.selection().expect("the copy is selected");
+    assert_ne!(copy, ball);
+
+    let t = |of| Target {
+        of: TargetRef::Node(of),
+        property: Property::Translation,
+    };
+    let a = ed.scene().animation.track(t(ball)).expect("ball animated");
+    let b = ed.scene().animation.track(t(copy)).expect("copy animated");
+    assert_eq!(a.key_count(), b.key_count());
+    // Drag the copy's row onto Ground's row: it goes under Ground.
+    let ground = node(&ed, "Ground");
+    let from = find(&ed, &format!("node: NodeId({})", copy.0));
+    let to = find(&ed, &format!("node: NodeId({})", ground.0));
+    drag(&mut ed, from, to, Mods::NONE);
+    assert_eq!(ed.scene().node(copy).parent, Some(ground));
+    // Onto the list's empty space: back to the top level.
+    let objects = ed.side_panel().objects;
+    let from = find(&ed, &format!("node: NodeId({})", copy.0));
+    drag(
+        &mut ed,
+        from,
+        ((objects.x + 20) as f32, (objects.bottom() - 3) as f32),
+        Mods::NONE,
+    );
+    assert_eq!(ed.scene().node(copy).parent, None);
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(ed.scene().node(copy).parent, Some(ground), "undo");
+}
+
+#[test]
+fn newcomer_goldens() {
+    // The Add menu open over an empty scene.
+    let mut ed = Editor::new(Scene::new(), None, 480, 320);
+    let vp = ed.layout().viewport;
+    hover(&mut ed, ((vp.x + 80) as f32, (vp.y + 40) as f32));
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    key(&mut ed, Key::Down, Mods::NONE);
+    golden::check("editor_add_menu", &ed.render_frame());
+    // Box, sphere and cone added (sized and placed), the cone selected.
+    key(&mut ed, Key::Escape, Mods::NONE);
+    for item in ['b', 's'] {
+        key(&mut ed, Key::Char('a'), Mods::shift());
+        key(&mut ed, Key::Char(item), Mods::NONE);
+        // Move each aside so all three show.
+        let id = ed.selection().unwrap();
+        let tx = find(&ed, "Field(Translation(0))");
+        click(&mut ed, tx);
+        ed.handle(Event::Text(if item == 'b' { "-2" } else { "2" }.into()));
+        key(&mut ed, Key::Enter, Mods::NONE);
+        assert_ne!(ed.scene().node(id).transform.translation.x, 0.0);
+    }
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    key(&mut ed, Key::Char('c'), Mods::NONE);
+    golden::check("editor_added_shapes", &ed.render_frame());
+    // The stage with a short, scrolled key strip.
+    let mut ed = stage();
+    ed.select(Some(node(&ed, "Ball")));
+    let l = ed.layout();
+    let edge = (l.viewport.x as f32 + 40.0, l.timeline.y as f32);
+    drag(&mut ed, edge, (edge.0, edge.1 + 400.0), Mods::NONE);
+    let r = ed.layout().key_rows;
+    ed.handle(Event::Wheel {
+        delta: -1.0,
+        x: (r.x + r.w / 2) as f32,
+        y: (r.y + 4) as f32,
+        mods: Mods::NONE,
+    });
+    golden::check("editor_strip_scrolled", &ed.render_frame());
 }

@@ -166,7 +166,15 @@ fn add_toggle_and_delete_lights() {
         !ed.scene().node(spot).light().unwrap().on,
         "L switches it off"
     );
-    // The list's checkbox switches the lamp off too.
+    // The list's checkbox switches the lamp off too (scrolled into view:
+    // the list shows the new light first).
+    let lights = ed.side_panel().lights;
+    ed.handle(Event::Wheel {
+        delta: 1.0,
+        x: (lights.x + 20) as f32,
+        y: (lights.y + 20) as f32,
+        mods: Mods::NONE,
+    });
     let (x, y) = find(&ed, "ToggleLight(NodeId(4))");
     click(&mut ed, x, y);
     assert!(!ed.scene().node(NodeId(4)).light().unwrap().on);

@@ -337,9 +337,9 @@ fn body_pixel(ed: &mut Editor, id: NodeId) -> (f32, f32) {
     let c = ed
         .pixel_of(ed.scene().node(id).transform.translation)
         .unwrap();
-    for r in 4..40 {
-        for k in 0..16 {
-            let a = k as f32 / 16.0 * std::f32::consts::TAU;
+    for r in 4..60 {
+        for k in 0..32 {
+            let a = k as f32 / 32.0 * std::f32::consts::TAU;
             let p = (c.0 + a.cos() * r as f32, c.1 + a.sin() * r as f32);
             if ed.pick_at(p.0, p.1) == Some(id) && ed.handle_at(p.0, p.1).is_none() {
                 return p;

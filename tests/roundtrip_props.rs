@@ -142,6 +142,8 @@ fn random_scene(seed: u64) -> Scene {
                 false,
             )),
             K::Bool => Keys::Bool(random_keys(&mut r, |r| r.pick(2) == 0, true)),
+            // Morph weights need a morphed mesh; the generator makes none.
+            K::Weights => continue,
         };
         let repeat = [Repeat::Constant, Repeat::Loop][r.pick(2)];
         s.animation.tracks.push(Track {

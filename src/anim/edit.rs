@@ -4,7 +4,7 @@
 //!
 //! Two key times closer than [`KEY_EPS`] frames name the same key.
 
-use super::{Key, KeyParams, Keys, Track, TrackError, Value, ValueKind};
+use super::{Key, KeyParams, Keys, Track, TrackError, Value, ValueKind, Weights};
 use glam::{Quat, Vec3};
 
 /// Frames within which an edit's frame matches an existing key.
@@ -78,6 +78,25 @@ impl Stored for Quat {
     }
 }
 
+impl Stored for Weights {
+    fn from_value(v: Value) -> Option<Self> {
+        match v {
+            Value::Weights(x) => Some(x),
+            _ => None,
+        }
+    }
+    fn to_value(self) -> Value {
+        Value::Weights(self)
+    }
+    fn check(self) -> Result<Self, &'static str> {
+        if self.is_finite() {
+            Ok(self)
+        } else {
+            Err("value")
+        }
+    }
+}
+
 impl Stored for bool {
     fn from_value(v: Value) -> Option<Self> {
         match v {
@@ -101,6 +120,7 @@ macro_rules! with_keys {
             Keys::Vec3($k) => $body,
             Keys::Rotation($k) => $body,
             Keys::Bool($k) => $body,
+            Keys::Weights($k) => $body,
         }
     };
 }
@@ -207,6 +227,7 @@ impl Keys {
             ValueKind::Vec3 | ValueKind::Color => Keys::Vec3(Vec::new()),
             ValueKind::Rotation => Keys::Rotation(Vec::new()),
             ValueKind::Bool => Keys::Bool(Vec::new()),
+            ValueKind::Weights => Keys::Weights(Vec::new()),
         }
     }
 

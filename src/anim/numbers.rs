@@ -3,7 +3,7 @@
 //! rotations as axis-angle `[x, y, z, angle]` (radians, VRML SFRotation),
 //! booleans `[0]` / `[1]`.
 
-use super::{Value, ValueKind};
+use super::{Value, ValueKind, Weights, MAX_MORPH_TARGETS};
 use glam::{Quat, Vec3};
 
 /// Why numbers could not become a value.
@@ -46,10 +46,11 @@ impl std::fmt::Display for ValueError {
 impl std::error::Error for ValueError {}
 
 impl ValueKind {
-    /// How many numbers a value of this kind is written with.
+    /// How many numbers a value of this kind is written with (weights: one
+    /// per morph target, so 1 here stands for "at least one").
     pub fn arity(self) -> usize {
         match self {
-            ValueKind::Scalar | ValueKind::Bool => 1,
+            ValueKind::Scalar | ValueKind::Bool | ValueKind::Weights => 1,
             ValueKind::Vec3 | ValueKind::Color => 3,
             ValueKind::Rotation => 4,
         }
@@ -63,6 +64,7 @@ impl ValueKind {
             ValueKind::Color => "color",
             ValueKind::Rotation => "rotation",
             ValueKind::Bool => "bool",
+            ValueKind::Weights => "weights",
         }
     }
 }
@@ -75,6 +77,7 @@ impl Value {
             Value::Vec3(_) => ValueKind::Vec3,
             Value::Rotation(_) => ValueKind::Rotation,
             Value::Bool(_) => ValueKind::Bool,
+            Value::Weights(_) => ValueKind::Weights,
         }
     }
 
@@ -87,6 +90,7 @@ impl Value {
             Value::Vec3(v) => vec![v.x, v.y, v.z],
             Value::Rotation(q) => axis_angle(q).to_vec(),
             Value::Bool(b) => vec![if b { 1.0 } else { 0.0 }],
+            Value::Weights(w) => w.as_slice().to_vec(),
         }
     }
 
@@ -95,7 +99,11 @@ impl Value {
     /// identity whatever the axis.
     pub fn from_numbers(kind: ValueKind, n: &[f32]) -> Result<Value, ValueError> {
         let expected = kind.arity();
-        if n.len() != expected {
+        let count_ok = match kind {
+            ValueKind::Weights => (1..=MAX_MORPH_TARGETS).contains(&n.len()),
+            _ => n.len() == expected,
+        };
+        if !count_ok {
             return Err(ValueError::Count {
                 kind,
                 expected,
@@ -123,6 +131,7 @@ impl Value {
                     Value::Rotation(Quat::from_xyzw(a.x, a.y, a.z, libm::cosf(half)))
                 }
             }
+            ValueKind::Weights => Value::Weights(Weights::from_slice_truncated(n)),
             ValueKind::Bool => {
                 if n[0] == 0.0 {
                     Value::Bool(false)

@@ -1,4 +1,6 @@
-use super::{Property, TargetRef, Value};
+use super::deform::{self, Deformed};
+use super::skinning::JointMatrix;
+use super::{Property, TargetRef, Value, Weights};
 use crate::scene::{Camera, CameraKind, Light, LightKind, Material, NodeId, Scene, Transform};
 use glam::Mat4;
 
@@ -18,6 +20,15 @@ pub struct Pose {
     pub cameras: Vec<(NodeId, Camera)>,
     /// Animated materials, indexed like `Scene::materials`.
     pub materials: Vec<Material>,
+    /// Morph weights per shape node whose mesh has morph targets, in node
+    /// order (the mesh's defaults unless a `weights` track drives them).
+    pub weights: Vec<(NodeId, Weights)>,
+    /// Per skin (indexed like `Scene::skins`): each joint's
+    /// `jointWorld · inverseBind` and its normal matrix.
+    pub joints: Vec<Vec<JointMatrix>>,
+    /// Deformed geometry per shape node whose mesh is morphed or skinned, in
+    /// node order.
+    pub deformed: Vec<(NodeId, Deformed)>,
 }
 
 impl Pose {
@@ -28,6 +39,14 @@ impl Pose {
     /// The animated camera of node `id`.
     pub fn camera(&self, id: NodeId) -> Option<&Camera> {
         find(&self.cameras, id)
+    }
+    /// The morph weights of shape node `id`, when its mesh has targets.
+    pub fn weights(&self, id: NodeId) -> Option<&Weights> {
+        find(&self.weights, id)
+    }
+    /// The deformed geometry of shape node `id`, when its mesh deforms.
+    pub fn deformed(&self, id: NodeId) -> Option<&Deformed> {
+        find(&self.deformed, id)
     }
 }
 
@@ -65,6 +84,7 @@ pub fn evaluate_into(scene: &Scene, time: f32, pose: &mut Pose) {
     sync(&mut pose.lights, nodes.iter().map(|n| n.light()));
     sync(&mut pose.cameras, nodes.iter().map(|n| n.camera()));
     pose.materials.clone_from(&scene.materials);
+    deform::default_weights(scene, &mut pose.weights);
 
     for track in &scene.animation.tracks {
         let p = track.target.property;
@@ -75,6 +95,24 @@ pub fn evaluate_into(scene: &Scene, time: f32, pose: &mut Pose) {
                     continue;
                 }
                 match p.owner() {
+                    "shape" => {
+                        let Value::Weights(w) = track.sample(frame) else {
+                            continue;
+                        };
+                        // A group's weights drive its morphed child shapes
+                        // (a glTF node with several primitives).
+                        let own = std::slice::from_ref(&id);
+                        let ids = if pose.weights.binary_search_by_key(&id, |(n, _)| *n).is_ok() {
+                            own
+                        } else {
+                            &nodes[i].children[..]
+                        };
+                        for c in ids {
+                            if let Ok(j) = pose.weights.binary_search_by_key(c, |(n, _)| *n) {
+                                apply_weights(&mut pose.weights[j].1, &w);
+                            }
+                        }
+                    }
                     "light" => {
                         if let Ok(j) = pose.lights.binary_search_by_key(&id, |(n, _)| *n) {
                             apply_light(p, track.sample(frame), &mut pose.lights[j].1);
@@ -119,6 +157,15 @@ pub fn evaluate_into(scene: &Scene, time: f32, pose: &mut Pose) {
             combine(nodes, pose, id.0 as usize);
         }
     }
+    deform::deform(scene, pose);
+}
+
+/// Keyed weights replace the defaults target by target; a key with fewer
+/// weights than the mesh has targets leaves the rest at their defaults, and
+/// extra keyed weights are ignored.
+fn apply_weights(out: &mut Weights, keyed: &Weights) {
+    let n = out.len().min(keyed.len());
+    out.as_mut_slice()[..n].copy_from_slice(&keyed.as_slice()[..n]);
 }
 
 /// Folds the parent's world matrix and visibility into node `i`.

@@ -1,5 +1,6 @@
 //! The one list of animatable properties and their value types.
 
+use super::Weights;
 use crate::scene::{MaterialId, NodeId};
 use glam::{Quat, Vec3};
 
@@ -12,15 +13,24 @@ pub enum ValueKind {
     Color,
     Rotation,
     Bool,
+    /// Morph-target weights: a vector of N (the mesh's target count).
+    Weights,
 }
 
 /// A sampled or keyed value.
+///
+/// `Weights` holds its vector inline (see `weights.rs`) so that `Value`
+/// stays `Copy` for every caller; the enum is therefore ~270 bytes, which
+/// costs nothing measurable where values are passed (a track sample writes
+/// only its variant).
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Value {
     Scalar(f32),
     Vec3(Vec3),
     Rotation(Quat),
     Bool(bool),
+    Weights(Weights),
 }
 
 macro_rules! properties {
@@ -39,7 +49,7 @@ macro_rules! properties {
                 match self { $(Property::$var => ValueKind::$kind,)* }
             }
             /// Which kind of target owns this property: "node", "light",
-            /// "camera" or "material".
+            /// "camera", "shape" (a shape node's mesh) or "material".
             pub fn owner(self) -> &'static str {
                 match self { $(Property::$var => stringify!($owner),)* }
             }
@@ -68,6 +78,7 @@ properties! {
     Specular => "specularColor", Color, material;
     Transparency => "transparency", Scalar, material;
     Shininess => "shininess", Scalar, material;
+    MorphWeights => "weights", Weights, shape;
 }
 
 impl Property {
@@ -82,6 +93,7 @@ impl Property {
             "emissive" => Some(Property::Emissive),
             "specular" => Some(Property::Specular),
             "fov" => Some(Property::CameraFov),
+            "morph" | "morphweights" => Some(Property::MorphWeights),
             _ => None,
         };
         alias.or_else(|| {

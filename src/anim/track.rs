@@ -3,6 +3,7 @@
 //! maths (see `sample.rs`), with no allocation.
 
 use super::sample::{sample_bool, sample_rotation, sample_vector};
+use super::Weights;
 use super::{Key, Target, Value, ValueKind};
 use glam::{Quat, Vec3};
 
@@ -23,6 +24,9 @@ pub enum Keys {
     Vec3(Vec<Key<Vec3>>),
     Rotation(Vec<Key<Quat>>),
     Bool(Vec<Key<bool>>),
+    /// Morph weights (all keys should hold the same count; a shorter key
+    /// reads as zeros for the missing targets).
+    Weights(Vec<Key<Weights>>),
 }
 
 impl Keys {
@@ -32,6 +36,7 @@ impl Keys {
             Keys::Vec3(k) => k.len(),
             Keys::Rotation(k) => k.len(),
             Keys::Bool(k) => k.len(),
+            Keys::Weights(k) => k.len(),
         }
     }
 
@@ -46,6 +51,7 @@ impl Keys {
             Keys::Vec3(k) => k.iter().map(|k| k.frame).collect(),
             Keys::Rotation(k) => k.iter().map(|k| k.frame).collect(),
             Keys::Bool(k) => k.iter().map(|k| k.frame).collect(),
+            Keys::Weights(k) => k.iter().map(|k| k.frame).collect(),
         }
     }
 
@@ -55,6 +61,7 @@ impl Keys {
             Keys::Vec3(_) => ValueKind::Vec3,
             Keys::Rotation(_) => ValueKind::Rotation,
             Keys::Bool(_) => ValueKind::Bool,
+            Keys::Weights(_) => ValueKind::Weights,
         }
     }
 }
@@ -175,6 +182,7 @@ impl Track {
                 }
             }
             Keys::Bool(k) => check_keys(k, |_| true),
+            Keys::Weights(k) => check_keys(k, |w| w.is_finite()),
         }
     }
 
@@ -190,6 +198,7 @@ impl Track {
                 Value::Rotation(sample_rotation(k, r, frame).unwrap_or(Quat::IDENTITY))
             }
             Keys::Bool(k) => Value::Bool(sample_bool(k, r, frame).unwrap_or(true)),
+            Keys::Weights(k) => Value::Weights(sample_vector(k, r, frame).unwrap_or_default()),
         }
     }
 
@@ -200,6 +209,7 @@ impl Track {
             Keys::Vec3(k) => range(k),
             Keys::Rotation(k) => range(k),
             Keys::Bool(k) => range(k),
+            Keys::Weights(k) => range(k),
         }
     }
 }

@@ -67,6 +67,11 @@ pub fn sections() -> Vec<Section> {
             run: bench_animation,
         },
         Section {
+            name: "skinning",
+            about: "morph targets and skinning evaluated per pose (200k vertices)",
+            run: bench_skinning,
+        },
+        Section {
             name: "editor",
             about: "editor frame on the demo scene: scene + grid + overlay + panels",
             run: bench_editor,
@@ -80,6 +85,53 @@ fn bench_animation(args: &Args) -> Result<Vec<String>, String> {
     // Three figures share the time budget.
     let b = crate::anim::synthetic::bench_tracks(1000, args.seconds / 3.0);
     Ok(b.lines())
+}
+
+/// Skinned and morphed vertices per second through `evaluate_into` (scenes
+/// from `anim::synthetic_deform`), by median wall time and by CPU time (the
+/// latter shows the work done on a busy machine), on `--threads` threads.
+fn bench_skinning(args: &Args) -> Result<Vec<String>, String> {
+    use crate::anim::synthetic_deform::{morphed_scene, skinned_scene, JOINTS};
+    const N: usize = 200_000;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads)
+        .build()
+        .map_err(|e| e.to_string())?;
+    let measure = |scene: Scene| -> Timing {
+        let mut pose = crate::anim::Pose::default();
+        let mut t = 0.0f32;
+        pool.install(|| {
+            time_it(args.seconds / 2.0, || {
+                crate::anim::evaluate_into(&scene, t, &mut pose);
+                std::hint::black_box(&pose.deformed);
+                t += 0.013;
+            })
+        })
+    };
+    let rate = |d: Duration| N as f64 / d.as_secs_f64().max(1e-12) / 1e6;
+    let line = |what: String, t: Timing| match t.cpu {
+        Some(c) => format!(
+            "{what}: {:.1} M vertices/s ({:.1} M vertices per CPU-second; {})",
+            rate(t.wall),
+            rate(c),
+            t.describe()
+        ),
+        None => format!(
+            "{what}: {:.1} M vertices/s ({})",
+            rate(t.wall),
+            t.describe()
+        ),
+    };
+    Ok(vec![
+        line(
+            format!("skinned ({N} vertices, 4 influences, {JOINTS} joints, positions + normals)"),
+            measure(skinned_scene(N)),
+        ),
+        line(
+            format!("morphed ({N} vertices, 4 targets, positions + normals)"),
+            measure(morphed_scene(N)),
+        ),
+    ])
 }
 
 pub fn run(args: Args) -> i32 {

@@ -192,6 +192,8 @@ pub fn describe(loaded: &format::Loaded) -> Json {
         "fps": short(s.settings.fps),
         "duration": short(s.duration_seconds()),
         "animations": clips_json(s),
+        "morphs": super::info_deform::morphs_json(s),
+        "skins": super::info_deform::skins_json(s),
         "animation": s.clips.active(),
         "tracks": tracks,
         "info": s.info,
@@ -286,6 +288,7 @@ fn print_text(path: &std::path::Path, d: &Json) {
             names("materials")
         );
     }
+    super::info_deform::print_text(d);
     let clips = list("animations");
     if clips.len() > 1 || clips.iter().any(|c| c["name"] != json!("")) {
         println!("animations: {}", clips.len());

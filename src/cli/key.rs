@@ -343,7 +343,7 @@ pub fn resolve(scene: &Scene, spec: &str) -> Result<Target, String> {
         matches!(
             (property.owner(), &scene.node(id).kind),
             ("node", _) | ("light", NodeKind::Light(_)) | ("camera", NodeKind::Camera(_))
-        )
+        ) || (property.owner() == "shape" && super::sample::has_morphs(scene, id))
     };
     let node = scene.find_node(name);
     if property.owner() == "material" {

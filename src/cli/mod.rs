@@ -6,6 +6,7 @@ pub mod clip_arg;
 pub mod convert;
 pub mod edit;
 pub mod info;
+mod info_deform;
 pub mod key;
 pub mod recover;
 pub mod render;

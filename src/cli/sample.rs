@@ -17,9 +17,14 @@ pub struct Args {
     /// The scene file.
     pub file: PathBuf,
     /// `NAME.property`, e.g. `Ball.translation`, `Lamp.color`,
-    /// `BallMat.diffuseColor` (NAME: DEF name, or `#N` as `animed info` shows).
+    /// `BallMat.diffuseColor`, `Face.weights` (NAME: DEF name, or `#N` as
+    /// `animed info` shows).
+    #[arg(long, required_unless_present = "bounds", conflicts_with = "bounds")]
+    pub target: Option<String>,
+    /// Print every visible mesh's world-space axis-aligned bounds after
+    /// deformation (morph targets, skinning) instead of a property.
     #[arg(long)]
-    pub target: String,
+    pub bounds: bool,
     /// Comma-separated times in seconds.
     #[arg(long, value_delimiter = ',', required = true)]
     pub times: Vec<f32>,
@@ -69,18 +74,44 @@ pub fn resolve(scene: &Scene, target: &str) -> Result<(Owner, Property), String>
             }
         )
     })?;
+    // `Group.weights` on a multi-primitive node: its first morphed shape.
+    let owner = match owner {
+        Owner::Node(id) if property.owner() == "shape" && !has_morphs(scene, id) => scene
+            .node(id)
+            .children
+            .iter()
+            .copied()
+            .find(|&c| has_morphs(scene, c))
+            .map_or(owner, Owner::Node),
+        o => o,
+    };
     if let Owner::Node(id) = owner {
         let n = scene.node(id);
         let fits = match property.owner() {
             "light" => n.light().is_some(),
             "camera" => n.camera().is_some(),
+            "shape" => has_morphs(scene, id),
             _ => true,
         };
         if !fits {
-            return Err(format!("'{name}' is not a {}", property.owner()));
+            return Err(match property.owner() {
+                "shape" => format!("'{name}' is not a shape with morph targets"),
+                o => format!("'{name}' is not a {o}"),
+            });
         }
     }
     Ok((owner, property))
+}
+
+/// Whether node `id` is a shape whose mesh has morph targets.
+pub fn has_morphs(scene: &Scene, id: NodeId) -> bool {
+    match &scene.node(id).kind {
+        crate::scene::NodeKind::Shape(s) => scene
+            .meshes
+            .get(s.mesh.0 as usize)
+            .is_some_and(|m| m.morph.is_some()),
+        _ => false,
+    }
 }
 
 /// Axis-angle `[x, y, z, angle]` with the angle in [0, π].
@@ -137,6 +168,7 @@ pub fn value(pose: &Pose, owner: Owner, p: Property) -> Option<Vec<f32>> {
                         _ => return None,
                     })
                 }
+                "shape" => pose.weights(id).map(|w| w.as_slice().to_vec()),
                 "camera" => {
                     let c = pose.camera(id)?;
                     Some(match p {
@@ -178,7 +210,11 @@ pub fn run(args: Args) -> i32 {
         return 2;
     }
     let scene = &loaded.scene;
-    let (owner, property) = match resolve(scene, &args.target) {
+    if args.bounds {
+        return print_bounds(scene, &args.times, args.json);
+    }
+    let target = args.target.as_deref().unwrap_or_default();
+    let (owner, property) = match resolve(scene, target) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("animed sample: {e}");
@@ -189,7 +225,7 @@ pub fn run(args: Args) -> i32 {
     for &t in &args.times {
         let pose = evaluate(scene, t);
         let Some(v) = value(&pose, owner, property) else {
-            eprintln!("animed sample: {} has no value here", args.target);
+            eprintln!("animed sample: {target} has no value here");
             return 2;
         };
         rows.push((t, v));
@@ -209,6 +245,64 @@ pub fn run(args: Args) -> i32 {
         for (t, v) in rows {
             let nums: Vec<String> = v.iter().map(|x| format!("{x}")).collect();
             println!("{t}\t{}", nums.join(" "));
+        }
+    }
+    0
+}
+
+/// `--bounds`: per time, each visible shape's world-space bounds of its
+/// drawn (deformed) vertices, named by the shape node (an unnamed shape —
+/// one primitive of a multi-primitive node — by its nearest named ancestor,
+/// else `#N`).
+fn print_bounds(scene: &Scene, times: &[f32], json: bool) -> i32 {
+    let mut rows = Vec::new();
+    let mut pose = Pose::default();
+    for &t in times {
+        crate::anim::evaluate_into(scene, t, &mut pose);
+        let meshes = crate::render::shape_bounds(scene, &pose);
+        rows.push((t, meshes));
+    }
+    let name_of = |id: NodeId| -> String {
+        let mut at = Some(id);
+        while let Some(n) = at {
+            let node = scene.node(n);
+            if !node.name.is_empty() {
+                return node.name.clone();
+            }
+            at = node.parent;
+        }
+        format!("#{}", id.0)
+    };
+    let nums = |v: Vec3| v.to_array().map(short).to_vec();
+    if json {
+        let arr: Vec<_> = rows
+            .iter()
+            .map(|(t, meshes)| {
+                json!({
+                    "time": short(*t),
+                    "meshes": meshes.iter().map(|(id, lo, hi)| json!({
+                        "name": name_of(*id),
+                        "min": nums(*lo),
+                        "max": nums(*hi),
+                    })).collect::<Vec<_>>(),
+                })
+            })
+            .collect();
+        println!("{}", serde_json::Value::Array(arr));
+    } else {
+        for (t, meshes) in rows {
+            for (id, lo, hi) in meshes {
+                println!(
+                    "{t}\t{}\t{} {} {}\t{} {} {}",
+                    name_of(id),
+                    lo.x,
+                    lo.y,
+                    lo.z,
+                    hi.x,
+                    hi.y,
+                    hi.z
+                );
+            }
         }
     }
     0

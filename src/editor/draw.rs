@@ -108,6 +108,26 @@ impl Editor {
         for w in &widgets {
             self.draw_widget(p, w);
         }
+        if let Drag::RowMove {
+            node, moved: true, ..
+        } = &self.drag
+        {
+            // Where the dragged object would go.
+            let (mx, my) = self.mouse;
+            if let Some(w) = self.widget_at(mx, my) {
+                if matches!(
+                    w.kind,
+                    WidgetKind::Row {
+                        list: List::Objects,
+                        ..
+                    }
+                ) {
+                    p.stroke_rect(w.rect, theme::ACCENT);
+                }
+            }
+            let name = format!("move {}", ops::display_name(&self.scene, *node));
+            p.text(mx as i32 + 10, my as i32 + 4, &name, theme::ACCENT);
+        }
     }
 
     fn draw_widget(&self, p: &mut Painter, w: &Widget) {
@@ -281,6 +301,9 @@ impl Editor {
                     theme::TEXT_DIM,
                 );
             }
+        }
+        if let Some(m) = &self.menu {
+            m.draw(p, win);
         }
         if let Some(d) = &self.dialog {
             p.fill_rect_alpha(win, 0x000000, 110);

@@ -28,6 +28,18 @@ pub(super) enum Drag {
     Pick {
         at: (f32, f32),
     },
+    /// Pressed on an object list row: a drag drops it onto another row
+    /// (parent) or onto the list's empty space (top level).
+    RowMove {
+        node: NodeId,
+        at: (f32, f32),
+        moved: bool,
+    },
+    /// Dragging the timeline's top edge: the key strip's height.
+    StripResize {
+        y0: f32,
+        h0: i32,
+    },
 }
 
 /// What a field drag started from (to compute values and the command).

@@ -103,6 +103,8 @@ pub struct KeyStrip {
     /// Recent (animation, key selection) pairs, newest last: undo and redo
     /// bring back the selection that went with the animation they restore.
     pub(super) memo: Vec<(Animation, Vec<KeyRef>)>,
+    /// First row shown (rows scroll inside the strip's fixed height).
+    pub scroll: usize,
 }
 
 /// Pairs kept in [`KeyStrip::memo`].
@@ -133,6 +135,7 @@ pub fn row_name(p: Property) -> &'static str {
         Property::Emissive => "Emissive",
         Property::Specular => "Specular",
         Property::Transparency => "Transparent",
+        Property::MorphWeights => "Morph wts",
         Property::Shininess => "Shininess",
     }
 }

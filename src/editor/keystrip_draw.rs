@@ -13,6 +13,7 @@ const SUMMARY_MARKER: u32 = 0x9a9ca3;
 const ROW_A: u32 = 0x26272b;
 const ROW_B: u32 = 0x2d2f34;
 const SUMMARY_BG: u32 = 0x33363c;
+const KEY_ROW_H_PX: i32 = crate::ui::layout::KEY_ROW_H;
 
 impl Editor {
     /// Draws the strip's rows under the ruler.
@@ -81,6 +82,28 @@ impl Editor {
                 }
             }
             p.set_clip(Some(l.key_rows));
+        }
+        let hint = match self.selection {
+            None => Some("Select an object to see its keys here".to_string()),
+            Some(_) if self.row_markers(Row::Summary).is_empty() => {
+                Some("No keys yet: K keys the selection, R records changes".to_string())
+            }
+            Some(_) => None,
+        };
+        if let Some(h) = hint {
+            let x = l.key_rows.x + names_w + 8;
+            let y = l.key_rows.y + (KEY_ROW_H_PX - text::LINE_H) / 2;
+            p.text_clipped(x, y, &h, theme::TEXT_DIM, l.key_rows.right() - x - 4);
+        }
+        let (first, all, cap) = self.key_strip_scroll();
+        if all > cap && cap > 0 {
+            // A scroll bar: rows scroll (wheel) inside the fixed strip.
+            let r = l.key_rows;
+            let track = Rect::new(r.right() - 4, r.y, 3, r.h);
+            p.fill_rect(track, theme::PANEL);
+            let th = (r.h * cap as i32 / all as i32).max(6);
+            let ty = r.y + (r.h - th) * first as i32 / (all - cap) as i32;
+            p.fill_rect(Rect::new(track.x, ty, 3, th), theme::TEXT_DIM);
         }
         if let Some(b) = self.key_box() {
             p.fill_rect_alpha(b, theme::ACCENT, 50);

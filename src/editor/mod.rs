@@ -18,6 +18,7 @@ pub mod bench;
 pub mod browser;
 pub mod command;
 pub mod component;
+pub mod create;
 mod draw;
 pub mod fields;
 mod gesture;
@@ -29,6 +30,7 @@ pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
 pub mod manip;
+pub mod menu;
 pub mod motion_path;
 mod onion;
 pub mod ops;
@@ -154,6 +156,10 @@ pub struct Editor {
     graph_shown: bool,
     /// Its height (the split with the viewport).
     graph_height: i32,
+    /// The key strip's height once the user dragged the timeline's top
+    /// edge (`None`: `ui::layout::default_strip_h`). Never follows the
+    /// selection, so selecting does not move the panels.
+    strip_height: Option<i32>,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     /// Anti-aliasing samples per pixel of the viewport (1, 4, 8); the
@@ -168,6 +174,8 @@ pub struct Editor {
     /// What a save-as browser should continue with.
     browser_then: Option<After>,
     dialog: Option<Dialog>,
+    /// An open pop-up menu (Add, context, View): modal while open.
+    menu: Option<menu::Menu>,
     status: Status,
     quit: bool,
     /// The F1 key reference is shown.
@@ -212,6 +220,7 @@ impl Editor {
             graph: None,
             graph_shown: false,
             graph_height: 140,
+            strip_height: None,
             show_grid: true,
             view_style: None,
             aa: 1,
@@ -223,6 +232,7 @@ impl Editor {
             browser: None,
             browser_then: None,
             dialog: None,
+            menu: None,
             status: Status::default(),
             quit: false,
             help: false,
@@ -338,7 +348,10 @@ impl Editor {
         let (w, h) = (self.width as i32, self.height as i32);
         match self.graph_shown {
             true => Layout::with_graph(w, h, self.graph_height),
-            false => Layout::new(w, h, self.key_strip_rows()),
+            false => {
+                let sh = self.strip_height;
+                Layout::with_strip(w, h, sh.unwrap_or(crate::ui::layout::default_strip_h(h)))
+            }
         }
     }
 

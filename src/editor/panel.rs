@@ -29,6 +29,12 @@ pub enum Action {
     Undo,
     Redo,
     AddLight(NewLight),
+    /// Add a new object (the Add menu's items).
+    Add(super::create::NewThing),
+    /// Open the Add menu (toolbar `Add`, Shift+A).
+    AddMenu,
+    /// Copy the selection with its tracks (Shift+D).
+    Duplicate,
     ToggleLight(NodeId),
     ObjectStyle,
     Delete,

@@ -152,6 +152,7 @@ pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) -> Result<(), LimitEr
                 Keys::Vec3(k) => k.iter_mut().for_each(|k| k.frame *= scale),
                 Keys::Rotation(k) => k.iter_mut().for_each(|k| k.frame *= scale),
                 Keys::Bool(k) => k.iter_mut().for_each(|k| k.frame *= scale),
+                Keys::Weights(k) => k.iter_mut().for_each(|k| k.frame *= scale),
             }
         }
         dst.animation.tracks.push(t);

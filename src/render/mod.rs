@@ -18,6 +18,7 @@ pub mod bench_scenes;
 mod clip;
 mod fragment;
 mod frame;
+mod geometry;
 pub mod job;
 mod prepare;
 mod raster;
@@ -28,7 +29,7 @@ mod view;
 
 pub use frame::{pack_rgb, Frame};
 pub use shade::{ShadeMaterial, WorldLight};
-pub use view::{bounding_sphere, scene_bounds, View};
+pub use view::{bounding_sphere, scene_bounds, shape_bounds, View};
 
 use crate::anim::Pose;
 use crate::scene::{RenderStyle, Scene};

@@ -5,6 +5,7 @@
 
 use super::background::Painter;
 use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
+use super::geometry::Geometry;
 use super::shade::{ShadeMaterial, WorldLight};
 use super::texture::Sampler;
 use super::{RenderOptions, View};
@@ -194,6 +195,8 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             .or_else(|| scene.materials.get(shape.material.0 as usize))
             .unwrap_or(&default_material);
         let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        // Morphed/skinned shapes draw the pose's deformed vertices.
+        let geo = Geometry::of(mesh, pose, node_id, world);
 
         let mut item_lights: Vec<WorldLight> = lights
             .iter()
@@ -213,7 +216,7 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
         });
         let translucent = texture.as_ref().is_some_and(Sampler::translucent);
 
-        transform_vertices(mesh, world, view_proj, material, has_normals, &mut verts);
+        transform_vertices(mesh, &geo, view_proj, material, has_normals, &mut verts);
         match style {
             RenderStyle::Filled => {
                 let dest = if smat.alpha < 1.0 || translucent {
@@ -302,12 +305,13 @@ fn has_texcoords(mesh: &Mesh) -> bool {
 /// texture coordinates.
 fn transform_vertices(
     mesh: &Mesh,
-    world: Mat4,
+    geo: &Geometry,
     view_proj: Mat4,
     material: &Material,
     has_normals: bool,
     out: &mut Vec<ClipVert>,
 ) {
+    let world = geo.world;
     let mvp = view_proj * world;
     let normal_m = Mat3::from_mat4(world).inverse().transpose();
     let has_colors = mesh.colors.len() == mesh.positions.len();
@@ -319,13 +323,13 @@ fn transform_vertices(
     } else {
         material.emissive
     };
-    mesh.positions
+    geo.positions
         .par_iter()
         .enumerate()
         .map(|(k, &p)| {
             let wp = world.transform_point3(p);
             let n = if has_normals {
-                (normal_m * mesh.normals[k]).normalize_or_zero()
+                (normal_m * geo.normals[k]).normalize_or_zero()
             } else {
                 Vec3::ZERO
             };

@@ -1,5 +1,6 @@
+use super::geometry::Geometry;
 use crate::anim::Pose;
-use crate::scene::{Camera, CameraKind, NodeKind, Scene};
+use crate::scene::{Camera, CameraKind, NodeId, NodeKind, Scene};
 use glam::{Mat4, Quat, Vec3, Vec4};
 
 /// Near/far used by [`View::from_camera`] when the camera gives none.
@@ -197,6 +198,41 @@ fn orthographic(hw: f32, hh: f32, near: f32, far: f32) -> Mat4 {
     )
 }
 
+/// World-space bounds of each visible shape's drawn (deformed) vertices,
+/// in node order: every drawn vertex is taken to world space, so the box is
+/// exact (not a box of a transformed box).
+pub fn shape_bounds(scene: &Scene, pose: &Pose) -> Vec<(NodeId, Vec3, Vec3)> {
+    let mut out = Vec::new();
+    for (i, node) in scene.nodes.iter().enumerate() {
+        let NodeKind::Shape(shape) = &node.kind else {
+            continue;
+        };
+        if !pose.visible.get(i).copied().unwrap_or(node.visible) {
+            continue;
+        }
+        let Some(mesh) = scene.meshes.get(shape.mesh.0 as usize) else {
+            continue;
+        };
+        let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        let geo = Geometry::of(mesh, pose, NodeId(i as u32), world);
+        let world_points: Vec<Vec3>;
+        let pts = if geo.world == Mat4::IDENTITY {
+            geo.positions
+        } else {
+            world_points = geo
+                .positions
+                .iter()
+                .map(|p| geo.world.transform_point3(*p))
+                .collect();
+            &world_points
+        };
+        if let Some((lo, hi)) = points_bounds(pts) {
+            out.push((NodeId(i as u32), lo, hi));
+        }
+    }
+    out
+}
+
 /// World-space bounding box of every visible shape in the pose.
 pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
     let mut out: Option<(Vec3, Vec3)> = None;
@@ -210,10 +246,13 @@ pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
         let Some(mesh) = scene.meshes.get(shape.mesh.0 as usize) else {
             continue;
         };
-        let Some((lo, hi)) = mesh.bounds() else {
+        let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        // Deformed shapes: the bounds of the pose's vertices.
+        let geo = Geometry::of(mesh, pose, NodeId(i as u32), world);
+        let Some((lo, hi)) = points_bounds(geo.positions) else {
             continue;
         };
-        let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        let world = geo.world;
         for k in 0..8 {
             let c = Vec3::new(
                 if k & 1 == 0 { lo.x } else { hi.x },
@@ -231,6 +270,13 @@ pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
         }
     }
     out
+}
+
+/// Axis-aligned bounds of finite points, `None` when there are none.
+pub fn points_bounds(points: &[Vec3]) -> Option<(Vec3, Vec3)> {
+    let mut it = points.iter().filter(|p| p.is_finite());
+    let first = *it.next()?;
+    Some(it.fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))))
 }
 
 /// The sphere circumscribing [`scene_bounds`] (centre, radius).

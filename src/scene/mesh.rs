@@ -1,3 +1,4 @@
+use super::{Morphs, SkinWeights};
 use glam::{Vec2, Vec3};
 
 /// Geometry ready to draw: indexed triangles, lines and points over one
@@ -21,9 +22,20 @@ pub struct Mesh {
     pub points: Vec<u32>,
     /// Solid shapes are back-face culled; others are lit on both sides.
     pub solid: bool,
+    /// Morph targets and their default weights (animated per shape as
+    /// `NAME.weights`); `None` for a rigid mesh.
+    pub morph: Option<Box<Morphs>>,
+    /// Joint influences per vertex when the mesh is skinned (the skin itself
+    /// is `Node::skin` of the shape); `None` otherwise.
+    pub skin_weights: Option<Box<SkinWeights>>,
 }
 
 impl Mesh {
+    /// Whether drawing this mesh needs a deformation pass (morph or skin).
+    pub fn deforms(&self) -> bool {
+        self.morph.is_some() || self.skin_weights.is_some()
+    }
+
     /// Axis-aligned bounds of the positions, or `None` when empty.
     pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
         let mut it = self.positions.iter();

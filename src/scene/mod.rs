@@ -11,9 +11,11 @@ mod image;
 mod light;
 mod material;
 mod mesh;
+mod morph;
 mod node;
 pub mod normals;
 pub mod primitives;
+mod skin;
 mod texture;
 mod transform;
 
@@ -26,10 +28,12 @@ pub use image::{
 pub use light::{Camera, CameraKind, Light, LightKind};
 pub use material::Material;
 pub use mesh::Mesh;
+pub use morph::{MorphTarget, Morphs};
 pub use node::{Node, NodeKind, RenderStyle, Shape};
 pub use normals::{
     mesh_from_polygons, mesh_from_polygons_textured, Binding, MeshError, PolyOptions, TexCoords,
 };
+pub use skin::{InfluenceReport, Skin, SkinId, SkinWeights, MAX_JOINTS};
 pub use texture::{TexTransform, TexTransformOrder, Texture, TextureModel, Wrap};
 pub use transform::Transform;
 
@@ -47,6 +51,19 @@ pub struct MeshId(pub u32);
 /// Index of a material in [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct MaterialId(pub u32);
+
+/// Why morph targets or a skin could not be built (an invariant of
+/// [`Morphs`], [`Skin`] or [`SkinWeights`] does not hold).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DeformError(pub String);
+
+impl std::fmt::Display for DeformError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for DeformError {}
 
 /// Scene-wide settings: timing and what the background looks like.
 #[derive(Clone, Debug, PartialEq)]
@@ -98,6 +115,8 @@ pub struct Scene {
     pub materials: Vec<Material>,
     /// Decoded images shared by the materials' textures (one copy each).
     pub images: Vec<Image>,
+    /// Skins (joints + inverse bind matrices), bound to shapes by `Node::skin`.
+    pub skins: Vec<Skin>,
     pub settings: Settings,
     /// The playing clip's tracks (see [`Clips`] for the others).
     pub animation: Animation,
@@ -158,6 +177,31 @@ impl Scene {
         }
         self.images.push(image);
         Ok(ImageId(self.images.len() as u32 - 1))
+    }
+
+    /// Adds a skin after checking that its joints exist; returns its id.
+    pub fn add_skin(&mut self, skin: Skin) -> Result<SkinId, DeformError> {
+        if let Some(j) = skin
+            .joints()
+            .iter()
+            .find(|j| j.0 as usize >= self.nodes.len())
+        {
+            return Err(DeformError(format!(
+                "skin joint node {} does not exist",
+                j.0
+            )));
+        }
+        self.skins.push(skin);
+        Ok(SkinId(self.skins.len() as u32 - 1))
+    }
+
+    pub fn skin(&self, id: SkinId) -> Option<&Skin> {
+        self.skins.get(id.0 as usize)
+    }
+
+    /// Whether node `id` is a joint of any skin.
+    pub fn is_joint(&self, id: NodeId) -> bool {
+        self.skins.iter().any(|s| s.joints().contains(&id))
     }
 
     pub fn image(&self, id: ImageId) -> Option<&Image> {

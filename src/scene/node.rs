@@ -1,4 +1,4 @@
-use super::{Camera, Light, MaterialId, MeshId, NodeId, Transform};
+use super::{Camera, Light, MaterialId, MeshId, NodeId, SkinId, Transform};
 
 /// How an object is drawn (per object; the viewport may override globally).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -36,6 +36,9 @@ pub struct Node {
     pub visible: bool,
     pub style: RenderStyle,
     pub kind: NodeKind,
+    /// The skin that deforms this shape's mesh (its joints, not this node's
+    /// transform, then place the vertices, as glTF §3.7.3 says).
+    pub skin: Option<SkinId>,
 }
 
 impl Node {
@@ -48,6 +51,7 @@ impl Node {
             visible: true,
             style: RenderStyle::Filled,
             kind,
+            skin: None,
         }
     }
 

@@ -15,6 +15,12 @@ pub const KEY_ROW_H: i32 = 14;
 pub const KEY_NAMES_CHARS: i32 = 12;
 /// Height of the timeline's control row (frame field, status).
 pub const CONTROLS_H: i32 = 18;
+/// The key strip's height until the user drags its top edge: a seventh of
+/// the window in whole rows, one to three (small windows keep their room
+/// for the viewport and the side panel).
+pub fn default_strip_h(window_h: i32) -> i32 {
+    (window_h / 7 / KEY_ROW_H).clamp(1, 3) * KEY_ROW_H
+}
 
 /// The big regions of the editor window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,6 +42,17 @@ impl Layout {
     pub fn new(w: i32, h: i32, key_rows: usize) -> Layout {
         Layout::split(w, h, |rest_h| {
             (key_rows as i32 * KEY_ROW_H).min((rest_h / 3).max(0))
+        })
+    }
+
+    /// Lays out a `w`×`h` window with a key strip `strip_h` pixels tall,
+    /// whatever the selection: rows scroll inside it, so selecting
+    /// something never moves the viewport or the side panel. The viewport
+    /// keeps at least a quarter of the height.
+    pub fn with_strip(w: i32, h: i32, strip_h: i32) -> Layout {
+        Layout::split(w, h, |rest_h| {
+            let most = (rest_h - RULER_H - CONTROLS_H - rest_h / 4).max(0);
+            strip_h.clamp(KEY_ROW_H.min(most), most)
         })
     }
 

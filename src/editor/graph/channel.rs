@@ -93,7 +93,8 @@ pub fn components(p: Property) -> u8 {
     match p.kind() {
         ValueKind::Scalar => 1,
         ValueKind::Vec3 | ValueKind::Color | ValueKind::Rotation => 3,
-        ValueKind::Bool => 0,
+        // Booleans are not drawn; morph weights have their own panel.
+        ValueKind::Bool | ValueKind::Weights => 0,
     }
 }
 

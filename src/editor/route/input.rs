@@ -6,7 +6,7 @@ use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
 use crate::editor::ops;
-use crate::editor::panel::{Action, WidgetKind};
+use crate::editor::panel::{Action, List, WidgetKind};
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -37,6 +37,9 @@ impl Editor {
     }
 
     pub(in crate::editor) fn dispatch(&mut self, ev: Event) -> bool {
+        if let Some(redraw) = self.menu_event(&ev) {
+            return redraw;
+        }
         match ev {
             Event::Resize { width, height } => {
                 let changed = (width.max(1), height.max(1)) != (self.width, self.height);
@@ -161,6 +164,24 @@ impl Editor {
                 true
             }
             Drag::Pick { .. } => false,
+            Drag::RowMove { node, at, moved } => {
+                if !moved && (x - at.0).abs().max((y - at.1).abs()) < DRAG_SLOP {
+                    return false;
+                }
+                self.drag = Drag::RowMove {
+                    node,
+                    at,
+                    moved: true,
+                };
+                true
+            }
+            Drag::StripResize { y0, h0 } => {
+                let (w, h) = (self.width as i32, self.height as i32);
+                let want = h0 + (y0 - y).round() as i32;
+                // Kept to what the layout allows, so the edge follows the mouse.
+                self.strip_height = Some(crate::ui::Layout::with_strip(w, h, want).key_rows.h);
+                true
+            }
         }
     }
 
@@ -187,6 +208,16 @@ impl Editor {
         if self.graph_shown && l.key_rows.contains(x, y) {
             self.commit_edit();
             self.graph_event(&Event::MouseDown { button, x, y, mods });
+            return;
+        }
+        let edge = l.timeline.y as f32;
+        if !self.graph_shown && button == MouseButton::Left && (y - edge).abs() <= 2.5 {
+            // The timeline's top edge: resize the key strip.
+            self.commit_edit();
+            self.drag = Drag::StripResize {
+                y0: y,
+                h0: l.key_rows.h,
+            };
             return;
         }
         if l.viewport.contains(x, y) {
@@ -243,9 +274,16 @@ impl Editor {
                 self.commit_edit();
                 self.run_action(action);
             }
-            WidgetKind::Row { node, .. } => {
+            WidgetKind::Row { node, list, .. } => {
                 self.commit_edit();
                 self.selection = Some(node);
+                if list == List::Objects {
+                    self.drag = Drag::RowMove {
+                        node,
+                        at: (x, y),
+                        moved: false,
+                    };
+                }
             }
             _ => self.commit_edit(),
         }
@@ -284,6 +322,9 @@ impl Editor {
             Drag::Pick { at } if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP => {
                 self.pick(x, y);
             }
+            Drag::RowMove {
+                node, moved: true, ..
+            } => self.drop_in_list(node, x, y),
             _ => {}
         }
     }
@@ -328,6 +369,9 @@ impl Editor {
                 };
                 return true;
             }
+        }
+        if l.key_rows.contains(x, y) && self.scroll_key_rows(delta) {
+            return true;
         }
         if l.timeline.contains(x, y) {
             self.step_frame(if delta > 0.0 { 1.0 } else { -1.0 });
@@ -622,6 +666,11 @@ impl Editor {
             }
             (Key::Char('p'), true, _) | (Key::Space, false, _) => self.run_action(Action::Play),
             (Key::Char('g'), false, _) => self.run_action(Action::Grid),
+            (Key::Char('a'), false, true) => {
+                let (x, y) = self.mouse;
+                self.open_add_menu(x as i32, y as i32);
+            }
+            (Key::Char('d'), false, true) => self.run_action(Action::Duplicate),
             (Key::F(1), _, _) => self.set_help(true),
             (Key::Char('f'), false, _) => self.frame_selection(),
             (Key::Home, _, _) => self.frame_all(),
@@ -760,6 +809,24 @@ impl Editor {
                 }
             }
             Action::ObjectStyle => self.cycle_object_style(),
+            Action::Add(what) => self.add_thing(what),
+            Action::Duplicate => self.duplicate_selection(),
+            Action::AddMenu => {
+                let at = self
+                    .widgets()
+                    .into_iter()
+                    .find(|w| {
+                        matches!(
+                            w.kind,
+                            WidgetKind::Button {
+                                action: Action::AddMenu,
+                                ..
+                            }
+                        )
+                    })
+                    .map_or((0, 0), |w| (w.rect.x, w.rect.bottom()));
+                self.open_add_menu(at.0, at.1);
+            }
             Action::Delete => self.delete_selection(),
             Action::DialogCancel => {
                 if self
@@ -819,6 +886,28 @@ impl Editor {
                     }
                 }
             }
+        }
+    }
+
+    /// The end of an object list drag: onto another object's row puts the
+    /// dragged one under it; onto the list's empty space, at the top level.
+    pub(in crate::editor) fn drop_in_list(&mut self, node: crate::scene::NodeId, x: f32, y: f32) {
+        let target = self.widget_at(x, y).and_then(|w| match w.kind {
+            WidgetKind::Row {
+                node: t,
+                list: List::Objects,
+                ..
+            } => Some(t),
+            _ => None,
+        });
+        match target {
+            Some(t) if t == node => {}
+            Some(t) => self.reparent(node, Some(t)),
+            None if self.side_panel().objects.contains(x, y) => self.reparent(node, None),
+            None => self.set_status(
+                "Drop on an object's row to parent it there, on the list's empty space to unparent",
+                false,
+            ),
         }
     }
 

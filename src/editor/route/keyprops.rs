@@ -188,7 +188,9 @@ impl Editor {
             false,
         ));
         let body = Rect::new(body.x + 2, body.y + 1, body.w - 4, body.h - 1);
-        let lw = 5 * CHAR_W;
+        // The longest label ("Value", "Euler", "Frame") plus a gap, so a
+        // label never runs into its value.
+        let lw = 6 * CHAR_W;
         let mut y = body.y;
         let mut next = || {
             let r = (y + ROW <= body.bottom() + 1).then(|| Rect::new(body.x, y, body.w, ROW));
@@ -211,6 +213,7 @@ impl Editor {
                     field_row(out, r, name, lw, &[0, 1, 2].map(KeyField::Value));
                 }
                 Value::Scalar(_) => field_row(out, r, "Value", lw, &[KeyField::Value(0)]),
+                Value::Weights(w) => out.push(label(r, &format!("{} weights", w.len()), true)),
                 Value::Bool(b) => {
                     let (a, rest) = r.take_left(lw);
                     out.push(label(a, "Value", true));
@@ -289,20 +292,37 @@ impl Editor {
         }
     }
 
-    /// The node panel's compact list of the selection's key frames.
-    pub(in crate::editor) fn key_list_row(&self, r: Rect, out: &mut Vec<Widget>) {
-        let Some(sel) = self.selection else { return };
+    /// The selection's key frames as lines that fit the side panel after
+    /// the "Keys" label (wrapped, never cut).
+    pub(in crate::editor) fn key_list_lines(&self) -> Vec<String> {
+        let Some(sel) = self.selection else {
+            return Vec::new();
+        };
         let frames = crate::editor::record::key_frames(&self.scene.animation, Some(sel));
-        if frames.is_empty() {
-            return;
+        let chars = ((self.layout().side.w - 4 - 5 * CHAR_W) / CHAR_W).max(4) as usize;
+        let mut lines: Vec<String> = Vec::new();
+        for f in frames {
+            let s = crate::editor::fields::format_number(f);
+            match lines.last_mut() {
+                Some(l) if l.len() + 1 + s.len() <= chars => {
+                    l.push(' ');
+                    l.push_str(&s);
+                }
+                _ => lines.push(s),
+            }
         }
+        lines
+    }
+
+    /// Line `i` of the node panel's list of the selection's key frames.
+    pub(in crate::editor) fn key_list_row(&self, i: usize, r: Rect, out: &mut Vec<Widget>) {
+        let lines = self.key_list_lines();
+        let Some(line) = lines.get(i) else { return };
         let (a, b) = r.take_left(5 * CHAR_W);
-        out.push(label(a, "Keys", true));
-        let list: Vec<String> = frames
-            .iter()
-            .map(|f| crate::editor::fields::format_number(*f))
-            .collect();
-        out.push(label(b, &list.join(" "), false));
+        if i == 0 {
+            out.push(label(a, "Keys", true));
+        }
+        out.push(label(b, line, false));
     }
 }
 
@@ -313,7 +333,7 @@ impl Editor {
         if self.key_panel_shown() {
             self.key_panel_rows()
         } else {
-            self.prop_rows() + self.key_strip_rows().min(1) as i32
+            self.prop_rows() + self.key_list_lines().len() as i32
         }
     }
 }

@@ -118,21 +118,38 @@ impl Editor {
             );
         }
         let cap = (l.key_rows.h / KEY_ROW_H).max(0) as usize;
-        if rows.len() > cap {
-            let keep = cap.saturating_sub(1);
-            let more = rows.len() - keep;
-            rows.truncate(keep);
-            if cap > 0 {
-                rows.push(Row::More(more));
-            }
-        }
+        let first = self.keys.scroll.min(rows.len().saturating_sub(cap));
         rows.into_iter()
+            .skip(first)
+            .take(cap)
             .enumerate()
             .map(|(i, r)| {
                 let y = l.key_rows.y + i as i32 * KEY_ROW_H;
                 (r, Rect::new(l.key_rows.x, y, l.key_rows.w, KEY_ROW_H))
             })
             .collect()
+    }
+
+    /// Rows in the strip: (first shown, all, how many fit).
+    pub fn key_strip_scroll(&self) -> (usize, usize, usize) {
+        let all = self.key_strip_rows();
+        let cap = (self.layout().key_rows.h / KEY_ROW_H).max(0) as usize;
+        (self.keys.scroll.min(all.saturating_sub(cap)), all, cap)
+    }
+
+    /// Wheel over the strip: scrolls its rows when they do not all fit.
+    pub(in crate::editor) fn scroll_key_rows(&mut self, delta: f32) -> bool {
+        let (first, all, cap) = self.key_strip_scroll();
+        if all <= cap {
+            return false;
+        }
+        let n = (delta.abs().ceil() as usize).max(1);
+        self.keys.scroll = if delta > 0.0 {
+            first.saturating_sub(n)
+        } else {
+            (first + n).min(all - cap)
+        };
+        true
     }
 
     /// The keys a row shows, grouped per marker: (frame, keys at it).

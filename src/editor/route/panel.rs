@@ -94,11 +94,12 @@ impl Editor {
         let style_label = format!("Style:{style}");
         use crate::editor::manip::Tool;
         let tool = self.tool();
-        let items: [(&str, Action, bool); 13] = [
+        let items: [(&str, Action, bool); 14] = [
             ("New", Action::New, false),
             ("Open", Action::Open, false),
             ("Imp", Action::Import, false),
             ("Save", Action::Save, false),
+            ("Add", Action::AddMenu, self.menu.is_some()),
             (
                 "Mov",
                 Action::Tool(Tool::Translate),
@@ -123,7 +124,7 @@ impl Editor {
         ];
         let mut x = r.x + 2;
         for (label, action, on) in items {
-            let bw = text::width(label) + 6;
+            let bw = text::width(label) + 4;
             if x + bw > r.right() - 2 {
                 break;
             }
@@ -351,7 +352,9 @@ impl Editor {
                 });
             }
         }
-        row(out, &|o, r| self.key_list_row(r, o));
+        for i in 0..self.key_list_lines().len() {
+            row(out, &|o, r| self.key_list_row(i, r, o));
+        }
         self.key_panel_switch(h, out);
     }
 

@@ -28,7 +28,10 @@
 //!   are skipped.
 
 use super::plan::WritePlan;
-use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, ValueKind};
+use crate::anim::{
+    Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, ValueKind, Weights,
+    MAX_MORPH_TARGETS,
+};
 use crate::format::Loaded;
 use crate::scene::{NodeKind, RenderStyle, Scene};
 use glam::{Quat, Vec3};
@@ -144,6 +147,7 @@ pub fn write(scene: &Scene, plan: &WritePlan) -> String {
             Keys::Vec3(k) => write_keys(&mut s, k, |v| v.to_array().to_vec()),
             Keys::Rotation(k) => write_keys(&mut s, k, |q| q.to_array().to_vec()),
             Keys::Bool(k) => write_keys(&mut s, k, |b| vec![if *b { 1.0 } else { 0.0 }]),
+            Keys::Weights(k) => write_keys(&mut s, k, |w| w.as_slice().to_vec()),
         }
     }
     s.push_str("end\n");
@@ -289,6 +293,7 @@ pub fn parse(text: &str) -> Result<Note, NoteError> {
                     ValueKind::Vec3 | ValueKind::Color => Keys::Vec3(Vec::new()),
                     ValueKind::Rotation => Keys::Rotation(Vec::new()),
                     ValueKind::Bool => Keys::Bool(Vec::new()),
+                    ValueKind::Weights => Keys::Weights(Vec::new()),
                 };
                 note.tracks.push(NoteTrack {
                     owner,
@@ -337,6 +342,8 @@ fn parse_key(words: &[&str], keys: &mut Keys) -> Result<(), String> {
         Keys::Scalar(_) | Keys::Bool(_) => 1,
         Keys::Vec3(_) => 3,
         Keys::Rotation(_) => 4,
+        // One per morph target.
+        Keys::Weights(_) => words.len().saturating_sub(8).clamp(1, MAX_MORPH_TARGETS),
     };
     if words.len() != 8 + want {
         return Err(format!(
@@ -407,6 +414,7 @@ fn parse_key(words: &[&str], keys: &mut Keys) -> Result<(), String> {
             };
             k.push(mk(frame, b, interp, p))
         }
+        Keys::Weights(k) => k.push(mk(frame, Weights::from_slice_truncated(&v), interp, p)),
     }
     Ok(())
 }
@@ -417,6 +425,7 @@ fn node_owns(kind: &NodeKind, property: Property) -> bool {
         "light" => matches!(kind, NodeKind::Light(_)),
         "camera" => matches!(kind, NodeKind::Camera(_)),
         "node" => true,
+        "shape" => matches!(kind, NodeKind::Shape(_) | NodeKind::Group),
         _ => false,
     }
 }

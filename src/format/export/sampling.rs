@@ -70,7 +70,8 @@ impl Tolerances {
             | Property::Shininess
             | Property::LightDropOff
             | Property::Visibility
-            | Property::LightOn => Metric::Distance(self.unit),
+            | Property::LightOn
+            | Property::MorphWeights => Metric::Distance(self.unit),
         }
     }
 }
@@ -178,6 +179,10 @@ pub fn error(metric: Metric, authored: Value, played: Value) -> f32 {
         (Value::Vec3(a), Value::Vec3(b)) => a.distance(b),
         (Value::Rotation(a), Value::Rotation(b)) => angle_between(a, b),
         (Value::Bool(a), Value::Bool(b)) => f32::from(u8::from(a != b)),
+        (Value::Weights(a), Value::Weights(b)) => (a - b)
+            .as_slice()
+            .iter()
+            .fold(0.0f32, |m, x| m.max(x.abs())),
         _ => f32::INFINITY,
     };
     let tol = match metric {
@@ -204,6 +209,7 @@ fn played(a: Value, b: Value, f: f32) -> Value {
     match (a, b) {
         (Value::Scalar(x), Value::Scalar(y)) => Value::Scalar(x + (y - x) * f),
         (Value::Vec3(x), Value::Vec3(y)) => Value::Vec3(x.lerp(y, f)),
+        (Value::Weights(x), Value::Weights(y)) => Value::Weights(x + (y - x) * f),
         (Value::Rotation(x), Value::Rotation(y)) => Value::Rotation(slerp_shortest(x, y, f)),
         _ => a,
     }

@@ -13,8 +13,9 @@
 //!   until the chord stays within [`CUBIC_TOLERANCE`] (relative to the
 //!   channel's largest value; radians for rotations) of the curve at the
 //!   eighths of every piece, at most 64 pieces a segment.
-//! * `weights` channels (morph targets) are not in animed's model yet: they
-//!   are skipped with a warning.
+//! * `weights` channels (morph targets) become `NAME.weights` tracks of N
+//!   components (N = the node's mesh's target count), with the same three
+//!   interpolations; CUBICSPLINE is sampled per component like the others.
 //!
 //! Key times are seconds in glTF and frames in animed; [`choose_fps`] picks
 //! a frame rate that puts every key on a whole frame where one exists.
@@ -22,7 +23,9 @@
 use super::accessor::read_f32;
 use super::container::{Buffers, GltfError, Result};
 use super::pointer::pointer;
-use crate::anim::{Animation, Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
+use crate::anim::{
+    Animation, Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Weights,
+};
 use crate::scene::{Clip, NodeId};
 use glam::{Quat, Vec3, Vec4};
 use gltf::animation::{Interpolation, Property as Path};
@@ -75,7 +78,7 @@ pub fn node_target(
         Path::Translation => Property::Translation,
         Path::Rotation => Property::Rotation,
         Path::Scale => Property::Scale,
-        Path::MorphTargetWeights => return None,
+        Path::MorphTargetWeights => Property::MorphWeights,
     };
     Some((id, p))
 }
@@ -98,12 +101,6 @@ pub fn read_clips(
             let at = format!("{here}/channels/{}", ch.index());
             let target = ch.target();
             let node = target.node().index();
-            if target.property() == Path::MorphTargetWeights {
-                warnings.push(format!(
-                    "{at}: morph target weights are not supported yet; the channel is skipped"
-                ));
-                continue;
-            }
             let Some((id, property)) = target_of(node, target.property()) else {
                 warnings.push(format!(
                     "{at}: node {node} is not in the loaded scene; the channel is skipped"
@@ -117,7 +114,21 @@ pub fn read_clips(
             let values = read_f32(&sampler.output(), buffers)
                 .map_err(|e| GltfError::at(format!("{sp}/output"), e.to_string()))?;
             let rotation = property.kind() == crate::anim::ValueKind::Rotation;
-            let width = if rotation { 4 } else { 3 };
+            let weights = property == Property::MorphWeights;
+            let width = if rotation {
+                4
+            } else if weights {
+                let n = morph_count(&target.node());
+                if n == 0 {
+                    warnings.push(format!(
+                        "{at}: node {node} has no morph targets; the weights channel is skipped"
+                    ));
+                    continue;
+                }
+                n
+            } else {
+                3
+            };
             let cubic = sampler.interpolation() == Interpolation::CubicSpline;
             let per_key = if cubic { 3 } else { 1 };
             if values.len() != times.len() * per_key * width {
@@ -155,11 +166,19 @@ pub fn read_clips(
                     } else {
                         Interp::Linear
                     };
-                    direct_keys(&times, &values, rotation, fps, interp)
+                    if weights {
+                        direct_weights(&times, &values, width, fps, interp)
+                    } else {
+                        direct_keys(&times, &values, rotation, fps, interp)
+                    }
                 }
                 Interpolation::CubicSpline => {
                     sampled += 1;
-                    cubic_keys(&times, &values, rotation, fps)
+                    if weights {
+                        cubic_weights(&times, &values, width, fps)
+                    } else {
+                        cubic_keys(&times, &values, rotation, fps)
+                    }
                 }
             };
             let target = Target {
@@ -214,6 +233,96 @@ fn next_up(x: f32) -> f32 {
     } else {
         f32::from_bits(x.to_bits() - 1)
     }
+}
+
+/// How many morph targets node `g`'s mesh has (its first primitive's; the
+/// spec requires all primitives to have the same count).
+fn morph_count(g: &gltf::Node) -> usize {
+    g.mesh()
+        .and_then(|m| m.primitives().next())
+        .map_or(0, |p| p.morph_targets().count())
+}
+
+/// STEP/LINEAR weights keys: N values per key (the first
+/// [`MAX_MORPH_TARGETS`] kept).
+fn direct_weights(times: &[f32], values: &[f32], n: usize, fps: f32, interp: Interp) -> Keys {
+    Keys::Weights(
+        frames_of(times.iter().copied(), fps)
+            .into_iter()
+            .zip(values.chunks_exact(n))
+            .map(|(f, w)| Key::new(f, Weights::from_slice_truncated(w)).with_interp(interp))
+            .collect(),
+    )
+}
+
+/// CUBICSPLINE weights sampled into linear keys like [`cubic_keys`]: each
+/// segment halved until every component's chord is within
+/// [`CUBIC_TOLERANCE`] (relative to the largest weight) at the eighths.
+fn cubic_weights(times: &[f32], values: &[f32], n: usize, fps: f32) -> Keys {
+    let get = |k: usize, part: usize, c: usize| values[(3 * k + part) * n + c];
+    let scale = (0..times.len())
+        .flat_map(|k| (0..n).map(move |c| (k, c)))
+        .map(|(k, c)| get(k, 1, c).abs())
+        .fold(1e-6f32, f32::max);
+    let tol = CUBIC_TOLERANCE * scale;
+    let mut out: Vec<(f32, Vec<f32>)> = Vec::new();
+    for k in 0..times.len().saturating_sub(1) {
+        let dt = times[k + 1] - times[k];
+        let seg = |s: f32| -> Vec<f32> {
+            (0..n)
+                .map(|c| {
+                    let v = hermite(
+                        Vec4::splat(get(k, 1, c)),
+                        Vec4::splat(get(k, 2, c)),
+                        Vec4::splat(get(k + 1, 1, c)),
+                        Vec4::splat(get(k + 1, 0, c)),
+                        dt,
+                        s,
+                    );
+                    v.x
+                })
+                .collect()
+        };
+        let error = |a: f32, b: f32| -> f32 {
+            let (pa, pb) = (seg(a), seg(b));
+            (1..8)
+                .map(|j| {
+                    let f = j as f32 / 8.0;
+                    let curve = seg(a + (b - a) * f);
+                    (0..n)
+                        .map(|c| (pa[c] + (pb[c] - pa[c]) * f - curve[c]).abs())
+                        .fold(0.0, f32::max)
+                })
+                .fold(0.0, f32::max)
+        };
+        let mut pieces = 1usize;
+        while pieces < 64 {
+            let worst = (0..pieces)
+                .map(|i| error(i as f32 / pieces as f32, (i + 1) as f32 / pieces as f32))
+                .fold(0.0, f32::max);
+            if worst <= tol {
+                break;
+            }
+            pieces *= 2;
+        }
+        for i in 0..pieces {
+            let s = i as f32 / pieces as f32;
+            out.push((times[k] + dt * s, seg(s)));
+        }
+    }
+    if let Some(k) = times.len().checked_sub(1) {
+        out.push((times[k], (0..n).map(|c| get(k, 1, c)).collect()));
+    }
+    let frames = frames_of(out.iter().map(|(t, _)| *t), fps);
+    Keys::Weights(
+        frames
+            .into_iter()
+            .zip(out)
+            .map(|(f, (_, w))| {
+                Key::new(f, Weights::from_slice_truncated(&w)).with_interp(Interp::Linear)
+            })
+            .collect(),
+    )
 }
 
 fn direct_keys(times: &[f32], values: &[f32], rotation: bool, fps: f32, interp: Interp) -> Keys {

@@ -20,7 +20,7 @@ pub fn here(mesh: usize, prim: usize) -> String {
     pointer(&[&"meshes", &mesh, &"primitives", &prim])
 }
 
-fn vec3s(flat: &[f32], comps: usize) -> Vec<Vec3> {
+pub(super) fn vec3s(flat: &[f32], comps: usize) -> Vec<Vec3> {
     flat.chunks_exact(comps.max(1))
         .map(|c| Vec3::new(c[0], *c.get(1).unwrap_or(&0.0), *c.get(2).unwrap_or(&0.0)))
         .collect()
@@ -36,6 +36,7 @@ pub fn primitive_mesh(
     buffers: &Buffers,
     base_color: Vec3,
     uv_set: Option<u32>,
+    default_weights: &[f32],
     warnings: &mut Vec<String>,
 ) -> Result<Option<Mesh>> {
     let at = here(mesh_index, prim.index());
@@ -144,6 +145,9 @@ pub fn primitive_mesh(
         }
         None => (0..n as u32).collect(),
     };
+    let morph =
+        super::deform::read_morphs(mesh_index, prim, buffers, n, default_weights, warnings)?;
+    let skin_weights = super::deform::read_skin_weights(mesh_index, prim, buffers, n, warnings)?;
     let mut mesh = Mesh {
         name: String::new(),
         positions,
@@ -151,6 +155,8 @@ pub fn primitive_mesh(
         colors,
         texcoords,
         solid: true,
+        morph: morph.map(Box::new),
+        skin_weights: skin_weights.map(Box::new),
         ..Mesh::default()
     };
     let idx = &indices;
@@ -186,7 +192,9 @@ pub fn primitive_mesh(
     Ok(Some(mesh))
 }
 
-/// Gives every triangle its own three vertices carrying its face normal.
+/// Gives every triangle its own three vertices carrying its face normal
+/// (morph targets and skin influences follow their vertices; normal deltas
+/// are dropped with the smooth normals they applied to).
 fn flat_normals(mesh: &mut Mesh) {
     let tris = std::mem::take(&mut mesh.triangles);
     let mut positions = Vec::with_capacity(tris.len() * 3);
@@ -222,4 +230,13 @@ fn flat_normals(mesh: &mut Mesh) {
     mesh.normals = normals;
     mesh.colors = colors;
     mesh.texcoords = texcoords;
+    if mesh.deforms() {
+        let src: Vec<u32> = tris.iter().flatten().copied().collect();
+        if let Some(m) = mesh.morph.as_mut() {
+            **m = m.remap(&src, false);
+        }
+        if let Some(sw) = mesh.skin_weights.as_mut() {
+            **sw = sw.remap(&src);
+        }
+    }
 }

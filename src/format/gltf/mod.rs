@@ -14,6 +14,7 @@ mod accessor;
 mod anim;
 mod bin;
 mod container;
+mod deform;
 mod lights;
 mod material;
 mod mesh;

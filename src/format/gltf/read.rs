@@ -7,12 +7,15 @@
 //! A node whose only content is one drawable primitive, one camera or one
 //! light holds it itself; otherwise it is a group whose unnamed children
 //! hold its primitives, camera and light, so animating the glTF node
-//! moves all of them. Skins and morph targets are not in animed's model
-//! yet: skinned meshes are drawn in their bind pose and morphed meshes as
-//! their base mesh, each with one warning.
+//! moves all of them. Morph targets and skins map one to one onto the
+//! model (`deform.rs`): a skinned node's shapes get `Node::skin`, its
+//! morph weights (node `weights`, else mesh `weights`) are the mesh's
+//! defaults, and `weights` channels on a multi-primitive node drive all of
+//! its shapes (the track sits on the group).
 
 use super::anim::{all_times, choose_fps, node_target, read_clips};
 use super::container::{is_glb, parse_document, split_glb, Buffers, GltfError, Result};
+use super::deform::{read_skin, target_names};
 use super::lights::{camera_from_gltf, light_from_extras, light_from_punctual, Punctual};
 use super::material::{phong_from_extras, phong_from_pbr, Pbr};
 use super::mesh::primitive_mesh;
@@ -86,8 +89,7 @@ fn read_inner(
         meshes: HashMap::new(),
         node_ids: vec![None; doc.nodes().len()],
         part_of: vec![None; doc.nodes().len()],
-        warned_skin: false,
-        warned_morph: false,
+        skinned: Vec::new(),
     };
     b.scene.format = SourceFormat::Gltf;
     let scene_index = pick_scene(&doc, opts.scene)?;
@@ -112,6 +114,7 @@ fn read_inner(
         None => Vec::new(),
     };
     b.build_tree(&roots)?;
+    b.bind_skins(&doc)?;
     let fps = choose_fps(&all_times(&doc, &buffers));
     b.scene.settings.fps = fps;
     let target_of = |i: usize, path: gltf::animation::Property| {
@@ -247,8 +250,8 @@ struct Builder<'a, 'b> {
     node_ids: Vec<Option<NodeId>>,
     /// glTF placement nodes folded into their parent's light or camera.
     part_of: Vec<Option<NodeId>>,
-    warned_skin: bool,
-    warned_morph: bool,
+    /// (glTF skin index, animed shape node) for every skinned shape.
+    skinned: Vec<(usize, NodeId)>,
     /// Decoded images by glTF image index (None: unused or unreadable).
     images: Vec<Option<ImageId>>,
     /// An image without its alpha, for OPAQUE materials.
@@ -363,7 +366,12 @@ impl<'a> Builder<'a, '_> {
     }
 
     /// The mesh of one primitive (made once, shared by every node using it).
-    fn primitive(&mut self, mesh: &gltf::Mesh, prim: &gltf::Primitive) -> Result<Option<Shape>> {
+    fn primitive(
+        &mut self,
+        mesh: &gltf::Mesh,
+        prim: &gltf::Primitive,
+        weights: &[f32],
+    ) -> Result<Option<Shape>> {
         let material = self.material(prim.material().index());
         let base = match prim.material().index() {
             Some(_) => {
@@ -388,34 +396,35 @@ impl<'a> Builder<'a, '_> {
             _ => None,
         };
         let key = format!(
-            "{attrs:?} {:?} {:?} {} {:?} {} {uv_set:?}",
+            "{attrs:?} {:?} {:?} {} {:?} {:?} {:?} {uv_set:?}",
             prim.indices().map(|a| a.index()),
             prim.mode(),
             prim.material().double_sided(),
             colored.then(|| base.to_array().map(f32::to_bits)),
-            prim.morph_targets().next().is_some(),
+            prim.morph_targets()
+                .map(|t| [t.positions(), t.normals()].map(|a| a.map(|a| a.index())))
+                .collect::<Vec<_>>(),
+            weights.iter().map(|w| w.to_bits()).collect::<Vec<_>>(),
         );
         let id = match self.meshes.get(&key) {
             Some(&id) => id,
             None => {
-                if prim.morph_targets().next().is_some() && !self.warned_morph {
-                    self.warned_morph = true;
-                    self.warnings.push(format!(
-                        "{}: morph targets are not supported yet; base meshes are drawn",
-                        pointer(&[&"meshes", &mesh.index()])
-                    ));
-                }
                 let made = primitive_mesh(
                     mesh.index(),
                     prim,
                     self.buffers,
                     base,
                     uv_set,
+                    weights,
                     &mut self.warnings,
                 )?;
+                let names = target_names(mesh);
                 let id = made.map(|mut m| {
                     m.solid = !prim.material().double_sided();
                     m.name = mesh.name().unwrap_or_default().to_string();
+                    if let Some(morph) = m.morph.as_mut() {
+                        morph.set_names(&names);
+                    }
                     self.scene.add_mesh(m)
                 });
                 self.meshes.insert(key, id);
@@ -423,6 +432,49 @@ impl<'a> Builder<'a, '_> {
             }
         };
         Ok(id.map(|mesh| Shape { mesh, material }))
+    }
+
+    /// Makes the skins the loaded shapes use and binds them (after the
+    /// tree, so every joint node exists).
+    fn bind_skins(&mut self, doc: &gltf::Document) -> Result<()> {
+        let skins: Vec<gltf::Skin> = doc.skins().collect();
+        let mut made: HashMap<usize, crate::scene::SkinId> = HashMap::new();
+        for (k, shape) in std::mem::take(&mut self.skinned) {
+            let Some(gskin) = skins.get(k) else {
+                return Err(GltfError::at("/skins", format!("no skin {k}")));
+            };
+            let id = match made.get(&k) {
+                Some(&id) => id,
+                None => {
+                    let ids = &self.node_ids;
+                    let skin = read_skin(gskin, self.buffers, &|i| ids.get(i).copied().flatten())?;
+                    let id = self
+                        .scene
+                        .add_skin(skin)
+                        .map_err(|e| GltfError::at(pointer(&[&"skins", &k]), e.to_string()))?;
+                    made.insert(k, id);
+                    id
+                }
+            };
+            let joints = self.scene.skins[id.0 as usize].joints().len();
+            if let NodeKind::Shape(s) = &self.scene.node(shape).kind {
+                let span = self.scene.meshes[s.mesh.0 as usize]
+                    .skin_weights
+                    .as_ref()
+                    .map_or(0, |w| w.joint_span());
+                if span > joints {
+                    return Err(GltfError::at(
+                        pointer(&[&"skins", &k, &"joints"]),
+                        format!(
+                            "a vertex uses joint {} but the skin has {joints} joints",
+                            span - 1
+                        ),
+                    ));
+                }
+            }
+            self.scene.node_mut(shape).skin = Some(id);
+        }
+        Ok(())
     }
 
     /// Adds the node tree under `roots`, parents before children.
@@ -482,15 +534,14 @@ impl<'a> Builder<'a, '_> {
         let name = g.name().unwrap_or_default().to_string();
         let mut parts: Vec<NodeKind> = Vec::new();
         if let Some(mesh) = g.mesh() {
-            if g.skin().is_some() && !self.warned_skin {
-                self.warned_skin = true;
-                self.warnings.push(format!(
-                    "{}: skins are not supported yet; skinned meshes are drawn in their bind pose",
-                    pointer(&[&"nodes", &g.index(), &"skin"])
-                ));
-            }
+            // Node weights override the mesh's (§3.7.2.2).
+            let weights: Vec<f32> = g
+                .weights()
+                .or_else(|| mesh.weights())
+                .map(<[f32]>::to_vec)
+                .unwrap_or_default();
             for prim in mesh.primitives() {
-                if let Some(shape) = self.primitive(&mesh, &prim)? {
+                if let Some(shape) = self.primitive(&mesh, &prim, &weights)? {
                     parts.push(NodeKind::Shape(shape));
                 }
             }
@@ -526,11 +577,20 @@ impl<'a> Builder<'a, '_> {
         } else {
             NodeKind::Group
         };
+        let own_shape = matches!(own, NodeKind::Shape(_));
         let id = self
             .scene
             .add_node(parent, Node::new(name, own).with_transform(transform));
+        let skin = g.skin().map(|s| s.index());
+        if let (Some(k), true) = (skin, own_shape) {
+            self.skinned.push((k, id));
+        }
         for kind in parts {
-            self.scene.add_node(Some(id), Node::new("", kind));
+            let shape = matches!(kind, NodeKind::Shape(_));
+            let child = self.scene.add_node(Some(id), Node::new("", kind));
+            if let (Some(k), true) = (skin, shape) {
+                self.skinned.push((k, child));
+            }
         }
         Ok(id)
     }

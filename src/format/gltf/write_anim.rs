@@ -193,7 +193,7 @@ fn sampled(ch: &Channel, fps: f32, rotation: bool) -> Written {
             Value::Vec3(v) => values.extend_from_slice(&v.to_array()),
             Value::Rotation(q) => values.extend_from_slice(&q.to_array()),
             Value::Scalar(s) => values.extend_from_slice(&[s, s, s]),
-            Value::Bool(_) => values.extend_from_slice(&[0.0, 0.0, 0.0]),
+            Value::Bool(_) | Value::Weights(_) => values.extend_from_slice(&[0.0, 0.0, 0.0]),
         }
     }
     let width = if rotation { 4 } else { 3 };

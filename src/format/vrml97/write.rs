@@ -613,7 +613,7 @@ impl Writer<'_> {
                         })
                         .collect(),
                 ),
-                Value::Bool(_) => continue,
+                Value::Bool(_) | Value::Weights(_) => continue,
             };
             let interp = self.plan.internal(&format!("{target}_{field}"));
             self.out.open(&format!("DEF {interp} {kind}"));

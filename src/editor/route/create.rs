@@ -1,0 +1,119 @@
+//! The editor's side of `create` and `menu`: opens the Add menu, routes
+//! events to an open menu, adds, duplicates and re-parents objects (each
+//! one undoable step).
+
+use crate::editor::command::Command;
+use crate::editor::create::{self, NewThing};
+use crate::editor::menu::{Menu, MenuItem, Reply};
+use crate::editor::ops;
+use crate::editor::panel::Action;
+use crate::editor::Editor;
+use crate::input::Event;
+use crate::scene::{NodeId, Scene};
+
+impl Editor {
+    /// The open pop-up menu, if any.
+    pub fn menu(&self) -> Option<&Menu> {
+        self.menu.as_ref()
+    }
+
+    /// Opens the Add menu with its top-left corner at (x, y).
+    pub fn open_add_menu(&mut self, x: i32, y: i32) {
+        let items = NewThing::ALL
+            .iter()
+            .map(|&t| MenuItem::new(t.label(), "", Action::Add(t)))
+            .collect();
+        self.menu = Some(Menu::new("Add (Shift+A)", items, (x, y)));
+    }
+
+    /// An open menu takes every input event; `None` when no menu is open
+    /// or the event is not input.
+    pub(in crate::editor) fn menu_event(&mut self, ev: &Event) -> Option<bool> {
+        let input = matches!(
+            ev,
+            Event::MouseMove { .. }
+                | Event::MouseDown { .. }
+                | Event::MouseUp { .. }
+                | Event::KeyDown { .. }
+                | Event::Wheel { .. }
+        );
+        if !input {
+            return None;
+        }
+        let window = self.layout().window;
+        let m = self.menu.as_mut()?;
+        match m.handle(ev, window) {
+            Reply::Stay(redraw) => Some(redraw),
+            Reply::Close => {
+                self.menu = None;
+                Some(true)
+            }
+            Reply::Pick(a) => {
+                self.menu = None;
+                self.run_action(a);
+                Some(true)
+            }
+        }
+    }
+
+    /// Adds `what` at the orbit centre, sized to the scene, selected.
+    pub fn add_thing(&mut self, what: NewThing) {
+        if let NewThing::Light(which) = what {
+            self.run_action(Action::AddLight(which));
+            return;
+        }
+        let pose = self.pose().clone();
+        let empty = crate::render::scene_bounds(&self.scene, &pose).is_none();
+        let size = create::size_for(self.camera.distance, empty);
+        let (at, eye) = (self.camera.target, self.camera.eye());
+        let mut after = self.scene.clone();
+        let id = create::add(&mut after, what, at, size, eye);
+        let name = after.node(id).name.clone();
+        self.replace_with(&format!("Add {name}"), after);
+        self.selection = Some(id);
+        self.set_status(&format!("Added {name} (Shift+D duplicates)"), false);
+    }
+
+    /// Shift+D: a copy of the selection with its tracks, selected.
+    pub fn duplicate_selection(&mut self) {
+        let Some(sel) = self.selection else {
+            self.set_status("Nothing selected to duplicate", false);
+            return;
+        };
+        let mut after = self.scene.clone();
+        let id = create::duplicate(&mut after, sel);
+        let name = after.node(id).name.clone();
+        self.replace_with(&format!("Duplicate as {name}"), after);
+        self.selection = Some(id);
+        self.set_status(&format!("Duplicated as {name} (with its keys)"), false);
+    }
+
+    /// Puts `id` under `parent` (`None`: top level), one undoable step.
+    pub fn reparent(&mut self, id: NodeId, parent: Option<NodeId>) {
+        let mut after = self.scene.clone();
+        if let Err(e) = create::reparent(&mut after, id, parent) {
+            self.set_status(&e, true);
+            return;
+        }
+        let name = ops::display_name(&self.scene, id);
+        let msg = match parent {
+            Some(p) => format!("{name} is now under {}", ops::display_name(&self.scene, p)),
+            None => format!("{name} is now at the top level"),
+        };
+        self.replace_with(&msg, after);
+        self.selection = Some(id);
+        self.set_status(&msg, false);
+    }
+
+    /// Records the whole scene replaced by `after` as one step.
+    fn replace_with(&mut self, label: &str, after: Scene) {
+        let before = Box::new(self.scene.clone());
+        self.execute(
+            label,
+            Command::ReplaceScene {
+                before,
+                after: Box::new(after),
+            },
+        );
+    }
+}
