@@ -58,6 +58,7 @@ fn format_name(f: SourceFormat) -> &'static str {
         SourceFormat::Inventor => "Open Inventor",
         SourceFormat::Vrml1 => "VRML 1.0",
         SourceFormat::Vrml97 => "VRML97",
+        SourceFormat::X3d => "X3D",
         SourceFormat::Obj => "Wavefront OBJ",
         SourceFormat::Gltf => "glTF 2.0",
     }

@@ -41,7 +41,8 @@ pub struct Entry {
 pub fn is_known_file(name: &str) -> bool {
     let l = name.to_ascii_lowercase();
     [
-        ".iv", ".wrl", ".wrl.gz", ".wrz", ".vrml", ".obj", ".gz", ".gltf", ".glb",
+        ".iv", ".wrl", ".wrl.gz", ".wrz", ".vrml", ".obj", ".gz", ".gltf", ".glb", ".x3d", ".x3dv",
+        ".x3dz", ".x3dvz",
     ]
     .iter()
     .any(|e| l.ends_with(e))

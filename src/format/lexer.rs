@@ -67,6 +67,8 @@ pub enum Header {
     Vrml1,
     /// `#VRML V2.0 utf8`.
     Vrml97,
+    /// `#X3D V3.0`…`V3.3` or `V4.0` `utf8`: the X3D classic encoding.
+    X3dClassic,
 }
 
 /// Reads the header line. Binary Inventor and unknown headers are errors
@@ -100,8 +102,12 @@ pub fn read_header(bytes: &[u8]) -> Result<Header, LexError> {
         ["#VRML", "V1.0", ..] => Ok(Header::Vrml1),
         ["#VRML", "V2.0", ..] => Ok(Header::Vrml97),
         ["#VRML", v, ..] => Err(err(&format!("unsupported VRML version {v}"))),
+        ["#X3D", "V3.0" | "V3.1" | "V3.2" | "V3.3" | "V4.0", ..] => Ok(Header::X3dClassic),
+        ["#X3D", v, ..] => Err(err(&format!(
+            "unsupported X3D version {v} (animed reads V3.0 to V3.3 and V4.0)"
+        ))),
         _ => Err(err(
-            "not an Inventor or VRML file (expected a '#Inventor V2.1 ascii' or '#VRML V2.0 utf8' header)",
+            "not an Inventor, VRML or X3D file (expected a '#Inventor V2.1 ascii', '#VRML V2.0 utf8' or '#X3D V4.0 utf8' header, or X3D's XML)",
         )),
     }
 }

@@ -3,7 +3,8 @@
 
 //!
 //! Layout: one folder per format, each owning its reader and writer
-//! (`iv/` Inventor + VRML 1.0, `vrml97/`, `obj`), the shared reading pieces
+//! (`iv/` Inventor + VRML 1.0, `vrml97/`, `x3d/` (both encodings, onto
+//! the VRML97 builder), `gltf/`, `obj`), the shared reading pieces
 //! (`limits`: the input budget every read goes through; `lexer`, `syntax/`
 //! with PROTO expansion, `polygons`, `inline`, `gzip`, `sgi_image`, `textures`,
 //! `hsv`) and the shared export code (`export/`: write plan, channels,
@@ -26,6 +27,7 @@ pub mod sgi_image;
 pub mod syntax;
 pub mod textures;
 pub mod vrml97;
+pub mod x3d;
 
 pub use error::LoadError;
 pub use export::{
@@ -91,10 +93,14 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
     if obj::is_obj_path(path) {
         return obj::read(bytes, path);
     }
+    if x3d::is_xml(bytes) {
+        return x3d::read_xml_nested(bytes, path, depth);
+    }
     let header = lexer::read_header(bytes)
         .map_err(|e| LoadError::new(path, e.pos.line, e.pos.column, e.message))?;
     match header {
         lexer::Header::Vrml97 => vrml97::read_nested(bytes, path, depth),
+        lexer::Header::X3dClassic => x3d::read_classic_nested(bytes, path, depth),
         lexer::Header::Vrml1 => iv::read_nested(bytes, path, depth, true),
         lexer::Header::Inventor2 | lexer::Header::Inventor1 => {
             iv::read_nested(bytes, path, depth, false)

@@ -38,7 +38,7 @@ impl Headlight {
             // Only VRML97 readers set `settings.headlight` (NavigationInfo);
             // other formats leave it `None` and get the examiner headlight.
             Headlight::Auto => match scene.format {
-                SourceFormat::Vrml97 | SourceFormat::Gltf => {
+                SourceFormat::Vrml97 | SourceFormat::X3d | SourceFormat::Gltf => {
                     scene.settings.headlight.unwrap_or(true)
                 }
                 _ => true,

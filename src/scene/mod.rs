@@ -102,6 +102,8 @@ pub enum SourceFormat {
     Inventor,
     Vrml1,
     Vrml97,
+    /// X3D, classic (.x3dv) or XML (.x3d) encoding.
+    X3d,
     Obj,
     Gltf,
 }

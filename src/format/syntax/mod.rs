@@ -9,7 +9,8 @@ mod checks;
 mod parser;
 mod proto;
 
-pub use parser::{parse, Options};
+pub use parser::{parse, Options, Rewrite};
+pub use proto::{expand, ProtoDef};
 
 use super::lexer::Pos;
 use std::collections::HashMap;
@@ -82,6 +83,40 @@ pub struct Parsed {
     pub warnings: Vec<(Pos, String)>,
     /// A syntax error that stopped parsing early (what came before is kept).
     pub error: Option<(Pos, String)>,
+    /// X3D: the PROFILE, COMPONENT, UNIT and META statements.
+    pub x3d: X3dHead,
+}
+
+/// The statements an X3D file makes about itself (ISO/IEC 19776-2 §6.2:
+/// PROFILE, COMPONENT, UNIT, META), in either encoding.
+#[derive(Debug, Default, Clone)]
+pub struct X3dHead {
+    pub profile: Option<String>,
+    /// `name:level` as written.
+    pub components: Vec<String>,
+    pub units: Vec<Unit>,
+    /// META name/content pairs, in file order.
+    pub meta: Vec<(String, String)>,
+}
+
+/// `UNIT category name conversionFactor` (ISO/IEC 19775-1 §4.3.6): one
+/// unit of the file is `factor` base units (metres, radians…).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unit {
+    pub category: String,
+    pub name: String,
+    pub factor: f64,
+}
+
+impl X3dHead {
+    /// The conversion factor of a unit category (1 when none is declared).
+    pub fn factor(&self, category: &str) -> f64 {
+        self.units
+            .iter()
+            .rev()
+            .find(|u| u.category == category)
+            .map_or(1.0, |u| u.factor)
+    }
 }
 
 impl AstNode {

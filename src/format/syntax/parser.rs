@@ -6,8 +6,8 @@
 //! stops parsing but keeps every node read so far (see [`Parsed::error`]).
 
 use super::checks;
-use super::proto::{instantiate, ProtoDef};
-use super::{AstNode, Field, NodeRef, Parsed, Route, Value};
+use super::proto::{expand, ProtoDef};
+use super::{AstNode, Field, NodeRef, Parsed, Route, Unit, Value, X3dHead};
 use crate::format::lexer::{LexError, Lexer, Pos, Tok};
 use crate::format::limits::{self, Limit, LimitError};
 use std::collections::HashMap;
@@ -22,13 +22,25 @@ pub struct Options {
     pub vrml97: bool,
     /// Levels of nesting this file may use (PROTO expansion included).
     pub max_depth: usize,
+    /// X3D classic: PROFILE, COMPONENT, UNIT, META, IMPORT and EXPORT
+    /// statements.
+    pub x3d: bool,
+    /// Run on every node as it is made (the X3D reader maps its nodes onto
+    /// VRML97 ones here, so one scene builder serves both).
+    pub rewrite: Option<Rewrite>,
 }
+
+/// A reader's node rewrite: changes a freshly parsed node in place, may
+/// add warnings. PROTO instances are not passed to it (their roots are).
+pub type Rewrite = fn(&mut AstNode, &X3dHead, &mut Vec<(Pos, String)>);
 
 impl Options {
     pub fn new(vrml97: bool) -> Self {
         Options {
             vrml97,
             max_depth: limits::depth_left() as usize,
+            x3d: false,
+            rewrite: None,
         }
     }
 }
@@ -68,6 +80,7 @@ pub(super) struct Parser<'a> {
     /// read, innermost last: what an IS may name.
     ifaces: Vec<Vec<(String, String, String)>>,
     warnings: Vec<(Pos, String)>,
+    head: X3dHead,
 }
 
 /// Parses a whole file body (the header line is a comment to the lexer).
@@ -80,6 +93,7 @@ pub fn parse(src: &[u8], opts: Options) -> Parsed {
         scopes: vec![Scope::new()],
         ifaces: Vec::new(),
         warnings: Vec::new(),
+        head: X3dHead::default(),
     };
     let mut roots = Vec::new();
     let error = p.statements(&mut roots, true).err();
@@ -89,6 +103,7 @@ pub fn parse(src: &[u8], opts: Options) -> Parsed {
         routes: scope.routes,
         warnings: p.warnings,
         error,
+        x3d: p.head,
     }
 }
 
@@ -194,7 +209,127 @@ impl Parser<'_> {
             self.route()?;
             return Ok(None);
         }
+        if self.opts.x3d {
+            if let Tok::Ident(w) = self.peek()? {
+                if matches!(
+                    w.as_str(),
+                    "PROFILE" | "COMPONENT" | "UNIT" | "META" | "EXPORT" | "IMPORT"
+                ) {
+                    self.x3d_statement()?;
+                    return Ok(None);
+                }
+            }
+        }
         self.node_statement()
+    }
+
+    /// An X3D classic statement (ISO/IEC 19776-2 §6.2, §6.3.7): PROFILE,
+    /// COMPONENT, UNIT and META are kept; EXPORT and IMPORT are read and
+    /// skipped with a warning (animed does not connect Inline scenes).
+    /// Never inlined: its locals would grow the frame of `statement`, which
+    /// recurses once per nesting level.
+    #[inline(never)]
+    fn x3d_statement(&mut self) -> PResult<()> {
+        let (kw, pos) = self.ident("a statement")?;
+        match kw.as_str() {
+            "PROFILE" => {
+                let (p, _) = self.ident("a profile name")?;
+                self.head.profile = Some(p);
+            }
+            "COMPONENT" => {
+                let (c, _) = self.ident("a component name:level")?;
+                // `Name : level` or `Name :level` written with spaces.
+                let colon = match self.peek()? {
+                    Tok::Punct(b':') => Some(String::new()),
+                    Tok::Ident(w) if w.starts_with(':') => Some(w[1..].to_string()),
+                    _ => None,
+                };
+                let c = match colon {
+                    None => c,
+                    Some(level) if !level.is_empty() => {
+                        self.next()?;
+                        format!("{c}:{level}")
+                    }
+                    Some(_) => {
+                        self.next()?;
+                        match self.next()? {
+                            (Tok::Num(n), _) => format!("{c}:{n}"),
+                            (t, p) => {
+                                return Err((
+                                    p,
+                                    format!("expected a level, found {}", t.describe()),
+                                ))
+                            }
+                        }
+                    }
+                };
+                self.head.components.push(c);
+            }
+            "UNIT" => {
+                let (category, _) = self.ident("a unit category (angle, force, length, mass)")?;
+                let (name, _) = self.ident("a unit name")?;
+                let factor = match self.next()? {
+                    (Tok::Num(n), _) => n,
+                    (t, p) => {
+                        return Err((
+                            p,
+                            format!("expected a conversion factor, found {}", t.describe()),
+                        ))
+                    }
+                };
+                if !(factor.is_finite() && factor > 0.0) {
+                    self.warn(
+                        pos,
+                        format!("UNIT {category} {name}: the factor must be > 0; ignored"),
+                    );
+                } else {
+                    self.head.units.push(Unit {
+                        category,
+                        name,
+                        factor,
+                    });
+                }
+            }
+            "META" => {
+                let mut strs = Vec::new();
+                for what in ["a META name string", "a META content string"] {
+                    match self.next()? {
+                        (Tok::Str(s), p) => {
+                            self.count_string(p, s.len())?;
+                            strs.push(s)
+                        }
+                        (t, p) => {
+                            return Err((p, format!("expected {what}, found {}", t.describe())))
+                        }
+                    }
+                }
+                let content = strs.pop().unwrap_or_default();
+                let name = strs.pop().unwrap_or_default();
+                self.head.meta.push((name, content));
+            }
+            "EXPORT" => {
+                let (name, _) = self.ident("a DEF name after EXPORT")?;
+                if self.peek_is_ident("AS") {
+                    self.next()?;
+                    self.ident("a name after AS")?;
+                }
+                self.warn(pos, format!("EXPORT {name} is not used by animed; skipped"));
+            }
+            _ => {
+                let (name, _) = self.ident("InlineName.exportedName after IMPORT")?;
+                if self.peek_is_ident("AS") {
+                    self.next()?;
+                    self.ident("a name after AS")?;
+                }
+                self.warn(
+                    pos,
+                    format!(
+                        "IMPORT {name} is not supported (Inline scenes are not connected); skipped"
+                    ),
+                );
+            }
+        }
+        Ok(())
     }
 
     /// `DEF name Node`, `USE name`, `NULL` or `Node`.
@@ -271,10 +406,9 @@ impl Parser<'_> {
             }
         }
         if let Some(def) = proto {
-            let (inst, routes) = instantiate(&def, &node, self)?;
-            node.height = AstNode::height_of(&node.fields, Some(&inst));
-            node.proto = Some(inst);
-            self.scope().routes.extend(routes);
+            self.expand_into(&def, &mut node)?;
+        } else if let Some(rewrite) = self.opts.rewrite {
+            self.rewrite(rewrite, &mut node);
         }
         // PROTO expansion can nest far deeper than the text: what counts is
         // how deep following the node goes, from where it stands.
@@ -282,6 +416,26 @@ impl Parser<'_> {
             return Err(self.too_deep(pos));
         }
         Ok(Rc::new(node))
+    }
+
+    /// Expands a PROTO instance in place. Never inlined (see
+    /// `x3d_statement`): `node_body` recurses once per nesting level.
+    #[inline(never)]
+    fn expand_into(&mut self, def: &ProtoDef, node: &mut AstNode) -> PResult<()> {
+        let hook = self.opts.rewrite.map(|r| (r, &self.head));
+        let (inst, routes, count) = expand(def, node, hook, &mut self.warnings)?;
+        self.nodes += count;
+        node.height = AstNode::height_of(&node.fields, Some(&inst));
+        node.proto = Some(inst);
+        self.scope().routes.extend(routes);
+        Ok(())
+    }
+
+    /// Runs the reader's node rewrite. Never inlined (see `x3d_statement`).
+    #[inline(never)]
+    fn rewrite(&mut self, rewrite: Rewrite, node: &mut AstNode) {
+        rewrite(node, &self.head, &mut self.warnings);
+        node.height = AstNode::height_of(&node.fields, None);
     }
 
     fn node_fields(&mut self, kind: &str, pos: Pos) -> PResult<Vec<Field>> {

@@ -2,8 +2,8 @@
 //! body with `IS` fields bound to the instance's values (or the defaults),
 //! and the body's ROUTEs copied onto the copied nodes.
 
-use super::parser::Parser;
-use super::{AstNode, Field, NodeRef, ProtoInstance, Route, Value};
+use super::parser::Rewrite;
+use super::{AstNode, Field, NodeRef, ProtoInstance, Route, Value, X3dHead};
 use crate::format::lexer::Pos;
 use crate::format::limits;
 use std::collections::HashMap;
@@ -26,14 +26,20 @@ struct Binder<'a> {
     memo: HashMap<*const AstNode, NodeRef>,
     is_map: HashMap<String, Vec<(NodeRef, String)>>,
     count: usize,
+    /// The reader's node rewrite (X3D), run again on body nodes whose IS
+    /// fields were just bound: at parse time their values were not known.
+    hook: Option<(Rewrite, &'a X3dHead)>,
+    warnings: &'a mut Vec<(Pos, String)>,
 }
 
-/// Expands `inst` (an instance of `def`) into a fresh body.
-pub(super) fn instantiate(
-    def: &ProtoDef,
-    inst: &AstNode,
-    parser: &mut Parser<'_>,
-) -> Result<(ProtoInstance, Vec<Route>), (Pos, String)> {
+/// Expands `inst` (an instance of `def`) into a fresh body; also returns
+/// how many nodes the copy made (already charged to the input budget).
+pub fn expand<'a>(
+    def: &'a ProtoDef,
+    inst: &'a AstNode,
+    hook: Option<(Rewrite, &'a X3dHead)>,
+    warnings: &'a mut Vec<(Pos, String)>,
+) -> Result<(ProtoInstance, Vec<Route>, usize), (Pos, String)> {
     let mut values: HashMap<&str, Option<(&Value, bool)>> = HashMap::new();
     for (name, default) in &def.fields {
         values.insert(name.as_str(), default.as_ref().map(|v| (v, false)));
@@ -48,12 +54,13 @@ pub(super) fn instantiate(
         memo: HashMap::new(),
         is_map: HashMap::new(),
         count: 0,
+        hook,
+        warnings,
     };
     let body: Vec<NodeRef> = def.body.iter().map(|n| b.copy(n)).collect();
     if let Err(e) = limits::charge_nodes(b.count as u64) {
         return Err((inst.pos, format!("PROTO expansion: {e}")));
     }
-    parser.nodes += b.count;
     let routes = def
         .routes
         .iter()
@@ -84,6 +91,7 @@ pub(super) fn instantiate(
             is_map: b.is_map,
         },
         routes,
+        b.count,
     ))
 }
 
@@ -135,14 +143,21 @@ impl Binder<'_> {
                 .collect(),
         });
         let height = AstNode::height_of(&fields, proto.as_ref());
-        let c = Rc::new(AstNode {
+        let mut c = AstNode {
             kind: n.kind.clone(),
             def: n.def.clone(),
             fields,
             pos: n.pos,
             proto,
             height,
-        });
+        };
+        if let Some((rewrite, head)) = self.hook {
+            if !bound.is_empty() && c.proto.is_none() {
+                rewrite(&mut c, head, self.warnings);
+                c.height = AstNode::height_of(&c.fields, None);
+            }
+        }
+        let c = Rc::new(c);
         for (iface, field) in bound {
             self.is_map
                 .entry(iface)

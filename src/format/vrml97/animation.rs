@@ -10,6 +10,7 @@ use super::build::Builder;
 use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
 use crate::format::hsv::{hsv_to_rgb, lerp_hsv, rgb_to_hsv};
 use crate::format::syntax::{AstNode, NodeRef, Route};
+use crate::format::x3d::interp as x3d_interp;
 use crate::scene::{NodeKind, Settings};
 use glam::{Quat, Vec3};
 use std::collections::HashMap;
@@ -135,8 +136,10 @@ fn dest(target_kind: &str, field: &str) -> Option<Dest> {
 
 /// Imports every interpolator chain of the file as tracks.
 pub fn import(b: &mut Builder, routes: &[Route]) {
-    // Interpolator → the TimeSensor that drives its fraction.
+    // Interpolator → the TimeSensor that drives its fraction (and the X3D
+    // EaseInEaseOut that remaps it on the way, if any).
     let mut driver: HashMap<*const AstNode, NodeRef> = HashMap::new();
+    let mut eased: HashMap<*const AstNode, NodeRef> = HashMap::new();
     for r in routes {
         let from = r.from.effective();
         if from.kind == "TimeSensor" && field_name(&r.from_field) == "fraction" {
@@ -149,8 +152,25 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             }
         }
     }
+    for r in routes {
+        let from = r.from.effective();
+        let Some(ts) = driver.get(&Rc::as_ptr(&from)).cloned() else {
+            continue;
+        };
+        if from.kind == "EaseInEaseOut" && field_name(&r.from_field) == "modifiedFraction" {
+            let mut targets = Vec::new();
+            resolve(&r.to, &r.to_field, &mut targets, 0);
+            for (t, f) in targets {
+                if field_name(&f) == "fraction" {
+                    driver.insert(Rc::as_ptr(&t), ts.clone());
+                    eased.insert(Rc::as_ptr(&t), from.clone());
+                }
+            }
+        }
+    }
     struct Pending {
         interp: NodeRef,
+        ease: Option<NodeRef>,
         clock: Clock,
         of: TargetRef,
         property: Property,
@@ -221,6 +241,7 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                         if ok {
                             pending.push(Pending {
                                 interp: interp.clone(),
+                                ease: eased.get(&Rc::as_ptr(&interp)).cloned(),
                                 clock: c,
                                 of: TargetRef::Node(id),
                                 property,
@@ -237,6 +258,7 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                     for id in ids.collect::<Vec<_>>() {
                         pending.push(Pending {
                             interp: interp.clone(),
+                            ease: eased.get(&Rc::as_ptr(&interp)).cloned(),
                             clock: c,
                             of: TargetRef::Material(id),
                             property,
@@ -287,10 +309,25 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
     b.scene.settings = settings;
 
     for p in pending {
-        let Some((fractions, values)) = interpolator_values(&p.interp) else {
-            continue;
+        let made = if x3d_interp::handles(&p.interp, p.ease.as_deref()) {
+            // X3D splines, squad and EaseInEaseOut: exact keys or samples.
+            let c = p.clock;
+            let frame = |k: f64| ((c.start + k * c.cycle) * fps as f64) as f32;
+            match x3d_interp::keys(&p.interp, p.ease.as_deref(), p.property.kind(), &frame) {
+                Some((keys, _exact)) => Ok(keys),
+                None => Err(format!(
+                    "{} keys do not fit {}; not imported",
+                    p.interp.kind,
+                    p.property.name()
+                )),
+            }
+        } else {
+            let Some((fractions, values)) = interpolator_values(&p.interp) else {
+                continue;
+            };
+            make_keys(&fractions, values, p.clock, fps, p.property)
         };
-        match make_keys(&fractions, values, p.clock, fps, p.property) {
+        match made {
             Ok(keys) => {
                 let target = Target {
                     of: p.of,

@@ -262,18 +262,16 @@ impl Builder {
                 }
             }
             "Shape" => self.shape(&eff, parent, name),
-            "DirectionalLight" | "PointLight" | "SpotLight" | "Viewpoint" | "NavigationInfo"
-            | "Background"
+            "DirectionalLight" | "PointLight" | "SpotLight" | "Viewpoint" | "OrthoViewpoint"
+            | "NavigationInfo" | "Background"
                 if self.hidden > 0 => {}
             "DirectionalLight" | "PointLight" | "SpotLight" => {
                 let light = light(&eff);
                 self.push(&eff, parent, Node::new(name, NodeKind::Light(light)));
             }
-            "Viewpoint" => {
+            "Viewpoint" | "OrthoViewpoint" => {
                 let cam = Camera {
-                    kind: CameraKind::Perspective {
-                        height_angle: eff.f32("fieldOfView", std::f32::consts::FRAC_PI_4),
-                    },
+                    kind: camera_kind(&eff),
                     position: eff.vec3("position", Vec3::new(0.0, 0.0, 10.0)),
                     orientation: eff.rotation("orientation").unwrap_or(Quat::IDENTITY),
                     description: eff
@@ -318,7 +316,7 @@ impl Builder {
                     self.scene.info.push(s);
                 }
             }
-            k if k == "TimeSensor" || k.ends_with("Interpolator") => {}
+            k if k == "TimeSensor" || k.ends_with("Interpolator") || k == "EaseInEaseOut" => {}
             "Script" => self.warn(eff.pos, "Script is not supported; skipped"),
             k if IGNORED.contains(&k) => {
                 let msg = format!("{k} is not supported; skipped");
@@ -495,7 +493,30 @@ fn light(n: &AstNode) -> Light {
     l.direction = n.vec3("direction", Vec3::new(0.0, 0.0, -1.0));
     l.attenuation = n.vec3("attenuation", Vec3::new(1.0, 0.0, 0.0));
     l.radius = n.f32("radius", 100.0);
+    // X3D `global` (ISO/IEC 19775-1 §17.2.1); its defaults are VRML97's
+    // scoping: DirectionalLight lights its siblings, the others everything.
+    l.scoped = !n.bool("global", !l.scoped);
     l
+}
+
+/// Viewpoint: perspective with VRML97's fieldOfView. X3D OrthoViewpoint
+/// (§23.4.5): fieldOfView is the (minX, minY, maxX, maxY) rectangle; the
+/// view volume's height is its larger extent, as it applies to the
+/// smaller window side like Viewpoint's angle.
+fn camera_kind(n: &AstNode) -> CameraKind {
+    if n.kind == "OrthoViewpoint" {
+        let r = match n.nums("fieldOfView") {
+            Some(v) if v.len() >= 4 => [v[0], v[1], v[2], v[3]],
+            _ => [-1.0, -1.0, 1.0, 1.0],
+        };
+        let h = (r[2] - r[0]).abs().max((r[3] - r[1]).abs()) as f32;
+        return CameraKind::Orthographic {
+            height: if h.is_finite() && h > 0.0 { h } else { 2.0 },
+        };
+    }
+    CameraKind::Perspective {
+        height_angle: n.f32("fieldOfView", std::f32::consts::FRAC_PI_4),
+    }
 }
 
 /// Standard VRML97 node names (anything else is unknown, not unsupported).

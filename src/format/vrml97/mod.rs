@@ -9,7 +9,7 @@ mod geometry;
 pub mod write;
 
 use super::lexer::Pos;
-use super::syntax::{self, Options};
+use super::syntax::{self, Options, Parsed};
 use super::{LoadError, Loaded};
 use crate::scene::SourceFormat;
 use std::path::Path;
@@ -21,6 +21,19 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
 
 pub(crate) fn read_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
     let parsed = syntax::parse(bytes, Options::new(true));
+    let mut loaded = build_parsed(&parsed, path, depth)?;
+    loaded.scene.format = SourceFormat::Vrml97;
+    Ok(loaded)
+}
+
+/// Builds the scene of a parsed VRML97-style node tree (VRML97, and both
+/// X3D encodings once their nodes are mapped): the parse's error and
+/// warnings become the load's, positioned in `path`.
+pub(crate) fn build_parsed(
+    parsed: &Parsed,
+    path: &Path,
+    depth: usize,
+) -> Result<Loaded, LoadError> {
     let mut warnings: Vec<String> = Vec::new();
     if let Some((pos, msg)) = &parsed.error {
         // A passed input limit fails the load, as does an error before any node.
@@ -37,9 +50,8 @@ pub(crate) fn read_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loa
         warnings.push(fmt_warning(path, *pos, msg));
     }
     let mut b = build::Builder::new(path, depth);
-    b.build(&parsed);
+    b.build(parsed);
     let mut loaded = b.finish()?;
-    loaded.scene.format = SourceFormat::Vrml97;
     warnings.append(&mut loaded.warnings);
     loaded.warnings = warnings;
     Ok(loaded)
