@@ -11,7 +11,9 @@ use animed::internals::anim::{
 };
 use animed::internals::format::gltf::{read, to_bytes, ReadOptions};
 use animed::internals::format::{self, WriteOptions};
-use animed::internals::scene::{Clip, LightKind, Node, NodeKind, Scene};
+use animed::internals::scene::{
+    Clip, ImageSource, LightKind, Node, NodeKind, Scene, TextureModel, Wrap,
+};
 use glam::{Quat, Vec3};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -456,6 +458,113 @@ fn mangled_files_never_panic() {
                 }
             }
             let _ = format::load_bytes(&b, path);
+        }
+    }
+}
+
+/// The texture of the shape named `name` and its mesh's texture coordinate
+/// at the vertex placed at `p`.
+fn texture_at(s: &Scene, name: &str, p: Vec3) -> (animed::internals::scene::Texture, glam::Vec2) {
+    let id = s.find_node(name).unwrap();
+    let NodeKind::Shape(sh) = &s.node(id).kind else {
+        panic!("{name} is not a shape")
+    };
+    let m = &s.meshes[sh.mesh.0 as usize];
+    let k = m
+        .positions
+        .iter()
+        .position(|q| (*q - p).length() < 1e-6)
+        .unwrap();
+    let t = s.materials[sh.material.0 as usize].texture.clone().unwrap();
+    (t, m.texcoords[k])
+}
+
+#[test]
+fn base_color_textures_samplers_and_transform() {
+    // tests/data/gltf/textured.gltf (make.py): a PNG in a buffer view, a PNG
+    // file beside it with CLAMP_TO_EDGE and KHR_texture_transform.
+    let l = load("textured.gltf");
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let s = &l.scene;
+    // Left: glTF v runs down, ours t up: the top-left corner is t = 1.
+    let (t, uv) = texture_at(s, "Left", Vec3::new(-2.2, 1.0, 0.0));
+    assert_eq!(uv, glam::Vec2::new(0.0, 1.0));
+    assert_eq!((t.wrap_s, t.wrap_t), (Wrap::Repeat, Wrap::Repeat));
+    assert_eq!(t.model, TextureModel::MultiplyDiffuse);
+    let img = s.image(t.image).unwrap();
+    assert_eq!(img.source, ImageSource::Inline);
+    // Top-left texel red, bottom-right white (rows top first).
+    assert_eq!(img.base().texel(0, 0), [255, 0, 0, 255]);
+    assert_eq!(img.base().texel(1, 1), [255, 255, 255, 255]);
+    // Right: the file, clamped, its alpha kept (BLEND), and the transform
+    // takes the right half: glTF uv (0, 0) → (0.5, 0), i.e. ours (0.5, 1).
+    let (t, uv) = texture_at(s, "Right", Vec3::new(0.2, 1.0, 0.0));
+    assert_eq!((t.wrap_s, t.wrap_t), (Wrap::Clamp, Wrap::Clamp));
+    let img = s.image(t.image).unwrap();
+    assert!(matches!(&img.source, ImageSource::File { url, .. } if url == "tex_2x2.png"));
+    assert_eq!(img.components(), 4);
+    let mapped = t.transform.matrix().transform_point2(uv);
+    assert!(
+        (mapped - glam::Vec2::new(0.5, 1.0)).length() < 1e-6,
+        "{mapped}"
+    );
+    let (t, uv) = texture_at(s, "Right", Vec3::new(2.2, -1.0, 0.0));
+    let mapped = t.transform.matrix().transform_point2(uv);
+    assert!(
+        (mapped - glam::Vec2::new(1.0, 0.0)).length() < 1e-6,
+        "{mapped}"
+    );
+}
+
+#[test]
+fn textures_survive_gltf_and_glb_round_trips() {
+    let src = load("textured.gltf").scene;
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_textures");
+    std::fs::create_dir_all(&dir).unwrap();
+    for ext in ["gltf", "glb"] {
+        let out = dir.join(format!("textured.{ext}"));
+        let report = format::save(&src, &out, &WriteOptions::default()).unwrap();
+        assert!(report.warnings.is_empty(), "{:?}", report.warnings);
+        let text = std::fs::read(&out).unwrap();
+        let json: serde_json::Value = if ext == "glb" {
+            serde_json::from_slice(gltf_node::split_glb(&text).0).unwrap()
+        } else {
+            serde_json::from_slice(&text).unwrap()
+        };
+        // .gltf references the file (relative to the output), .glb embeds it.
+        let image1 = &json["images"][1];
+        if ext == "gltf" {
+            assert!(
+                image1["uri"].as_str().unwrap().ends_with("tex_2x2.png"),
+                "{image1}"
+            );
+        } else {
+            assert_eq!(image1["mimeType"], "image/png", "{image1}");
+        }
+        assert!(json["extensionsUsed"]
+            .as_array()
+            .unwrap()
+            .contains(&serde_json::json!("KHR_texture_transform")));
+        let back = animed::internals::format::load(&out).unwrap();
+        assert!(back.warnings.is_empty(), "{:?}", back.warnings);
+        for (name, p) in [
+            ("Left", Vec3::new(-2.2, 1.0, 0.0)),
+            ("Right", Vec3::new(0.2, 1.0, 0.0)),
+            ("Right", Vec3::new(2.2, -1.0, 0.0)),
+        ] {
+            let (a, uva) = texture_at(&src, name, p);
+            let (b, uvb) = texture_at(&back.scene, name, p);
+            assert_eq!((a.wrap_s, a.wrap_t, a.model), (b.wrap_s, b.wrap_t, b.model));
+            let (ma, mb) = (a.transform.matrix(), b.transform.matrix());
+            assert!(
+                (ma.transform_point2(uva) - mb.transform_point2(uvb)).length() < 1e-5,
+                "{name} {p}"
+            );
+            let (ia, ib) = (
+                src.image(a.image).unwrap(),
+                back.scene.image(b.image).unwrap(),
+            );
+            assert_eq!(ia.base().pixels(), ib.base().pixels(), "{name}");
         }
     }
 }

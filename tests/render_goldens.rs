@@ -575,7 +575,9 @@ fn shared_dir() -> std::path::PathBuf {
         .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared"))
 }
 
-/// An OBJ with an MTL file from the corpus (copied into tests/data).
+/// An OBJ with an MTL file from the corpus (copied into tests/data), its
+/// `map_Kd oakbark.jpg` drawn on the `vt` coordinates (looked at beside
+/// view3dscene 4.2: same bark).
 #[test]
 fn obj_with_mtl() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/oak_leafless.obj");

@@ -42,6 +42,11 @@ pub fn sections() -> Vec<Section> {
             run: bench_pixels,
         },
         Section {
+            name: "textured",
+            about: "full-screen layer, trilinear-textured 3-light Blinn-Phong, beside the untextured one",
+            run: bench_textured,
+        },
+        Section {
             name: "triangles",
             about: "100k small lit triangles covering the screen",
             run: bench_triangles,
@@ -268,6 +273,33 @@ fn bench_pixels(args: &Args) -> Result<Vec<String>, String> {
         ));
     }
     Ok(out)
+}
+
+/// The cost of texturing: one full-screen layer drawn untextured and with a
+/// trilinear-sampled texture, measured in one run, and their ratio.
+fn bench_textured(args: &Args) -> Result<Vec<String>, String> {
+    let (w, h) = args.size;
+    let mpix = w as f64 * h as f64 / 1e6;
+    let aspect = w as f32 / h as f32;
+    let plain = render_scene_time(&bench_scenes::layers(1, aspect), args);
+    let textured = render_scene_time(&bench_scenes::layers_textured(1, aspect), args);
+    let (tp, tt) = (plain.wall.as_secs_f64(), textured.wall.as_secs_f64());
+    Ok(vec![
+        format!(
+            "untextured: {} per frame; {:.0} Mpix/s",
+            plain.describe(),
+            mpix / tp
+        ),
+        format!(
+            "textured:   {} per frame; {:.0} Mpix/s",
+            textured.describe(),
+            mpix / tt
+        ),
+        format!(
+            "texturing costs {:+.0} % over the untextured shading rate (goal: under 40 %)",
+            (tt / tp - 1.0) * 100.0
+        ),
+    ])
 }
 
 fn bench_triangles(args: &Args) -> Result<Vec<String>, String> {

@@ -8,10 +8,10 @@
 
 use super::{LoadError, Loaded};
 use crate::scene::{
-    mesh_from_polygons, normals, Binding, Material, Node, NodeKind, PolyOptions, Scene, Shape,
-    SourceFormat,
+    mesh_from_polygons_textured, normals, Binding, Material, Node, NodeKind, PolyOptions, Scene,
+    Shape, SourceFormat, TexCoords,
 };
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use std::cell::RefCell;
 use std::path::Path;
 
@@ -88,8 +88,20 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
         .to_string();
     let root = scene.add_node(None, Node::group(stem));
     let mut material_ids = Vec::with_capacity(mtl.len());
+    let mut loader = super::textures::Loader::new(path);
     for m in &mtl {
-        material_ids.push(scene.add_material(convert_material(m)));
+        let mut material = convert_material(m);
+        let mut msgs = Vec::new();
+        material.texture =
+            super::obj_texture::material_texture(m, &mut scene, &mut loader, &mut msgs);
+        for w in msgs {
+            warnings.push(format!(
+                "{}:0:0: material {:?}: {w}",
+                path.display(),
+                m.name
+            ));
+        }
+        material_ids.push(scene.add_material(material));
     }
     let mut default_material = None;
 
@@ -104,12 +116,24 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
         let mut faces: Vec<Vec<u32>> = Vec::with_capacity(arities.len());
         let mut normal_faces: Vec<Vec<u32>> = Vec::new();
         let has_normals = !m.normals.is_empty() && m.normal_indices.len() == m.indices.len();
+        // Texture coordinates only for a textured material (they unweld
+        // vertices).
+        let textured = m
+            .material_id
+            .and_then(|i| material_ids.get(i))
+            .is_some_and(|id| scene.materials[id.0 as usize].texture.is_some());
+        let has_uv =
+            textured && !m.texcoords.is_empty() && m.texcoord_indices.len() == m.indices.len();
+        let mut uv_faces: Vec<Vec<u32>> = Vec::new();
         let mut at = 0usize;
         for &n in &arities {
             let end = (at + n as usize).min(m.indices.len());
             faces.push(m.indices[at..end].to_vec());
             if has_normals {
                 normal_faces.push(m.normal_indices[at..end].to_vec());
+            }
+            if has_uv {
+                uv_faces.push(m.texcoord_indices[at..end].to_vec());
             }
             at = end;
         }
@@ -137,6 +161,16 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
             name: model.name.clone(),
         };
         // Faces of 1 or 2 vertices are OBJ points and lines.
+        let uv_rows: Vec<Vec<u32>> = if has_uv {
+            faces
+                .iter()
+                .zip(&uv_faces)
+                .filter(|(f, _)| f.len() >= 3)
+                .map(|(_, t)| t.clone())
+                .collect()
+        } else {
+            Vec::new()
+        };
         let (polys, others): (Vec<Vec<u32>>, Vec<Vec<u32>>) =
             faces.into_iter().partition(|f| f.len() >= 3);
         let opts = if others.is_empty() {
@@ -148,7 +182,15 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
                 ..opts
             }
         };
-        let mut mesh = mesh_from_polygons(&pos, &polys, &opts)
+        let texcoords = has_uv.then(|| TexCoords {
+            values: m
+                .texcoords
+                .chunks_exact(2)
+                .map(|c| Vec2::new(c[0], c[1]))
+                .collect(),
+            index: Some(uv_rows),
+        });
+        let mut mesh = mesh_from_polygons_textured(&pos, &polys, &opts, texcoords.as_ref())
             .map_err(|e| LoadError::new(path, 0, 0, format!("object {:?}: {e}", model.name)))?;
         if !others.is_empty() {
             let lines: Vec<Vec<u32>> = others.iter().filter(|f| f.len() == 2).cloned().collect();
@@ -161,6 +203,9 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
                     mesh.positions.push(p);
                     if !mesh.normals.is_empty() {
                         mesh.normals.push(Vec3::ZERO);
+                    }
+                    if !mesh.texcoords.is_empty() {
+                        mesh.texcoords.push(Vec2::ZERO);
                     }
                 }
             }
@@ -216,6 +261,10 @@ fn append_unlit(mesh: &mut crate::scene::Mesh, extra: &crate::scene::Mesh) {
     if !mesh.colors.is_empty() {
         mesh.colors
             .extend(std::iter::repeat_n(Vec3::ONE, extra.positions.len()));
+    }
+    if !mesh.texcoords.is_empty() {
+        mesh.texcoords
+            .extend(std::iter::repeat_n(Vec2::ZERO, extra.positions.len()));
     }
     mesh.lines
         .extend(extra.lines.iter().map(|l| [l[0] + base, l[1] + base]));

@@ -111,16 +111,53 @@ pub fn build_textured_corners(
 /// of the bounding box, t along the second longest from 0 to that side's
 /// share of the longest (ties prefer x, then y, then z). One per position.
 pub fn bbox_texcoords(positions: &[Vec3]) -> Vec<Vec2> {
-    let Some((lo, hi)) = positions.iter().fold(None, |b: Option<(Vec3, Vec3)>, p| {
-        Some(b.map_or((*p, *p), |(lo, hi)| (lo.min(*p), hi.max(*p))))
-    }) else {
+    let Some((lo, hi)) = bounds(positions.iter()) else {
         return Vec::new();
     };
+    bbox_map(positions, lo, hi)
+}
+
+/// Inventor's default texture coordinates (SGI Open Inventor 2.1
+/// `SoTextureCoordinateBundle::setUpDefaultCoordSpace`, which Coin follows
+/// in its axis choice): as [`bbox_texcoords`], but over the box of only the
+/// positions `faces` use (a Coordinate3 shared by several shapes), and
+/// with ties between sides going to the later axis (z before y before x).
+/// One per position.
+pub fn bbox_texcoords_inventor(positions: &[Vec3], faces: &[Vec<u32>]) -> Vec<Vec2> {
+    let used = faces
+        .iter()
+        .flatten()
+        .filter_map(|&i| positions.get(i as usize));
+    let Some((lo, hi)) = bounds(used) else {
+        return vec![Vec2::ZERO; positions.len()];
+    };
+    let size = hi - lo;
+    let (s_axis, t_axis) = if size.x > size.y && size.x > size.z {
+        (0, if size.y > size.z { 1 } else { 2 })
+    } else if size.y > size.z {
+        (1, if size.x > size.z { 0 } else { 2 })
+    } else {
+        (2, if size.x > size.y { 0 } else { 1 })
+    };
+    map_axes(positions, lo, size, s_axis, t_axis)
+}
+
+fn bounds<'a>(mut it: impl Iterator<Item = &'a Vec3>) -> Option<(Vec3, Vec3)> {
+    let first = *it.next()?;
+    Some(it.fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))))
+}
+
+fn bbox_map(positions: &[Vec3], lo: Vec3, hi: Vec3) -> Vec<Vec2> {
     let size = hi - lo;
     let mut axes = [0usize, 1, 2];
     // Stable sort by decreasing size keeps x before y before z on ties.
     axes.sort_by(|&a, &b| size[b].total_cmp(&size[a]));
-    let (s_axis, t_axis) = (axes[0], axes[1]);
+    map_axes(positions, lo, size, axes[0], axes[1])
+}
+
+/// s = (p − lo)/size along `s_axis`, t the same scale along `t_axis` (a
+/// square texture stays square).
+fn map_axes(positions: &[Vec3], lo: Vec3, size: Vec3, s_axis: usize, t_axis: usize) -> Vec<Vec2> {
     let scale = if size[s_axis] > 0.0 {
         1.0 / size[s_axis]
     } else {

@@ -80,12 +80,8 @@ pub fn layers(layers: usize, aspect: f32) -> Scene {
     s
 }
 
-/// [`small_triangles`] with texture coordinates across the grid and a
-/// 256×256 checker texture on the material (what `tex`'s sampler draws;
-/// until it is connected the renderer computes the coordinates and their
-/// derivatives and keeps the diffuse colour).
-pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
-    let mut s = small_triangles(count, aspect);
+/// A 256×256 RGB checker of 32-texel squares (benchmark texture).
+fn checker_image(s: &mut Scene) -> Option<crate::scene::ImageId> {
     let texels: Vec<[u8; 4]> = (0..256 * 256)
         .map(|i| {
             let (x, y) = (i % 256, i / 256);
@@ -96,7 +92,7 @@ pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
             }
         })
         .collect();
-    let image = crate::scene::Image::new(
+    crate::scene::Image::new(
         "checker",
         crate::scene::ImageSource::Inline,
         256,
@@ -104,8 +100,37 @@ pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
         3,
         texels,
     )
-    .and_then(|img| s.add_image(img));
-    if let Ok(image) = image {
+    .and_then(|img| s.add_image(img))
+    .ok()
+}
+
+/// [`layers`] with the checker texture on the material, repeated 4 times
+/// over the screen height: about 1.4 texels per pixel at 1280×720, so
+/// sampling blends two mip levels (trilinear) everywhere.
+pub fn layers_textured(layers_count: usize, aspect: f32) -> Scene {
+    let mut s = layers(layers_count, aspect);
+    if let Some(image) = checker_image(&mut s) {
+        for m in &mut s.materials {
+            m.texture = Some(crate::scene::Texture::new(image));
+        }
+        for mesh in &mut s.meshes {
+            mesh.texcoords = mesh
+                .positions
+                .iter()
+                .map(|p| glam::Vec2::new(p.x * 2.0, p.y * 2.0))
+                .collect();
+        }
+    }
+    s
+}
+
+/// [`small_triangles`] with texture coordinates across the grid and a
+/// 256×256 checker texture on the material (what `tex`'s sampler draws;
+/// until it is connected the renderer computes the coordinates and their
+/// derivatives and keeps the diffuse colour).
+pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
+    let mut s = small_triangles(count, aspect);
+    if let Some(image) = checker_image(&mut s) {
         for m in &mut s.materials {
             m.texture = Some(crate::scene::Texture::new(image));
         }

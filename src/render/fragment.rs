@@ -387,8 +387,8 @@ impl<V: V8> UvLanes<V> {
 }
 
 /// The texture of a textured item applied to eight lanes before lighting:
-/// returns the diffuse colour lighting starts from (VRML97 and MODULATE
-/// act here, see `texture::Sampler::before_lighting`) and each lane's texel
+/// returns the diffuse colour lighting starts from (VRML97 acts here, see
+/// `texture::Sampler::before_lighting`) and each lane's texel
 /// for [`after_lighting`]. Sampling is scalar per lane (trilinear, level
 /// from that pixel's exact derivatives); `_at` is the block's first pixel.
 #[inline(always)]
@@ -425,7 +425,8 @@ pub fn apply_texture<V: V8>(
     (d.map(|a| V::load(&a)), texels)
 }
 
-/// The texture models that act on the lit colour (Replace, DECAL, BLEND),
+/// The texture models that act on the lit colour (Replace, MODULATE, DECAL,
+/// BLEND),
 /// per lane; others leave `lit` as it is.
 #[inline(always)]
 pub fn after_lighting<V: V8>(s: &Sampler, texels: &[Vec4; 8], lit: [V; 3]) -> [V; 3] {

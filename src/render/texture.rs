@@ -159,7 +159,8 @@ impl Sampler {
                 3 => (rgb, alpha),
                 _ => (rgb, texel.w),
             },
-            TextureModel::Modulate => (diffuse * rgb, alpha * texel.w),
+            TextureModel::Modulate => (diffuse, alpha * texel.w),
+            TextureModel::MultiplyDiffuse => (diffuse * rgb, alpha * texel.w),
             _ => (diffuse, alpha),
         }
     }
@@ -169,18 +170,25 @@ impl Sampler {
     pub fn acts_after_lighting(&self) -> bool {
         matches!(
             self.model,
-            TextureModel::Replace | TextureModel::Decal | TextureModel::Blend
+            TextureModel::Replace
+                | TextureModel::Modulate
+                | TextureModel::Decal
+                | TextureModel::Blend
         )
     }
 
     /// The final colour and alpha from a texel and the lit colour, for the
-    /// models that act after lighting (others return `lit` unchanged).
+    /// models that act after lighting (others return `lit`, clamped to 0..1).
     #[inline]
     pub fn after_lighting(&self, texel: Vec4, lit: Vec3, alpha: f32) -> (Vec3, f32) {
         let rgb = texel.truncate();
         let has_alpha = matches!(self.components, 2 | 4);
+        // OpenGL clamps the lit colour to 0..1 before the texture function.
+        let lit = lit.clamp(Vec3::ZERO, Vec3::ONE);
         match self.model {
             TextureModel::Replace => (rgb, if has_alpha { texel.w } else { alpha }),
+            // The alpha was multiplied before lighting.
+            TextureModel::Modulate => (lit * rgb, alpha),
             TextureModel::Decal => {
                 let a = if has_alpha { texel.w } else { 1.0 };
                 (lit + (rgb - lit) * a, alpha)
@@ -205,11 +213,28 @@ impl Sampler {
     }
 }
 
-/// A texel index wrapped (repeat) or clamped into `0..n`.
+/// A texel index wrapped (repeat) or clamped into `0..n`. Indices come
+/// within a period or two of the image (the bilinear footprint of a
+/// coordinate already reduced to one period), so repeat wraps by one
+/// addition or subtraction and divides only in the rare rest (same result
+/// as `rem_euclid`, without an integer division per texel).
 #[inline]
 fn wrap(i: i64, n: i64, mode: Wrap) -> usize {
     match mode {
-        Wrap::Repeat => i.rem_euclid(n) as usize,
+        Wrap::Repeat => {
+            let j = if i < 0 {
+                i + n
+            } else if i >= n {
+                i - n
+            } else {
+                i
+            };
+            if (0..n).contains(&j) {
+                j as usize
+            } else {
+                i.rem_euclid(n) as usize
+            }
+        }
         Wrap::Clamp => i.clamp(0, n - 1) as usize,
     }
 }
@@ -326,11 +351,23 @@ mod tests {
         assert_eq!((c, a), (Vec3::new(0.0, 0.0, 1.0), 0.2));
         t.model = TextureModel::Modulate;
         let s = Sampler::new(&t, &img);
+        // The lit colour (specular included) times the texture, as GL_MODULATE.
+        assert_eq!(
+            s.before_lighting(texel, Vec3::splat(0.5), 0.8),
+            (Vec3::splat(0.5), 0.2)
+        );
+        let lit = Vec3::new(0.5, 0.25, 1.0);
+        assert_eq!(
+            s.after_lighting(texel, lit, 0.3),
+            (Vec3::new(0.5, 0.0, 0.0), 0.3)
+        );
+        t.model = TextureModel::MultiplyDiffuse;
+        let s = Sampler::new(&t, &img);
         assert_eq!(
             s.before_lighting(texel, Vec3::splat(0.5), 0.8),
             (Vec3::new(0.5, 0.0, 0.0), 0.2)
         );
-        assert_eq!(s.after_lighting(texel, lit, 0.3), (lit, 0.3));
+        assert!(!s.acts_after_lighting());
         t.model = TextureModel::Replace;
         let (c, a) = Sampler::new(&t, &img).after_lighting(texel, lit, 1.0);
         assert_eq!((c, a), (Vec3::new(1.0, 0.0, 0.0), 0.25));

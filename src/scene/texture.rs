@@ -25,9 +25,14 @@ pub enum TextureModel {
     /// The texture colour is the final, unlit colour (VRML97 Shape without
     /// a Material; OpenGL `GL_REPLACE`). Intensity textures give grey.
     Replace,
-    /// Inventor MODULATE (and glTF baseColorTexture): texture × diffuse
-    /// (and × alpha), then lit; specular is not multiplied.
+    /// Inventor MODULATE (OpenGL `GL_MODULATE`, which Coin and SGI Inventor
+    /// draw with): the lit colour, specular included, × the texture colour;
+    /// alpha × the texture's alpha.
     Modulate,
+    /// The texture multiplies the diffuse colour (and its alpha the
+    /// material's), then the result is lit: MTL `Kd × map_Kd`, glTF
+    /// `baseColorFactor × baseColorTexture`.
+    MultiplyDiffuse,
     /// Inventor DECAL: the texture is laid over the lit colour by its alpha
     /// (opaque texture: the texture colour, unlit).
     Decal,

@@ -194,7 +194,30 @@ fn khronos_validator_reports_no_errors_on_written_files() {
         return;
     };
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_validator");
-    let files = written(&dir);
+    let mut files = written(&dir);
+    // Textured files: inline Inventor images (embedded as PNG), a JPEG
+    // file texture (referenced by the .gltf, embedded in the .glb) and
+    // glTF's own textures with KHR_texture_transform.
+    for (src, stem) in [
+        ("tests/data/textures/inventor.iv", "inventor_tex"),
+        ("tests/data/oak_leafless.obj", "oak_tex"),
+        ("tests/data/gltf/textured.gltf", "textured"),
+    ] {
+        for ext in ["gltf", "glb"] {
+            let o = dir.join(format!("{stem}.{ext}"));
+            let st = Command::new(env!("CARGO_BIN_EXE_animed"))
+                .args(["convert", src, o.to_str().unwrap()])
+                .current_dir(env!("CARGO_MANIFEST_DIR"))
+                .output()
+                .unwrap();
+            assert!(
+                st.status.success(),
+                "{}",
+                String::from_utf8_lossy(&st.stderr)
+            );
+            files.push(o);
+        }
+    }
     let mut args = vec![script("validate.mjs").to_str().unwrap().to_string()];
     args.extend(files.iter().map(|f| f.to_str().unwrap().to_string()));
     let args: Vec<&str> = args.iter().map(String::as_str).collect();

@@ -59,6 +59,11 @@ impl Bin {
         self.views.len() - 1
     }
 
+    /// A buffer view of raw bytes (an embedded image), with no target.
+    pub fn raw(&mut self, data: &[u8]) -> usize {
+        self.view(data, None)
+    }
+
     /// Float accessor of `n`-component elements. `bounds`: write min/max
     /// (required for POSITION and animation inputs).
     pub fn floats(&mut self, data: &[f32], n: usize, bounds: bool, target: Option<u32>) -> usize {

@@ -11,7 +11,7 @@ use super::container::{Buffers, GltfError, Result};
 use super::material::srgb_from_linear;
 use super::pointer::pointer;
 use crate::scene::Mesh;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use gltf::mesh::Mode;
 use gltf::Semantic;
 
@@ -28,12 +28,14 @@ pub(super) fn vec3s(flat: &[f32], comps: usize) -> Vec<Vec3> {
 
 /// Builds the mesh of one primitive, or `None` (with a warning) for a
 /// primitive without positions, which the spec says to skip.
-/// `base_color` is the material's linear base colour factor.
+/// `base_color` is the material's linear base colour factor; `uv_set` the
+/// TEXCOORD set its texture reads (stored with t = 1 − v, see `texture`).
 pub fn primitive_mesh(
     mesh_index: usize,
     prim: &gltf::Primitive,
     buffers: &Buffers,
     base_color: Vec3,
+    uv_set: Option<u32>,
     default_weights: &[f32],
     warnings: &mut Vec<String>,
 ) -> Result<Option<Mesh>> {
@@ -103,6 +105,32 @@ pub fn primitive_mesh(
         }
         None => Vec::new(),
     };
+    let texcoords = match uv_set.and_then(|k| prim.get(&Semantic::TexCoords(k)).map(|a| (k, a))) {
+        Some((k, a)) => {
+            let name = format!("TEXCOORD_{k}");
+            if a.dimensions() != gltf::accessor::Dimensions::Vec2 {
+                return Err(GltfError::at(
+                    attr(&name),
+                    format!("{name} must be a VEC2 accessor"),
+                ));
+            }
+            let v: Vec<Vec2> = read_f32(&a, buffers)
+                .map_err(|e| in_attr(&name, e))?
+                .chunks_exact(2)
+                .map(|c| Vec2::new(c[0], 1.0 - c[1]))
+                .collect();
+            count_check(&name, v.len())?;
+            v
+        }
+        None => {
+            if let Some(k) = uv_set {
+                warnings.push(format!(
+                    "{at}: the material's texture reads TEXCOORD_{k}, which the primitive lacks; drawn untextured"
+                ));
+            }
+            Vec::new()
+        }
+    };
     let indices: Vec<u32> = match prim.indices() {
         Some(a) => {
             let idx = read_indices(&a, buffers)
@@ -125,6 +153,7 @@ pub fn primitive_mesh(
         positions,
         normals,
         colors,
+        texcoords,
         solid: true,
         morph: morph.map(Box::new),
         skin_weights: skin_weights.map(Box::new),
@@ -175,6 +204,11 @@ fn flat_normals(mesh: &mut Mesh) {
     } else {
         tris.len() * 3
     });
+    let mut texcoords = Vec::with_capacity(if mesh.texcoords.is_empty() {
+        0
+    } else {
+        tris.len() * 3
+    });
     for t in &tris {
         let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
         let normal = (b - a).cross(c - a).try_normalize().unwrap_or(Vec3::Z);
@@ -184,6 +218,9 @@ fn flat_normals(mesh: &mut Mesh) {
             if !mesh.colors.is_empty() {
                 colors.push(mesh.colors[i as usize]);
             }
+            if !mesh.texcoords.is_empty() {
+                texcoords.push(mesh.texcoords[i as usize]);
+            }
         }
     }
     mesh.triangles = (0..tris.len() as u32)
@@ -192,6 +229,7 @@ fn flat_normals(mesh: &mut Mesh) {
     mesh.positions = positions;
     mesh.normals = normals;
     mesh.colors = colors;
+    mesh.texcoords = texcoords;
     if mesh.deforms() {
         let src: Vec<u32> = tris.iter().flatten().copied().collect();
         if let Some(m) = mesh.morph.as_mut() {

@@ -5,8 +5,10 @@
 //! chunks, parse, validation, buffers), `uri` (data: URIs, files beside),
 //! `accessor` (typed, bounds-checked reads), `mesh` (primitives),
 //! `material` (metallic-roughness ⇄ Phong, colour space), `lights` (light
-//! units, cameras), `anim` (animations → clips), `read` (the node tree and
-//! the entry point). Errors name the JSON pointer of the offending part.
+//! units, cameras), `anim` (animations → clips), `texture` (base colour
+//! textures, samplers, KHR_texture_transform), `read` (the node tree and
+//! the entry point); the writer: `write`, `write_anim`, `write_texture`,
+//! `bin`. Errors name the JSON pointer of the offending part.
 
 mod accessor;
 mod anim;
@@ -18,9 +20,11 @@ mod material;
 mod mesh;
 mod pointer;
 mod read;
+mod texture;
 mod uri;
 mod write;
 mod write_anim;
+mod write_texture;
 
 pub use container::SUPPORTED_EXTENSIONS;
 pub use material::{linear_from_srgb, pbr_from_phong, phong_from_pbr, srgb_from_linear, Pbr};

@@ -20,13 +20,14 @@ use super::lights::{camera_from_gltf, light_from_extras, light_from_punctual, Pu
 use super::material::{phong_from_extras, phong_from_pbr, Pbr};
 use super::mesh::primitive_mesh;
 use super::pointer::pointer;
+use super::texture;
 use crate::format::{LoadError, Loaded};
 use crate::scene::{
-    Light, Material, MaterialId, MeshId, Node, NodeId, NodeKind, Scene, Shape, SourceFormat,
-    Transform,
+    Image, ImageId, Light, Material, MaterialId, MeshId, Node, NodeId, NodeKind, Scene, Shape,
+    SourceFormat, Transform,
 };
 use glam::{Mat4, Quat, Vec3};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
 /// What the caller may choose about a glTF load.
@@ -73,11 +74,16 @@ fn read_inner(
     let doc = parse_document(json, &mut warnings)?;
     let base = path.parent().unwrap_or(Path::new("."));
     let buffers = Buffers::load(&doc, bin, base, read_file)?;
+    let mut scene = Scene::new();
+    let images = texture::load_images(&doc, &buffers, base, read_file, &mut scene, &mut warnings);
     let mut b = Builder {
+        images,
+        opaque_images: HashMap::new(),
+        warned: HashSet::new(),
         nodes: doc.nodes().collect(),
         gltf_materials: doc.materials().collect(),
         buffers: &buffers,
-        scene: Scene::new(),
+        scene,
         warnings: Vec::new(),
         materials: HashMap::new(),
         meshes: HashMap::new(),
@@ -246,6 +252,11 @@ struct Builder<'a, 'b> {
     part_of: Vec<Option<NodeId>>,
     /// (glTF skin index, animed shape node) for every skinned shape.
     skinned: Vec<(usize, NodeId)>,
+    /// Decoded images by glTF image index (None: unused or unreadable).
+    images: Vec<Option<ImageId>>,
+    /// An image without its alpha, for OPAQUE materials.
+    opaque_images: HashMap<ImageId, ImageId>,
+    warned: HashSet<String>,
 }
 
 /// A node's local transform: TRS as given, a matrix split into TRS when it
@@ -294,10 +305,12 @@ impl<'a> Builder<'a, '_> {
         if let Some(&id) = self.materials.get(&index) {
             return id;
         }
-        let m = match index.and_then(|i| self.gltf_materials.get(i)) {
+        let m = match index.and_then(|i| self.gltf_materials.get(i).cloned()) {
             Some(m) => {
-                let pbr = Pbr::from_gltf(m);
-                phong_from_extras(m, &pbr).unwrap_or_else(|| phong_from_pbr(&pbr))
+                let pbr = Pbr::from_gltf(&m);
+                let mut phong = phong_from_extras(&m, &pbr).unwrap_or_else(|| phong_from_pbr(&pbr));
+                phong.texture = self.texture(&m).map(|(t, _)| t);
+                phong
             }
             None => Material {
                 name: String::new(),
@@ -307,6 +320,49 @@ impl<'a> Builder<'a, '_> {
         let id = self.scene.add_material(m);
         self.materials.insert(index, id);
         id
+    }
+
+    /// A material's base colour texture and its TEXCOORD set. OPAQUE
+    /// materials ignore the texture's alpha (§3.9.4), so they get a copy of
+    /// the image without it (made once).
+    fn texture(&mut self, m: &gltf::Material) -> Option<(crate::scene::Texture, u32)> {
+        let warned = &mut self.warned;
+        let warnings = &mut self.warnings;
+        let mut warn_once = |key: &str, text: String| {
+            if warned.insert(key.to_string()) {
+                warnings.push(text);
+            }
+        };
+        let (mut t, set) = texture::base_color_texture(m, &self.images, &mut warn_once)?;
+        let opaque = m.alpha_mode() == gltf::material::AlphaMode::Opaque;
+        let img = self.scene.image(t.image)?;
+        if opaque && img.has_alpha() {
+            t.image = match self.opaque_images.get(&t.image) {
+                Some(id) => *id,
+                None => {
+                    let base = img.base();
+                    let px = base
+                        .pixels()
+                        .iter()
+                        .map(|p| [p[0], p[1], p[2], 255])
+                        .collect();
+                    let comps = if img.components() == 2 { 1 } else { 3 };
+                    let copy = Image::new(
+                        img.name.clone(),
+                        img.source.clone(),
+                        base.width(),
+                        base.height(),
+                        comps,
+                        px,
+                    )
+                    .ok()
+                    .and_then(|c| self.scene.add_image(c).ok())?;
+                    self.opaque_images.insert(t.image, copy);
+                    copy
+                }
+            };
+        }
+        Some((t, set))
     }
 
     /// The mesh of one primitive (made once, shared by every node using it).
@@ -332,8 +388,15 @@ impl<'a> Builder<'a, '_> {
             .collect();
         attrs.sort();
         let colored = prim.get(&gltf::Semantic::Colors(0)).is_some();
+        // The TEXCOORD set of the material's texture, when one loaded.
+        let uv_set = match prim.material().index() {
+            Some(_) if self.scene.materials[material.0 as usize].texture.is_some() => {
+                texture::uv_set(&prim.material())
+            }
+            _ => None,
+        };
         let key = format!(
-            "{attrs:?} {:?} {:?} {} {:?} {:?} {:?}",
+            "{attrs:?} {:?} {:?} {} {:?} {:?} {:?} {uv_set:?}",
             prim.indices().map(|a| a.index()),
             prim.mode(),
             prim.material().double_sided(),
@@ -351,6 +414,7 @@ impl<'a> Builder<'a, '_> {
                     prim,
                     self.buffers,
                     base,
+                    uv_set,
                     weights,
                     &mut self.warnings,
                 )?;

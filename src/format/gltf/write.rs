@@ -20,13 +20,14 @@ use super::lights::{punctual_from_light, PunctualKind};
 use super::material::{linear_exact, pbr_from_phong};
 use super::uri::base64_encode;
 use super::write_anim::{animations, NodeSlots};
+use super::write_texture::{replaces_diffuse, TextureWriter};
 use crate::anim::{Property, TargetRef};
 use crate::format::export::channels::scene_diagonal;
 use crate::format::export::keynote;
 use crate::format::export::plan::WritePlan;
 use crate::format::export::sampling::Tolerances;
 use crate::format::export::{WriteOptions, WriteReport};
-use crate::scene::{CameraKind, Material, NodeKind, Scene, Transform};
+use crate::scene::{CameraKind, Material, NodeKind, Scene, TextureModel, Transform};
 use glam::{Quat, Vec3};
 use serde_json::{json, Map, Value as Json};
 use std::collections::{BTreeMap, HashSet};
@@ -186,7 +187,13 @@ fn phong_extras(m: &Material) -> Json {
     })
 }
 
-fn material_json(m: &Material, name: Option<&str>, double_sided: bool, white: bool) -> Json {
+fn material_json(
+    m: &Material,
+    name: Option<&str>,
+    double_sided: bool,
+    white: bool,
+    texture: Option<Json>,
+) -> Json {
     let mut p = pbr_from_phong(m);
     if white {
         // Vertex colours carry the diffuse colour; glTF multiplies them by
@@ -201,6 +208,9 @@ fn material_json(m: &Material, name: Option<&str>, double_sided: bool, white: bo
         },
         "extras": { "animed": phong_extras(m) },
     });
+    if let Some(info) = texture {
+        o["pbrMetallicRoughness"]["baseColorTexture"] = info;
+    }
     if let Some(name) = name.filter(|n| !n.is_empty()) {
         o["name"] = json!(name);
     }
@@ -307,7 +317,8 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     let mut material_cache: BTreeMap<(u32, bool, bool), usize> = BTreeMap::new();
     // Attributes and index accessors of a scene mesh, shared by every glTF
     // mesh made from it.
-    let mut attr_cache: BTreeMap<u32, Json> = BTreeMap::new();
+    let mut attr_cache: BTreeMap<(u32, bool), Json> = BTreeMap::new();
+    let mut textures = TextureWriter::default();
     let mut index_cache: BTreeMap<u32, Vec<(usize, u32)>> = BTreeMap::new();
     let mut target_cache: BTreeMap<u32, Option<Json>> = BTreeMap::new();
     // (scene node, scene skin) of every skinned shape written.
@@ -345,13 +356,39 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                 let name = material_names
                                     .get(sh.material.0 as usize)
                                     .and_then(|n| n.as_deref());
-                                materials.push(material_json(&src, name, !mesh.solid, colored));
+                                let info = src.texture.as_ref().and_then(|t| {
+                                    textures.info(scene, t, &mut bin, binary, &mut report)
+                                });
+                                let white = colored
+                                    || (info.is_some()
+                                        && src
+                                            .texture
+                                            .as_ref()
+                                            .is_some_and(|t| replaces_diffuse(scene, t)));
+                                // A texture with alpha makes the surface see-through
+                                // (OPAQUE would make readers ignore it).
+                                let alpha = info.is_some()
+                                    && src.texture.as_ref().is_some_and(|t| {
+                                        t.model != TextureModel::Decal
+                                            && scene.image(t.image).is_some_and(|i| {
+                                                matches!(i.components(), 2 | 4) && i.has_alpha()
+                                            })
+                                    });
+                                let mut mj = material_json(&src, name, !mesh.solid, white, info);
+                                if alpha {
+                                    mj["alphaMode"] = json!("BLEND");
+                                }
+                                materials.push(mj);
                                 material_cache.insert(key, materials.len() - 1);
                                 materials.len() - 1
                             }
                         };
+                        let textured = materials[mat]["pbrMetallicRoughness"]
+                            .get("baseColorTexture")
+                            .is_some()
+                            && mesh.texcoords.len() == mesh.positions.len();
                         let attrs = attr_cache
-                            .entry(sh.mesh.0)
+                            .entry((sh.mesh.0, textured))
                             .or_insert_with(|| {
                                 let flat: Vec<f32> =
                                     mesh.positions.iter().flat_map(|p| p.to_array()).collect();
@@ -381,6 +418,15 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                         .flat_map(|c| linear_exact(*c).to_array())
                                         .collect();
                                     a["COLOR_0"] = json!(bin.floats(&f, 3, false, Some(34962)));
+                                }
+                                if textured {
+                                    // glTF's v runs down the image.
+                                    let f: Vec<f32> = mesh
+                                        .texcoords
+                                        .iter()
+                                        .flat_map(|t| [t.x, 1.0 - t.y])
+                                        .collect();
+                                    a["TEXCOORD_0"] = json!(bin.floats(&f, 2, false, Some(34962)));
                                 }
                                 a
                             })
@@ -567,6 +613,9 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     if materials.iter().any(|m| m.get("extensions").is_some()) {
         used.push("KHR_materials_unlit");
     }
+    if textures.transform_used {
+        used.push("KHR_texture_transform");
+    }
     let roots: Vec<usize> = scene
         .roots
         .iter()
@@ -592,6 +641,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     put(&mut doc, "materials", materials);
     put(&mut doc, "cameras", cameras);
     put(&mut doc, "animations", anims);
+    textures.finish(&mut doc);
     if !lights.is_empty() {
         doc["extensions"] = json!({ "KHR_lights_punctual": { "lights": lights } });
     }

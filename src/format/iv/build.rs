@@ -13,12 +13,13 @@ use crate::format::inline;
 use crate::format::lexer::Pos;
 use crate::format::limits::{self, LimitError};
 use crate::format::syntax::{AstNode, NodeRef, Parsed};
+use crate::format::textures;
 use crate::format::vrml97::fmt_warning;
 use crate::format::LoadError;
 use crate::format::Loaded;
 use crate::scene::{
-    Camera, CameraKind, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId, NodeKind,
-    Scene, Shape, Transform,
+    Camera, CameraKind, ImageId, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId,
+    NodeKind, Scene, Shape, Texture, Transform,
 };
 use glam::{Mat4, Quat, Vec3};
 use std::collections::{HashMap, HashSet};
@@ -32,13 +33,6 @@ const MAX_BUILD_DEPTH: usize = limits::DEPTH_CEILING as usize;
 /// Nodes read and deliberately ignored (no effect on geometry here).
 const IGNORED: &[&str] = &[
     "Complexity",
-    "Texture2",
-    "Texture2Transform",
-    "TextureCoordinate2",
-    "TextureCoordinateBinding",
-    "TextureCoordinateDefault",
-    "TextureCoordinatePlane",
-    "TextureCoordinateEnvironment",
     "Environment",
     "Font",
     "FontStyle",
@@ -47,8 +41,6 @@ const IGNORED: &[&str] = &[
     "Callback",
     "EventCallback",
     "Units",
-    "Texture2Transform",
-    "TextureCoordinateFunction",
     "NormalBinding_",
     "ElapsedTime",
 ];
@@ -82,16 +74,19 @@ struct MeshKey {
     base: usize,
     bindings: (super::state::Bind, super::state::Bind),
     hints: (Option<bool>, bool, u32),
+    /// Texture coordinates: (wanted, source, binding, baked transform).
+    tex: (bool, usize, super::state::Bind, [u32; 6]),
 }
 
 pub struct Builder {
     path: PathBuf,
     depth: usize,
     vrml1: bool,
-    scene: Scene,
+    pub(super) scene: Scene,
     warnings: Vec<String>,
     warned: HashSet<String>,
-    materials: HashMap<(usize, usize, bool), MaterialId>,
+    /// By (Material, BaseColor, unlit, Texture2, texture transform).
+    materials: HashMap<(usize, usize, bool, usize, [u32; 7]), MaterialId>,
     meshes: HashMap<MeshKey, Option<MeshId>>,
     coords: HashMap<usize, Rc<Vec<Vec3>>>,
     build_depth: usize,
@@ -99,6 +94,9 @@ pub struct Builder {
     inlines: inline::Cache,
     /// The input limit the build passed, if any: the load fails with it.
     fatal: Option<LoadError>,
+    pub(super) loader: textures::Loader,
+    /// Each Texture2 node's image (None: it did not load).
+    pub(super) texture_images: HashMap<usize, Option<ImageId>>,
 }
 
 impl Builder {
@@ -117,6 +115,8 @@ impl Builder {
             full: false,
             inlines: inline::Cache::new(),
             fatal: None,
+            loader: textures::Loader::new(path),
+            texture_images: HashMap::new(),
         }
     }
 
@@ -182,7 +182,7 @@ impl Builder {
         }
     }
 
-    fn warn(&mut self, pos: Pos, msg: &str) {
+    pub(super) fn warn(&mut self, pos: Pos, msg: &str) {
         if self.warnings.len() < 10_000 {
             self.warnings.push(fmt_warning(&self.path, pos, msg));
         }
@@ -338,6 +338,14 @@ impl Builder {
                     self.scene.info.push(s);
                 }
             }
+            "TextureCoordinateEnvironment"
+            | "TextureCoordinateFunction"
+            | "TextureCoordinateSphere"
+            | "TextureCoordinateCylinder"
+            | "TextureCoordinateCube" => {
+                let msg = format!("{kind} is not supported; the default texture mapping is used");
+                self.warn_once(kind, n.pos, &msg);
+            }
             "AsciiText" | "Text2" | "Text3" => self.text(n, st, cur, name),
             k if IGNORED.contains(&k) => {}
             k => {
@@ -394,7 +402,21 @@ impl Builder {
             }
             None => Rc::new(Vec::new()),
         };
+        // Texture coordinates only when a texture actually loads.
+        let texture = self.texture(st);
+        let textured = texture.is_some();
+        let tex = if textured {
+            (
+                true,
+                st.tex_source.ptr(),
+                st.texcoord_binding,
+                st.tex_transform.baked_key(),
+            )
+        } else {
+            (false, 0, super::state::Bind::Default, [0; 6])
+        };
         let key = MeshKey {
+            tex,
             shape: Rc::as_ptr(n) as usize,
             coords: State::ptr(&st.coords),
             normals: State::ptr(&st.normals),
@@ -406,7 +428,8 @@ impl Builder {
         let mesh = match self.meshes.get(&key) {
             Some(m) => *m,
             None => {
-                let inp = shapes::inputs(n, st, coords);
+                let mut inp = shapes::inputs(n, st, coords);
+                inp.textured = textured;
                 let mut msgs = Vec::new();
                 let m = shapes::mesh(n, st, &inp, &mut msgs).map(|mut m| {
                     m.name = name.clone();
@@ -421,7 +444,7 @@ impl Builder {
             }
         };
         let Some(mesh) = mesh else { return };
-        let material = self.material(st);
+        let material = self.material(st, texture);
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
         node.style = st.style;
         self.add(n.pos, cur, node);
@@ -438,18 +461,37 @@ impl Builder {
         let Some(mut m) = m else { return };
         m.name = name.clone();
         let mesh = self.scene.add_mesh(m);
-        let material = self.material(st);
+        // Text carries no texture coordinates: drawn untextured.
+        let material = self.material(st, None);
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
         node.style = st.style;
         self.add(n.pos, cur, node);
     }
 
     /// The scene material for the state's first material values.
-    fn material(&mut self, st: &State) -> MaterialId {
+    fn material(&mut self, st: &State, texture: Option<Texture>) -> MaterialId {
         let key = (
             State::ptr(&st.material),
             State::ptr(&st.base_color),
             st.unlit,
+            if texture.is_some() {
+                State::ptr(&st.texture)
+            } else {
+                0
+            },
+            match st.tex_transform {
+                super::state::TexXf::One(t) if texture.is_some() => [
+                    t.translation.x,
+                    t.translation.y,
+                    t.rotation,
+                    t.scale.x,
+                    t.scale.y,
+                    t.center.x,
+                    t.center.y,
+                ]
+                .map(f32::to_bits),
+                _ => [0; 7],
+            },
         );
         if let Some(id) = self.materials.get(&key) {
             return *id;
@@ -484,7 +526,7 @@ impl Builder {
             emissive: first(m, "emissiveColor", Vec3::ZERO),
             shininess: scalar(m, "shininess", 0.2),
             transparency,
-            texture: None,
+            texture,
         };
         if st.unlit {
             mat.emissive = mat.diffuse;

@@ -7,6 +7,7 @@ mod build;
 mod shapes;
 mod state;
 mod text;
+mod texture;
 pub mod write;
 mod write_text;
 
@@ -54,3 +55,5 @@ pub fn read_nested(
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod texture_tests;

@@ -1,13 +1,15 @@
 //! Inventor / VRML 1.0 shape nodes → meshes, using the coordinates,
 //! normals, material bindings and shape hints of the traversal state.
 
-use super::state::{colors, packed, Bind, State};
+use super::state::{colors, packed, points2, Bind, State, TexSource, TexXf};
 use crate::format::lexer::Pos;
 use crate::format::polygons::{self, split_index};
 use crate::format::syntax::{AstNode, NodeRef};
-use crate::scene::normals::{mesh_from_points, mesh_from_polylines, Binding, PolyOptions};
+use crate::scene::normals::{
+    mesh_from_points, mesh_from_polylines, Binding, PolyOptions, TexCoords,
+};
 use crate::scene::{primitives, Mesh};
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use std::rc::Rc;
 
 type Msgs = Vec<(Pos, String)>;
@@ -39,6 +41,24 @@ pub struct Inputs {
     pub colors: Vec<Vec3>,
     pub material_binding: Bind,
     pub normal_binding: Bind,
+    /// Texture coordinates asked for (a texture is on).
+    pub textured: bool,
+    /// How texture coordinates are made when `textured`.
+    pub tex: TexInput,
+    pub texcoord_binding: Bind,
+    /// Several Texture2Transforms multiplied together, baked into the
+    /// coordinates.
+    pub tex_baked: TexXf,
+}
+
+/// Where a textured shape's texture coordinates come from.
+pub enum TexInput {
+    /// The shape's default mapping (bounding box, or the primitive's own).
+    Default,
+    /// TextureCoordinate2 points (or VertexProperty `texCoord`).
+    Points(Vec<Vec2>),
+    /// TextureCoordinatePlane: s = directionS·p, t = directionT·p.
+    Plane(Vec3, Vec3),
 }
 
 /// Reads coordinates, normals and colours, letting a `vertexProperty`
@@ -54,6 +74,16 @@ pub fn inputs(n: &AstNode, st: &State, coords: Rc<Vec<Vec3>>) -> Inputs {
         colors: diffuse_list(st),
         material_binding: st.material_binding,
         normal_binding: st.normal_binding,
+        textured: st.texture.is_some(),
+        tex: match &st.tex_source {
+            TexSource::Default => TexInput::Default,
+            TexSource::Points(p) => TexInput::Points(points2(p, "point")),
+            TexSource::Plane(p) => {
+                TexInput::Plane(p.vec3("directionS", Vec3::X), p.vec3("directionT", Vec3::Y))
+            }
+        },
+        texcoord_binding: st.texcoord_binding,
+        tex_baked: st.tex_transform,
     };
     if let Some(vp) = n.node("vertexProperty").map(|v| v.effective()) {
         if vp.kind == "VertexProperty" {
@@ -65,6 +95,10 @@ pub fn inputs(n: &AstNode, st: &State, coords: Rc<Vec<Vec3>>) -> Inputs {
             if !nv.is_empty() {
                 i.normals = nv;
                 i.normal_binding = bind_word(&vp, "normalBinding", Bind::PerVertexIndexed);
+            }
+            let tc = points2(&vp, "texCoord");
+            if !tc.is_empty() {
+                i.tex = TexInput::Points(tc);
             }
             if let Some(rgba) = vp.nums("orderedRGBA") {
                 if !rgba.is_empty() {
@@ -200,6 +234,20 @@ fn consecutive(faces: &[Vec<u32>]) -> Vec<Vec<u32>> {
 pub fn mesh(n: &NodeRef, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Mesh> {
     let kind = n.kind.as_str();
     let mut m = mesh_of(n, kind, st, inp, msgs)?;
+    if inp.textured && !m.triangles.is_empty() {
+        if let TexInput::Plane(ds, dt) = inp.tex {
+            m.texcoords = m
+                .positions
+                .iter()
+                .map(|p| Vec2::new(ds.dot(*p), dt.dot(*p)))
+                .collect();
+        }
+        if let TexXf::Baked(x) = inp.tex_baked {
+            for c in &mut m.texcoords {
+                *c = x.transform_point2(*c);
+            }
+        }
+    }
     // Per-part materials of the primitives (VRML 1.0 / Inventor part order).
     let per_part = matches!(
         inp.material_binding,
@@ -226,10 +274,16 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             n.f32("height", 2.0),
             n.f32("depth", 2.0),
         ))),
+        "Sphere" if inp.textured => Some(primitives::sphere_textured(n.f32("radius", 1.0))),
         "Sphere" => Some(primitives::sphere(n.f32("radius", 1.0))),
         "Cone" => {
             let (all, parts) = parts(n);
-            Some(primitives::cone(
+            let cone = if inp.textured {
+                primitives::cone_textured
+            } else {
+                primitives::cone
+            };
+            Some(cone(
                 n.f32("bottomRadius", 1.0),
                 n.f32("height", 2.0),
                 all || parts.iter().any(|p| p == "SIDES"),
@@ -238,7 +292,12 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
         }
         "Cylinder" => {
             let (all, parts) = parts(n);
-            Some(primitives::cylinder(
+            let cylinder = if inp.textured {
+                primitives::cylinder_textured
+            } else {
+                primitives::cylinder
+            };
+            Some(cylinder(
                 n.f32("radius", 1.0),
                 n.f32("height", 2.0),
                 all || parts.iter().any(|p| p == "SIDES"),
@@ -250,12 +309,25 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             let strips = kind == "IndexedTriangleStripSet";
             let raw = split_index(&ints(n, "coordIndex"));
             let corner_ids = consecutive(&raw);
-            let (faces, parts, corner_ids) = if strips {
-                strip_triangles(&raw, &corner_ids)
+            let tex_index = ints(n, "textureCoordIndex");
+            let tex_rows = given(&tex_index).then(|| split_index(&tex_index));
+            let (faces, parts, corner_ids, tex_rows) = if strips {
+                let tex_rows = tex_rows.map(|r| strip_triangles(&r, &r).2);
+                let (f, p, c) = strip_triangles(&raw, &corner_ids);
+                (f, p, c, tex_rows)
             } else {
                 let p: Vec<u32> = (0..raw.len() as u32).collect();
-                (raw, p, corner_ids)
+                (raw, p, corner_ids, tex_rows)
             };
+            let texcoords = inp.textured.then(|| {
+                let per_vertex = inp.texcoord_binding == Bind::PerVertex;
+                let index = if per_vertex {
+                    Some(corner_ids.clone())
+                } else {
+                    tex_rows
+                };
+                texcoords(inp, &faces, index)
+            });
             let mut o = options(st);
             o.colors = binding(
                 inp.material_binding,
@@ -278,7 +350,7 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 Some(&parts),
                 &corner_ids,
             );
-            polygons::build(&inp.coords, faces, o, n.pos, msgs)
+            polygons::build_textured(&inp.coords, faces, o, texcoords, n.pos, msgs)
         }
         "FaceSet" | "TriangleStripSet" | "QuadMesh" => {
             let start = n.num("startIndex").unwrap_or(0.0).max(0.0) as usize;
@@ -307,6 +379,11 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 .map(|f| f.iter().map(|&i| i.saturating_sub(start as u32)).collect())
                 .collect();
             let mut o = options(st);
+            if kind == "QuadMesh" && inp.normals.is_empty() {
+                // Coin and SGI Inventor smooth a QuadMesh's own normals over
+                // the whole grid, whatever the crease angle.
+                o.crease_angle = std::f32::consts::PI;
+            }
             o.colors = binding(
                 inp.material_binding,
                 &inp.colors,
@@ -321,7 +398,19 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 inp.normal_binding
             };
             o.normals = binding(nb, &inp.normals, &[], &faces, Some(&parts), &corner_ids);
-            polygons::build(&inp.coords, faces, o, n.pos, msgs)
+            // Non-indexed shapes take texture coordinates by vertex number
+            // counted from startIndex (Coin's SoQuadMesh::generatePrimitives).
+            let texcoords = inp.textured.then(|| {
+                let t = texcoords(inp, &faces, None);
+                match &inp.tex {
+                    TexInput::Points(_) => TexCoords {
+                        index: Some(corner_ids.clone()),
+                        ..t
+                    },
+                    _ => t,
+                }
+            });
+            polygons::build_textured(&inp.coords, faces, o, texcoords, n.pos, msgs)
         }
         "IndexedLineSet" | "LineSet" => {
             let lines = if kind == "LineSet" {
@@ -372,6 +461,28 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             mesh_from_points(pts, cols).ok()
         }
         _ => None,
+    }
+}
+
+/// Texture coordinates of a textured polygon shape: the given points
+/// (through `index`, or by coordinate index), or — for a plane function or
+/// the default mapping — one per coordinate (the plane is applied later, to
+/// the built mesh; the default maps the bounding box of the coordinates the
+/// faces use, see [`polygons::bbox_texcoords_inventor`]).
+fn texcoords(inp: &Inputs, faces: &[Vec<u32>], index: Option<Vec<Vec<u32>>>) -> TexCoords {
+    match &inp.tex {
+        TexInput::Points(values) => TexCoords {
+            values: values.clone(),
+            index,
+        },
+        TexInput::Plane(..) => TexCoords {
+            values: vec![Vec2::ZERO; inp.coords.len()],
+            index: None,
+        },
+        TexInput::Default => TexCoords {
+            values: polygons::bbox_texcoords_inventor(&inp.coords, faces),
+            index: None,
+        },
     }
 }
 

@@ -2,8 +2,8 @@
 //! follow them (until the enclosing Separator restores it).
 
 use crate::format::syntax::{AstNode, NodeRef};
-use crate::scene::RenderStyle;
-use glam::Vec3;
+use crate::scene::{RenderStyle, TexTransform, TexTransformOrder};
+use glam::{Affine2, Vec2, Vec3};
 use std::rc::Rc;
 
 /// MaterialBinding / NormalBinding values.
@@ -55,6 +55,63 @@ pub struct State {
     pub font: Option<NodeRef>,
     /// ProfileCoordinate2 and LinearProfile: Text3's extrusion.
     pub profile: (Option<NodeRef>, Option<NodeRef>),
+    /// The current Texture2 (one with neither `filename` nor `image`
+    /// switches texturing off again).
+    pub texture: Option<NodeRef>,
+    /// The accumulated Texture2Transforms.
+    pub tex_transform: TexXf,
+    /// Where texture coordinates come from.
+    pub tex_source: TexSource,
+    pub texcoord_binding: Bind,
+}
+
+/// Accumulated Texture2Transform nodes. One node keeps its authored fields
+/// (writers write them back); several are multiplied into one matrix,
+/// which is then baked into the shape's texture coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TexXf {
+    None,
+    One(TexTransform),
+    Baked(Affine2),
+}
+
+impl TexXf {
+    /// Adds a later Texture2Transform: like geometry transforms, the later
+    /// node applies to the coordinates first (`current × new`).
+    pub fn then(self, t: TexTransform) -> TexXf {
+        match self {
+            TexXf::None => TexXf::One(t),
+            TexXf::One(a) => TexXf::Baked(a.matrix() * t.matrix()),
+            TexXf::Baked(m) => TexXf::Baked(m * t.matrix()),
+        }
+    }
+
+    /// A hashable identity of the baked matrix (0 when nothing is baked).
+    pub fn baked_key(&self) -> [u32; 6] {
+        match self {
+            TexXf::Baked(m) => m.to_cols_array().map(f32::to_bits),
+            _ => [0; 6],
+        }
+    }
+}
+
+/// The texture coordinate element: explicit TextureCoordinate2 points, a
+/// TextureCoordinatePlane function, or the shape's default mapping
+/// (TextureCoordinateDefault, or nothing said).
+#[derive(Clone, Debug)]
+pub enum TexSource {
+    Default,
+    Points(NodeRef),
+    Plane(NodeRef),
+}
+
+impl TexSource {
+    pub fn ptr(&self) -> usize {
+        match self {
+            TexSource::Default => 0,
+            TexSource::Points(n) | TexSource::Plane(n) => Rc::as_ptr(n) as usize,
+        }
+    }
 }
 
 impl State {
@@ -74,6 +131,10 @@ impl State {
             unlit: false,
             font: None,
             profile: (None, None),
+            texture: None,
+            tex_transform: TexXf::None,
+            tex_source: TexSource::Default,
+            texcoord_binding: Bind::Default,
         }
     }
 
@@ -120,6 +181,18 @@ impl State {
             "ProfileCoordinate2" => self.profile.0 = Some(n.clone()),
             "LinearProfile" => self.profile.1 = Some(n.clone()),
             "LightModel" => self.unlit = first_word(n, "model") == "BASE_COLOR",
+            "Texture2" => {
+                let on = !n.strings("filename").iter().all(|f| f.trim().is_empty())
+                    || n.nums("image").is_some_and(|v| v.len() > 3);
+                self.texture = on.then(|| n.clone());
+            }
+            "Texture2Transform" => self.tex_transform = self.tex_transform.then(tex_transform(n)),
+            "TextureCoordinate2" => self.tex_source = TexSource::Points(n.clone()),
+            "TextureCoordinatePlane" => self.tex_source = TexSource::Plane(n.clone()),
+            "TextureCoordinateDefault" => self.tex_source = TexSource::Default,
+            "TextureCoordinateBinding" => {
+                self.texcoord_binding = Bind::parse(first_word(n, "value"));
+            }
             _ => return false,
         }
         true
@@ -128,6 +201,36 @@ impl State {
     pub fn ptr(n: &Option<NodeRef>) -> usize {
         n.as_ref().map_or(0, |n| Rc::as_ptr(n) as usize)
     }
+}
+
+/// A Texture2Transform's fields (Inventor order: scale and rotate about
+/// the centre, then translate).
+fn tex_transform(n: &AstNode) -> TexTransform {
+    TexTransform {
+        translation: vec2(n, "translation", Vec2::ZERO),
+        rotation: n.f32("rotation", 0.0),
+        scale: vec2(n, "scaleFactor", Vec2::ONE),
+        center: vec2(n, "center", Vec2::ZERO),
+        order: TexTransformOrder::Inventor,
+    }
+}
+
+fn vec2(n: &AstNode, field: &str, default: Vec2) -> Vec2 {
+    match n.nums(field) {
+        Some([x, y, ..]) if x.is_finite() && y.is_finite() => Vec2::new(*x as f32, *y as f32),
+        _ => default,
+    }
+}
+
+/// Points of an MFVec2f field.
+pub fn points2(n: &AstNode, field: &str) -> Vec<Vec2> {
+    n.nums(field)
+        .map(|v| {
+            v.chunks_exact(2)
+                .map(|c| Vec2::new(c[0] as f32, c[1] as f32))
+                .collect()
+        })
+        .unwrap_or_default()
 }
 
 fn first_word<'a>(n: &'a AstNode, field: &str) -> &'a str {

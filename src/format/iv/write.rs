@@ -635,7 +635,9 @@ impl Writer<'_> {
             self.out.line("wrapT CLAMP");
         }
         match t.model {
-            TextureModel::Modulate => {}
+            // MODULATE multiplies the lit colour rather than the diffuse one:
+            // the same picture but for specular highlights.
+            TextureModel::Modulate | TextureModel::MultiplyDiffuse => {}
             TextureModel::Vrml97 => {
                 let diffuse = self.scene.materials[mi].diffuse;
                 if image.components() >= 3 && diffuse != Vec3::ONE {

@@ -67,6 +67,21 @@ impl Loader {
         r
     }
 
+    /// Decodes one url without adding it to a scene (for images that are
+    /// combined with another before use, like an MTL `map_d`).
+    pub fn read(&self, url: &str) -> Result<Image, String> {
+        let path = self.resolve(url)?;
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let source = ImageSource::File {
+            url: url.to_string(),
+            path: path.clone(),
+        };
+        decode::read_file(&path).and_then(|bytes| decode::decode(&bytes, &name, source))
+    }
+
     fn resolve(&self, url: &str) -> Result<PathBuf, String> {
         let u = url.trim();
         let u = u.strip_prefix("file://").unwrap_or(u);

@@ -424,6 +424,12 @@ impl Writer<'_> {
                 )),
             }
         }
+        if t.model == TextureModel::MultiplyDiffuse && image.components() >= 3 {
+            self.report.warnings.push(format!(
+                "texture {:?}: VRML97 replaces the diffuse colour by an RGB texture instead of multiplying it",
+                image.name
+            ));
+        }
         if matches!(
             t.model,
             TextureModel::Modulate | TextureModel::Decal | TextureModel::Blend

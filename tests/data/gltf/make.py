@@ -176,7 +176,67 @@ def bad_files():
     }, b)
 
 
+
+def png(w, h, rows, alpha):
+    """A tiny PNG (8-bit RGB or RGBA), rows top first: for the texture tests."""
+    import zlib
+    raw = b"".join(b"\x00" + bytes(c for px in row for c in px) for row in rows)
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    ihdr = struct.pack(">IIBBBBB", w, h, 8, 6 if alpha else 2, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
+
+
+def textured():
+    """Two quads: left, a 2x2 RGB PNG in a buffer view (top-left red,
+    top-right green, bottom-left blue, bottom-right white), REPEAT; right,
+    tex_2x2.png beside the file (RGBA, left column half transparent),
+    CLAMP_TO_EDGE, alphaMode BLEND, KHR_texture_transform taking the right
+    half of the image (offset [0.5, 0], scale [0.5, 1])."""
+    b = Buf()
+    pos, uv = [], []
+    for x0 in (-2.2, 0.2):
+        pos += [x0, -1, 0, x0 + 2, -1, 0, x0 + 2, 1, 0, x0, 1, 0]
+        # glTF uv: origin at the image's top-left, v down.
+        uv += [0, 1, 1, 1, 1, 0, 0, 0]
+    p = b.f32(pos, "VEC3", 3, target=34962, minmax=bounds(pos, 3))
+    t = b.f32(uv, "VEC2", 2, target=34962)
+    ia = b.add("H", [0, 1, 2, 0, 2, 3], 5123, "SCALAR", 6, target=34963)
+    ib = b.add("H", [4, 5, 6, 4, 6, 7], 5123, "SCALAR", 6, target=34963)
+    img = png(2, 2, [[(255, 0, 0), (0, 255, 0)], [(0, 0, 255), (255, 255, 255)]], False)
+    while len(b.data) % 4:
+        b.data.append(0)
+    b.views.append({"buffer": 0, "byteOffset": len(b.data), "byteLength": len(img)})
+    b.data += img
+    with open(os.path.join(HERE, "tex_2x2.png"), "wb") as f:
+        f.write(png(2, 2, [[(255, 255, 0, 128), (0, 255, 255, 255)], [(255, 0, 255, 128), (20, 20, 20, 255)]], True))
+    doc = {
+        "asset": {"version": "2.0", "generator": "make.py"},
+        "extensionsUsed": ["KHR_texture_transform"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"name": "Left", "mesh": 0}, {"name": "Right", "mesh": 1}],
+        "meshes": [
+            {"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t}, "indices": ia, "material": 0}]},
+            {"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t}, "indices": ib, "material": 1}]},
+        ],
+        "materials": [
+            {"name": "Buffered", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicFactor": 0}},
+            {"name": "Beside", "alphaMode": "BLEND", "pbrMetallicRoughness": {
+                "baseColorTexture": {"index": 1, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0], "scale": [0.5, 1]}}},
+                "metallicFactor": 0}},
+        ],
+        "samplers": [{"wrapS": 10497, "wrapT": 10497}, {"wrapS": 33071, "wrapT": 33071, "magFilter": 9729}],
+        "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 1}],
+        "images": [
+            {"bufferView": len(b.views) - 1, "mimeType": "image/png", "name": "buffered"},
+            {"uri": "tex_2x2.png"},
+        ],
+    }
+    write("textured.gltf", doc, b)
+
 if __name__ == "__main__":
+    textured()
     animated()
     topologies()
     bad_files()
