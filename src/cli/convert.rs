@@ -49,7 +49,7 @@ pub fn run(args: Args) -> i32 {
     }
     if OutputFormat::from_path(&args.output).is_none() {
         eprintln!(
-            "animed convert: {}: cannot tell the output format from the name (use .wrl, .wrl.gz, .iv, .gltf or .glb)",
+            "animed convert: {}: cannot tell the output format from the name (use .wrl, .wrl.gz, .iv, .gltf, .glb, .x3dv or .x3d)",
             args.output.display()
         );
         return 2;

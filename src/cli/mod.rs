@@ -81,7 +81,7 @@ pub enum Command {
     Edit(edit::Args),
     /// Play a file's animation in a window.
     View(view::Args),
-    /// Convert between .iv, .wrl, .wrl.gz (and from .obj), keeping every key.
+    /// Convert between .iv, .wrl, .wrl.gz, .gltf, .glb, .x3dv, .x3d (and from .obj), keeping every key.
     Convert(convert::Args),
     /// Describe a scene file: nodes, shapes, lights, cameras, tracks, warnings.
     Info(info::Args),

@@ -2,11 +2,12 @@
 //! (a temporary file beside the target, flushed to disk, then renamed over
 //! it), so a crash never leaves a half-written scene behind.
 //!
-//! `.wrl` → VRML97, `.wrl.gz` / `.wrz` → gzip'd VRML97, `.iv` → Inventor.
+//! `.wrl` → VRML97, `.wrl.gz` / `.wrz` → gzip'd VRML97, `.iv` → Inventor,
+//! `.x3dv` / `.x3d` → X3D classic / XML (`.x3dvz`, `.x3dz`, `.gz`: gzip'd).
 
 use super::atomic::Replace;
 use super::options::{WriteOptions, WriteReport};
-use crate::format::{gltf, iv, vrml97};
+use crate::format::{gltf, iv, vrml97, x3d};
 use crate::scene::Scene;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -21,10 +22,18 @@ pub enum OutputFormat {
     Gltf,
     /// Binary glTF.
     Glb,
+    /// X3D 4.0, classic encoding (`.x3dv`), and gzipped (`.x3dvz`, `.x3dv.gz`).
+    X3dClassic,
+    X3dClassicGz,
+    /// X3D 4.0, XML encoding (`.x3d`), and gzipped (`.x3dz`, `.x3d.gz`).
+    X3dXml,
+    X3dXmlGz,
 }
 
 impl OutputFormat {
-    /// By file name: `.wrl`, `.wrl.gz`/`.wrz`, `.iv` (case-insensitive).
+    /// By file name: `.wrl`, `.wrl.gz`/`.wrz`, `.iv`, `.gltf`, `.glb`,
+    /// `.x3dv`, `.x3dvz`/`.x3dv.gz`, `.x3d`, `.x3dz`/`.x3d.gz`
+    /// (case-insensitive).
     pub fn from_path(path: &Path) -> Option<OutputFormat> {
         let name = path.file_name()?.to_string_lossy().to_ascii_lowercase();
         if name.ends_with(".wrl.gz") || name.ends_with(".wrz") {
@@ -37,6 +46,14 @@ impl OutputFormat {
             Some(OutputFormat::Gltf)
         } else if name.ends_with(".glb") {
             Some(OutputFormat::Glb)
+        } else if name.ends_with(".x3dv") {
+            Some(OutputFormat::X3dClassic)
+        } else if name.ends_with(".x3dvz") || name.ends_with(".x3dv.gz") {
+            Some(OutputFormat::X3dClassicGz)
+        } else if name.ends_with(".x3d") {
+            Some(OutputFormat::X3dXml)
+        } else if name.ends_with(".x3dz") || name.ends_with(".x3d.gz") {
+            Some(OutputFormat::X3dXmlGz)
         } else {
             None
         }
@@ -62,7 +79,7 @@ impl std::fmt::Display for SaveError {
         match self {
             SaveError::UnknownExtension(p) => write!(
                 f,
-                "{}: cannot tell the format from the name (use .wrl, .wrl.gz, .iv, .gltf or .glb)",
+                "{}: cannot tell the format from the name (use .wrl, .wrl.gz, .iv, .gltf, .glb, .x3dv or .x3d)",
                 p.display()
             ),
             SaveError::Io(p, e) => write!(f, "{}: {e}", p.display()),
@@ -112,6 +129,8 @@ fn gltf_bytes(
 fn to_text(scene: &Scene, format: OutputFormat, opts: &WriteOptions) -> (String, WriteReport) {
     let (text, mut report) = match format {
         OutputFormat::Inventor => iv::write::write(scene, opts),
+        OutputFormat::X3dClassic | OutputFormat::X3dClassicGz => x3d::write::classic(scene, opts),
+        OutputFormat::X3dXml | OutputFormat::X3dXmlGz => x3d::write::xml(scene, opts),
         _ => vrml97::write::write(scene, opts),
     };
     if scene.clips.len() > 1 {
@@ -127,7 +146,9 @@ fn to_text(scene: &Scene, format: OutputFormat, opts: &WriteOptions) -> (String,
 
 fn encode(text: String, format: OutputFormat) -> Vec<u8> {
     match format {
-        OutputFormat::Vrml97Gz => gzip(text.as_bytes()),
+        OutputFormat::Vrml97Gz | OutputFormat::X3dClassicGz | OutputFormat::X3dXmlGz => {
+            gzip(text.as_bytes())
+        }
         _ => text.into_bytes(),
     }
 }
@@ -165,8 +186,14 @@ pub fn save_with(
         return Ok(report);
     }
     let (text, report) = to_text(&scene, format, opts);
-    // Never write what our own reader would refuse.
-    let depth = super::text::nesting(&text);
+    // Never write what our own reader would refuse (XML nests as its
+    // classic twin does).
+    let depth = match format {
+        OutputFormat::X3dXml | OutputFormat::X3dXmlGz => {
+            super::text::nesting(&x3d::write::classic(&scene, opts).0)
+        }
+        _ => super::text::nesting(&text),
+    };
     let max = crate::format::limits::current().max_depth;
     if depth as u64 > max {
         return Err(SaveError::TooDeep {

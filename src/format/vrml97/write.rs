@@ -45,10 +45,23 @@ struct Writer<'a> {
     /// Deforming shapes and the DEF names of their Coordinate and Normal,
     /// by mesh index.
     deforming: Vec<(Deforming, String, String)>,
+    /// X3D 4.0 classic encoding: its header and profile, OrthoViewpoint.
+    x3d: bool,
 }
 
 /// Prints `scene` as a VRML97 file.
 pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
+    write_dialect(scene, opts, false)
+}
+
+/// Prints `scene` as an X3D 4.0 classic-encoding file: the same nodes,
+/// sampling and key note, X3D's header, orthographic cameras as
+/// OrthoViewpoint (`format::x3d::write` uses it for both X3D encodings).
+pub fn write_x3d(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
+    write_dialect(scene, opts, true)
+}
+
+fn write_dialect(scene: &Scene, opts: &WriteOptions, x3d: bool) -> (String, WriteReport) {
     let mut w = Writer {
         scene,
         plan: WritePlan::new(scene),
@@ -58,6 +71,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         report: WriteReport::default(),
         lossy_matrices: (0, None),
         deforming: Vec::new(),
+        x3d,
     };
     let (deforming, warnings) = write_morph::deforming(scene);
     w.report.warnings.extend(warnings);
@@ -72,7 +86,12 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         let normal = w.plan.internal(&format!("{base}_normal"));
         w.deforming.push((d, coord, normal));
     }
-    w.out.line("#VRML V2.0 utf8");
+    if x3d {
+        w.out.line("#X3D V4.0 utf8");
+        w.out.line("PROFILE Immersive");
+    } else {
+        w.out.line("#VRML V2.0 utf8");
+    }
     w.out
         .line("# Written by animed. The animation plays from one looping TimeSensor");
     w.out
@@ -603,6 +622,22 @@ impl Writer<'_> {
     }
 
     fn viewpoint(&mut self, name: &Option<String>, c: &Camera, node_name: &str) {
+        if let (true, &CameraKind::Orthographic { height }) = (self.x3d, &c.kind) {
+            // X3D OrthoViewpoint: the view rectangle, its height the camera's.
+            let h = num(height / 2.0);
+            let m = num(-height / 2.0);
+            self.out.open(&format!("{}OrthoViewpoint", def(name)));
+            self.out.line(&format!("position {}", vec3(c.position)));
+            self.out
+                .line(&format!("orientation {}", rotation(c.orientation)));
+            self.out.line(&format!("fieldOfView [ {m} {m} {h} {h} ]"));
+            if !c.description.is_empty() {
+                self.out
+                    .line(&format!("description {}", quoted(&c.description)));
+            }
+            self.out.close("}");
+            return;
+        }
         self.out.open(&format!("{}Viewpoint", def(name)));
         self.out.line(&format!("position {}", vec3(c.position)));
         self.out

@@ -13,6 +13,7 @@
 pub(crate) mod interp;
 mod material;
 mod nodes;
+pub mod write;
 mod xml;
 
 pub use xml::is_xml;

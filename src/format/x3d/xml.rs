@@ -135,7 +135,7 @@ fn byte_pos(bytes: &[u8], at: usize) -> Pos {
 
 /// Default `containerField` of a node type (ISO/IEC 19776-1 §5.1.2: each
 /// node's table of fields names it).
-fn default_container(kind: &str) -> &'static str {
+pub(super) fn default_container(kind: &str) -> &'static str {
     match kind {
         "Appearance" => "appearance",
         "Material" | "PhysicalMaterial" | "UnlitMaterial" | "TwoSidedMaterial" => "material",
