@@ -104,3 +104,29 @@ fn text_is_framed_and_picked() {
     assert!(lo < 40 && hi > 120, "text spans columns {lo}..{hi} of 160");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Inventor Text2 is a label of a pixel size: view-all frames the rest of
+/// the scene (and the label's anchor), as Coin does, so a long label does
+/// not shrink the model.
+#[test]
+fn text2_labels_do_not_change_the_framing() {
+    let with = "#Inventor V2.1 ascii\nSeparator { Cube {} }\n\
+                Separator { Translation { translation 1 1 1 }\n\
+                Text2 { string \"a long label that reaches far to the right\" } }\n";
+    let without = "#Inventor V2.1 ascii\nSeparator { Cube {} }\n";
+    let cube_pixels = |src: &str| {
+        let l = animed::internals::format::load_bytes(src.as_bytes(), Path::new("t.iv")).unwrap();
+        let f = draw(&l.scene, 160, 120);
+        let cube = l
+            .scene
+            .nodes
+            .iter()
+            .position(|n| matches!(n.kind, NodeKind::Shape(_)))
+            .unwrap() as u32
+            + 1;
+        f.ids.iter().filter(|&&i| i == cube).count()
+    };
+    let (a, b) = (cube_pixels(with), cube_pixels(without));
+    assert!(a > 1000);
+    assert_eq!(a, b);
+}

@@ -240,6 +240,7 @@ pub fn remove_subtree(scene: &Scene, id: NodeId) -> Scene {
         },
         TargetRef::Material(_) => true,
     });
+    out.remap_skins(remap);
     out
 }
 
@@ -249,6 +250,7 @@ pub fn remove_subtree(scene: &Scene, id: NodeId) -> Scene {
 pub fn graft(scene: &mut Scene, other: &Scene, name: &str) -> NodeId {
     let mesh_off = scene.meshes.len() as u32;
     let mat_off = scene.materials.len() as u32;
+    let skin_off = scene.skins.len() as u32;
     scene.meshes.extend(other.meshes.iter().cloned());
     scene.materials.extend(other.materials.iter().cloned());
     let group = scene.add_node(None, Node::group(unique_or(scene, name)));
@@ -262,8 +264,16 @@ pub fn graft(scene: &mut Scene, other: &Scene, name: &str) -> NodeId {
             s.mesh = MeshId(s.mesh.0 + mesh_off);
             s.material = MaterialId(s.material.0 + mat_off);
         }
+        n.skin = n.skin.map(|k| crate::scene::SkinId(k.0 + skin_off));
         scene.nodes.push(n);
     }
+    // The file's skins, their joints shifted like the nodes.
+    scene.skins.extend(
+        other
+            .skins
+            .iter()
+            .filter_map(|s| s.with_joints_mapped(|j| Some(shift(j)))),
+    );
     let new_roots: Vec<NodeId> = other.roots.iter().map(|&r| shift(r)).collect();
     scene.node_mut(group).children = new_roots;
     for t in &other.animation.tracks {

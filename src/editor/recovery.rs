@@ -108,13 +108,22 @@ pub fn untitled_pid(path: &Path) -> Option<u32> {
 
 /// Whether the editor that writes copies under `pid` still runs: this
 /// process, or a live process named animed (Linux `/proc`; elsewhere
-/// every other copy counts as left behind).
+/// every other copy counts as left behind). A killed editor nobody has
+/// reaped yet (a zombie, state `Z`) is gone.
 pub fn session_alive(pid: u32) -> bool {
     if pid == std::process::id() {
         return true;
     }
-    std::fs::read_to_string(format!("/proc/{pid}/comm"))
-        .is_ok_and(|c| c.trim_end().starts_with("animed"))
+    let named = std::fs::read_to_string(format!("/proc/{pid}/comm"))
+        .is_ok_and(|c| c.trim_end().starts_with("animed"));
+    named && !is_zombie(&std::fs::read_to_string(format!("/proc/{pid}/stat")).unwrap_or_default())
+}
+
+/// `/proc/PID/stat` text of a zombie: the state after the name's `)` is Z.
+fn is_zombie(stat: &str) -> bool {
+    stat.rfind(')')
+        .and_then(|i| stat[i + 1..].split_whitespace().next())
+        .is_some_and(|s| s == "Z")
 }
 
 /// Every untitled recovery copy in `dir` whose editor is gone, newest
@@ -285,4 +294,18 @@ impl Autosave {
 pub(super) fn remove(path: &Path) {
     // Already gone is fine; anything else only leaves a stale copy behind.
     let _ = std::fs::remove_file(path);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zombies_are_not_running_editors() {
+        assert!(is_zombie("833 (animed) Z 1 833 833 0 -1"));
+        assert!(!is_zombie("833 (animed) S 1 833 833 0 -1"));
+        assert!(!is_zombie("833 (a) b) R 1"));
+        assert!(!is_zombie(""));
+        assert!(session_alive(std::process::id()));
+    }
 }

@@ -1,6 +1,6 @@
 use super::geometry::Geometry;
 use crate::anim::Pose;
-use crate::scene::{Camera, CameraKind, NodeId, NodeKind, Scene};
+use crate::scene::{Camera, CameraKind, NodeId, NodeKind, Scene, TextKind};
 use glam::{Mat4, Quat, Vec3, Vec4};
 
 /// Near/far used by [`View::from_camera`] when the camera gives none.
@@ -249,7 +249,14 @@ pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
         let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
         // Deformed shapes: the bounds of the pose's vertices.
         let geo = Geometry::of(mesh, pose, NodeId(i as u32), world);
-        let Some((lo, hi)) = points_bounds(geo.positions) else {
+        // An Inventor Text2 label is drawn at a pixel size, not a scene
+        // size: view-all counts its anchor only, as Coin's does.
+        let label = matches!(mesh.text.as_deref(), Some(t) if t.kind == TextKind::Text2);
+        let Some((lo, hi)) = (if label {
+            Some((Vec3::ZERO, Vec3::ZERO))
+        } else {
+            points_bounds(geo.positions)
+        }) else {
             continue;
         };
         let world = geo.world;

@@ -204,6 +204,31 @@ impl Scene {
         self.skins.get(id.0 as usize)
     }
 
+    /// Renumbers skin joints after the node arena changed (`map(old id)` →
+    /// new id, `None` = removed; `Node::skin` of the nodes already in
+    /// `self.nodes` refer to the old skin list): a skin that lost a joint is
+    /// dropped and the shapes it deformed become rigid; the others are
+    /// renumbered in `Node::skin`.
+    pub fn remap_skins(&mut self, map: impl Fn(NodeId) -> Option<NodeId>) {
+        let mut new_id = Vec::with_capacity(self.skins.len());
+        let mut kept = Vec::with_capacity(self.skins.len());
+        for s in &self.skins {
+            match s.with_joints_mapped(&map) {
+                Some(s) => {
+                    new_id.push(Some(SkinId(kept.len() as u32)));
+                    kept.push(s);
+                }
+                None => new_id.push(None),
+            }
+        }
+        self.skins = kept;
+        for n in &mut self.nodes {
+            n.skin = n
+                .skin
+                .and_then(|k| new_id.get(k.0 as usize).copied().flatten());
+        }
+    }
+
     /// Whether node `id` is a joint of any skin.
     pub fn is_joint(&self, id: NodeId) -> bool {
         self.skins.iter().any(|s| s.joints().contains(&id))

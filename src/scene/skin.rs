@@ -73,6 +73,21 @@ impl Skin {
         &self.joints
     }
 
+    /// The same skin with its joints (and skeleton root) renumbered by
+    /// `map`; `None` when a joint has no new id (it was removed).
+    pub fn with_joints_mapped(&self, map: impl Fn(NodeId) -> Option<NodeId>) -> Option<Skin> {
+        Some(Skin {
+            name: self.name.clone(),
+            joints: self
+                .joints
+                .iter()
+                .map(|&j| map(j))
+                .collect::<Option<Vec<_>>>()?,
+            inverse_bind: self.inverse_bind.clone(),
+            skeleton: self.skeleton.and_then(&map),
+        })
+    }
+
     pub fn inverse_bind(&self) -> &[Mat4] {
         &self.inverse_bind
     }
@@ -311,6 +326,33 @@ mod tests {
         assert!(SkinWeights::from_influences(1, |_, out| out.push((0, -1.0))).is_err());
         assert!(SkinWeights::new(vec![[0; 4]], vec![[f32::NAN, 0.0, 0.0, 0.0]]).is_err());
         assert!(SkinWeights::new(vec![[0; 4]], vec![]).is_err());
+    }
+
+    #[test]
+    fn scene_remap_drops_skins_that_lost_a_joint() {
+        use crate::scene::{Node, Scene};
+        let mut s = Scene::new();
+        let a = s.add_node(None, Node::group("a"));
+        let b = s.add_node(None, Node::group("b"));
+        let c = s.add_node(None, Node::group("c"));
+        let k0 = s
+            .add_skin(Skin::new("0", vec![a, b], vec![]).unwrap())
+            .unwrap();
+        let k1 = s
+            .add_skin(Skin::new("1", vec![c], vec![]).unwrap())
+            .unwrap();
+        s.node_mut(a).skin = Some(k0);
+        s.node_mut(c).skin = Some(k1);
+        // Remove node b: a stays 0, c becomes 1.
+        s.remap_skins(|n| match n.0 {
+            0 => Some(NodeId(0)),
+            2 => Some(NodeId(1)),
+            _ => None,
+        });
+        assert_eq!(s.skins.len(), 1);
+        assert_eq!(s.skins[0].joints(), &[NodeId(1)]);
+        assert_eq!(s.node(a).skin, None);
+        assert_eq!(s.node(c).skin, Some(SkinId(0)));
     }
 
     #[test]

@@ -454,6 +454,10 @@ impl Builder {
     fn text(&mut self, n: &NodeRef, st: &State, cur: &Cursor, name: String) {
         let mut msgs = Vec::new();
         let m = super::text::mesh(n, st, &mut msgs);
+        if let Some(e) = limits::tripped() {
+            self.stop(n.pos, e);
+            return;
+        }
         for (pos, msg) in msgs {
             let k = format!("{}:{msg}", n.kind);
             self.warn_once(&k, pos, &msg);

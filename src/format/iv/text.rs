@@ -33,7 +33,13 @@ pub fn mesh(n: &AstNode, st: &State, msgs: &mut Msgs) -> Option<Mesh> {
     if spec.strings.iter().all(|s| s.trim().is_empty()) {
         return None;
     }
-    let mut m = text_mesh(&spec, true);
+    let mut m = match text_mesh(&spec, true) {
+        Ok(m) => m,
+        Err(e) => {
+            msgs.push((n.pos, e.to_string()));
+            return None;
+        }
+    };
     if spec
         .strings
         .iter()
@@ -230,9 +236,11 @@ pub fn size_text2(scene: &mut Scene) {
         if scale > 0.0 && scale.is_finite() {
             drawn.size = spec.size * per_pixel / scale;
         }
-        let name = std::mem::take(&mut m.name);
-        *m = text_mesh(&drawn, true);
-        m.name = name;
+        // The budget was asked for the same glyphs at the first build.
+        if let Ok(mut built) = text_mesh(&drawn, true) {
+            built.name = std::mem::take(&mut m.name);
+            *m = built;
+        }
         m.text = Some(spec);
     }
 }

@@ -8,6 +8,7 @@
 use super::font::Font;
 use super::layout::{layout, Layout};
 use super::tessellate::{tessellate, Tessellation};
+use crate::format::limits::{self, LimitError};
 use crate::scene::{Mesh, TextKind, TextSpec};
 use glam::{Vec2, Vec3};
 use std::collections::BTreeMap;
@@ -22,8 +23,10 @@ struct GlyphShape {
     fill: Tessellation,
 }
 
-/// Builds the mesh of a text. `textured` adds texture coordinates.
-pub fn text_mesh(spec: &TextSpec, textured: bool) -> Mesh {
+/// Builds the mesh of a text. `textured` adds texture coordinates. Fails,
+/// before allocating it, when the mesh would not fit the load's geometry
+/// budget (`format::limits`).
+pub fn text_mesh(spec: &TextSpec, textured: bool) -> Result<Mesh, LimitError> {
     let font = Font::new(spec.family, spec.bold, spec.italic);
     let mut lay = layout(spec, &font);
     lay.glyphs.truncate(MAX_GLYPHS);
@@ -44,6 +47,17 @@ pub fn text_mesh(spec: &TextSpec, textured: bool) -> Mesh {
         } => (front, sides, back, depth.max(0.0)),
         _ => (true, false, false, 0.0),
     };
+    let cost: u64 = lay
+        .glyphs
+        .iter()
+        .filter_map(|p| cache.get(&p.glyph.0))
+        .map(|g| {
+            let face = (g.fill.points.len() + g.fill.triangles.len()) as u64;
+            let ring: u64 = g.contours.iter().map(|c| c.len() as u64).sum();
+            u64::from(front) * face + u64::from(back) * face + u64::from(sides) * 6 * ring
+        })
+        .sum();
+    limits::check_geometry(cost)?;
     let mut b = Builder::default();
     if front {
         faces(&mut b, &lay, &cache, 0.0, false);
@@ -60,14 +74,14 @@ pub fn text_mesh(spec: &TextSpec, textured: bool) -> Mesh {
     } else {
         Vec::new()
     };
-    Mesh {
+    Ok(Mesh {
         positions: b.positions,
         normals: b.normals,
         texcoords,
         triangles: b.triangles,
         solid: false,
         ..Mesh::default()
-    }
+    })
 }
 
 #[derive(Default)]
@@ -201,7 +215,7 @@ mod tests {
 
     #[test]
     fn text_is_flat_facing_z_and_scales_with_size() {
-        let m = text_mesh(&spec("Hello"), false);
+        let m = text_mesh(&spec("Hello"), false).unwrap();
         assert!(!m.triangles.is_empty());
         assert!(m.positions.iter().all(|p| p.z == 0.0));
         assert!(m.normals.iter().all(|n| *n == Vec3::Z));
@@ -213,7 +227,7 @@ mod tests {
         let mut big = spec("Hello");
         big.size = 3.0;
         let a1 = area(&m);
-        let a3 = area(&text_mesh(&big, false));
+        let a3 = area(&text_mesh(&big, false).unwrap());
         assert!((a3 / a1 - 9.0).abs() < 1e-3, "{a1} {a3}");
         assert!(m.texcoords.is_empty());
     }
@@ -223,7 +237,7 @@ mod tests {
         let mut s = spec("HI");
         s.size = 2.0;
         s.justify = [Justify::Middle, Justify::First];
-        let m = text_mesh(&s, true);
+        let m = text_mesh(&s, true).unwrap();
         assert_eq!(m.texcoords.len(), m.positions.len());
         let (lo, _) = m.bounds().unwrap();
         let tmin = m.texcoords.iter().fold(Vec2::MAX, |a, t| a.min(*t));
@@ -236,14 +250,14 @@ mod tests {
     #[test]
     fn text3_parts_build_front_back_and_sides() {
         let mut s = spec("O");
-        let front_only = text_mesh(&s, false);
+        let front_only = text_mesh(&s, false).unwrap();
         s.kind = TextKind::Text3 {
             front: true,
             sides: true,
             back: true,
             depth: 0.5,
         };
-        let m = text_mesh(&s, false);
+        let m = text_mesh(&s, false).unwrap();
         let (lo, hi) = m.bounds().unwrap();
         assert_eq!((lo.z, hi.z), (-0.5, 0.0));
         // Front and back have the same area; the sides add the outline
@@ -267,14 +281,14 @@ mod tests {
     #[test]
     fn same_text_same_mesh() {
         let s = spec("Determinism & 8O@");
-        assert_eq!(text_mesh(&s, true), text_mesh(&s, true));
+        assert_eq!(text_mesh(&s, true).unwrap(), text_mesh(&s, true).unwrap());
     }
 
     #[test]
     fn long_texts_are_capped() {
         let s = spec(&"i".repeat(MAX_GLYPHS + 10));
-        let m = text_mesh(&s, false);
-        let one = text_mesh(&spec("i"), false);
+        let m = text_mesh(&s, false).unwrap();
+        let one = text_mesh(&spec("i"), false).unwrap();
         assert_eq!(m.triangles.len(), one.triangles.len() * MAX_GLYPHS);
     }
 }

@@ -14,7 +14,13 @@ pub fn mesh(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     if spec.strings.iter().all(|s| s.trim().is_empty()) {
         return None; // nothing to draw (not an error)
     }
-    let mut m = text_mesh(&spec, textured);
+    let mut m = match text_mesh(&spec, textured) {
+        Ok(m) => m,
+        Err(e) => {
+            msgs.push((g.pos, e.to_string()));
+            return None;
+        }
+    };
     if spec
         .strings
         .iter()
@@ -197,5 +203,24 @@ Shape { geometry Text { string "x" fontStyle FontStyle {
         let b = text_meshes(&again.scene);
         assert_eq!(a[0].text, b[0].text);
         assert_eq!(a[0].positions, b[0].positions);
+    }
+
+    #[test]
+    fn a_text_past_the_geometry_budget_fails_the_load_before_it_is_built() {
+        use crate::format::limits::{scope_with, Limits};
+        let src = format!(
+            "#VRML V2.0 utf8\nShape {{ geometry Text {{ string \"{}\" }} }}\n",
+            "@".repeat(5000)
+        );
+        let small = Limits {
+            max_geometry: 100_000,
+            ..Limits::default()
+        };
+        let e = scope_with(small, || read(src.as_bytes(), Path::new("t.wrl"))).unwrap_err();
+        let msg = e.to_string();
+        assert!(
+            msg.contains("input budget exceeded") && msg.contains("t.wrl:2:"),
+            "{msg}"
+        );
     }
 }
