@@ -748,7 +748,12 @@ impl Writer<'_> {
             });
         }
         for (d, coord, normal) in self.deforming.clone() {
-            let s = write_morph::sample(scene, d, tol.distance);
+            // The position rule, but against the shape's own size too: a
+            // small flapping wing in a large world must still flap.
+            let size = scene.meshes[d.mesh.0 as usize]
+                .bounds()
+                .map_or(0.0, |(lo, hi)| (hi - lo).length());
+            let s = write_morph::sample(scene, d, tol.distance.min(tol.relative * size));
             let keys: Vec<f32> = s.frames.iter().map(|f| f / duration).collect();
             let base = coord.trim_end_matches("_coord").to_string();
             for (kind, values, target, field) in [
