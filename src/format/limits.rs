@@ -431,8 +431,9 @@ impl From<LimitError> for ReadError {
     }
 }
 
-/// What kind of non-regular file `m` is.
-fn kind_of(m: &std::fs::Metadata) -> Option<&'static str> {
+/// What kind of non-regular file `m` is (`None` for a regular file);
+/// reads and saves both refuse the others.
+pub(crate) fn kind_of(m: &std::fs::Metadata) -> Option<&'static str> {
     let t = m.file_type();
     if t.is_file() {
         return None;

@@ -16,6 +16,7 @@
 //! `convert -o`), and [`Stamp`] tells whether a file changed since it was
 //! read, so a save never silently drops another writer's update.
 
+use crate::format::limits::kind_of;
 use std::fs::{File, Metadata};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -48,30 +49,6 @@ pub fn resolve_target(path: &Path) -> io::Result<PathBuf> {
         "{}: too many levels of symbolic links",
         path.display()
     )))
-}
-
-fn kind_of(m: &Metadata) -> Option<&'static str> {
-    let t = m.file_type();
-    if t.is_file() {
-        return None;
-    }
-    if t.is_dir() {
-        return Some("a directory");
-    }
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        if t.is_fifo() {
-            return Some("a FIFO");
-        }
-        if t.is_socket() {
-            return Some("a socket");
-        }
-        if t.is_char_device() || t.is_block_device() {
-            return Some("a device");
-        }
-    }
-    Some("not a regular file")
 }
 
 /// Checks that `target` (symlinks resolved) may be replaced; returns its

@@ -30,30 +30,7 @@ pub fn mesh(n: &AstNode, st: &State, msgs: &mut Msgs) -> Option<Mesh> {
     let depth =
         profile_depth(st.profile.0.as_deref(), st.profile.1.as_deref()).unwrap_or(TEXT3_DEPTH);
     let spec = spec(n, st.font.as_deref(), depth, msgs);
-    if spec.strings.iter().all(|s| s.trim().is_empty()) {
-        return None;
-    }
-    let mut m = match text_mesh(&spec, true) {
-        Ok(m) => m,
-        Err(e) => {
-            msgs.push((n.pos, e.to_string()));
-            return None;
-        }
-    };
-    if spec
-        .strings
-        .iter()
-        .map(|s| s.chars().count())
-        .sum::<usize>()
-        > text::MAX_GLYPHS
-    {
-        msgs.push((
-            n.pos,
-            format!("text longer than {} characters is cut", text::MAX_GLYPHS),
-        ));
-    }
-    m.text = Some(Box::new(spec));
-    Some(m)
+    text::mesh_of_spec(spec, true, n.pos, msgs)
 }
 
 /// Text3's depth without a profile: 1 unit whatever the font size (what

@@ -11,6 +11,37 @@ pub mod tessellate;
 
 pub use mesh::{text_mesh, MAX_GLYPHS};
 
+/// A text node's mesh with its spec kept on it (both readers end here):
+/// `None` when every string is blank (nothing to draw, not an error) or
+/// the mesh cannot be built (the reason goes to `msgs` at `pos`); a text
+/// longer than [`MAX_GLYPHS`] is cut and says so.
+pub fn mesh_of_spec(
+    spec: TextSpec,
+    textured: bool,
+    pos: crate::format::lexer::Pos,
+    msgs: &mut Vec<(crate::format::lexer::Pos, String)>,
+) -> Option<crate::scene::Mesh> {
+    if spec.strings.iter().all(|s| s.trim().is_empty()) {
+        return None;
+    }
+    let mut m = match text_mesh(&spec, textured) {
+        Ok(m) => m,
+        Err(e) => {
+            msgs.push((pos, e.to_string()));
+            return None;
+        }
+    };
+    let glyphs: usize = spec.strings.iter().map(|s| s.chars().count()).sum();
+    if glyphs > MAX_GLYPHS {
+        msgs.push((
+            pos,
+            format!("text longer than {MAX_GLYPHS} characters is cut"),
+        ));
+    }
+    m.text = Some(Box::new(spec));
+    Some(m)
+}
+
 use crate::scene::{FontFamily, Justify, TextSpec};
 
 /// Replaces values no text can be drawn with (non-finite or non-positive

@@ -3,7 +3,7 @@
 
 use crate::format::lexer::Pos;
 use crate::format::syntax::AstNode;
-use crate::format::text::{self, text_mesh};
+use crate::format::text;
 use crate::scene::{Justify, Mesh, TextSpec};
 
 type Msgs = Vec<(Pos, String)>;
@@ -11,30 +11,7 @@ type Msgs = Vec<(Pos, String)>;
 /// The mesh of a Text node, with its spec kept on it.
 pub fn mesh(g: &AstNode, textured: bool, msgs: &mut Msgs) -> Option<Mesh> {
     let spec = spec(g, msgs);
-    if spec.strings.iter().all(|s| s.trim().is_empty()) {
-        return None; // nothing to draw (not an error)
-    }
-    let mut m = match text_mesh(&spec, textured) {
-        Ok(m) => m,
-        Err(e) => {
-            msgs.push((g.pos, e.to_string()));
-            return None;
-        }
-    };
-    if spec
-        .strings
-        .iter()
-        .map(|s| s.chars().count())
-        .sum::<usize>()
-        > text::MAX_GLYPHS
-    {
-        msgs.push((
-            g.pos,
-            format!("text longer than {} characters is cut", text::MAX_GLYPHS),
-        ));
-    }
-    m.text = Some(Box::new(spec));
-    Some(m)
+    text::mesh_of_spec(spec, textured, g.pos, msgs)
 }
 
 /// Reads the Text node's fields and its FontStyle (defaults of §6.20 when
