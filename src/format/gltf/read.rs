@@ -159,7 +159,7 @@ fn read_inner(
     warnings.extend(b.warnings);
     let warnings = warnings
         .into_iter()
-        .map(|w| format!("{}:0:0: {w}", path.display()))
+        .map(|w| format!("{}: {w}", path.display()))
         .collect();
     Ok(Loaded {
         scene: b.scene,
