@@ -137,7 +137,7 @@ mod tests {
         log.stop(pos(7, 8), limit(11));
         log.stop(pos(9, 9), limit(22));
         assert!(log.full());
-        let e = log.finish(Scene::new()).err().expect("a limit was passed");
+        let e = log.finish(Scene::new()).expect_err("a limit was passed");
         let msg = e.to_string();
         assert!(msg.starts_with("b.iv:7:8: "), "{msg}");
         assert!(msg.contains("more than 11 "), "{msg}");
