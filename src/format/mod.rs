@@ -10,6 +10,7 @@
 //! `hsv`) and the shared export code (`export/`: write plan, channels,
 //! sampling, key note, options, atomic save) beside them.
 
+mod build_log;
 mod error;
 pub mod export;
 pub mod gltf;
