@@ -2,7 +2,7 @@
 //! shapes (with shared meshes and materials), lights, viewpoints and the
 //! world settings (NavigationInfo, Background, WorldInfo).
 
-use super::{animation, fmt_warning, geometry};
+use super::{animation, fmt_warning, geometry, hanim};
 use crate::format::inline;
 use crate::format::lexer::Pos;
 use crate::format::limits::{self, LimitError};
@@ -104,6 +104,7 @@ impl Builder {
         for root in &parsed.roots {
             self.add(root, None);
         }
+        hanim::import(self, &parsed.roots);
         animation::import(self, &parsed.routes);
     }
 

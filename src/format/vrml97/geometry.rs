@@ -219,6 +219,40 @@ pub fn ifs_morph(g: &AstNode, textured: bool, keys: &[Vec<Vec3>]) -> Result<Morp
     Morphs::new(base.positions.len(), targets, Vec::new()).map_err(|e| e.to_string())
 }
 
+/// For every vertex of an IndexedFaceSet's mesh (as `mesh` builds it),
+/// the index of the `coord` point it came from: per-point data such as
+/// H-Anim skin weights (`skinCoordIndex`) follow the points into the mesh,
+/// whose vertices are split where normals or texture coordinates differ.
+pub fn ifs_vertex_points(g: &AstNode, textured: bool) -> Result<Vec<u32>, String> {
+    let points = sub_values(g, "coord", "point").unwrap_or_default();
+    let mut msgs = Vec::new();
+    let (faces, opts, texcoords) = ifs_parts(g, textured, &points);
+    // The builder clears faces that index past the points (it keeps them
+    // as empty faces, so corners still line up with this flattening).
+    let corner_points: Vec<u32> = polygons::drop_bad(faces.clone(), points.len())
+        .into_iter()
+        .flatten()
+        .collect();
+    let (mesh, corners) =
+        polygons::build_textured_corners(&points, faces, opts, texcoords, g.pos, &mut msgs)
+            .ok_or("the IndexedFaceSet has no mesh")?;
+    if corners.len() != corner_points.len() {
+        return Err("the mesh's corners do not follow the coordIndex".into());
+    }
+    let mut out = vec![u32::MAX; mesh.positions.len()];
+    for (c, &v) in corners.iter().enumerate() {
+        if let Some(slot) = out.get_mut(v as usize) {
+            if *slot == u32::MAX {
+                *slot = corner_points[c];
+            }
+        }
+    }
+    if out.contains(&u32::MAX) {
+        return Err("a mesh vertex comes from no coordIndex corner".into());
+    }
+    Ok(out)
+}
+
 fn indexed_line_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {
     let positions = sub_values(g, "coord", "point").unwrap_or_default();
     let lines = polygons::drop_bad(split_index(&indices(g, "coordIndex")), positions.len());
