@@ -55,7 +55,10 @@ fn every_encoding_reads_a_skin_over_the_named_joints() {
             .collect();
         assert_eq!(names, ["Root", "Upper"], "{name}");
         assert_eq!(skin.skeleton, s.find_node("Root"), "{name}");
-        assert_eq!(s.node(shape).skin, Some(animed::internals::scene::SkinId(0)));
+        assert_eq!(
+            s.node(shape).skin,
+            Some(animed::internals::scene::SkinId(0))
+        );
         let w = s.meshes[0].skin_weights.as_ref().expect("skin weights");
         assert_eq!(w.len(), s.meshes[0].positions.len(), "{name}");
         assert!(s.is_joint(skin.joints()[1]));
@@ -155,7 +158,8 @@ DEF H HAnimHumanoid {
 
 #[test]
 fn displacers_become_morph_targets_at_their_weight() {
-    let loaded = load_bytes(DISPLACED.as_bytes(), Path::new("d.x3dv")).unwrap_or_else(|e| panic!("{e}"));
+    let loaded =
+        load_bytes(DISPLACED.as_bytes(), Path::new("d.x3dv")).unwrap_or_else(|e| panic!("{e}"));
     assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
     let s = loaded.scene;
     let m = s.meshes[0].morph.as_ref().expect("the displacer's morph");
@@ -169,12 +173,7 @@ fn displacers_become_morph_targets_at_their_weight() {
     let p = evaluate(&s, 0.0);
     let d = p.deformed(shape).expect("morphed");
     // Point 2 moves by weight · displacement = (0, 0, 1); the others stay.
-    let want = [
-        Vec3::ZERO,
-        Vec3::X,
-        Vec3::new(1.0, 1.0, 1.0),
-        Vec3::Y,
-    ];
+    let want = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 1.0), Vec3::Y];
     assert_eq!(d.positions, want);
 }
 
@@ -224,7 +223,9 @@ fn hanim_1_1_corpus_characters_read_as_joint_hierarchies() {
         let skin = &s.skins[0];
         assert_eq!(skin.joints().len(), joints, "{file}");
         let root = skin.skeleton.expect("a skeleton root");
-        let knee = s.find_node(named).unwrap_or_else(|| panic!("{file}: {named}"));
+        let knee = s
+            .find_node(named)
+            .unwrap_or_else(|| panic!("{file}: {named}"));
         assert!(s.is_joint(knee), "{file}");
         // Every joint hangs under the root; the root under no joint.
         for &j in skin.joints() {

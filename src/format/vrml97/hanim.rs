@@ -38,12 +38,8 @@ fn role(n: &AstNode) -> Option<&str> {
         _ if n.proto.is_some() => n.kind.as_str(),
         _ => return None,
     };
-    Some(kind.strip_prefix("HAnim").unwrap_or(kind)).filter(|k| {
-        matches!(
-            *k,
-            "Humanoid" | "Joint" | "Segment" | "Site" | "Displacer"
-        )
-    })
+    Some(kind.strip_prefix("HAnim").unwrap_or(kind))
+        .filter(|k| matches!(*k, "Humanoid" | "Joint" | "Segment" | "Site" | "Displacer"))
 }
 
 /// Every node reachable from `roots` (fields and PROTO bodies), each once,
@@ -134,7 +130,10 @@ fn humanoid(b: &mut Builder, h: &NodeRef) {
         }
     }
     if joints.is_empty() {
-        b.warn(h.pos, "H-Anim humanoid without joints; read as plain groups");
+        b.warn(
+            h.pos,
+            "H-Anim humanoid without joints; read as plain groups",
+        );
         return;
     }
     for (j, id) in &joints {
@@ -367,8 +366,10 @@ fn displacers(b: &mut Builder, owner: &NodeRef, coord: &NodeRef) {
         let moves = d.nums("displacements").unwrap_or(&[]);
         let mut delta = vec![Vec3::ZERO; points];
         for (k, &i) in index.iter().enumerate() {
-            let (Some(m), true) = (moves.get(3 * k..3 * k + 3), i >= 0.0 && (i as usize) < points)
-            else {
+            let (Some(m), true) = (
+                moves.get(3 * k..3 * k + 3),
+                i >= 0.0 && (i as usize) < points,
+            ) else {
                 b.warn_once(
                     "hanim-displacer",
                     d.pos,
