@@ -3,7 +3,8 @@
 //! skinned humanoids (skinCoord + skinCoordIndex/skinCoordWeight) deform by
 //! linear blend skinning, displacers become morph targets. Checked against
 //! rotations worked out by hand, across the three encodings of one file,
-//! and by goldens of the skinned tube bending (160×120, looked at). The same
+//! and by goldens of the skinned tube bending (160×120, looked at); also the
+//! VRML97 NormalInterpolator read as morph normal deltas. The same
 //! tube was compared with view3dscene 4.2 (castle implements H-Anim
 //! skinning): silhouette IoU 1.000 / 0.967 / 0.969 at t = 0 / 0.5 / 1.5.
 
@@ -237,5 +238,55 @@ fn hanim_1_1_corpus_characters_read_as_joint_hierarchies() {
         }
         // Not skinned: the character stays rigid segments (no shape bound).
         assert!(s.nodes.iter().all(|n| n.skin.is_none()), "{file}");
+    }
+}
+
+/// A quad whose points and normals move with one clock and the same keys
+/// (what animed's own VRML97 writer emits for a deforming shape).
+const NORMALS_WRL: &str = "#VRML V2.0 utf8
+DEF T TimeSensor { cycleInterval 2 loop TRUE }
+DEF Quad Shape { appearance Appearance { material Material {} }
+  geometry IndexedFaceSet { coord DEF C Coordinate { point [0 0 0, 1 0 0, 1 1 0, 0 1 0] }
+    normal DEF N Normal { vector [0 0 1, 0 0 1, 0 0 1, 0 0 1] }
+    coordIndex [0 1 2 3 -1] } }
+DEF CI CoordinateInterpolator { key [0, 1]
+  keyValue [0 0 0, 1 0 0, 1 1 0, 0 1 0,  0 0 0, 1 0 0, 1 1 1, 0 1 1] }
+DEF NI NormalInterpolator { key [0, 1]
+  keyValue [0 0 1, 0 0 1, 0 0 1, 0 0 1,  1 0 0, 0 1 0, 0 -1 0, -1 0 0] }
+ROUTE T.fraction_changed TO CI.set_fraction
+ROUTE T.fraction_changed TO NI.set_fraction
+ROUTE CI.value_changed TO C.set_point
+ROUTE NI.value_changed TO N.set_vector
+";
+
+#[test]
+fn normal_interpolator_moving_with_the_points_gives_the_normal_deltas() {
+    let loaded =
+        load_bytes(NORMALS_WRL.as_bytes(), Path::new("n.wrl")).unwrap_or_else(|e| panic!("{e}"));
+    assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+    let s = loaded.scene;
+    let id = s.find_node("Quad").unwrap();
+    let key1 = [
+        Vec3::X,
+        Vec3::Y,
+        Vec3::new(0.0, -1.0, 0.0),
+        Vec3::new(-1.0, 0.0, 0.0),
+    ];
+    // At the keys the file's normals exactly (recomputed ones would be the
+    // sheared quad's face normal); half way, slerp(a, b, ½) = normalize(a + b),
+    // which the blended deltas also give.
+    for (t, want) in [
+        (0.0f32, [Vec3::Z; 4]),
+        (1.999, key1),
+        (1.0, key1.map(|k| (k + Vec3::Z).normalize())),
+    ] {
+        let p = evaluate(&s, t);
+        let d = p.deformed(id).expect("morphed");
+        for (n, w) in d.normals.iter().zip(want) {
+            assert!(
+                (n.normalize() - w).abs().max_element() < 2e-3,
+                "t={t}: {n} vs {w}"
+            );
+        }
     }
 }

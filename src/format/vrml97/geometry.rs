@@ -159,7 +159,16 @@ fn ifs_parts(
 /// vertex from its base point to key i's point, and its normal to the one
 /// the same polygons get at key i (normals are recomputed, as VRML
 /// browsers do when coordinates change, unless the node gives its own).
-pub fn ifs_morph(g: &AstNode, textured: bool, keys: &[Vec<Vec3>]) -> Result<Morphs, String> {
+///
+/// `normal_keys` (a NormalInterpolator moving with the points, one vector
+/// list per key, as many as the Normal's) gives each key its own normals;
+/// without it they are recomputed from the key's points.
+pub fn ifs_morph(
+    g: &AstNode,
+    textured: bool,
+    keys: &[Vec<Vec3>],
+    normal_keys: Option<&[Vec<Vec3>]>,
+) -> Result<Morphs, String> {
     let base_points = sub_values(g, "coord", "point").unwrap_or_default();
     let mut msgs = Vec::new();
     let (faces, opts, texcoords) = ifs_parts(g, textured, &base_points);
@@ -190,10 +199,18 @@ pub fn ifs_morph(g: &AstNode, textured: bool, keys: &[Vec<Vec3>]) -> Result<Morp
                 base_points.len()
             ));
         }
+        let mut key_opts = opts.clone();
+        if let Some(normals) = normal_keys.and_then(|n| n.get(i)) {
+            key_opts.normals = binding(
+                Some(normals.clone()),
+                &indices(g, "normalIndex"),
+                g.bool("normalPerVertex", true),
+            );
+        }
         let (m, kc) = polygons::build_textured_corners(
             points,
             faces.clone(),
-            opts.clone(),
+            key_opts,
             texcoords.clone(),
             g.pos,
             &mut msgs,
