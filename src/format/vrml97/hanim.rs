@@ -344,8 +344,8 @@ fn displacers(b: &mut Builder, owner: &NodeRef, coord: &NodeRef) {
     let list: Vec<NodeRef> = owner
         .nodes("displacers")
         .iter()
-        .map(|d| d.clone())
         .filter(|d| role(d) == Some("Displacer"))
+        .cloned()
         .collect();
     if list.is_empty() {
         return;
