@@ -659,3 +659,58 @@ fn a_track_loops_from_the_key_panel() {
     assert_eq!(ed.scene().animation.track(t).unwrap().repeat, Repeat::Loop);
     assert_eq!(ed.status().text, "Track loops its keys");
 }
+
+// ----- item 7: selection display -----
+
+#[test]
+fn selection_keeps_the_objects_colour_and_handles_shrink_on_small_objects() {
+    let mut ed = Editor::new(Scene::new(), None, 480, 320);
+    let vp = ed.layout().viewport;
+    hover(&mut ed, ((vp.x + 60) as f32, (vp.y + 60) as f32));
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    key(&mut ed, Key::Char('b'), Mods::NONE);
+    let b = ed.selection().expect("Box1 selected");
+    key(&mut ed, Key::Num(1), Mods::NONE);
+    let c = ed.camera().target;
+    let arrow = |ed: &mut Editor| {
+        let p = ed.handle_points().expect("move handles");
+        ((p[1].0 - p[0].0).powi(2) + (p[1].1 - p[0].1).powi(2)).sqrt()
+    };
+    // A unit box seen from 10 units is ~33 px wide, so the arrows shrink
+    // from their 70 px to 2.5 box radii (never under half).
+    let small = arrow(&mut ed);
+    assert!((35.0..=50.0).contains(&small), "small object: {small} px");
+    // The box's lower-left quadrant (clear of the handles) keeps its own
+    // grey: the tint moves each channel by at most an eighth.
+    let at = ed.pixel_of(c + glam::Vec3::new(-0.3, -0.3, 0.5)).unwrap();
+    let sel = ed.render_frame();
+    golden::check("editor_selected_small", &sel);
+    ed.select(None);
+    let plain = ed.render_frame();
+    let i = at.1 as usize * sel.width as usize + at.0 as usize;
+    let ch = |c: u32, s: u32| ((c >> s) & 255) as i32;
+    for s in [16, 8, 0] {
+        let d = (ch(sel.color[i], s) - ch(plain.color[i], s)).abs();
+        assert!(
+            d <= 33,
+            "channel {s}: {:06x} vs {:06x}",
+            sel.color[i],
+            plain.color[i]
+        );
+    }
+    assert_ne!(plain.color[i], 0, "the probe is on the box");
+    // The outline runs outside the box's left edge.
+    let edge = ed.pixel_of(c + glam::Vec3::new(-0.5, -0.2, 0.5)).unwrap();
+    let row = edge.1 as usize * sel.width as usize;
+    let x0 = edge.0 as usize;
+    assert!(
+        (x0.saturating_sub(3)..x0 + 1)
+            .any(|x| sel.color[row + x] == 0xff9a1f && plain.color[row + x] != sel.color[row + x]),
+        "an orange outline left of the box"
+    );
+    // Framed, the box is big on screen and the handles are full size.
+    ed.select(Some(b));
+    key(&mut ed, Key::Char('f'), Mods::NONE);
+    let big = arrow(&mut ed);
+    assert!((big - 70.0).abs() < 1.0, "big object: {big} px");
+}
