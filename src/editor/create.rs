@@ -332,7 +332,7 @@ mod tests {
         pt.rotation = Quat::from_rotation_y(0.7);
         pt.scale = Vec3::splat(2.0);
         let p = s.add_node(None, Node::new("P", NodeKind::Group));
-        s.nodes[p.0 as usize].transform = pt.clone();
+        s.nodes[p.0 as usize].transform = pt;
         let b = s.add_node(None, Node::new("B", NodeKind::Group));
         s.nodes[b.0 as usize].transform.translation = Vec3::new(1.0, 2.0, 3.0);
         s.nodes[b.0 as usize].transform.rotation = Quat::from_rotation_x(0.3);
