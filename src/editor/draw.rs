@@ -28,6 +28,7 @@ impl Editor {
         p.begin(frame);
         self.draw_viewport_overlay(&mut p);
         self.draw_motion_path(&mut p);
+        self.draw_bones(&mut p);
         self.draw_handles(&mut p);
         self.draw_viewport_labels(&mut p, &l);
         self.draw_timeline(&mut p, &l);

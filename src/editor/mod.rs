@@ -37,6 +37,7 @@ pub mod ops;
 pub mod panel;
 pub mod record;
 pub mod recovery;
+pub mod rig;
 mod route;
 mod screen;
 pub mod script;
