@@ -26,6 +26,8 @@ pub enum FieldId {
     LightCutOff,
     /// A parameter of the selected keys (the key panel, `keyprops.rs`).
     Key(KeyField),
+    /// Morph target weight i of the selection (`rig/morph.rs`).
+    Morph(u8),
 }
 
 /// A field's value.
@@ -99,6 +101,7 @@ impl FieldId {
             FieldId::LightIntensity => "Intensity".into(),
             FieldId::LightCutOff => "Cut-off angle".into(),
             FieldId::Key(k) => format!("Key {k:?}"),
+            FieldId::Morph(i) => format!("Weight {i}"),
             other => format!("{other:?}"),
         }
     }
@@ -108,7 +111,7 @@ impl FieldId {
         match self {
             FieldId::Fps | FieldId::Duration | FieldId::Frame => 0.25,
             FieldId::Rotation(_) | FieldId::LightCutOff => 0.5,
-            FieldId::LightColor(_) | FieldId::LightDirection(_) => 0.005,
+            FieldId::LightColor(_) | FieldId::LightDirection(_) | FieldId::Morph(_) => 0.005,
             FieldId::LightIntensity | FieldId::Scale(_) => 0.01,
             _ => 0.02,
         }

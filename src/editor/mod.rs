@@ -200,6 +200,8 @@ pub struct Editor {
     autosave: recovery::Autosave,
     layer: SceneLayer,
     painter: Painter,
+    /// Skeleton, IK, morph and clip tools' state (`rig/`).
+    rig: rig::RigState,
 }
 
 impl Editor {
@@ -255,6 +257,7 @@ impl Editor {
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
             },
             painter: Painter::new(),
+            rig: rig::RigState::default(),
         };
         e.frame_all();
         e

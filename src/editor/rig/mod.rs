@@ -11,3 +11,11 @@
 
 pub mod bones;
 mod view;
+pub mod morph;
+
+/// The rig tools' own state, one field of the `Editor`.
+#[derive(Clone, Debug, Default)]
+pub struct RigState {
+    /// A morph slider change shown but not recorded (`morph.rs`).
+    pub morph_pending: Option<morph::MorphPending>,
+}

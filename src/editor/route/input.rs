@@ -427,6 +427,9 @@ impl Editor {
         if let FieldId::Key(_) = id {
             return self.key_field_base().map(|(a, k)| Base::Keys(a, k));
         }
+        if let FieldId::Morph(_) = id {
+            return self.morph_base().map(|b| Base::Morph(Box::new(b)));
+        }
         let sel = self.selection?;
         // Fields edit what is shown: animated values at the current frame.
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
@@ -442,6 +445,7 @@ impl Editor {
             Base::Settings(s) => id.read_settings(s),
             Base::Node(_, n) => id.read_node(n),
             Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
+            Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
         }
     }
 
@@ -454,7 +458,7 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_) | Base::Keys(..) => None,
+            Base::Frame(_) | Base::Keys(..) | Base::Morph(_) => None,
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -488,6 +492,10 @@ impl Editor {
             self.frame = v.round().min(self.scene.settings.duration);
             return;
         }
+        if let Base::Morph(b) = base {
+            self.drag_morph(id, b, v);
+            return;
+        }
         if let Some(c) = self.field_command(id, base, &FieldValue::Number(v)) {
             // Preview from the base state: the command's `after` is absolute.
             self.preview(&c);
@@ -499,6 +507,13 @@ impl Editor {
         match base {
             Base::Frame(_) => {}
             Base::Keys(before, _) => self.finish_key_field_drag(id, before),
+            Base::Morph(b) => {
+                let v = self.morph_pending().map(|p| p.weights);
+                let v = v.and_then(|w| Self::morph_value(id, &crate::editor::rig::morph::MorphBase { start: w, ..(*b).clone() }));
+                if let Some(v) = v {
+                    self.set_morph(id, &b, v);
+                }
+            }
             Base::Settings(before) => {
                 let after = self.scene.settings.clone();
                 self.push_applied(&label, Command::SetSettings { before, after });
@@ -538,6 +553,12 @@ impl Editor {
         };
         if let (FieldId::Key(_), FieldValue::Number(x)) = (edit.field, &value) {
             self.commit_key_field(edit.field, *x);
+            return;
+        }
+        if let (FieldId::Morph(_), FieldValue::Number(x)) = (edit.field, &value) {
+            if let Some(b) = self.morph_base() {
+                self.set_morph(edit.field, &b, *x);
+            }
             return;
         }
         if edit.field == FieldId::Frame {
@@ -669,6 +690,10 @@ impl Editor {
             match base {
                 Base::Frame(f) => self.frame = f,
                 Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
+                Base::Morph(_) => {
+                    self.rig.morph_pending = None;
+                    self.scene_rev += 1;
+                }
                 Base::Settings(s) => {
                     self.scene.settings = s;
                     self.scene_rev += 1;

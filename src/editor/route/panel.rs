@@ -21,7 +21,7 @@ impl Editor {
                 LightKind::Point => 5,
                 LightKind::Spot { .. } => 7,
             },
-            Some(_) => 5,
+            Some(_) => 5 + self.morph_rows() as i32,
         }
     }
 
@@ -356,6 +356,9 @@ impl Editor {
                     ));
                 });
             }
+        }
+        for i in 0..self.morph_rows() {
+            row(out, &|o, r| self.morph_row(i as u8, r, o));
         }
         for i in 0..self.key_list_lines().len() {
             row(out, &|o, r| self.key_list_row(i, r, o));
