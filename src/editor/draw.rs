@@ -188,6 +188,9 @@ impl Editor {
         if let FieldId::Key(k) = id {
             return self.key_field_text(k, max_chars);
         }
+        if id == FieldId::ClipName {
+            return self.clip_name();
+        }
         if let FieldId::Morph(i) = id {
             let v = self.morph_text(i);
             return v.map_or(String::new(), |x| super::fields::format_fit(x, max_chars));

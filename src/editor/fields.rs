@@ -28,6 +28,8 @@ pub enum FieldId {
     Key(KeyField),
     /// Morph target weight i of the selection (`rig/morph.rs`).
     Morph(u8),
+    /// The playing clip's name (`rig/clips.rs`).
+    ClipName,
 }
 
 /// A field's value.
@@ -84,7 +86,7 @@ impl FieldId {
     }
 
     pub fn is_text(self) -> bool {
-        self == FieldId::Name
+        matches!(self, FieldId::Name | FieldId::ClipName)
     }
 
     /// The field's name in messages ("Fps", "Translation x", "Color g").
@@ -102,6 +104,7 @@ impl FieldId {
             FieldId::LightCutOff => "Cut-off angle".into(),
             FieldId::Key(k) => format!("Key {k:?}"),
             FieldId::Morph(i) => format!("Weight {i}"),
+            FieldId::ClipName => "Clip name".into(),
             other => format!("{other:?}"),
         }
     }

@@ -59,6 +59,8 @@ pub(super) enum Base {
     Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
     /// A morph slider (`rig/morph.rs`).
     Morph(Box<super::rig::morph::MorphBase>),
+    /// The clip name field (`rig/clips.rs`): typed, never dragged.
+    Clip,
 }
 
 /// Pixels the mouse may move before a press counts as a drag.

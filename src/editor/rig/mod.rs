@@ -10,8 +10,9 @@
 //! methods, like `route/`.
 
 pub mod bones;
-mod view;
+pub mod clips;
 pub mod morph;
+mod view;
 
 /// The rig tools' own state, one field of the `Editor`.
 #[derive(Clone, Debug, Default)]

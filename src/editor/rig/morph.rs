@@ -14,8 +14,8 @@
 use crate::anim::{Animation, Property, Target, TargetRef, Value, Weights};
 use crate::editor::command::Command;
 use crate::editor::fields::FieldId;
-use crate::editor::Editor;
 use crate::editor::panel::{self, Widget};
+use crate::editor::Editor;
 use crate::scene::{MeshId, Morphs, NodeId, NodeKind, Scene};
 use crate::ui::text::CHAR_W;
 use crate::ui::{theme, Painter, Rect};
@@ -137,7 +137,9 @@ impl Editor {
         }
         // The cached pose when it is current (drawing refreshes it first).
         let w = match &self.pose {
-            Some((r, f, pose)) if *r == self.scene_rev && *f == self.frame => *pose.weights(shape)?,
+            Some((r, f, pose)) if *r == self.scene_rev && *f == self.frame => {
+                *pose.weights(shape)?
+            }
             _ => {
                 let t = self.frame / self.scene.settings.fps.max(1e-6);
                 *self.evaluate_shown(t).weights(shape)?
@@ -186,7 +188,12 @@ impl Editor {
     }
 
     /// Live drag: shows the weights with slider `id` at `v`.
-    pub(in crate::internals::editor) fn drag_morph(&mut self, id: FieldId, base: &MorphBase, v: f32) {
+    pub(in crate::internals::editor) fn drag_morph(
+        &mut self,
+        id: FieldId,
+        base: &MorphBase,
+        v: f32,
+    ) {
         let FieldId::Morph(i) = id else { return };
         let mut w = base.start;
         if let Some(x) = w.as_mut_slice().get_mut(i as usize) {
@@ -197,7 +204,12 @@ impl Editor {
 
     /// Typed value or end of a drag: records the change as the module doc
     /// says. `v` is the slider's new value.
-    pub(in crate::internals::editor) fn set_morph(&mut self, id: FieldId, base: &MorphBase, v: f32) {
+    pub(in crate::internals::editor) fn set_morph(
+        &mut self,
+        id: FieldId,
+        base: &MorphBase,
+        v: f32,
+    ) {
         let FieldId::Morph(i) = id else { return };
         if !v.is_finite() {
             self.set_status("A morph weight must be a finite number", true);
@@ -222,7 +234,10 @@ impl Editor {
             self.key_weights(base.target, w, &format!("Key {node}.weights ({what})"));
         } else if animated {
             self.show_morph(base.target, base.shape, w);
-            self.set_status("Pending: K keys the morph weights, new frame drops them", false);
+            self.set_status(
+                "Pending: K keys the morph weights, new frame drops them",
+                false,
+            );
         } else if let Some(after) = with_defaults(&self.scene, base.shape, &w) {
             let before = Box::new(self.scene.clone());
             self.execute(
@@ -233,7 +248,10 @@ impl Editor {
                 },
             );
             let f = crate::editor::fields::format_number(v);
-            self.set_status(&format!("{node}: {what} = {f} (not animated; Rec or K keys it)"), false);
+            self.set_status(
+                &format!("{node}: {what} = {f} (not animated; Rec or K keys it)"),
+                false,
+            );
         }
     }
 
@@ -342,7 +360,11 @@ mod tests {
         let w = Weights::from_slice(&[0.75]).unwrap();
         let d = with_defaults(&s, sh, &w).unwrap();
         let (m, _) = morph_mesh(&d, sh).unwrap();
-        let got = d.meshes[m.0 as usize].morph.as_ref().unwrap().default_weights();
+        let got = d.meshes[m.0 as usize]
+            .morph
+            .as_ref()
+            .unwrap()
+            .default_weights();
         assert_eq!(got, [0.75]);
     }
 }

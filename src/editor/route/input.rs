@@ -430,6 +430,9 @@ impl Editor {
         if let FieldId::Morph(_) = id {
             return self.morph_base().map(|b| Base::Morph(Box::new(b)));
         }
+        if id == FieldId::ClipName {
+            return Some(Base::Clip);
+        }
         let sel = self.selection?;
         // Fields edit what is shown: animated values at the current frame.
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
@@ -446,6 +449,7 @@ impl Editor {
             Base::Node(_, n) => id.read_node(n),
             Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
             Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
+            Base::Clip => Some(FieldValue::Text(self.clip_name())),
         }
     }
 
@@ -458,7 +462,7 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_) | Base::Keys(..) | Base::Morph(_) => None,
+            Base::Frame(_) | Base::Keys(..) | Base::Morph(_) | Base::Clip => None,
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -505,11 +509,19 @@ impl Editor {
     pub(in crate::internals::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
         let label = format!("Drag {id:?}");
         match base {
-            Base::Frame(_) => {}
+            Base::Frame(_) | Base::Clip => {}
             Base::Keys(before, _) => self.finish_key_field_drag(id, before),
             Base::Morph(b) => {
                 let v = self.morph_pending().map(|p| p.weights);
-                let v = v.and_then(|w| Self::morph_value(id, &crate::editor::rig::morph::MorphBase { start: w, ..(*b).clone() }));
+                let v = v.and_then(|w| {
+                    Self::morph_value(
+                        id,
+                        &crate::editor::rig::morph::MorphBase {
+                            start: w,
+                            ..(*b).clone()
+                        },
+                    )
+                });
                 if let Some(v) = v {
                     self.set_morph(id, &b, v);
                 }
@@ -553,6 +565,10 @@ impl Editor {
         };
         if let (FieldId::Key(_), FieldValue::Number(x)) = (edit.field, &value) {
             self.commit_key_field(edit.field, *x);
+            return;
+        }
+        if let (FieldId::ClipName, FieldValue::Text(t)) = (edit.field, &value) {
+            self.rename_clip(t);
             return;
         }
         if let (FieldId::Morph(_), FieldValue::Number(x)) = (edit.field, &value) {
@@ -690,6 +706,7 @@ impl Editor {
             match base {
                 Base::Frame(f) => self.frame = f,
                 Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
+                Base::Clip => {}
                 Base::Morph(_) => {
                     self.rig.morph_pending = None;
                     self.scene_rev += 1;
@@ -730,6 +747,10 @@ impl Editor {
                 self.open_add_menu(x as i32, y as i32);
             }
             (Key::Char('d'), false, true) => self.run_action(Action::Duplicate),
+            (Key::Char('c'), false, false) => {
+                let (x, y) = self.mouse;
+                self.open_clip_menu(x as i32, y as i32);
+            }
             (Key::Num(n), ctrl, _) => {
                 if let Some(v) = crate::editor::views::ViewCmd::from_numpad(n, ctrl) {
                     self.view_command(v);
@@ -786,6 +807,7 @@ impl Editor {
             return;
         }
         match a {
+            Action::Clip(c) => self.clip_action(c),
             Action::New => self.ask_unsaved(After::New),
             Action::Open => self.ask_unsaved(After::Open),
             Action::Import => self.browse(Purpose::Import, None),

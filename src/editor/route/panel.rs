@@ -141,6 +141,7 @@ impl Editor {
     pub(in crate::internals::editor) fn scene_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         let (h, rest) = r.take_top(ROW);
         out.push(w(h, WidgetKind::Header("Scene".into())));
+        self.clip_widgets(h, out);
         let row = Rect::new(rest.x + 2, rest.y + 1, rest.w - 4, ROW);
         let half = row.w / 2;
         let (a, b) = row.take_left(half);
