@@ -11,6 +11,7 @@
 
 pub mod bones;
 pub mod clips;
+pub mod ik;
 pub mod morph;
 mod view;
 
@@ -19,4 +20,27 @@ mod view;
 pub struct RigState {
     /// A morph slider change shown but not recorded (`morph.rs`).
     pub morph_pending: Option<morph::MorphPending>,
+    /// The end joint whose IK handle is on (I).
+    pub ik: Option<crate::scene::NodeId>,
+    /// An IK drag in progress.
+    pub ik_drag: Option<ik::IkDrag>,
+    /// An IK pose shown but not recorded.
+    pub ik_pending: Option<ik::IkPending>,
+}
+
+impl crate::editor::Editor {
+    /// The scene as shown while a morph or IK change is pending (their
+    /// tracks set aside, the shown values in place); `None` when nothing
+    /// pends (`route/record.rs::evaluate_shown`).
+    pub(in crate::internals::editor) fn rig_shown_scene(&self) -> Option<crate::scene::Scene> {
+        let mut s = match self.morph_shown_scene() {
+            Some(s) => s,
+            None => {
+                self.ik_pending()?;
+                self.scene.clone()
+            }
+        };
+        self.ik_shown(&mut s);
+        Some(s)
+    }
 }

@@ -54,6 +54,7 @@ impl Editor {
             }
         }
         p.set_clip(None);
+        self.draw_ik(p, vp);
     }
 
     /// Where joint `id`'s ball is drawn in the window, if it shows (tests
@@ -62,6 +63,11 @@ impl Editor {
         let bones = self.shown_bones();
         let b = bones.iter().find(|b| b.joint == id)?;
         self.projector().point(b.head)
+    }
+
+    /// Where world point `p` shows in the window (tests aim drags with it).
+    pub fn world_on_screen(&mut self, p: glam::Vec3) -> Option<(f32, f32)> {
+        self.projector().point(p)
     }
 
     /// The joint whose ball or bone is under (x, y), if a skeleton shows.

@@ -115,6 +115,9 @@ impl Editor {
                 return redraw;
             }
         }
+        if let Some(redraw) = self.ik_move(x, y) {
+            return redraw;
+        }
         if let Some(redraw) = self.handles_move(x, y, mods) {
             return redraw;
         }
@@ -236,7 +239,7 @@ impl Editor {
         if l.viewport.contains(x, y) {
             self.commit_edit();
             let grab = button == MouseButton::Left && !mods.alt && self.mode == Mode::Select;
-            if grab && self.handles_press(x, y) {
+            if grab && (self.ik_press(x, y) || self.handles_press(x, y)) {
                 return;
             }
             self.drag = match (button, self.mode) {
@@ -317,7 +320,7 @@ impl Editor {
             self.graph_event(&Event::MouseUp { button, x, y, mods });
             return;
         }
-        if self.handles_release() || self.key_strip_release() {
+        if self.ik_release() || self.handles_release() || self.key_strip_release() {
             return;
         }
         match std::mem::take(&mut self.drag) {
@@ -747,6 +750,7 @@ impl Editor {
                 self.open_add_menu(x as i32, y as i32);
             }
             (Key::Char('d'), false, true) => self.run_action(Action::Duplicate),
+            (Key::Char('i'), false, false) => self.toggle_ik(),
             (Key::Char('c'), false, false) => {
                 let (x, y) = self.mouse;
                 self.open_clip_menu(x as i32, y as i32);
