@@ -213,7 +213,7 @@ mod tests {
         let mut n = Node::group("Hand");
         n.transform = Transform::from_translation(Vec3::Y);
         let c = s.add_node(Some(b), n);
-        let skin = Skin::new("Arm".into(), vec![a, b, c], Vec::new()).unwrap();
+        let skin = Skin::new("Arm", vec![a, b, c], Vec::new()).unwrap();
         s.add_skin(skin).unwrap();
         (s, [body, a, b, c])
     }

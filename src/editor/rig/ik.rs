@@ -295,7 +295,7 @@ impl Editor {
                 property: Property::Rotation,
             });
             if let Some(slot) = scene.nodes.get_mut(id.0 as usize) {
-                slot.transform = node.transform.clone();
+                slot.transform = node.transform;
             }
         }
         true
@@ -340,8 +340,9 @@ mod tests {
         let turn = Quat::from_rotation_z(0.3);
         let local = turned_local(parent, turn, Quat::IDENTITY);
         let want = Quat::from_rotation_x(-0.3);
-        assert!(local.angle_between(want) < 1e-5, "{local:?}");
+        // (angle_between is an acos: about 3e-4 of noise near zero.)
+        assert!(local.angle_between(want) < 1e-3, "{local:?}");
         // And back: parent · local = turn · parent.
-        assert!((parent * local).angle_between(turn * parent) < 1e-5);
+        assert!((parent * local).angle_between(turn * parent) < 1e-3);
     }
 }

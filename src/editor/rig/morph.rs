@@ -334,8 +334,10 @@ mod tests {
 
     fn morphed() -> (Scene, NodeId, NodeId) {
         let mut s = Scene::new();
-        let mut mesh = Mesh::default();
-        mesh.positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y];
+        let mut mesh = Mesh {
+            positions: vec![Vec3::ZERO, Vec3::X, Vec3::Y],
+            ..Mesh::default()
+        };
         let t = MorphTarget::new("smile", vec![Vec3::Z; 3], Vec::new());
         mesh.morph = Some(Box::new(Morphs::new(3, vec![t], vec![0.25]).unwrap()));
         let mesh = s.add_mesh(mesh);
