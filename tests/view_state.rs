@@ -186,3 +186,101 @@ fn without_a_display_view_says_so_and_fails() {
     assert!(err.contains("animed render"), "{err}");
     assert!(!err.contains("panicked"), "{err}");
 }
+
+/// The clip key (issue 13 item 3): C / Shift+C cycle the file's clips,
+/// the clock takes the clip's length and the corner names the clip.
+mod clips {
+    use super::*;
+    use animed::internals::anim::{Animation, Key as AKey, Keys, Property, Repeat};
+    use animed::internals::anim::{Target, TargetRef, Track};
+    use animed::internals::scene::{Clip, Node, Scene};
+    use glam::Vec3;
+
+    fn three_clips() -> Viewer {
+        let mut s = Scene::new();
+        let n = s.add_node(None, Node::group("Ball"));
+        let clips = ["Walk", "Run", "Idle"]
+            .iter()
+            .enumerate()
+            .map(|(i, name)| {
+                let keys = Keys::Vec3(vec![
+                    AKey::new(0.0, Vec3::ZERO),
+                    AKey::new(5.0 * (i + 1) as f32, Vec3::X),
+                ]);
+                let target = Target {
+                    of: TargetRef::Node(n),
+                    property: Property::Translation,
+                };
+                Clip {
+                    name: name.to_string(),
+                    animation: Animation {
+                        tracks: vec![Track::new(target, Repeat::Constant, keys).unwrap()],
+                    },
+                    duration: 10.0 * (i + 1) as f32,
+                }
+            })
+            .collect();
+        s.set_clips(clips, 0);
+        s.settings.fps = 10.0;
+        let opts = ViewerOptions {
+            width: 320,
+            height: 240,
+            ..ViewerOptions::default()
+        };
+        Viewer::new(s, &opts).expect("viewer")
+    }
+
+    fn shift_c(v: &mut Viewer) -> bool {
+        v.handle(Event::KeyDown {
+            key: Key::Char('c'),
+            mods: Mods {
+                shift: true,
+                ..Mods::NONE
+            },
+        })
+    }
+
+    #[test]
+    fn c_cycles_clips_and_the_clock_follows() {
+        let mut v = three_clips();
+        assert_eq!(v.clip_label().as_deref(), Some("Walk (1/3)"));
+        assert_eq!(v.clock().length(), 10);
+        assert_eq!(v.key_times(), &[0.0, 0.5]);
+        assert!(key(&mut v, Key::Char('c')));
+        assert_eq!(v.clip_label().as_deref(), Some("Run (2/3)"));
+        assert_eq!(
+            v.clock().length(),
+            20,
+            "the clock plays the new clip's length"
+        );
+        assert_eq!(v.key_times(), &[0.0, 1.0], "key marks of the new clip");
+        assert_eq!(v.clock().frame(), 0);
+        key(&mut v, Key::Char('c'));
+        key(&mut v, Key::Char('c'));
+        assert_eq!(v.clip_label().as_deref(), Some("Walk (1/3)"), "wraps");
+        assert!(shift_c(&mut v));
+        assert_eq!(v.clip_label().as_deref(), Some("Idle (3/3)"));
+        // Paused stays paused.
+        key(&mut v, Key::Space);
+        key(&mut v, Key::Char('c'));
+        assert!(!v.clock().is_playing());
+        // The name is drawn in the corner (text pixels in the top rows).
+        let mut frame = Frame::new(1, 1, glam::Vec3::ZERO);
+        v.draw(&mut frame);
+        // The scene is one empty group on black: bright pixels are text.
+        let lit = frame.color[..20 * 320]
+            .iter()
+            .filter(|&&c| (c >> 16) & 0xff > 0x80)
+            .count();
+        assert!(lit > 100, "{lit} text pixels at the top");
+    }
+
+    #[test]
+    fn a_scene_without_named_clips_ignores_c() {
+        let mut v = demo();
+        assert_eq!(v.clip_label(), None);
+        assert!(!key(&mut v, Key::Char('c')));
+        let mut frame = Frame::new(1, 1, glam::Vec3::ZERO);
+        v.draw(&mut frame);
+    }
+}

@@ -18,6 +18,7 @@ mod deform;
 pub mod ease;
 mod edit;
 pub mod hermite;
+pub mod ik;
 mod key;
 mod numbers;
 mod pose;

@@ -28,6 +28,7 @@ impl Editor {
         p.begin(frame);
         self.draw_viewport_overlay(&mut p);
         self.draw_motion_path(&mut p);
+        self.draw_bones(&mut p);
         self.draw_handles(&mut p);
         self.draw_viewport_labels(&mut p, &l);
         self.draw_timeline(&mut p, &l);
@@ -162,6 +163,9 @@ impl Editor {
                     None => self.field_text(*id, text::fit_chars(w.rect.w - 5)),
                 };
                 widgets::field(p, w.rect, &text, hot, editing.is_some());
+                if let super::fields::FieldId::Morph(i) = id {
+                    self.draw_morph_bar(p, w.rect, *i);
+                }
             }
             WidgetKind::Row { node, depth, list } => {
                 let label = ops::display_name(&self.scene, *node);
@@ -183,6 +187,13 @@ impl Editor {
         use super::fields::FieldId;
         if let FieldId::Key(k) = id {
             return self.key_field_text(k, max_chars);
+        }
+        if id == FieldId::ClipName {
+            return self.clip_name();
+        }
+        if let FieldId::Morph(i) = id {
+            let v = self.morph_text(i);
+            return v.map_or(String::new(), |x| super::fields::format_fit(x, max_chars));
         }
         let v = if id == FieldId::Frame {
             Some(FieldValue::Number(self.frame))

@@ -26,6 +26,10 @@ pub enum FieldId {
     LightCutOff,
     /// A parameter of the selected keys (the key panel, `keyprops.rs`).
     Key(KeyField),
+    /// Morph target weight i of the selection (`rig/morph.rs`).
+    Morph(u8),
+    /// The playing clip's name (`rig/clips.rs`).
+    ClipName,
 }
 
 /// A field's value.
@@ -82,7 +86,7 @@ impl FieldId {
     }
 
     pub fn is_text(self) -> bool {
-        self == FieldId::Name
+        matches!(self, FieldId::Name | FieldId::ClipName)
     }
 
     /// The field's name in messages ("Fps", "Translation x", "Color g").
@@ -99,6 +103,8 @@ impl FieldId {
             FieldId::LightIntensity => "Intensity".into(),
             FieldId::LightCutOff => "Cut-off angle".into(),
             FieldId::Key(k) => format!("Key {k:?}"),
+            FieldId::Morph(i) => format!("Weight {i}"),
+            FieldId::ClipName => "Clip name".into(),
             other => format!("{other:?}"),
         }
     }
@@ -108,7 +114,7 @@ impl FieldId {
         match self {
             FieldId::Fps | FieldId::Duration | FieldId::Frame => 0.25,
             FieldId::Rotation(_) | FieldId::LightCutOff => 0.5,
-            FieldId::LightColor(_) | FieldId::LightDirection(_) => 0.005,
+            FieldId::LightColor(_) | FieldId::LightDirection(_) | FieldId::Morph(_) => 0.005,
             FieldId::LightIntensity | FieldId::Scale(_) => 0.01,
             _ => 0.02,
         }

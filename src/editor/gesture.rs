@@ -65,6 +65,10 @@ pub(super) enum Base {
     Frame(f32),
     /// A key panel field: the animation and selected keys at press.
     Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
+    /// A morph slider (`rig/morph.rs`).
+    Morph(Box<super::rig::morph::MorphBase>),
+    /// The clip name field (`rig/clips.rs`): typed, never dragged.
+    Clip,
 }
 
 /// Pixels the mouse may move before a press counts as a drag.

@@ -37,6 +37,7 @@ pub mod ops;
 pub mod panel;
 pub mod record;
 pub mod recovery;
+pub mod rig;
 mod route;
 mod screen;
 pub mod script;
@@ -202,6 +203,8 @@ pub struct Editor {
     autosave: recovery::Autosave,
     layer: SceneLayer,
     painter: Painter,
+    /// Skeleton, IK, morph and clip tools' state (`rig/`).
+    rig: rig::RigState,
 }
 
 impl Editor {
@@ -258,6 +261,7 @@ impl Editor {
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
             },
             painter: Painter::new(),
+            rig: rig::RigState::default(),
         };
         e.frame_all();
         e

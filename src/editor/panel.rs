@@ -54,6 +54,8 @@ pub enum Action {
     BrowserUp,
     /// Key panel buttons (`keyprops.rs`).
     Key(super::keyprops::KeyAction),
+    /// Clip buttons and menu items (`rig/clips.rs`).
+    Clip(super::rig::clips::ClipAction),
 }
 
 /// Which list a row belongs to.

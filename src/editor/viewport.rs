@@ -262,6 +262,10 @@ impl Editor {
         if let Some((_, id)) = best {
             return Some(id);
         }
+        // The active skeleton's joints (`rig/view.rs`) before the meshes.
+        if let Some(j) = self.pick_joint(x, y) {
+            return Some(j);
+        }
         self.update_layer();
         let lf = &self.layer.frame;
         let (lx, ly) = ((x as i32 - vp.x), (y as i32 - vp.y));

@@ -72,6 +72,7 @@ impl Viewer {
         if self.show_stats {
             self.draw_stats(&mut p);
         }
+        self.draw_clip_name(&mut p);
         p.end(frame);
         self.painter = p;
     }

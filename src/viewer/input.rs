@@ -55,6 +55,9 @@ impl Viewer {
             Key::PageUp => self.cycle_viewpoint(-1),
             Key::Home => self.eye = self.fixed_eye(),
             Key::Char('h') => self.headlight = !self.headlight,
+            Key::Char('c') if !mods.ctrl => {
+                return self.cycle_clip(if mods.shift { -1 } else { 1 })
+            }
             Key::Char('s') if !mods.ctrl => self.show_stats = !self.show_stats,
             Key::Escape | Key::Char('q') => self.quit = true,
             _ => return false,

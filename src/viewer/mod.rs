@@ -8,6 +8,7 @@
 //! its own is the playback [`clock::Clock`] (real time, dropping frames,
 //! looping), the viewpoint cycle and the scrub bar.
 
+mod clips;
 pub mod clock;
 mod draw;
 mod eye;
@@ -132,16 +133,7 @@ impl Viewer {
             None => Eye::ViewAll,
         };
         let fps = scene.settings.fps;
-        let mut key_times: Vec<f32> = scene
-            .animation
-            .tracks
-            .iter()
-            .flat_map(|t| t.keys.frames())
-            .map(|f| f / fps.max(1e-6))
-            .filter(|t| t.is_finite())
-            .collect();
-        key_times.sort_by(f32::total_cmp);
-        key_times.dedup();
+        let key_times = clips::key_times(&scene);
         Ok(Viewer {
             clock: Clock::new(fps, scene.settings.duration),
             headlight: opts.headlight.resolve(&scene),

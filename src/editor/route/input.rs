@@ -114,6 +114,9 @@ impl Editor {
                 return redraw;
             }
         }
+        if let Some(redraw) = self.ik_move(x, y) {
+            return redraw;
+        }
         if let Some(redraw) = self.handles_move(x, y, mods) {
             return redraw;
         }
@@ -248,7 +251,7 @@ impl Editor {
         if l.viewport.contains(x, y) {
             self.commit_edit();
             let grab = button == MouseButton::Left && !mods.alt && self.mode == Mode::Select;
-            if grab && self.handles_press(x, y) {
+            if grab && (self.ik_press(x, y) || self.handles_press(x, y)) {
                 return;
             }
             self.drag = match (button, self.mode) {
@@ -341,7 +344,7 @@ impl Editor {
             self.graph_event(&Event::MouseUp { button, x, y, mods });
             return;
         }
-        if self.handles_release() || self.key_strip_release() {
+        if self.ik_release() || self.handles_release() || self.key_strip_release() {
             return;
         }
         match std::mem::take(&mut self.drag) {
@@ -461,6 +464,12 @@ impl Editor {
         if let FieldId::Key(_) = id {
             return self.key_field_base().map(|(a, k)| Base::Keys(a, k));
         }
+        if let FieldId::Morph(_) = id {
+            return self.morph_base().map(|b| Base::Morph(Box::new(b)));
+        }
+        if id == FieldId::ClipName {
+            return Some(Base::Clip);
+        }
         let sel = self.selection?;
         // Fields edit what is shown: animated values at the current frame.
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
@@ -476,6 +485,8 @@ impl Editor {
             Base::Settings(s) => id.read_settings(s),
             Base::Node(_, n) => id.read_node(n),
             Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
+            Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
+            Base::Clip => Some(FieldValue::Text(self.clip_name())),
         }
     }
 
@@ -488,7 +499,7 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_) | Base::Keys(..) => None,
+            Base::Frame(_) | Base::Keys(..) | Base::Morph(_) | Base::Clip => None,
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -522,6 +533,10 @@ impl Editor {
             self.frame = v.round().min(self.scene.settings.duration);
             return;
         }
+        if let Base::Morph(b) = base {
+            self.drag_morph(id, b, v);
+            return;
+        }
         if let Some(c) = self.field_command(id, base, &FieldValue::Number(v)) {
             // Preview from the base state: the command's `after` is absolute.
             self.preview(&c);
@@ -531,8 +546,23 @@ impl Editor {
     pub(in crate::internals::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
         let label = format!("Drag {id:?}");
         match base {
-            Base::Frame(_) => {}
+            Base::Frame(_) | Base::Clip => {}
             Base::Keys(before, _) => self.finish_key_field_drag(id, before),
+            Base::Morph(b) => {
+                let v = self.morph_pending().map(|p| p.weights);
+                let v = v.and_then(|w| {
+                    Self::morph_value(
+                        id,
+                        &crate::editor::rig::morph::MorphBase {
+                            start: w,
+                            ..(*b).clone()
+                        },
+                    )
+                });
+                if let Some(v) = v {
+                    self.set_morph(id, &b, v);
+                }
+            }
             Base::Settings(before) => {
                 let after = self.scene.settings.clone();
                 self.push_applied(&label, Command::SetSettings { before, after });
@@ -572,6 +602,16 @@ impl Editor {
         };
         if let (FieldId::Key(_), FieldValue::Number(x)) = (edit.field, &value) {
             self.commit_key_field(edit.field, *x);
+            return;
+        }
+        if let (FieldId::ClipName, FieldValue::Text(t)) = (edit.field, &value) {
+            self.rename_clip(t);
+            return;
+        }
+        if let (FieldId::Morph(_), FieldValue::Number(x)) = (edit.field, &value) {
+            if let Some(b) = self.morph_base() {
+                self.set_morph(edit.field, &b, *x);
+            }
             return;
         }
         if edit.field == FieldId::Frame {
@@ -706,6 +746,11 @@ impl Editor {
             match base {
                 Base::Frame(f) => self.frame = f,
                 Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
+                Base::Clip => {}
+                Base::Morph(_) => {
+                    self.rig.morph_pending = None;
+                    self.scene_rev += 1;
+                }
                 Base::Settings(s) => {
                     self.scene.settings = s;
                     self.scene_rev += 1;
@@ -746,6 +791,11 @@ impl Editor {
                 self.open_add_menu(x as i32, y as i32);
             }
             (Key::Char('d'), false, true) => self.run_action(Action::Duplicate),
+            (Key::Char('i'), false, false) => self.toggle_ik(),
+            (Key::Char('c'), false, false) => {
+                let (x, y) = self.mouse;
+                self.open_clip_menu(x as i32, y as i32);
+            }
             (Key::Num(n), ctrl, _) => {
                 if let Some(v) = crate::editor::views::ViewCmd::from_numpad(n, ctrl) {
                     self.view_command(v);
@@ -807,6 +857,7 @@ impl Editor {
             return;
         }
         match a {
+            Action::Clip(c) => self.clip_action(c),
             Action::New => self.ask_unsaved(After::New),
             Action::Open => self.ask_unsaved(After::Open),
             Action::Import => self.browse(Purpose::Import, None),

@@ -21,7 +21,7 @@ impl Editor {
                 LightKind::Point => 5,
                 LightKind::Spot { .. } => 7,
             },
-            Some(_) => 5,
+            Some(_) => 5 + self.morph_rows() as i32,
         }
     }
 
@@ -141,6 +141,7 @@ impl Editor {
     pub(in crate::internals::editor) fn scene_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         let (h, rest) = r.take_top(ROW);
         out.push(w(h, WidgetKind::Header("Scene".into())));
+        self.clip_widgets(h, out);
         let row = Rect::new(rest.x + 2, rest.y + 1, rest.w - 4, ROW);
         let half = row.w / 2;
         let (a, b) = row.take_left(half);
@@ -356,6 +357,9 @@ impl Editor {
                     ));
                 });
             }
+        }
+        for i in 0..self.morph_rows() {
+            row(out, &|o, r| self.morph_row(i as u8, r, o));
         }
         for i in 0..self.key_list_lines().len() {
             row(out, &|o, r| self.key_list_row(i, r, o));

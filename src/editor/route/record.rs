@@ -25,6 +25,9 @@ impl Editor {
 
     /// The pose at `t` seconds with a pending change shown over its tracks.
     pub(in crate::internals::editor) fn evaluate_shown(&self, t: f32) -> crate::anim::Pose {
+        if let Some(s) = self.rig_shown_scene() {
+            return crate::anim::evaluate(&s, t);
+        }
         let Some(p) = self.pending() else {
             return crate::anim::evaluate(&self.scene, t);
         };
@@ -109,6 +112,9 @@ impl Editor {
             self.set_status("Select something to key (K)", false);
             return;
         };
+        if self.key_ik() || self.key_morph() {
+            return;
+        }
         let n = self.posed_node(sel);
         let props = match self.pending().filter(|p| p.id == sel) {
             Some(p) => p.props.clone(),
