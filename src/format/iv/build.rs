@@ -212,6 +212,7 @@ impl Builder {
                     self.children(n, &mut saved, &mut inner);
                 }
             }
+            "Array" | "MultipleCopy" => self.copies(n, st, cur, name),
             "TransformSeparator" => {
                 let mut inner = *cur;
                 self.children(n, st, &mut inner);
@@ -400,10 +401,66 @@ impl Builder {
             }
         };
         let Some(mesh) = mesh else { return };
-        let material = self.material(st, texture);
+        // Lines and points carry no normals, so Inventor (Coin, SGI) draws
+        // them unlit in their base colour: the diffuse colour, as under
+        // LightModel BASE_COLOR (drawn black by the lighting model otherwise).
+        let material =
+            if matches!(n.kind.as_str(), "IndexedLineSet" | "LineSet" | "PointSet") && !st.unlit {
+                let mut unlit = st.clone();
+                unlit.unlit = true;
+                self.material(&unlit, texture)
+            } else {
+                self.material(st, texture)
+            };
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
         node.style = st.style;
         self.add(n.pos, cur, node);
+    }
+
+    /// `Array` / `MultipleCopy`: a group holding one group per copy, each
+    /// placed by its matrix and traversed like a Separator.
+    fn copies(&mut self, n: &NodeRef, st: &State, cur: &Cursor, name: String) {
+        let (matrices, cut) = super::copies::copies(n);
+        if cut {
+            self.warn(
+                n.pos,
+                &format!(
+                    "{}: only the first {} copies are made",
+                    n.kind,
+                    super::copies::MAX_COPIES
+                ),
+            );
+        }
+        let Some(id) = self.add(n.pos, cur, Node::group(name)) else {
+            return;
+        };
+        let world = cur.world * cur.pending;
+        for m in matrices {
+            let mut copy = Node::group(String::new());
+            copy.transform.extra = Some(m);
+            let Some(cid) = self.add(
+                n.pos,
+                &Cursor {
+                    parent: Some(id),
+                    pending: Mat4::IDENTITY,
+                    world,
+                    separated: true,
+                    depth: cur.depth + 1,
+                },
+                copy,
+            ) else {
+                return;
+            };
+            let mut inner = Cursor {
+                parent: Some(cid),
+                pending: Mat4::IDENTITY,
+                world: world * m,
+                separated: true,
+                depth: cur.depth + 2,
+            };
+            let mut saved = st.clone();
+            self.children(n, &mut saved, &mut inner);
+        }
     }
 
     /// A text node: its mesh is built per instance (the font is state).

@@ -4,6 +4,7 @@
 
 mod animated;
 mod build;
+mod copies;
 mod shapes;
 mod state;
 mod text;

@@ -177,3 +177,82 @@ fn named_groups_pass_their_transforms_on_without_nesting_what_follows() {
     assert_eq!(parent("B"), parent("G1"));
     assert_eq!(parent("C"), Some(find("T")));
 }
+
+#[test]
+fn line_sets_are_unlit_in_the_diffuse_colour_and_per_part_colours_each_segment() {
+    // Lines carry no normals: Inventor draws them in their base colour.
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { Material { diffuseColor 1 0.5 0 }\n Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n DEF L IndexedLineSet { coordIndex [ 0 1 2 -1 ] }\n DEF F IndexedFaceSet { coordIndex [ 0 1 2 -1 ] } }",
+    );
+    let s = &l.scene;
+    let mat = |n: &str| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => s.materials[sh.material.0 as usize].clone(),
+        _ => panic!("not a shape"),
+    };
+    assert_eq!(mat("L").emissive, Vec3::new(1.0, 0.5, 0.0));
+    assert_eq!(mat("L").diffuse, Vec3::ZERO);
+    assert_eq!(mat("F").diffuse, Vec3::new(1.0, 0.5, 0.0));
+    assert_eq!(mat("F").emissive, Vec3::ZERO);
+    // axis.iv: two polylines, three segments, PER_PART = one colour each
+    // (PER_FACE would colour per polyline: the Y axis drawn red).
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { IndexedLineSet { vertexProperty VertexProperty {\n vertex [ 0 0 0, 1 0 0, 0 1 0, 0 0 1 ]\n orderedRGBA [ 0xff0000ff, 0xff00ff, 0xffff ] materialBinding PER_PART }\n coordIndex [ 1, 0, 2, -1, 0, 3 ] } }",
+    );
+    let m = &l.scene.meshes[0];
+    assert_eq!(m.lines.len(), 3);
+    let colour_of = |a: Vec3, b: Vec3| {
+        let seg = m
+            .lines
+            .iter()
+            .find(|l| {
+                let (p, q) = (m.positions[l[0] as usize], m.positions[l[1] as usize]);
+                (p == a && q == b) || (p == b && q == a)
+            })
+            .expect("segment");
+        (m.colors[seg[0] as usize], m.colors[seg[1] as usize])
+    };
+    assert_eq!(colour_of(Vec3::ZERO, Vec3::X), (Vec3::X, Vec3::X));
+    assert_eq!(colour_of(Vec3::ZERO, Vec3::Y), (Vec3::Y, Vec3::Y));
+    assert_eq!(colour_of(Vec3::ZERO, Vec3::Z), (Vec3::Z, Vec3::Z));
+}
+
+#[test]
+fn array_and_multiple_copy_make_one_separated_group_per_copy() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF A Array { numElements1 3 separation1 2 0 0 origin CENTER Material { diffuseColor 1 0 0 } DEF S Sphere {} }\n DEF C Cube {}\n MultipleCopy { matrix [ 1 0 0 0 0 1 0 0 0 0 1 0 0 7 0 1 ] DEF K Cone {} }\n}",
+    );
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let s = &l.scene;
+    let spheres: Vec<Vec3> = s
+        .walk()
+        .into_iter()
+        .filter(|&id| s.node(id).name == "S")
+        .map(|id| world(s, id).transform_point3(Vec3::ZERO))
+        .collect();
+    assert_eq!(
+        spheres,
+        vec![
+            Vec3::new(-2.0, 0.0, 0.0),
+            Vec3::ZERO,
+            Vec3::new(2.0, 0.0, 0.0)
+        ]
+    );
+    let a = s.find_node("A").unwrap();
+    assert_eq!(s.node(a).children.len(), 3);
+    // Each copy is separated: the red Material stays inside.
+    let c = s.find_node("C").unwrap();
+    match &s.node(c).kind {
+        NodeKind::Shape(sh) => {
+            assert_eq!(
+                s.materials[sh.material.0 as usize].diffuse,
+                Vec3::splat(0.8)
+            )
+        }
+        _ => panic!("not a shape"),
+    }
+    let k = s.find_node("K").unwrap();
+    assert_eq!(
+        world(s, k).transform_point3(Vec3::ZERO),
+        Vec3::new(0.0, 7.0, 0.0)
+    );
+}
