@@ -74,6 +74,8 @@ struct MeshKey {
     base: usize,
     bindings: (super::state::Bind, super::state::Bind),
     hints: (Option<bool>, bool, u32),
+    /// LightModel BASE_COLOR: the mesh is built without normals (unlit).
+    unlit: bool,
     /// Texture coordinates: (wanted, source, binding, baked transform).
     tex: (bool, usize, super::state::Bind, [u32; 6]),
 }
@@ -381,6 +383,7 @@ impl Builder {
             base: State::ptr(&st.base_color),
             bindings: (st.material_binding, st.normal_binding),
             hints: (st.ccw, st.solid_type, st.crease_angle.to_bits()),
+            unlit: st.unlit,
         };
         let mesh = match self.meshes.get(&key) {
             Some(m) => *m,
@@ -390,6 +393,12 @@ impl Builder {
                 let mut msgs = Vec::new();
                 let m = shapes::mesh(n, st, &inp, &mut msgs).map(|mut m| {
                     m.name = name.clone();
+                    if st.unlit && !textured {
+                        // BASE_COLOR: no lighting, so the shape shows its
+                        // colours (per-vertex ones too) as they are; a mesh
+                        // without normals is what the renderer draws unlit.
+                        m.normals.clear();
+                    }
                     self.scene.add_mesh(m)
                 });
                 for (pos, msg) in msgs {

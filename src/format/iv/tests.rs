@@ -256,3 +256,42 @@ fn array_and_multiple_copy_make_one_separated_group_per_copy() {
         Vec3::new(0.0, 7.0, 0.0)
     );
 }
+
+#[test]
+fn base_color_shapes_are_unlit_and_stay_so_through_the_writer() {
+    use crate::format::export::{InventorVersion, WriteOptions};
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { LightModel { model BASE_COLOR }\n Material { diffuseColor 0 0 1 }\n DEF Q IndexedFaceSet { vertexProperty VertexProperty {\n vertex [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ]\n orderedRGBA [ 0xff0000ff, 0x00ff00ff, 0x0000ffff, 0xffffffff ] materialBinding PER_VERTEX }\n coordIndex [ 0 1 2 3 -1 ] }\n DEF C Cube {} }\nDEF P Sphere {}",
+    );
+    let s = &l.scene;
+    let mesh = |s: &crate::scene::Scene, n: &str| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => (
+            s.meshes[sh.mesh.0 as usize].clone(),
+            s.materials[sh.material.0 as usize].clone(),
+        ),
+        _ => panic!("not a shape"),
+    };
+    // Unlit: no normals (the renderer then draws the colours as they are).
+    let (q, _) = mesh(s, "Q");
+    assert!(q.normals.is_empty());
+    assert_eq!(q.colors.len(), q.positions.len());
+    assert!(q.colors.contains(&Vec3::new(1.0, 0.0, 0.0)));
+    let (c, cm) = mesh(s, "C");
+    assert!(c.normals.is_empty());
+    assert_eq!(cm.emissive, Vec3::Z);
+    // Outside the Separator: lit again.
+    assert!(!mesh(s, "P").0.normals.is_empty());
+    let opts = WriteOptions {
+        inventor_version: InventorVersion::V2_1,
+        ..Default::default()
+    };
+    let (text, _) = crate::format::iv::write::write(s, &opts);
+    let back = load(&text);
+    let (q2, _) = mesh(&back.scene, "Q");
+    assert!(q2.normals.is_empty(), "{text}");
+    assert_eq!(q2.colors.len(), q.colors.len());
+    let (c2, cm2) = mesh(&back.scene, "C");
+    assert!(c2.normals.is_empty());
+    assert_eq!(cm2.emissive, Vec3::Z, "{text}");
+    assert!(!mesh(&back.scene, "P").0.normals.is_empty(), "{text}");
+}
