@@ -22,6 +22,7 @@ pub mod lexer;
 pub mod limits;
 mod loaded;
 pub mod obj;
+mod obj_lines;
 mod obj_texture;
 pub mod polygons;
 pub mod sgi_image;
