@@ -215,6 +215,7 @@ impl Builder {
                 }
             }
             "Array" | "MultipleCopy" => self.copies(n, st, cur, name),
+            k if super::kits::is_kit(k) => self.kit(n, st, cur, name),
             "TransformSeparator" => {
                 let mut inner = *cur;
                 self.children(n, st, &mut inner);
@@ -469,6 +470,32 @@ impl Builder {
             };
             let mut saved = st.clone();
             self.children(n, &mut saved, &mut inner);
+        }
+    }
+
+    /// A node kit: its parts in catalog order (`kits`), inside a group of
+    /// its own when the kit separates (else in place, like a Group).
+    fn kit(&mut self, n: &NodeRef, st: &mut State, cur: &mut Cursor, name: String) {
+        let parts = super::kits::parts(n);
+        if !super::kits::separates(&n.kind) {
+            for p in &parts {
+                self.node(p, st, cur);
+            }
+            return;
+        }
+        let Some(id) = self.add(n.pos, cur, Node::group(name)) else {
+            return;
+        };
+        let mut inner = Cursor {
+            parent: Some(id),
+            pending: Mat4::IDENTITY,
+            world: cur.world * cur.pending,
+            separated: true,
+            depth: cur.depth + 1,
+        };
+        let mut saved = st.clone();
+        for p in &parts {
+            self.node(p, &mut saved, &mut inner);
         }
     }
 

@@ -5,6 +5,7 @@
 mod animated;
 mod build;
 mod copies;
+mod kits;
 mod shapes;
 mod state;
 mod text;

@@ -295,3 +295,28 @@ fn base_color_shapes_are_unlit_and_stay_so_through_the_writer() {
     assert_eq!(cm2.emissive, Vec3::Z, "{text}");
     assert!(!mesh(&back.scene, "P").0.normals.is_empty(), "{text}");
 }
+
+#[test]
+fn node_kits_read_as_the_groups_they_expand_to() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF K SeparatorKit {\n  childList NodeKitListPart { containerTypeName \"Group\" childList [\n   ShapeKit { shape DEF S Cube {} transform Transform { translation 0 3 0 }\n    appearance AppearanceKit { material Material { diffuseColor 1 0 0 } } } ] }\n  transform Transform { translation 2 0 0 } }\n DEF C Sphere {}\n}",
+    );
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let s = &l.scene;
+    let find = |n: &str| s.find_node(n).unwrap();
+    // The kit's transform comes before its child list; the shape kit's
+    // transform before its shape.
+    assert_eq!(
+        world(s, find("S")).transform_point3(Vec3::ZERO),
+        Vec3::new(2.0, 3.0, 0.0)
+    );
+    let diffuse = |n: &str| match &s.node(find(n)).kind {
+        NodeKind::Shape(sh) => s.materials[sh.material.0 as usize].diffuse,
+        _ => panic!("not a shape"),
+    };
+    assert_eq!(diffuse("S"), Vec3::X);
+    // Kits keep their state: the sphere after them is default grey at the origin.
+    assert_eq!(diffuse("C"), Vec3::splat(0.8));
+    assert_eq!(world(s, find("C")).transform_point3(Vec3::ZERO), Vec3::ZERO);
+    assert!(s.node(find("K")).children.len() == 1);
+}
