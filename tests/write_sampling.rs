@@ -93,11 +93,13 @@ proptest! {
         let mut worst = 0.0f32;
         for i in 0..=3000 {
             let t = 60.0 * i as f32 / 3000.0;
-            let (Value::Vec3(a), Value::Vec3(p)) = (track.sample(t), played(samples, t)) else { unreachable!() };
+            // A loop with a clock of its own holds one period of samples.
+            let local = ch[0].local_frame(t);
+            let (Value::Vec3(a), Value::Vec3(p)) = (track.sample(t), played(samples, local)) else { unreachable!() };
             // A jump plays as two keys at one time, or (when the loop
             // arithmetic puts the jump a hair off the key time) as a ramp
             // narrower than 0.002 frames: skip times inside those.
-            if near_jump(samples, t) { continue; }
+            if near_jump(samples, local) { continue; }
             worst = worst.max(a.distance(p) / tol.distance);
         }
         prop_assert!(worst <= 2.0, "played curve off by {} tolerances ({} keys)", worst, samples.len());
@@ -171,4 +173,65 @@ fn spline_keys_cost_fewer_keys_than_per_frame_baking_at_default_tolerance() {
         },
     );
     assert!(loose.written_keys() < w);
+}
+
+/// A track looping over 24 frames in a 2,400-frame scene: one period of
+/// keys on a clock of its own (`cycleInterval 1` at 24 fps), not a hundred
+/// unrolled periods; the file plays it as authored and reads back with
+/// the same keys.
+#[test]
+fn a_loop_gets_its_own_clock_instead_of_being_unrolled() {
+    use animed::internals::format::load_bytes;
+    use animed::internals::format::save::{to_bytes, OutputFormat};
+    use animed::internals::format::WriteOptions;
+    let mut keys = vec![
+        Key::new(0.0, Vec3::ZERO),
+        Key::new(12.0, Vec3::X),
+        Key::new(24.0, Vec3::ZERO),
+    ];
+    for k in &mut keys {
+        k.interp = Interp::Tcb;
+    }
+    let track = Track {
+        target: Target {
+            of: TargetRef::Node(animed::internals::scene::NodeId(0)),
+            property: Property::Translation,
+        },
+        repeat: Repeat::Loop,
+        keys: Keys::Vec3(keys),
+    };
+    let s = scene_with(track.clone(), 2400.0);
+    let tol = Tolerances::new(10.0, 0.001, 0.1);
+    let ch = channels(&s, &tol);
+    assert_eq!(ch[0].period, Some(24.0));
+    assert!(ch[0].samples.last().unwrap().0 <= 24.0);
+    for t in [0.0, 5.5, 30.25, 1000.0, 2399.0] {
+        let (Value::Vec3(a), Value::Vec3(p)) = (
+            track.sample(t),
+            played(&ch[0].samples, ch[0].local_frame(t)),
+        ) else {
+            unreachable!()
+        };
+        assert!(a.distance(p) <= 2.0 * tol.distance, "at {t}: {a} vs {p}");
+    }
+    let (bytes, _) = to_bytes(&s, OutputFormat::Vrml97, &WriteOptions::default());
+    let text = String::from_utf8(bytes.clone()).unwrap();
+    assert!(
+        text.contains("TimeSensor { cycleInterval 1 loop TRUE }"),
+        "{text}"
+    );
+    // Size: one period of samples, not a hundred.
+    let short = scene_with(track.clone(), 48.0);
+    let (small, _) = to_bytes(&short, OutputFormat::Vrml97, &WriteOptions::default());
+    assert!(
+        bytes.len() < small.len() + 200,
+        "{} vs {}",
+        bytes.len(),
+        small.len()
+    );
+    let back = load_bytes(&bytes, std::path::Path::new("loop.wrl")).unwrap();
+    assert!(back.warnings.is_empty(), "{:?}", back.warnings);
+    assert_eq!(back.scene.animation.tracks.len(), 1);
+    assert_eq!(back.scene.animation.tracks[0].keys, track.keys);
+    assert_eq!(back.scene.animation.tracks[0].repeat, Repeat::Loop);
 }

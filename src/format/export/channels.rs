@@ -27,6 +27,41 @@ pub struct Channel {
     pub samples: Vec<Sample>,
     /// Authored keys behind this channel.
     pub authored_keys: usize,
+    /// When every track behind the channel loops with this period (frames)
+    /// and the scene's duration is a whole number (≥ 2) of them: `samples`
+    /// hold one period from frame 0, to be played by a clock of their own
+    /// (so a loop is not unrolled over the whole duration). The value at
+    /// frame `f` is the one at `f mod period`.
+    pub period: Option<f32>,
+}
+
+impl Channel {
+    /// The frame within `samples` that plays at scene frame `f`.
+    pub fn local_frame(&self, f: f32) -> f32 {
+        match self.period {
+            Some(p) => f.rem_euclid(p),
+            None => f,
+        }
+    }
+}
+
+/// The common loop period of `tracks` when a clock of its own can play it:
+/// all loop with one period `p > 0`, and `duration` is a whole number of at
+/// least two periods (then the scene's restart at `duration` is also a
+/// restart of the loop, so both clocks stay in step).
+fn loop_period(tracks: &[Option<&Track>], duration: f32) -> Option<f32> {
+    let mut period = None;
+    for t in tracks.iter().flatten() {
+        let frames = t.keys.frames();
+        let p = frames.last()? - frames.first()?;
+        if t.repeat != Repeat::Loop || p <= 0.0 || period.is_some_and(|q| q != p) {
+            return None;
+        }
+        period = Some(p);
+    }
+    let p = period?;
+    let n = duration / p;
+    (n >= 2.0 && (n - n.round()).abs() <= 1e-4).then_some(p)
 }
 
 /// A channel's value at a frame.
@@ -126,18 +161,17 @@ pub fn channels(scene: &Scene, tol: &Tolerances) -> Vec<Channel> {
             }
         };
         let main = find(of, property);
-        let (eval, breaks, authored): (Eval, Vec<f32>, usize) = match property {
+        let (eval, used, authored): (Eval, [Option<&Track>; 2], usize) = match property {
             Property::Scale => {
                 let Some(node) = node else { continue };
                 let vis = find(of, Property::Visibility);
                 let hidden = !node.visible || node.style == RenderStyle::Hidden;
                 let rest = node.transform.scale;
-                let mut breaks = Vec::new();
-                let mut authored = 0;
-                for t in [main, vis].into_iter().flatten() {
-                    breaks.extend(track_breaks(t, duration));
-                    authored += t.keys.len();
-                }
+                let authored = [main, vis]
+                    .into_iter()
+                    .flatten()
+                    .map(|t| t.keys.len())
+                    .sum();
                 let style_hidden = node.style == RenderStyle::Hidden;
                 (
                     Box::new(move |f| {
@@ -148,7 +182,7 @@ pub fn channels(scene: &Scene, tol: &Tolerances) -> Vec<Channel> {
                         };
                         Value::Vec3(if shown { s } else { Vec3::ZERO })
                     }),
-                    breaks,
+                    [main, vis],
                     authored,
                 )
             }
@@ -158,19 +192,14 @@ pub fn channels(scene: &Scene, tol: &Tolerances) -> Vec<Channel> {
                 };
                 let on = find(of, Property::LightOn);
                 let rest = light.intensity;
-                let mut breaks = Vec::new();
-                let mut authored = 0;
-                for t in [main, on].into_iter().flatten() {
-                    breaks.extend(track_breaks(t, duration));
-                    authored += t.keys.len();
-                }
+                let authored = [main, on].into_iter().flatten().map(|t| t.keys.len()).sum();
                 (
                     Box::new(move |f| {
                         let i = main.map_or(rest, |t| scalar_of(t.sample(f)));
                         let lit = on.is_none_or(|t| on_of(t.sample(f)));
                         Value::Scalar(if lit { i } else { 0.0 })
                     }),
-                    breaks,
+                    [main, on],
                     authored,
                 )
             }
@@ -181,21 +210,30 @@ pub fn channels(scene: &Scene, tol: &Tolerances) -> Vec<Channel> {
                 }
                 (
                     Box::new(move |f| t.sample(f)),
-                    track_breaks(t, duration),
+                    [Some(t), None],
                     t.keys.len(),
                 )
             }
         };
+        // One period when a clock of its own can loop it, else the whole
+        // duration.
+        let period = loop_period(&used, duration);
+        let span = period.unwrap_or(duration);
         let curve = Curve {
             eval: &*eval,
-            breaks,
+            breaks: used
+                .into_iter()
+                .flatten()
+                .flat_map(|t| track_breaks(t, span))
+                .collect(),
             metric: tol.metric(property),
         };
         out.push(Channel {
             of,
             property,
-            samples: sampling::sample(&curve, duration),
+            samples: sampling::sample(&curve, span),
             authored_keys: authored,
+            period,
         });
     }
     out

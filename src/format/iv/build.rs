@@ -74,6 +74,8 @@ struct MeshKey {
     base: usize,
     bindings: (super::state::Bind, super::state::Bind),
     hints: (Option<bool>, bool, u32),
+    /// LightModel BASE_COLOR: the mesh is built without normals (unlit).
+    unlit: bool,
     /// Texture coordinates: (wanted, source, binding, baked transform).
     tex: (bool, usize, super::state::Bind, [u32; 6]),
 }
@@ -212,6 +214,8 @@ impl Builder {
                     self.children(n, &mut saved, &mut inner);
                 }
             }
+            "Array" | "MultipleCopy" => self.copies(n, st, cur, name),
+            k if super::kits::is_kit(k) => self.kit(n, st, cur, name),
             "TransformSeparator" => {
                 let mut inner = *cur;
                 self.children(n, st, &mut inner);
@@ -380,6 +384,7 @@ impl Builder {
             base: State::ptr(&st.base_color),
             bindings: (st.material_binding, st.normal_binding),
             hints: (st.ccw, st.solid_type, st.crease_angle.to_bits()),
+            unlit: st.unlit,
         };
         let mesh = match self.meshes.get(&key) {
             Some(m) => *m,
@@ -389,6 +394,12 @@ impl Builder {
                 let mut msgs = Vec::new();
                 let m = shapes::mesh(n, st, &inp, &mut msgs).map(|mut m| {
                     m.name = name.clone();
+                    if st.unlit && !textured {
+                        // BASE_COLOR: no lighting, so the shape shows its
+                        // colours (per-vertex ones too) as they are; a mesh
+                        // without normals is what the renderer draws unlit.
+                        m.normals.clear();
+                    }
                     self.scene.add_mesh(m)
                 });
                 for (pos, msg) in msgs {
@@ -400,10 +411,92 @@ impl Builder {
             }
         };
         let Some(mesh) = mesh else { return };
-        let material = self.material(st, texture);
+        // Lines and points carry no normals, so Inventor (Coin, SGI) draws
+        // them unlit in their base colour: the diffuse colour, as under
+        // LightModel BASE_COLOR (drawn black by the lighting model otherwise).
+        let material =
+            if matches!(n.kind.as_str(), "IndexedLineSet" | "LineSet" | "PointSet") && !st.unlit {
+                let mut unlit = st.clone();
+                unlit.unlit = true;
+                self.material(&unlit, texture)
+            } else {
+                self.material(st, texture)
+            };
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
         node.style = st.style;
         self.add(n.pos, cur, node);
+    }
+
+    /// `Array` / `MultipleCopy`: a group holding one group per copy, each
+    /// placed by its matrix and traversed like a Separator.
+    fn copies(&mut self, n: &NodeRef, st: &State, cur: &Cursor, name: String) {
+        let (matrices, cut) = super::copies::copies(n);
+        if cut {
+            self.warn(
+                n.pos,
+                &format!(
+                    "{}: only the first {} copies are made",
+                    n.kind,
+                    super::copies::MAX_COPIES
+                ),
+            );
+        }
+        let Some(id) = self.add(n.pos, cur, Node::group(name)) else {
+            return;
+        };
+        let world = cur.world * cur.pending;
+        for m in matrices {
+            let mut copy = Node::group(String::new());
+            copy.transform.extra = Some(m);
+            let Some(cid) = self.add(
+                n.pos,
+                &Cursor {
+                    parent: Some(id),
+                    pending: Mat4::IDENTITY,
+                    world,
+                    separated: true,
+                    depth: cur.depth + 1,
+                },
+                copy,
+            ) else {
+                return;
+            };
+            let mut inner = Cursor {
+                parent: Some(cid),
+                pending: Mat4::IDENTITY,
+                world: world * m,
+                separated: true,
+                depth: cur.depth + 2,
+            };
+            let mut saved = st.clone();
+            self.children(n, &mut saved, &mut inner);
+        }
+    }
+
+    /// A node kit: its parts in catalog order (`kits`), inside a group of
+    /// its own when the kit separates (else in place, like a Group).
+    fn kit(&mut self, n: &NodeRef, st: &mut State, cur: &mut Cursor, name: String) {
+        let parts = super::kits::parts(n);
+        if !super::kits::separates(&n.kind) {
+            for p in &parts {
+                self.node(p, st, cur);
+            }
+            return;
+        }
+        let Some(id) = self.add(n.pos, cur, Node::group(name)) else {
+            return;
+        };
+        let mut inner = Cursor {
+            parent: Some(id),
+            pending: Mat4::IDENTITY,
+            world: cur.world * cur.pending,
+            separated: true,
+            depth: cur.depth + 1,
+        };
+        let mut saved = st.clone();
+        for p in &parts {
+            self.node(p, &mut saved, &mut inner);
+        }
     }
 
     /// A text node: its mesh is built per instance (the font is state).

@@ -4,6 +4,8 @@
 
 mod animated;
 mod build;
+mod copies;
+mod kits;
 mod shapes;
 mod state;
 mod text;

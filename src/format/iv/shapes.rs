@@ -428,6 +428,17 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 split_index(&ints(n, "coordIndex"))
             };
             let lines = polygons::drop_bad(lines, inp.coords.len());
+            // A line set's part is one segment (SoIndexedLineSet: PER_PART
+            // colours each segment, PER_FACE each polyline): per-part
+            // colours take the polylines apart into their segments.
+            let lines = if matches!(inp.material_binding, Bind::PerPart | Bind::PerPartIndexed) {
+                lines
+                    .iter()
+                    .flat_map(|l| l.windows(2).map(<[u32]>::to_vec))
+                    .collect()
+            } else {
+                lines
+            };
             let corner_ids = consecutive(&lines);
             let cb = binding(
                 inp.material_binding,

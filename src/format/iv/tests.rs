@@ -177,3 +177,146 @@ fn named_groups_pass_their_transforms_on_without_nesting_what_follows() {
     assert_eq!(parent("B"), parent("G1"));
     assert_eq!(parent("C"), Some(find("T")));
 }
+
+#[test]
+fn line_sets_are_unlit_in_the_diffuse_colour_and_per_part_colours_each_segment() {
+    // Lines carry no normals: Inventor draws them in their base colour.
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { Material { diffuseColor 1 0.5 0 }\n Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n DEF L IndexedLineSet { coordIndex [ 0 1 2 -1 ] }\n DEF F IndexedFaceSet { coordIndex [ 0 1 2 -1 ] } }",
+    );
+    let s = &l.scene;
+    let mat = |n: &str| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => s.materials[sh.material.0 as usize].clone(),
+        _ => panic!("not a shape"),
+    };
+    assert_eq!(mat("L").emissive, Vec3::new(1.0, 0.5, 0.0));
+    assert_eq!(mat("L").diffuse, Vec3::ZERO);
+    assert_eq!(mat("F").diffuse, Vec3::new(1.0, 0.5, 0.0));
+    assert_eq!(mat("F").emissive, Vec3::ZERO);
+    // axis.iv: two polylines, three segments, PER_PART = one colour each
+    // (PER_FACE would colour per polyline: the Y axis drawn red).
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { IndexedLineSet { vertexProperty VertexProperty {\n vertex [ 0 0 0, 1 0 0, 0 1 0, 0 0 1 ]\n orderedRGBA [ 0xff0000ff, 0xff00ff, 0xffff ] materialBinding PER_PART }\n coordIndex [ 1, 0, 2, -1, 0, 3 ] } }",
+    );
+    let m = &l.scene.meshes[0];
+    assert_eq!(m.lines.len(), 3);
+    let colour_of = |a: Vec3, b: Vec3| {
+        let seg = m
+            .lines
+            .iter()
+            .find(|l| {
+                let (p, q) = (m.positions[l[0] as usize], m.positions[l[1] as usize]);
+                (p == a && q == b) || (p == b && q == a)
+            })
+            .expect("segment");
+        (m.colors[seg[0] as usize], m.colors[seg[1] as usize])
+    };
+    assert_eq!(colour_of(Vec3::ZERO, Vec3::X), (Vec3::X, Vec3::X));
+    assert_eq!(colour_of(Vec3::ZERO, Vec3::Y), (Vec3::Y, Vec3::Y));
+    assert_eq!(colour_of(Vec3::ZERO, Vec3::Z), (Vec3::Z, Vec3::Z));
+}
+
+#[test]
+fn array_and_multiple_copy_make_one_separated_group_per_copy() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF A Array { numElements1 3 separation1 2 0 0 origin CENTER Material { diffuseColor 1 0 0 } DEF S Sphere {} }\n DEF C Cube {}\n MultipleCopy { matrix [ 1 0 0 0 0 1 0 0 0 0 1 0 0 7 0 1 ] DEF K Cone {} }\n}",
+    );
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let s = &l.scene;
+    let spheres: Vec<Vec3> = s
+        .walk()
+        .into_iter()
+        .filter(|&id| s.node(id).name == "S")
+        .map(|id| world(s, id).transform_point3(Vec3::ZERO))
+        .collect();
+    assert_eq!(
+        spheres,
+        vec![
+            Vec3::new(-2.0, 0.0, 0.0),
+            Vec3::ZERO,
+            Vec3::new(2.0, 0.0, 0.0)
+        ]
+    );
+    let a = s.find_node("A").unwrap();
+    assert_eq!(s.node(a).children.len(), 3);
+    // Each copy is separated: the red Material stays inside.
+    let c = s.find_node("C").unwrap();
+    match &s.node(c).kind {
+        NodeKind::Shape(sh) => {
+            assert_eq!(
+                s.materials[sh.material.0 as usize].diffuse,
+                Vec3::splat(0.8)
+            )
+        }
+        _ => panic!("not a shape"),
+    }
+    let k = s.find_node("K").unwrap();
+    assert_eq!(
+        world(s, k).transform_point3(Vec3::ZERO),
+        Vec3::new(0.0, 7.0, 0.0)
+    );
+}
+
+#[test]
+fn base_color_shapes_are_unlit_and_stay_so_through_the_writer() {
+    use crate::format::export::{InventorVersion, WriteOptions};
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { LightModel { model BASE_COLOR }\n Material { diffuseColor 0 0 1 }\n DEF Q IndexedFaceSet { vertexProperty VertexProperty {\n vertex [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ]\n orderedRGBA [ 0xff0000ff, 0x00ff00ff, 0x0000ffff, 0xffffffff ] materialBinding PER_VERTEX }\n coordIndex [ 0 1 2 3 -1 ] }\n DEF C Cube {} }\nDEF P Sphere {}",
+    );
+    let s = &l.scene;
+    let mesh = |s: &crate::scene::Scene, n: &str| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => (
+            s.meshes[sh.mesh.0 as usize].clone(),
+            s.materials[sh.material.0 as usize].clone(),
+        ),
+        _ => panic!("not a shape"),
+    };
+    // Unlit: no normals (the renderer then draws the colours as they are).
+    let (q, _) = mesh(s, "Q");
+    assert!(q.normals.is_empty());
+    assert_eq!(q.colors.len(), q.positions.len());
+    assert!(q.colors.contains(&Vec3::new(1.0, 0.0, 0.0)));
+    let (c, cm) = mesh(s, "C");
+    assert!(c.normals.is_empty());
+    assert_eq!(cm.emissive, Vec3::Z);
+    // Outside the Separator: lit again.
+    assert!(!mesh(s, "P").0.normals.is_empty());
+    let opts = WriteOptions {
+        inventor_version: InventorVersion::V2_1,
+        ..Default::default()
+    };
+    let (text, _) = crate::format::iv::write::write(s, &opts);
+    let back = load(&text);
+    let (q2, _) = mesh(&back.scene, "Q");
+    assert!(q2.normals.is_empty(), "{text}");
+    assert_eq!(q2.colors.len(), q.colors.len());
+    let (c2, cm2) = mesh(&back.scene, "C");
+    assert!(c2.normals.is_empty());
+    assert_eq!(cm2.emissive, Vec3::Z, "{text}");
+    assert!(!mesh(&back.scene, "P").0.normals.is_empty(), "{text}");
+}
+
+#[test]
+fn node_kits_read_as_the_groups_they_expand_to() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF K SeparatorKit {\n  childList NodeKitListPart { containerTypeName \"Group\" childList [\n   ShapeKit { shape DEF S Cube {} transform Transform { translation 0 3 0 }\n    appearance AppearanceKit { material Material { diffuseColor 1 0 0 } } } ] }\n  transform Transform { translation 2 0 0 } }\n DEF C Sphere {}\n}",
+    );
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let s = &l.scene;
+    let find = |n: &str| s.find_node(n).unwrap();
+    // The kit's transform comes before its child list; the shape kit's
+    // transform before its shape.
+    assert_eq!(
+        world(s, find("S")).transform_point3(Vec3::ZERO),
+        Vec3::new(2.0, 3.0, 0.0)
+    );
+    let diffuse = |n: &str| match &s.node(find(n)).kind {
+        NodeKind::Shape(sh) => s.materials[sh.material.0 as usize].diffuse,
+        _ => panic!("not a shape"),
+    };
+    assert_eq!(diffuse("S"), Vec3::X);
+    // Kits keep their state: the sphere after them is default grey at the origin.
+    assert_eq!(diffuse("C"), Vec3::splat(0.8));
+    assert_eq!(world(s, find("C")).transform_point3(Vec3::ZERO), Vec3::ZERO);
+    assert!(s.node(find("K")).children.len() == 1);
+}

@@ -260,7 +260,7 @@ impl Writer<'_> {
         let (ty, items): (&str, Vec<String>) = {
             let ch = &self.channels[ci];
             let vals: Vec<Value> = (0..self.frames())
-                .map(|f| played_at(&ch.samples, f as f32))
+                .map(|f| played_at(&ch.samples, ch.local_frame(f as f32)))
                 .collect();
             match vals[0] {
                 Value::Rotation(_) => (
@@ -525,6 +525,23 @@ impl Writer<'_> {
             return;
         }
         let has_normals = !mesh.normals.is_empty() && mesh.normals.len() == mesh.positions.len();
+        // Faces without normals are drawn unlit (in their colours, else the
+        // material's emissive colour): Inventor says so with LightModel
+        // BASE_COLOR, whose base colour is the diffuse one (1.0 has no
+        // LightModel: lit there).
+        let unlit = !self.v1 && !mesh.triangles.is_empty() && mesh.normals.is_empty();
+        if unlit {
+            self.out.line("LightModel { model BASE_COLOR }");
+            if mesh.colors.len() != mesh.positions.len() {
+                let base = self
+                    .scene
+                    .materials
+                    .get(s.material.0 as usize)
+                    .map_or(Vec3::ONE, |m| m.emissive);
+                self.out
+                    .line(&format!("BaseColor {{ rgb {} }}", vec3(base)));
+            }
+        }
         let key = mesh_key(mesh);
         let hints = if mesh.solid {
             "ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID }"
@@ -617,6 +634,9 @@ impl Writer<'_> {
             self.out.close("}");
             self.out
                 .line(&format!("PointSet {{ numPoints {} }}", pts.len()));
+        }
+        if unlit {
+            self.out.line("LightModel { model PHONG }");
         }
     }
 

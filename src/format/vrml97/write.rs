@@ -8,7 +8,10 @@
 //!   `IndexedLineSet`, `PointSet`, `Text` (`write_text`); shared meshes
 //!   and materials are DEF/USE.
 //! * The clock: `TimeSensor { cycleInterval = duration / fps, loop TRUE }`;
-//!   key fractions are `frame / duration`.
+//!   key fractions are `frame / duration`. A track that loops with a period
+//!   the duration is a whole multiple of gets a clock of its own
+//!   (`cycleInterval = period / fps`) and one period of keys, so loops are
+//!   not unrolled over the whole duration (`Channel::period`).
 //! * Interpolators are sampled adaptively (`sampling`), visibility and light
 //!   `on` are folded into scale and intensity (`export::channels`).
 //! * Morphed and skinned shapes: their Coordinate and Normal are DEF'd and
@@ -719,6 +722,8 @@ impl Writer<'_> {
             num(duration / fps)
         ));
         let mut routes = Vec::new();
+        // Channels of loops played by a clock of their own, one per period.
+        let mut loop_clocks: Vec<(u32, String)> = Vec::new();
         for ch in &chans {
             let Some(field) = self.route_field(ch) else {
                 continue;
@@ -764,9 +769,28 @@ impl Writer<'_> {
                 ),
                 Value::Bool(_) | Value::Weights(_) => continue,
             };
+            let (span, clock) = match ch.period {
+                Some(p) => {
+                    let known = loop_clocks.iter().find(|(b, _)| *b == p.to_bits());
+                    let name = match known {
+                        Some((_, n)) => n.clone(),
+                        None => {
+                            let n = self.plan.internal("_animed_loop_clock");
+                            self.out.line(&format!(
+                                "DEF {n} TimeSensor {{ cycleInterval {} loop TRUE }}",
+                                num(p / fps)
+                            ));
+                            loop_clocks.push((p.to_bits(), n.clone()));
+                            n
+                        }
+                    };
+                    (p, name)
+                }
+                None => (duration, clock.clone()),
+            };
             let interp = self.plan.internal(&format!("{target}_{field}"));
             self.out.open(&format!("DEF {interp} {kind}"));
-            let keys: Vec<f32> = ch.samples.iter().map(|s| s.0 / duration).collect();
+            let keys: Vec<f32> = ch.samples.iter().map(|s| s.0 / span).collect();
             self.out.list("key", rows(&keys, 8, |k| num(*k), ","));
             self.out
                 .list("keyValue", rows(&values, 4, |v| v.clone(), ","));
