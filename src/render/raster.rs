@@ -582,9 +582,13 @@ pub fn draw_tile(
         let dst = (y - target.y0) as usize * target.stride + rect[0] as usize;
         let src = row * TILE as usize;
         if ns == 1 {
-            for k in 0..tw {
-                target.color[dst + k] =
-                    super::frame::pack_rgb(Vec3::new(r[src + k], g[src + k], b[src + k]));
+            // Eight at a time (tile rows are TILE long, so the last block
+            // may read past `tw` but only `tw` pixels are written).
+            for k in (0..tw).step_by(8) {
+                let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
+                let px = super::frame::pack_rgb8(ld(r), ld(g), ld(b));
+                let n = (tw - k).min(8);
+                target.color[dst + k..dst + k + n].copy_from_slice(&px[..n]);
             }
             target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
             target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
@@ -609,9 +613,14 @@ pub fn draw_tile(
                 *i = if *i == 0 { *d } else { *i };
             }
         }
-        for (k, out) in target.color[dst..dst + tw].iter_mut().enumerate() {
-            let c = Vec3::new(acc[0][k], acc[1][k], acc[2][k]);
-            *out = super::frame::pack_rgb(c * inv);
+        let inv = Sse8::splat(inv);
+        for k in (0..tw).step_by(8) {
+            let ld = |c: &[f32; TILE as usize]| {
+                Sse8::load(c[k..k + 8].try_into().expect("8")) * inv
+            };
+            let px = super::frame::pack_rgb8(ld(&acc[0]), ld(&acc[1]), ld(&acc[2]));
+            let n = (tw - k).min(8);
+            target.color[dst + k..dst + k + n].copy_from_slice(&px[..n]);
         }
         target.depth[dst..dst + tw].copy_from_slice(&zmin[..tw]);
         target.ids[dst..dst + tw].copy_from_slice(&id[..tw]);

@@ -166,7 +166,7 @@ fn splat3<V: V8>(v: Vec3) -> [V; 3] {
 fn normalize<V: V8>(v: [V; 3]) -> ([V; 3], V) {
     let len = dot(&v, &v).sqrt();
     let zero = V::splat(0.0);
-    let inv = V::select(len.gt(zero), V::splat(1.0) / len, zero);
+    let inv = (V::splat(1.0) / len).keep(len.gt(zero));
     ([v[0] * inv, v[1] * inv, v[2] * inv], len)
 }
 
@@ -208,7 +208,7 @@ pub fn shade8<V: V8>(
                 let denom =
                     (V::splat(a.x) + V::splat(a.y) * dist + V::splat(a.z) * (dist * dist)).max(one);
                 let reach = dist.le(V::splat(radius)).and(dist.gt(zero));
-                let mut factor = V::select(reach, one / denom, zero);
+                let mut factor = (one / denom).keep(reach);
                 if let WorldLightKind::Spot { axis, .. } = l.kind {
                     let cos = zero - dot(&to_light, &splat3(axis));
                     factor = spot(&l.kind, factor, cos);
@@ -221,7 +221,7 @@ pub fn shade8<V: V8>(
         let spec = if use_specular {
             let (h, _) = normalize([to_light[0] + v[0], to_light[1] + v[1], to_light[2] + v[2]]);
             let ndh = dot(&n, &h).max(zero);
-            V::select(ndl.gt(zero), powi(ndh, m.exponent as u32), zero)
+            powi(ndh, m.exponent as u32).keep(ndl.gt(zero))
         } else {
             zero
         };
@@ -255,7 +255,7 @@ fn spot<V: V8>(kind: &WorldLightKind, factor: V, cos: V) -> V {
     };
     let zero = V::splat(0.0);
     let inside = cos.gt(V::splat(cos_cut_off)).and(factor.gt(zero));
-    let factor = V::select(inside, factor, zero);
+    let factor = factor.keep(inside);
     if inside.bits() == 0 {
         return factor;
     }

@@ -59,6 +59,23 @@ mod imp {
         pub fn sqrt(self) -> F4 {
             unsafe { F4(_mm_sqrt_ps(self.0)) }
         }
+        /// `self > o ? self : o` (what MAXPS computes, NaN → `o`).
+        #[inline(always)]
+        pub fn max(self, o: F4) -> F4 {
+            unsafe { F4(_mm_max_ps(self.0, o.0)) }
+        }
+        /// `self < o ? self : o` (what MINPS computes, NaN → `o`).
+        #[inline(always)]
+        pub fn min(self, o: F4) -> F4 {
+            unsafe { F4(_mm_min_ps(self.0, o.0)) }
+        }
+        /// Truncated towards zero to i32, as `as i32` for values in range.
+        #[inline(always)]
+        pub fn trunc_i32(self) -> [i32; 4] {
+            let mut out = [0i32; 4];
+            unsafe { _mm_storeu_si128(out.as_mut_ptr().cast(), _mm_cvttps_epi32(self.0)) };
+            out
+        }
         #[inline(always)]
         pub fn gt(self, o: F4) -> M4 {
             unsafe { M4(_mm_cmpgt_ps(self.0, o.0)) }
@@ -143,6 +160,15 @@ mod imp {
         pub fn div(self, o: F4) -> F4 {
             map(self, o, |a, b| a / b)
         }
+        pub fn max(self, o: F4) -> F4 {
+            map(self, o, |a, b| if a > b { a } else { b })
+        }
+        pub fn min(self, o: F4) -> F4 {
+            map(self, o, |a, b| if a < b { a } else { b })
+        }
+        pub fn trunc_i32(self) -> [i32; 4] {
+            self.0.map(|v| v as i32)
+        }
         pub fn sqrt(self) -> F4 {
             F4(self.0.map(f32::sqrt))
         }
@@ -225,15 +251,16 @@ pub trait V8:
         let a = std::array::from_fn(|k| f32::from_bits(if bits >> k & 1 == 1 { !0 } else { 0 }));
         Self::load(&a)
     }
-    /// Lane-wise `a > b ? a : b`.
-    #[inline(always)]
-    fn max(self, o: Self) -> Self {
-        Self::select(self.gt(o), self, o)
-    }
-    #[inline(always)]
-    fn min(self, o: Self) -> Self {
-        Self::select(o.gt(self), self, o)
-    }
+    /// Lane-wise `self > o ? self : o` (so a NaN in either gives `o`):
+    /// exactly MAXPS.
+    fn max(self, o: Self) -> Self;
+    /// Lane-wise `self < o ? self : o`: exactly MINPS.
+    fn min(self, o: Self) -> Self;
+    /// Lane-wise `mask ? self : 0` — one AND, cheaper than a select.
+    fn keep(self, mask: Self) -> Self;
+    /// Each lane truncated towards zero to an i32 (lanes must lie within
+    /// i32; exactly what `as i32` gives there).
+    fn trunc_i32(self) -> [i32; 8];
 }
 
 /// Eight lanes as two SSE2 registers (or arrays off x86-64): the baseline.
@@ -283,6 +310,23 @@ impl V8 for Sse8 {
     #[inline(always)]
     fn bits(self) -> u32 {
         self.0.as_mask().bits() | self.1.as_mask().bits() << 4
+    }
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        Sse8(self.0.max(o.0), self.1.max(o.1))
+    }
+    #[inline(always)]
+    fn min(self, o: Self) -> Self {
+        Sse8(self.0.min(o.0), self.1.min(o.1))
+    }
+    #[inline(always)]
+    fn keep(self, mask: Self) -> Self {
+        Sse8::and(mask, self)
+    }
+    #[inline(always)]
+    fn trunc_i32(self) -> [i32; 8] {
+        let (a, b) = (self.0.trunc_i32(), self.1.trunc_i32());
+        [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
     }
 }
 
@@ -369,7 +413,33 @@ mod avx_lanes {
         }
         #[inline(always)]
         fn select(mask: Self, a: Self, b: Self) -> Self {
-            unsafe { Avx8(_mm256_blendv_ps(b.0, a.0, mask.0)) }
+            // AND/ANDNOT/OR rather than BLENDVPS: LLVM rewrites BLENDVPS
+            // into a sign test, which AVX without AVX2 does by converting
+            // the mask to floats and comparing (three extra instructions).
+            unsafe {
+                Avx8(_mm256_or_ps(
+                    _mm256_and_ps(mask.0, a.0),
+                    _mm256_andnot_ps(mask.0, b.0),
+                ))
+            }
+        }
+        #[inline(always)]
+        fn max(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_max_ps(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn min(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_min_ps(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn keep(self, mask: Self) -> Self {
+            unsafe { Avx8(_mm256_and_ps(mask.0, self.0)) }
+        }
+        #[inline(always)]
+        fn trunc_i32(self) -> [i32; 8] {
+            let mut out = [0i32; 8];
+            unsafe { _mm256_storeu_si256(out.as_mut_ptr().cast(), _mm256_cvttps_epi32(self.0)) };
+            out
         }
         #[inline(always)]
         fn and(self, o: Self) -> Self {
@@ -427,6 +497,8 @@ mod tests {
             a.min(b),
             V::select(a.gt(b), a, b * b),
             V::select(a.le(b).and(V::from_bits(0b1010_1010)), a, b),
+            a.keep(a.gt(b)),
+            V::load(&a.trunc_i32().map(|i| i as f32)),
         ] {
             let mut o = [0.0; 8];
             v.store(&mut o);
@@ -442,6 +514,15 @@ mod tests {
         assert_eq!(sse[0][0], 1.5f32 + 0.3);
         assert_eq!(sse[3][1], -2.25f32 / 4.0);
         assert_eq!(sse[4][1], 2.0);
+        assert_eq!(sse[9], [1.5, 0.0, 3.0e-3, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        assert_eq!(sse[10], [1.0, -2.0, 0.0, 7.0, 0.0, 0.0, 0.0, 3.0]);
+        // MAXPS/MINPS semantics: the second operand on NaN.
+        let nan = V8::max(Sse8::splat(f32::NAN), Sse8::splat(2.0));
+        let mut o = [0.0; 8];
+        nan.store(&mut o);
+        assert_eq!(o, [2.0; 8]);
+        V8::min(Sse8::splat(f32::NAN), Sse8::splat(-1.0)).store(&mut o);
+        assert_eq!(o, [-1.0; 8]);
         assert_eq!(
             sse[7],
             [1.5, 16.0, 3.0e-3, 49.0, 0.7f32 * 0.7, 9.0, 4.0, 81.0]
