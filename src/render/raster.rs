@@ -353,6 +353,18 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
     }
 }
 
+/// Writes the first `dst.len()` (at most 8) of `px`: a whole block as one
+/// fixed-size copy (a variable-length one becomes a `memmove` call).
+#[inline(always)]
+fn put8(dst: &mut [u32], px: &[u32; 8]) {
+    let n = dst.len().min(8);
+    if let Ok(d) = <&mut [u32; 8]>::try_from(&mut dst[..n]) {
+        *d = *px;
+    } else {
+        dst[..n].copy_from_slice(&px[..n]);
+    }
+}
+
 #[inline]
 fn depth_at(t: &Tri, b1: f32, b2: f32) -> f32 {
     t.z[0] + b1 * (t.z[1] - t.z[0]) + b2 * (t.z[2] - t.z[0])
@@ -587,8 +599,7 @@ pub fn draw_tile(
             for k in (0..tw).step_by(8) {
                 let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
                 let px = super::frame::pack_rgb8(ld(r), ld(g), ld(b));
-                let n = (tw - k).min(8);
-                target.color[dst + k..dst + k + n].copy_from_slice(&px[..n]);
+                put8(&mut target.color[dst + k..dst + tw], &px);
             }
             target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
             target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
@@ -619,8 +630,7 @@ pub fn draw_tile(
                 Sse8::load(c[k..k + 8].try_into().expect("8")) * inv
             };
             let px = super::frame::pack_rgb8(ld(&acc[0]), ld(&acc[1]), ld(&acc[2]));
-            let n = (tw - k).min(8);
-            target.color[dst + k..dst + k + n].copy_from_slice(&px[..n]);
+            put8(&mut target.color[dst + k..dst + tw], &px);
         }
         target.depth[dst..dst + tw].copy_from_slice(&zmin[..tw]);
         target.ids[dst..dst + tw].copy_from_slice(&id[..tw]);
