@@ -52,7 +52,9 @@ fn stages(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
         ..RenderOptions::default()
     };
     let mut s = Stages::new(scene, &pose, &view, &opts);
-    c.bench_function(&format!("{name}/setup"), |b| b.iter(|| s.setup(scene, &pose)));
+    c.bench_function(&format!("{name}/setup"), |b| {
+        b.iter(|| s.setup(scene, &pose))
+    });
     c.bench_function(&format!("{name}/raster"), |b| b.iter(|| s.raster()));
     c.bench_function(&format!("{name}/raster+shade"), |b| {
         b.iter(|| s.raster_and_shade())

@@ -187,7 +187,13 @@ fn simd_path_never_changes_the_picture() {
         let sse2 = render(file, aa, Some("sse2"), "simd_sse2.png");
         let avx = render(file, aa, Some("avx"), "simd_avx.png");
         let auto = render(file, aa, None, "simd_auto.png");
-        assert!(sse2 == avx, "{file} --aa {aa}: the SSE2 and AVX paths differ");
-        assert!(auto == avx, "{file} --aa {aa}: the AVX-512 and AVX paths differ");
+        assert!(
+            sse2 == avx,
+            "{file} --aa {aa}: the SSE2 and AVX paths differ"
+        );
+        assert!(
+            auto == avx,
+            "{file} --aa {aa}: the AVX-512 and AVX paths differ"
+        );
     }
 }

@@ -322,12 +322,17 @@ fn gltf_sampler_modes() {
         let m = a + b - x;
         same += (px(x, row) == px(m, row)) as usize;
     }
-    assert!(same * 10 >= ((a + b) / 2 - 1 - (a + 2)) * 9, "mirror symmetric: {same}");
+    assert!(
+        same * 10 >= ((a + b) / 2 - 1 - (a + 2)) * 9,
+        "mirror symmetric: {same}"
+    );
     // NEAREST: colour changes come as a few hard jumps at texel edges (4
     // texels, mirrored: 6 inner edges; red steps by 60 per texel), not as
     // bilinear ramps.
     let red = |x: usize| (px(x, row) >> 16 & 0xFF) as i32;
-    let steps: Vec<i32> = (a + 2..b - 2).map(|x| (red(x + 1) - red(x)).abs()).collect();
+    let steps: Vec<i32> = (a + 2..b - 2)
+        .map(|x| (red(x + 1) - red(x)).abs())
+        .collect();
     let jumps = steps.iter().filter(|&&d| d > 20).count();
     let small = steps.iter().filter(|&&d| d <= 2).count();
     assert!((5..=8).contains(&jumps), "{jumps} hard edges");

@@ -15,9 +15,9 @@
 //! texture; see [`UvLanes`] and [`apply_texture`].
 
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
+use super::lanes::Pair;
 use super::prepare::{Item, Prepared, Tri, INV_W, SUBPIXEL};
 use super::shade::shade8;
-use super::lanes::Pair;
 use super::simd::{self, Sse8, V8};
 use super::texture::Sampler;
 use super::texture_lanes::UvIn;
@@ -400,11 +400,21 @@ fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
 /// lighting once over both as a [`Pair`] — the same per-lane arithmetic
 /// as [`shade_group`], so the same bits.
 #[inline(always)]
-fn shade_pair<V: V8>(p: &Prepared, item: u32, eye: Vec3, vis: &Visible, out: &mut Shaded, i0: usize) {
+fn shade_pair<V: V8>(
+    p: &Prepared,
+    item: u32,
+    eye: Vec3,
+    vis: &Visible,
+    out: &mut Shaded,
+    i0: usize,
+) {
     let it = &p.items[item as usize];
     let (wa, wb) = (*lanes8(vis.winner, i0), *lanes8(vis.winner, i0 + 8));
     let (b1a, b2a) = (V::load(lanes8(vis.b1, i0)), V::load(lanes8(vis.b2, i0)));
-    let (b1b, b2b) = (V::load(lanes8(vis.b1, i0 + 8)), V::load(lanes8(vis.b2, i0 + 8)));
+    let (b1b, b2b) = (
+        V::load(lanes8(vis.b1, i0 + 8)),
+        V::load(lanes8(vis.b2, i0 + 8)),
+    );
     let (a, sa) = attributes(p, &wa, 0xFF, b1a, b2a);
     let (b, sb) = attributes(p, &wb, 0xFF, b1b, b2b);
     let mut v = [Pair(sa, sb); 9];

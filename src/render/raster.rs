@@ -697,9 +697,8 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
         }
         let inv = Sse8::splat(inv);
         for k in (0..tw).step_by(8) {
-            let ld = |c: &[f32; TILE as usize]| {
-                Sse8::load(c[k..k + 8].try_into().expect("8")) * inv
-            };
+            let ld =
+                |c: &[f32; TILE as usize]| Sse8::load(c[k..k + 8].try_into().expect("8")) * inv;
             let px = super::frame::pack_rgb8(ld(&acc[0]), ld(&acc[1]), ld(&acc[2]));
             put8(&mut target.color[dst + k..dst + tw], &px);
         }

@@ -142,7 +142,13 @@ pub fn shade(
     n: Vec3,
     eye: Vec3,
 ) -> Vec3 {
-    let s = |v: Vec3| [<Sse8 as V8>::splat(v.x), <Sse8 as V8>::splat(v.y), <Sse8 as V8>::splat(v.z)];
+    let s = |v: Vec3| {
+        [
+            <Sse8 as V8>::splat(v.x),
+            <Sse8 as V8>::splat(v.y),
+            <Sse8 as V8>::splat(v.z),
+        ]
+    };
     let c = shade8(m, lights, eye, s(p), s(n), s(diffuse));
     let lane0 = |v: Sse8| {
         let mut a = [0.0; 8];

@@ -205,7 +205,9 @@ mod imp {
             map(self, o, |a, b| f32::from_bits(a.to_bits() | b.to_bits()))
         }
         pub fn from_edge(e: i64, step: i64, first: i64) -> F4 {
-            F4(std::array::from_fn(|k| (e + (first + k as i64) * step) as f32))
+            F4(std::array::from_fn(|k| {
+                (e + (first + k as i64) * step) as f32
+            }))
         }
         pub fn unpack_rgba8(w: &[u32; 4]) -> [F4; 4] {
             std::array::from_fn(|c| F4(w.map(|v| (v >> (8 * c) & 0xFF) as f32)))
@@ -665,15 +667,32 @@ mod tests {
         assert_eq!(sse[11].map(f32::to_bits), floors(a));
         let b = [0.3f32, 4.0, -1.0e5, 7.0, 0.7, 3.0, 2.0, 9.0].map(|x| x * 1e-3);
         assert_eq!(sse[12].map(f32::to_bits), floors(b));
-        let big = [-1e9f32, 1e9, -8388607.5, 8388607.5, -0.5, 0.5, -1.0, 16777215.0];
+        let big = [
+            -1e9f32, 1e9, -8388607.5, 8388607.5, -0.5, 0.5, -1.0, 16777215.0,
+        ];
         let mut o = [0.0; 8];
         Sse8::load(&big).floor().store(&mut o);
         assert_eq!(o.map(f32::to_bits), floors(big));
-        for (e, st) in [(0i64, 1i64), (-5, 3), (1 << 40, -(1 << 30) - 7), ((1 << 52) - 9, 1), (123_456_789_012, -987_654_321)] {
+        for (e, st) in [
+            (0i64, 1i64),
+            (-5, 3),
+            (1 << 40, -(1 << 30) - 7),
+            ((1 << 52) - 9, 1),
+            (123_456_789_012, -987_654_321),
+        ] {
             Sse8::from_edge(e, st).store(&mut o);
             assert_eq!(o, std::array::from_fn(|k| (e + k as i64 * st) as f32));
         }
-        let words = [0x8040_20FFu32, 0, u32::MAX, 0x0102_0304, 7, 8, 9, 0xFF00_0000];
+        let words = [
+            0x8040_20FFu32,
+            0,
+            u32::MAX,
+            0x0102_0304,
+            7,
+            8,
+            9,
+            0xFF00_0000,
+        ];
         let px = Sse8::unpack_rgba8(&words);
         for (c, lane) in px.iter().enumerate() {
             lane.store(&mut o);

@@ -452,7 +452,13 @@ mod tests {
     #[test]
     fn nearest_filters_and_mip_modes() {
         // 4x4 checker of single texels: magnified nearest keeps hard edges.
-        let img = image(4, 4, 3, |x, y| if (x + y) % 2 == 0 { [255; 4] } else { [0, 0, 0, 255] });
+        let img = image(4, 4, 3, |x, y| {
+            if (x + y) % 2 == 0 {
+                [255; 4]
+            } else {
+                [0, 0, 0, 255]
+            }
+        });
         let mut t = tex();
         t.filter.mag_nearest = true;
         let s = Sampler::new(&t, &img);
@@ -482,7 +488,10 @@ mod tests {
         t.alpha_cutoff = Some(0.5);
         let s = Sampler::new(&t, &img);
         assert!(s.masks());
-        assert_eq!((s.masked(0.49), s.masked(0.5), s.masked(0.9)), (0.0, 1.0, 1.0));
+        assert_eq!(
+            (s.masked(0.49), s.masked(0.5), s.masked(0.9)),
+            (0.0, 1.0, 1.0)
+        );
     }
 
     #[test]

@@ -38,7 +38,10 @@ impl Sampler {
         // No closures over lanes here: a closure lacks the caller's AVX
         // target feature, and lane operations inside it become calls.
         let base = self.image().base();
-        let (bw, bh) = (V::splat(base.width() as f32), V::splat(base.height() as f32));
+        let (bw, bh) = (
+            V::splat(base.width() as f32),
+            V::splat(base.height() as f32),
+        );
         // Level of detail as `Sampler::lod`: ρ² = max(|ddx·size|², |ddy·size|²).
         let (xx, xy) = (uv.du_dx * bw, uv.dv_dx * bh);
         let (yx, yy) = (uv.du_dy * bw, uv.dv_dy * bh);
@@ -181,7 +184,9 @@ impl Sampler {
                 1 | 2 => [diffuse[0] * t[0], diffuse[1] * t[0], diffuse[2] * t[0]],
                 _ => [t[0], t[1], t[2]],
             },
-            TextureModel::MultiplyDiffuse => [diffuse[0] * t[0], diffuse[1] * t[1], diffuse[2] * t[2]],
+            TextureModel::MultiplyDiffuse => {
+                [diffuse[0] * t[0], diffuse[1] * t[1], diffuse[2] * t[2]]
+            }
             _ => diffuse,
         }
     }
