@@ -154,7 +154,7 @@ fn shade_visible_in<V: V8>(
                 continue;
             }
             let i0 = row * TILE as usize + bx;
-            // Two blocks of one untextured item: lit together.
+            // Two blocks of one lit item: lit together.
             if ns == 1 && bx + 8 < w {
                 if let Some(item) = pair_item(p, vis.winner, i0) {
                     shade_pair::<V>(p, item, eye, vis, out, i0);
@@ -376,8 +376,8 @@ fn attributes<V: V8>(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V) -> 
 }
 
 /// The item that two neighbouring blocks of a row (`i0`, `i0 + 8`) show
-/// in every one of their sixteen pixels, when it is one untextured lit
-/// item: those blocks are lit together as a [`Pair`].
+/// in every one of their sixteen pixels, when it is one lit item: those
+/// blocks are lit together as a [`Pair`].
 #[inline(always)]
 fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
     let win = &winner[i0..i0 + 16];
@@ -391,12 +391,11 @@ fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
             return None;
         }
     }
-    let it = &p.items[item as usize];
-    (!it.textured && !it.unlit).then_some(item)
+    (!p.items[item as usize].unlit).then_some(item)
 }
 
 /// Shades the sixteen pixels at `i0` (one row, two blocks) that all show
-/// the untextured lit `item` (see [`pair_item`]): attributes per block,
+/// the lit `item` (see [`pair_item`]): attributes and texture per block,
 /// lighting once over both as a [`Pair`] — the same per-lane arithmetic
 /// as [`shade_group`], so the same bits.
 #[inline(always)]
@@ -421,14 +420,30 @@ fn shade_pair<V: V8>(
     for (j, v) in v.iter_mut().enumerate() {
         *v = Pair(a[j] * sa, b[j] * sb);
     }
-    let lit = shade8(
+    let mut diffuse = [v[6], v[7], v[8]];
+    // Textured: sampled per block, lit as a pair, combined per block.
+    let mut texels = None;
+    if it.textured {
+        let uva = UvLanes::new(p, &wa, 0xFF, b1a, b2a, sa);
+        let uvb = UvLanes::new(p, &wb, 0xFF, b1b, b2b, sb);
+        let (da, ta) = apply_texture(it, &uva, [v[6].0, v[7].0, v[8].0]);
+        let (db, tb) = apply_texture(it, &uvb, [v[6].1, v[7].1, v[8].1]);
+        diffuse = [Pair(da[0], db[0]), Pair(da[1], db[1]), Pair(da[2], db[2])];
+        texels = Some((ta, tb));
+    }
+    let mut lit = shade8(
         &it.material,
         &it.lights,
         eye,
         [v[0], v[1], v[2]],
         [v[3], v[4], v[5]],
-        [v[6], v[7], v[8]],
+        diffuse,
     );
+    if let (Some(s), Some((ta, tb))) = (&it.texture, texels) {
+        let la = after_lighting(s, &ta, [lit[0].0, lit[1].0, lit[2].0]);
+        let lb = after_lighting(s, &tb, [lit[0].1, lit[1].1, lit[2].1]);
+        lit = [Pair(la[0], lb[0]), Pair(la[1], lb[1]), Pair(la[2], lb[2])];
+    }
     for (dst, c) in [&mut *out.r, &mut *out.g, &mut *out.b].into_iter().zip(lit) {
         c.0.store(lanes8_mut(dst, i0));
         c.1.store(lanes8_mut(dst, i0 + 8));

@@ -137,27 +137,25 @@ impl Sampler {
         let y = (one - t) * h - half;
         let (x0, y0) = (x.floor(), y.floor());
         let (fx, fy) = (x - x0, y - y0);
-        // `clamp(-2, w)` as in the scalar path (x0 is finite here).
-        let x0 = x0.max(V::splat(-2.0)).min(w).trunc_i32();
-        let y0 = y0.max(V::splat(-2.0)).min(h).trunc_i32();
+        // `clamp(-2, w)` as in the scalar path (x0 is finite here), then the
+        // two wrapped indices per axis on lanes (small whole numbers, exact).
+        let x0 = x0.max(V::splat(-2.0)).min(w);
+        let y0 = y0.max(V::splat(-2.0)).min(h);
+        let (xa, xb) = wrap2(x0, w, self.wrap_s());
+        let (ya, yb) = wrap2(y0, h, self.wrap_t());
+        let (xa, xb) = (xa.trunc_i32(), xb.trunc_i32());
+        let (ya, yb) = (ya.trunc_i32(), yb.trunc_i32());
         let mut corner = [[0u32; 8]; 4];
         for k in 0..8 {
             let level = &levels[lv[k]];
-            let (lw, lh) = (level.width() as i64, level.height() as i64);
-            let xs = [
-                wrap(x0[k] as i64, lw, self.wrap_s()),
-                wrap(x0[k] as i64 + 1, lw, self.wrap_s()),
-            ];
-            let ys = [
-                wrap(y0[k] as i64, lh, self.wrap_t()),
-                wrap(y0[k] as i64 + 1, lh, self.wrap_t()),
-            ];
+            let lw = level.width() as usize;
             let px = level.pixels();
-            let at = |x: usize, y: usize| u32::from_le_bytes(px[y * lw as usize + x]);
-            corner[0][k] = at(xs[0], ys[0]);
-            corner[1][k] = at(xs[1], ys[0]);
-            corner[2][k] = at(xs[0], ys[1]);
-            corner[3][k] = at(xs[1], ys[1]);
+            let (ra, rb) = (ya[k] as usize * lw, yb[k] as usize * lw);
+            let (ca, cb) = (xa[k] as usize, xb[k] as usize);
+            corner[0][k] = u32::from_le_bytes(px[ra + ca]);
+            corner[1][k] = u32::from_le_bytes(px[ra + cb]);
+            corner[2][k] = u32::from_le_bytes(px[rb + ca]);
+            corner[3][k] = u32::from_le_bytes(px[rb + cb]);
         }
         let c00 = V::unpack_rgba8(&corner[0]);
         let c10 = V::unpack_rgba8(&corner[1]);
@@ -245,10 +243,22 @@ fn finite<V: V8>(x: V) -> V {
     V8::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
 }
 
-/// `texture::wrap`, shared.
+/// `texture::wrap` of the texel indices `i` and `i + 1` for lanes of whole
+/// numbers in −2..=n (`n` per lane, the level's size): repeat is
+/// `i − n·⌊i/n⌋` (`rem_euclid`; i/n is never rounded across a whole number
+/// for sizes ≤ 16384), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
+/// here (see `Sampler::lanes_cover`).
 #[inline(always)]
-fn wrap(i: i64, n: i64, mode: Wrap) -> usize {
-    super::texture::wrap(i, n, mode)
+fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
+    let one = V::splat(1.0);
+    let j = i + one;
+    match mode {
+        Wrap::Clamp => {
+            let (lo, hi) = (V::splat(0.0), n - one);
+            (i.max(lo).min(hi), j.max(lo).min(hi))
+        }
+        _ => (i - n * (i / n).floor(), j - n * (j / n).floor()),
+    }
 }
 
 #[cfg(test)]
