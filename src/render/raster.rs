@@ -683,7 +683,7 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
         let mut id = [0u32; TILE as usize];
         for s in 0..ns {
             let j = s * TILE_PIXELS + src;
-            for (a, c) in acc.iter_mut().zip([&*r, &*g, &*b]) {
+            for (a, c) in acc.iter_mut().zip([r, g, b]) {
                 for (a, c) in a[..tw].iter_mut().zip(&c[j..j + tw]) {
                     *a += c;
                 }

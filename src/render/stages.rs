@@ -35,7 +35,7 @@ impl Stages {
             bins: Vec::new(),
             tiles_x: 0,
             opts: opts.clone(),
-            view: view.clone(),
+            view: *view,
             scratch: Scratch::new(opts.samples()),
             frame: Frame::new(opts.width, opts.height, opts.background),
         };

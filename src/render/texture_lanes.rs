@@ -192,6 +192,8 @@ impl Sampler {
     /// [`Sampler::after_lighting`]'s colour for eight lanes: MODULATE on
     /// lanes (`clamp` is max-then-min, and MAXPS sends NaN to 0 as
     /// `f32::max` does), the rarer models lane by lane.
+    // Lane k of three channel arrays at once: an index loop reads best.
+    #[allow(clippy::needless_range_loop)]
     #[inline(always)]
     pub fn after_lighting8<V: V8>(&self, t: &[V; 4], lit: [V; 3]) -> [V; 3] {
         if !self.acts_after_lighting() {
@@ -279,6 +281,7 @@ mod tests {
     /// Eight lanes give `texel`'s exact bits for magnified, minified,
     /// far-minified, repeated, clamped, negative and non-finite coordinates.
     #[test]
+    #[allow(clippy::needless_range_loop)]
     fn eight_lanes_match_one_pixel_bit_for_bit() {
         let img = image(64, 32);
         let mut seed = 12345u32;

@@ -238,6 +238,27 @@ fn uri_escape(url: &str) -> String {
     s
 }
 
+/// A texture's glTF sampler codes (§5.26): wrapS, wrapT, magFilter,
+/// minFilter.
+fn sampler_codes(t: &Texture) -> [u32; 4] {
+    let wrap = |w: Wrap| match w {
+        Wrap::Repeat => 10497,
+        Wrap::Clamp => 33071,
+        Wrap::Mirror => 33648,
+    };
+    let f = t.filter;
+    let mag = if f.mag_nearest { 9728 } else { 9729 };
+    let min = match (f.min_nearest, f.mip) {
+        (true, MipMode::None) => 9728,
+        (false, MipMode::None) => 9729,
+        (true, MipMode::Nearest) => 9984,
+        (false, MipMode::Nearest) => 9985,
+        (true, MipMode::Linear) => 9986,
+        (false, MipMode::Linear) => 9987,
+    };
+    [wrap(t.wrap_s), wrap(t.wrap_t), mag, min]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -259,25 +280,4 @@ mod tests {
         assert_eq!(back.components(), 2);
         assert_eq!(back.base().pixels(), img.base().pixels());
     }
-}
-
-/// A texture's glTF sampler codes (§5.26): wrapS, wrapT, magFilter,
-/// minFilter.
-fn sampler_codes(t: &Texture) -> [u32; 4] {
-    let wrap = |w: Wrap| match w {
-        Wrap::Repeat => 10497,
-        Wrap::Clamp => 33071,
-        Wrap::Mirror => 33648,
-    };
-    let f = t.filter;
-    let mag = if f.mag_nearest { 9728 } else { 9729 };
-    let min = match (f.min_nearest, f.mip) {
-        (true, MipMode::None) => 9728,
-        (false, MipMode::None) => 9729,
-        (true, MipMode::Nearest) => 9984,
-        (false, MipMode::Nearest) => 9985,
-        (true, MipMode::Linear) => 9986,
-        (false, MipMode::Linear) => 9987,
-    };
-    [wrap(t.wrap_s), wrap(t.wrap_t), mag, min]
 }
