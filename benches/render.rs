@@ -1,8 +1,10 @@
 //! `cargo bench --bench render`: the same scenes as `animed bench`, at
-//! 1280×720 with all cores.
+//! 1280×720 with all cores, and per-stage figures (setup, raster, shade,
+//! resolve) on one thread.
 
 use animed::internals::anim::evaluate;
 use animed::internals::render::job::{find_camera, view_for};
+use animed::internals::render::stages::Stages;
 use animed::internals::render::{bench_scenes, render_into, Frame, RenderOptions};
 use animed::internals::scene::Scene;
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -33,8 +35,49 @@ fn frame_aa(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
     });
 }
 
+/// The pipeline's stages one at a time on one thread (see
+/// `render::stages`): setup (prepare + binning), raster (depth pass),
+/// raster+shade (the shading pass needs its tile's depth pass; subtract
+/// raster for the shading alone), resolve.
+fn stages(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
+    let pose = evaluate(scene, 0.0);
+    let camera = find_camera(scene, None).ok().flatten();
+    let view = view_for(scene, &pose, camera, W as f32 / H as f32);
+    let opts = RenderOptions {
+        width: W,
+        height: H,
+        headlight: false,
+        threads: 1,
+        aa,
+        ..RenderOptions::default()
+    };
+    let mut s = Stages::new(scene, &pose, &view, &opts);
+    c.bench_function(&format!("{name}/setup"), |b| {
+        b.iter(|| s.setup(scene, &pose))
+    });
+    c.bench_function(&format!("{name}/raster"), |b| b.iter(|| s.raster()));
+    c.bench_function(&format!("{name}/raster+shade"), |b| {
+        b.iter(|| s.raster_and_shade())
+    });
+    c.bench_function(&format!("{name}/resolve"), |b| b.iter(|| s.resolve()));
+    criterion::black_box(s.frame());
+}
+
 fn benches(c: &mut Criterion) {
     let aspect = W as f32 / H as f32;
+    stages(c, "stages_layers_1", &bench_scenes::layers(1, aspect), 1);
+    stages(
+        c,
+        "stages_small_triangles_100k",
+        &bench_scenes::small_triangles(100_000, aspect),
+        1,
+    );
+    stages(
+        c,
+        "stages_textured_1",
+        &bench_scenes::layers_textured(1, aspect),
+        1,
+    );
     frame(c, "layers_1_3lights", &bench_scenes::layers(1, aspect));
     frame(c, "layers_8_3lights", &bench_scenes::layers(8, aspect));
     frame(

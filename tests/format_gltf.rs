@@ -517,6 +517,63 @@ fn base_color_textures_samplers_and_transform() {
 }
 
 #[test]
+fn sampler_modes_mirror_nearest_and_mask_are_read_and_written_back() {
+    use animed::internals::scene::{Filter, MipMode};
+    // tests/data/gltf/sampler_modes.gltf (make.py): NEAREST filters,
+    // MIRRORED_REPEAT, alphaMode MASK with alphaCutoff 0.5 — no warnings.
+    let l = load("sampler_modes.gltf");
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let (t, _) = texture_at(&l.scene, "Mirrored", Vec3::new(-2.2, 1.0, 0.0));
+    assert_eq!((t.wrap_s, t.wrap_t), (Wrap::Mirror, Wrap::Clamp));
+    let nearest_no_mip = Filter {
+        mag_nearest: true,
+        min_nearest: true,
+        mip: MipMode::None,
+    };
+    assert_eq!((t.filter, t.alpha_cutoff), (nearest_no_mip, None));
+    let (t, _) = texture_at(&l.scene, "Masked", Vec3::new(0.2, 1.0, 0.0));
+    let mip_nearest = Filter {
+        mip: MipMode::Nearest,
+        ..nearest_no_mip
+    };
+    assert_eq!((t.filter, t.alpha_cutoff), (mip_nearest, Some(0.5)));
+    // Written back: the same sampler codes and MASK + alphaCutoff.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_sampler_modes");
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("modes.gltf");
+    let report = format::save(&l.scene, &out, &WriteOptions::default()).unwrap();
+    assert!(report.warnings.is_empty(), "{:?}", report.warnings);
+    let json: serde_json::Value = serde_json::from_slice(&std::fs::read(&out).unwrap()).unwrap();
+    let samplers = json["samplers"].as_array().unwrap();
+    let codes: Vec<[u64; 4]> = samplers
+        .iter()
+        .map(|s| ["wrapS", "wrapT", "magFilter", "minFilter"].map(|k| s[k].as_u64().unwrap()))
+        .collect();
+    assert!(codes.contains(&[33648, 33071, 9728, 9728]), "{codes:?}");
+    assert!(codes.contains(&[33071, 33071, 9728, 9984]), "{codes:?}");
+    let masked = json["materials"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["alphaMode"] == "MASK")
+        .expect("a MASK material");
+    assert_eq!(masked["alphaCutoff"], 0.5);
+    let back = animed::internals::format::load(&out).unwrap();
+    assert!(back.warnings.is_empty(), "{:?}", back.warnings);
+    for (name, p) in [
+        ("Mirrored", Vec3::new(-2.2, 1.0, 0.0)),
+        ("Masked", Vec3::new(0.2, 1.0, 0.0)),
+    ] {
+        let (a, _) = texture_at(&l.scene, name, p);
+        let (b, _) = texture_at(&back.scene, name, p);
+        assert_eq!(
+            (a.wrap_s, a.wrap_t, a.filter, a.alpha_cutoff),
+            (b.wrap_s, b.wrap_t, b.filter, b.alpha_cutoff)
+        );
+    }
+}
+
+#[test]
 fn textures_survive_gltf_and_glb_round_trips() {
     let src = load("textured.gltf").scene;
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_textures");

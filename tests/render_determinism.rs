@@ -150,28 +150,25 @@ fn demo_scene() {
     golden::check("demo_aa4", &render_at(&demo, &aa, 0.0).unwrap());
 }
 
-/// The SSE2 and AVX shading paths (AVX is picked at run time when the CPU
-/// has it; `ANIMED_SIMD=sse2` forces SSE2) write the same bytes: the demo
-/// has all three light kinds, a spot ramp, specular and transparency.
+/// The SSE2, AVX and AVX-512-register shading paths (picked at run time
+/// from the CPU; `ANIMED_SIMD=sse2` forces SSE2, `ANIMED_SIMD=avx` AVX
+/// without AVX-512's registers) write the same bytes: the demo has all
+/// three light kinds, a spot ramp, specular and transparency (also with 4x
+/// AA); inventor.iv has textures of every kind (the eight-lane sampler and
+/// its per-lane fallbacks).
 #[test]
 fn simd_path_never_changes_the_picture() {
     #[cfg(target_arch = "x86_64")]
     if !std::arch::is_x86_feature_detected!("avx") {
-        eprintln!("NOTE: this CPU has no AVX, so both runs below take the SSE2 path");
+        eprintln!("NOTE: this CPU has no AVX, so every run below takes the SSE2 path");
     }
     let out_dir = root().join("target").join("render-determinism");
     std::fs::create_dir_all(&out_dir).unwrap();
-    let render = |simd: Option<&str>, name: &str| {
+    let render = |file: &str, aa: &str, simd: Option<&str>, name: &str| {
         let out = out_dir.join(name);
         let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_animed"));
         cmd.args([
-            "render",
-            "assets/demo.wrl",
-            "--size",
-            "333x201",
-            "--time",
-            "2.5",
-            "-o",
+            "render", file, "--size", "333x201", "--time", "2.5", "--aa", aa, "-o",
         ])
         .arg(&out)
         .current_dir(root());
@@ -182,10 +179,21 @@ fn simd_path_never_changes_the_picture() {
         assert!(cmd.status().unwrap().success());
         image::open(&out).unwrap().to_rgb8()
     };
-    let sse2 = render(Some("sse2"), "simd_sse2.png");
-    let auto = render(None, "simd_auto.png");
-    assert!(
-        sse2 == auto,
-        "the SSE2 and AVX paths give different pictures"
-    );
+    for (file, aa) in [
+        ("assets/demo.wrl", "1"),
+        ("assets/demo.wrl", "4"),
+        ("tests/data/textures/inventor.iv", "1"),
+    ] {
+        let sse2 = render(file, aa, Some("sse2"), "simd_sse2.png");
+        let avx = render(file, aa, Some("avx"), "simd_avx.png");
+        let auto = render(file, aa, None, "simd_auto.png");
+        assert!(
+            sse2 == avx,
+            "{file} --aa {aa}: the SSE2 and AVX paths differ"
+        );
+        assert!(
+            auto == avx,
+            "{file} --aa {aa}: the AVX-512 and AVX paths differ"
+        );
+    }
 }

@@ -299,6 +299,55 @@ fn gltf_base_color_textures() {
     golden::check("gltf_textured", &draw_file("gltf/textured.gltf"));
 }
 
+#[test]
+fn gltf_sampler_modes() {
+    // tests/data/gltf/sampler_modes.gltf: left, a 4x4 texture of distinct
+    // colours, NEAREST, MIRRORED_REPEAT across u = 0..2: hard-edged texel
+    // squares, the right half the mirror image of the left; right, a yellow
+    // plus cut out of a 4x4 RGBA texture by alphaMode MASK (the corners are
+    // not drawn at all).
+    let f = draw_file("gltf/sampler_modes.gltf");
+    golden::check("gltf_sampler_modes", &f);
+    let (w, h) = (f.width as usize, f.height as usize);
+    let px = |x: usize, y: usize| f.color[y * w + x];
+    let id = |x: usize, y: usize| f.ids[y * w + x];
+    // The left quad's drawn columns, and its mirror symmetry (nearest
+    // texels: whole colours, so mirrored pixels match exactly, away from
+    // the quad's own edges).
+    let row = h / 2;
+    let cols: Vec<usize> = (0..w / 2).filter(|&x| id(x, row) != 0).collect();
+    let (a, b) = (cols[0], *cols.last().unwrap());
+    let mut same = 0;
+    for x in a + 2..(a + b) / 2 - 1 {
+        let m = a + b - x;
+        same += (px(x, row) == px(m, row)) as usize;
+    }
+    assert!(
+        same * 10 >= ((a + b) / 2 - 1 - (a + 2)) * 9,
+        "mirror symmetric: {same}"
+    );
+    // NEAREST: colour changes come as a few hard jumps at texel edges (4
+    // texels, mirrored: 6 inner edges; red steps by 60 per texel), not as
+    // bilinear ramps.
+    let red = |x: usize| (px(x, row) >> 16 & 0xFF) as i32;
+    let steps: Vec<i32> = (a + 2..b - 2)
+        .map(|x| (red(x + 1) - red(x)).abs())
+        .collect();
+    let jumps = steps.iter().filter(|&&d| d > 20).count();
+    let small = steps.iter().filter(|&&d| d <= 2).count();
+    assert!((5..=8).contains(&jumps), "{jumps} hard edges");
+    assert_eq!(small + jumps, steps.len(), "{steps:?}");
+    // MASK: the plus's centre is drawn, its corners are background.
+    let right: Vec<usize> = (w / 2..w).filter(|&x| id(x, row) != 0).collect();
+    let (c0, c1) = (right[0], *right.last().unwrap());
+    let cx = (c0 + c1) / 2;
+    let quarter = (c1 - c0) / 8;
+    assert_ne!(id(cx, row), 0);
+    let top = (0..h).find(|&y| id(cx, y) != 0).unwrap();
+    assert_eq!(id(c0 + quarter, top + quarter), 0, "corner cut out");
+    assert_eq!(id(c1 - quarter, top + quarter), 0, "corner cut out");
+}
+
 /// Every textured shape's texture coordinate after its texture transform,
 /// per vertex, with the image's pixels and wraps: what a round trip must
 /// keep.

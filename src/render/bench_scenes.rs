@@ -125,9 +125,7 @@ pub fn layers_textured(layers_count: usize, aspect: f32) -> Scene {
 }
 
 /// [`small_triangles`] with texture coordinates across the grid and a
-/// 256×256 checker texture on the material (what `tex`'s sampler draws;
-/// until it is connected the renderer computes the coordinates and their
-/// derivatives and keeps the diffuse colour).
+/// 256×256 checker texture on the material (trilinear-sampled).
 pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
     let mut s = small_triangles(count, aspect);
     if let Some(image) = checker_image(&mut s) {

@@ -15,11 +15,13 @@
 //! texture; see [`UvLanes`] and [`apply_texture`].
 
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
+use super::lanes::Pair;
 use super::prepare::{Item, Prepared, Tri, INV_W, SUBPIXEL};
 use super::shade::shade8;
 use super::simd::{self, Sse8, V8};
 use super::texture::Sampler;
-use glam::{Vec2, Vec3, Vec4};
+use super::texture_lanes::UvIn;
+use glam::{Vec2, Vec3};
 
 /// Tile edge in pixels (the row stride of every tile buffer).
 pub const TILE: i32 = 64;
@@ -56,12 +58,33 @@ pub fn shade_visible(
     out: &mut Shaded,
 ) {
     #[cfg(target_arch = "x86_64")]
+    if simd::avx512() {
+        // SAFETY: `simd::avx512()` checked that the CPU has AVX-512F/VL
+        // (and so AVX).
+        unsafe { shade_visible_avx512(p, eye, background, size, vis, out) };
+        return;
+    }
+    #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
         unsafe { shade_visible_avx(p, eye, background, size, vis, out) };
         return;
     }
     shade_visible_in::<Sse8>(p, eye, background, size, vis, out);
+}
+
+/// The AVX path compiled with AVX-512's 32 registers (see `simd::avx512`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx,avx2,avx512f,avx512vl")]
+unsafe fn shade_visible_avx512(
+    p: &Prepared,
+    eye: Vec3,
+    background: Vec3,
+    size: (usize, usize, usize),
+    vis: &Visible,
+    out: &mut Shaded,
+) {
+    shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -125,8 +148,20 @@ fn shade_visible_in<V: V8>(
         V::splat(background.z),
     ];
     for row in 0..h {
+        let mut next = 0;
         for bx in (0..w).step_by(8) {
+            if bx < next {
+                continue;
+            }
             let i0 = row * TILE as usize + bx;
+            // Two blocks of one lit item: lit together.
+            if ns == 1 && bx + 8 < w {
+                if let Some(item) = pair_item(p, vis.winner, i0) {
+                    shade_pair::<V>(p, item, eye, vis, out, i0);
+                    next = bx + 16;
+                    continue;
+                }
+            }
             // Per sample, the lanes still to colour.
             let mut pending = [0u32; 8];
             for (s, pend) in pending.iter_mut().enumerate().take(ns) {
@@ -184,7 +219,7 @@ fn shade_visible_in<V: V8>(
                     }
                     todo &= !group;
                     let item = &p.items[item_ix as usize];
-                    let c = shade_group::<V>(p, item, eye, &win, group, b1, b2, bx, row);
+                    let c = shade_group::<V>(p, item, eye, &win, group, b1, b2);
                     for (dst, v) in rgb.iter_mut().zip(c) {
                         store_masked(dst, v, group);
                     }
@@ -236,20 +271,17 @@ fn shade_visible_in<V: V8>(
     }
 }
 
-/// Calls `f(triangle, lane mask)` once per distinct triangle among the
-/// lanes of `group`.
+/// The next distinct triangle among the lanes of `rest` and the mask of
+/// the lanes showing it (removed from `rest`).
 #[inline(always)]
-fn for_each_tri<'p>(p: &'p Prepared, win: &[u32; 8], group: u32, mut f: impl FnMut(&'p Tri, u32)) {
-    let mut rest = group;
-    while rest != 0 {
-        let t = win[rest.trailing_zeros() as usize];
-        let mut mask = 0u32;
-        for (k, &wk) in win.iter().enumerate() {
-            mask |= ((rest >> k & 1 == 1 && wk == t) as u32) << k;
-        }
-        rest &= !mask;
-        f(&p.opaque[t as usize], mask);
+fn next_tri<'p>(p: &'p Prepared, win: &[u32; 8], rest: &mut u32) -> (&'p Tri, u32) {
+    let t = win[rest.trailing_zeros() as usize];
+    let mut mask = 0u32;
+    for (k, &wk) in win.iter().enumerate() {
+        mask |= ((*rest >> k & 1 == 1 && wk == t) as u32) << k;
     }
+    *rest &= !mask;
+    (&p.opaque[t as usize], mask)
 }
 
 /// `base + b1·d1 + b2·d2` of plane `j` of `t`, per lane.
@@ -259,7 +291,6 @@ fn plane<V: V8>(t: &Tri, j: usize, b1: V, b2: V) -> V {
 }
 
 /// Interpolates and lights the lanes of `group` (all of one item).
-#[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn shade_group<V: V8>(
     p: &Prepared,
@@ -269,27 +300,65 @@ fn shade_group<V: V8>(
     group: u32,
     b1: V,
     b2: V,
-    bx: usize,
-    row: usize,
 ) -> [V; 3] {
-    // Perspective-correct attributes: every plane holds value/w, plane
-    // INV_W holds 1/w. Lanes outside `group` carry harmless values of the
-    // first triangle's plane.
-    const USED: [usize; 10] = [
-        A_POS,
-        A_POS + 1,
-        A_POS + 2,
-        A_NORMAL,
-        A_NORMAL + 1,
-        A_NORMAL + 2,
-        A_COLOR,
-        A_COLOR + 1,
-        A_COLOR + 2,
-        INV_W,
-    ];
+    // No closures over lanes in this file: a closure is a function of its
+    // own without the caller's AVX target feature, and lane operations
+    // inside it stop being inlined (a call per instruction).
+    let (a, s) = attributes(p, win, group, b1, b2);
+    let mut v = [s; 9];
+    for (v, a) in v.iter_mut().zip(a) {
+        *v = a * s;
+    }
+    let mut diffuse = [v[6], v[7], v[8]];
+    let mut texels = None;
+    if item.textured {
+        let uv = UvLanes::new(p, win, group, b1, b2, s);
+        let (d, t) = apply_texture(item, &uv, diffuse);
+        diffuse = d;
+        texels = Some(t);
+    }
+    if item.unlit {
+        return diffuse;
+    }
+    let lit = shade8(
+        &item.material,
+        &item.lights,
+        eye,
+        [v[0], v[1], v[2]],
+        [v[3], v[4], v[5]],
+        diffuse,
+    );
+    match (&item.texture, texels) {
+        (Some(s), Some(t)) => after_lighting(s, &t, lit),
+        _ => lit,
+    }
+}
+
+/// Plane indices [`attributes`] evaluates: position, normal, colour, 1/w.
+const USED: [usize; 10] = [
+    A_POS,
+    A_POS + 1,
+    A_POS + 2,
+    A_NORMAL,
+    A_NORMAL + 1,
+    A_NORMAL + 2,
+    A_COLOR,
+    A_COLOR + 1,
+    A_COLOR + 2,
+    INV_W,
+];
+
+/// The [`USED`] planes (value/w, then 1/w) of the lanes of `group`, each
+/// from its own triangle, and `s` = w (1 over the last plane): attribute j
+/// is `a[j] · s`, perspective-correct. Lanes outside `group` carry harmless
+/// values of the first triangle's planes.
+#[inline(always)]
+fn attributes<V: V8>(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V) -> ([V; 10], V) {
     let mut a = [V::splat(0.0); 10];
+    let mut rest = group;
     let mut first = true;
-    for_each_tri(p, win, group, |t, mask| {
+    while rest != 0 {
+        let (t, mask) = next_tri(p, win, &mut rest);
         if first {
             for (v, &j) in a.iter_mut().zip(&USED) {
                 *v = plane(t, j, b1, b2);
@@ -301,32 +370,85 @@ fn shade_group<V: V8>(
                 *v = V::select(m, plane(t, j, b1, b2), *v);
             }
         }
-    });
+    }
     let s = V::splat(1.0) / a[9];
-    let at = |j: usize| a[j] * s;
-    let mut diffuse = [at(6), at(7), at(8)];
+    (a, s)
+}
+
+/// The item that two neighbouring blocks of a row (`i0`, `i0 + 8`) show
+/// in every one of their sixteen pixels, when it is one lit item: those
+/// blocks are lit together as a [`Pair`].
+#[inline(always)]
+fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
+    let win = &winner[i0..i0 + 16];
+    let first = win[0];
+    if first == NONE {
+        return None;
+    }
+    let item = p.opaque[first as usize].item;
+    for &t in &win[1..] {
+        if t != first && (t == NONE || p.opaque[t as usize].item != item) {
+            return None;
+        }
+    }
+    (!p.items[item as usize].unlit).then_some(item)
+}
+
+/// Shades the sixteen pixels at `i0` (one row, two blocks) that all show
+/// the lit `item` (see [`pair_item`]): attributes and texture per block,
+/// lighting once over both as a [`Pair`] — the same per-lane arithmetic
+/// as [`shade_group`], so the same bits.
+#[inline(always)]
+fn shade_pair<V: V8>(
+    p: &Prepared,
+    item: u32,
+    eye: Vec3,
+    vis: &Visible,
+    out: &mut Shaded,
+    i0: usize,
+) {
+    let it = &p.items[item as usize];
+    let (wa, wb) = (*lanes8(vis.winner, i0), *lanes8(vis.winner, i0 + 8));
+    let (b1a, b2a) = (V::load(lanes8(vis.b1, i0)), V::load(lanes8(vis.b2, i0)));
+    let (b1b, b2b) = (
+        V::load(lanes8(vis.b1, i0 + 8)),
+        V::load(lanes8(vis.b2, i0 + 8)),
+    );
+    let (a, sa) = attributes(p, &wa, 0xFF, b1a, b2a);
+    let (b, sb) = attributes(p, &wb, 0xFF, b1b, b2b);
+    let mut v = [Pair(sa, sb); 9];
+    for (j, v) in v.iter_mut().enumerate() {
+        *v = Pair(a[j] * sa, b[j] * sb);
+    }
+    let mut diffuse = [v[6], v[7], v[8]];
+    // Textured: sampled per block, lit as a pair, combined per block.
     let mut texels = None;
-    if item.textured {
-        let uv = UvLanes::new(p, win, group, b1, b2, s);
-        let (d, t) = apply_texture(item, &uv, diffuse, (bx, row));
-        diffuse = d;
-        texels = Some(t);
+    if it.textured {
+        let uva = UvLanes::new(p, &wa, 0xFF, b1a, b2a, sa);
+        let uvb = UvLanes::new(p, &wb, 0xFF, b1b, b2b, sb);
+        let (da, ta) = apply_texture(it, &uva, [v[6].0, v[7].0, v[8].0]);
+        let (db, tb) = apply_texture(it, &uvb, [v[6].1, v[7].1, v[8].1]);
+        diffuse = [Pair(da[0], db[0]), Pair(da[1], db[1]), Pair(da[2], db[2])];
+        texels = Some((ta, tb));
     }
-    if item.unlit {
-        return diffuse;
-    }
-    let lit = shade8(
-        &item.material,
-        &item.lights,
+    let mut lit = shade8(
+        &it.material,
+        &it.lights,
         eye,
-        [at(0), at(1), at(2)],
-        [at(3), at(4), at(5)],
+        [v[0], v[1], v[2]],
+        [v[3], v[4], v[5]],
         diffuse,
     );
-    match (&item.texture, texels) {
-        (Some(s), Some(t)) => after_lighting(s, &t, lit),
-        _ => lit,
+    if let (Some(s), Some((ta, tb))) = (&it.texture, texels) {
+        let la = after_lighting(s, &ta, [lit[0].0, lit[1].0, lit[2].0]);
+        let lb = after_lighting(s, &tb, [lit[0].1, lit[1].1, lit[2].1]);
+        lit = [Pair(la[0], lb[0]), Pair(la[1], lb[1]), Pair(la[2], lb[2])];
     }
+    for (dst, c) in [&mut *out.r, &mut *out.g, &mut *out.b].into_iter().zip(lit) {
+        c.0.store(lanes8_mut(dst, i0));
+        c.1.store(lanes8_mut(dst, i0 + 8));
+    }
+    out.ids[i0..i0 + 16].fill(it.id);
 }
 
 /// Perspective-correct texture coordinates of eight pixels and their
@@ -351,8 +473,10 @@ impl<V: V8> UvLanes<V> {
     fn new(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V, s: V) -> UvLanes<V> {
         // Per lane: U, V planes and the constant gradients of U, V and q.
         let mut m = [V::splat(0.0); 8];
+        let mut rest = group;
         let mut first = true;
-        for_each_tri(p, win, group, |t, mask| {
+        while rest != 0 {
+            let (t, mask) = next_tri(p, win, &mut rest);
             let g = t.gradients();
             let vals = [
                 plane(t, A_UV, b1, b2),
@@ -373,7 +497,7 @@ impl<V: V8> UvLanes<V> {
                     *o = V::select(mk, v, *o);
                 }
             }
-        });
+        }
         let (u, v) = (m[0] * s, m[1] * s);
         UvLanes {
             u,
@@ -388,63 +512,30 @@ impl<V: V8> UvLanes<V> {
 
 /// The texture of a textured item applied to eight lanes before lighting:
 /// returns the diffuse colour lighting starts from (VRML97 acts here, see
-/// `texture::Sampler::before_lighting`) and each lane's texel
-/// for [`after_lighting`]. Sampling is scalar per lane (trilinear, level
-/// from that pixel's exact derivatives); `_at` is the block's first pixel.
+/// `texture::Sampler::before_lighting`) and the lanes' texels (R, G, B, A)
+/// for [`after_lighting`]. Sampling is trilinear with the level from each
+/// pixel's exact derivatives, on lanes (`texture_lanes`).
 #[inline(always)]
-pub fn apply_texture<V: V8>(
-    item: &Item,
-    uv: &UvLanes<V>,
-    diffuse: [V; 3],
-    _at: (usize, usize),
-) -> ([V; 3], [Vec4; 8]) {
-    let mut texels = [Vec4::ONE; 8];
+pub fn apply_texture<V: V8>(item: &Item, uv: &UvLanes<V>, diffuse: [V; 3]) -> ([V; 3], [V; 4]) {
     let Some(s) = &item.texture else {
-        return (diffuse, texels);
+        return (diffuse, [V::splat(1.0); 4]);
     };
-    let arr = |v: V| {
-        let mut a = [0.0; 8];
-        v.store(&mut a);
-        a
-    };
-    let (u, v) = (arr(uv.u), arr(uv.v));
-    let (dudx, dvdx, dudy, dvdy) = (arr(uv.du_dx), arr(uv.dv_dx), arr(uv.du_dy), arr(uv.dv_dy));
-    let mut d = diffuse.map(arr);
-    for k in 0..8 {
-        let t = s.texel(
-            Vec2::new(u[k], v[k]),
-            Vec2::new(dudx[k], dvdx[k]),
-            Vec2::new(dudy[k], dvdy[k]),
-        );
-        texels[k] = t;
-        let (c, _) = s.before_lighting(t, Vec3::new(d[0][k], d[1][k], d[2][k]), 1.0);
-        d[0][k] = c.x;
-        d[1][k] = c.y;
-        d[2][k] = c.z;
-    }
-    (d.map(|a| V::load(&a)), texels)
+    let t = s.texel8(&UvIn {
+        u: uv.u,
+        v: uv.v,
+        du_dx: uv.du_dx,
+        dv_dx: uv.dv_dx,
+        du_dy: uv.du_dy,
+        dv_dy: uv.dv_dy,
+    });
+    (s.before_lighting8(&t, diffuse), t)
 }
 
 /// The texture models that act on the lit colour (Replace, MODULATE, DECAL,
-/// BLEND),
-/// per lane; others leave `lit` as it is.
+/// BLEND), per lane; others leave `lit` as it is.
 #[inline(always)]
-pub fn after_lighting<V: V8>(s: &Sampler, texels: &[Vec4; 8], lit: [V; 3]) -> [V; 3] {
-    if !s.acts_after_lighting() {
-        return lit;
-    }
-    let mut c = lit.map(|v| {
-        let mut a = [0.0; 8];
-        v.store(&mut a);
-        a
-    });
-    for (k, t) in texels.iter().enumerate() {
-        let (o, _) = s.after_lighting(*t, Vec3::new(c[0][k], c[1][k], c[2][k]), 1.0);
-        c[0][k] = o.x;
-        c[1][k] = o.y;
-        c[2][k] = o.z;
-    }
-    c.map(|a| V::load(&a))
+pub fn after_lighting<V: V8>(s: &Sampler, texels: &[V; 4], lit: [V; 3]) -> [V; 3] {
+    s.after_lighting8(texels, lit)
 }
 
 /// One pixel of a textured triangle drawn outside the 8-lane pass (the
@@ -477,7 +568,8 @@ pub fn shade_textured(
     let p = Vec3::new(a[A_POS], a[A_POS + 1], a[A_POS + 2]);
     let n = Vec3::new(a[A_NORMAL], a[A_NORMAL + 1], a[A_NORMAL + 2]);
     let lit = super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye);
-    s.after_lighting(texel, lit, alpha)
+    let (c, alpha) = s.after_lighting(texel, lit, alpha);
+    (c, s.masked(alpha))
 }
 
 /// Screen-space gradients of a triangle's planes, per pixel step.

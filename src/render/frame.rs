@@ -1,3 +1,4 @@
+use super::simd::V8;
 use glam::Vec3;
 
 /// A rendered picture: colour, depth and object ids, row-major, top row first.
@@ -17,6 +18,18 @@ pub struct Frame {
 pub fn pack_rgb(c: Vec3) -> u32 {
     let q = |x: f32| ((x.clamp(0.0, 1.0) * 255.0 + 0.5) as u32).min(255);
     (q(c.x) << 16) | (q(c.y) << 8) | q(c.z)
+}
+
+/// [`pack_rgb`] for eight pixels given as channel lanes: the same clamp,
+/// scale, rounding and truncation lane by lane (MAXPS/MINPS send NaN to 0
+/// as `clamp` + the saturating cast do), so the bytes are identical.
+#[inline(always)]
+pub fn pack_rgb8<V: V8>(r: V, g: V, b: V) -> [u32; 8] {
+    let q = |x: V| {
+        (x.max(V::splat(0.0)).min(V::splat(1.0)) * V::splat(255.0) + V::splat(0.5)).trunc_i32()
+    };
+    let (r, g, b) = (q(r), q(g), q(b));
+    std::array::from_fn(|k| ((r[k] as u32) << 16) | ((g[k] as u32) << 8) | b[k] as u32)
 }
 
 impl Frame {
@@ -63,5 +76,46 @@ impl Frame {
             // from_raw only fails when the buffer is too small; to_rgba8 makes it exactly w*h*4.
             .expect("buffer size matches dimensions");
         img.save(path)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::simd::Sse8;
+
+    /// The eight-lane packing gives exactly `pack_rgb`'s bytes, edge cases
+    /// included (NaN, infinities, −0, halfway values, out of range).
+    #[test]
+    fn pack_rgb8_matches_pack_rgb() {
+        let mut xs = vec![
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            -0.0,
+            0.0,
+            1.0,
+            1.0001,
+            -1e-9,
+            1e30,
+            -1e30,
+            0.5 / 255.0,
+            1.5 / 255.0,
+            254.5 / 255.0,
+        ];
+        for k in 0..=5000 {
+            xs.push(-0.1 + 1.2 * k as f32 / 5000.0);
+        }
+        for c in xs.chunks(8) {
+            let mut a = [0.0f32; 8];
+            a[..c.len()].copy_from_slice(c);
+            // Rotate channels so every value appears in each of them.
+            let g: [f32; 8] = std::array::from_fn(|k| a[(k + 3) % 8]);
+            let b: [f32; 8] = std::array::from_fn(|k| a[(k + 5) % 8]);
+            let got = pack_rgb8(Sse8::load(&a), Sse8::load(&g), Sse8::load(&b));
+            for k in 0..8 {
+                assert_eq!(got[k], pack_rgb(Vec3::new(a[k], g[k], b[k])), "{}", a[k]);
+            }
+        }
     }
 }

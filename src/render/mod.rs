@@ -4,7 +4,8 @@
 //! API contract used by the CLI, the editor and the viewer:
 //! `render(scene, pose, view, opts) -> Frame`.
 //!
-//! Pipeline (one file per stage):
+//! Pipeline (one file per stage; `stages` runs them one at a time for the
+//! per-stage benchmarks):
 //! `prepare` (gather shapes/lights, transform, `clip`, project, cull, snap to
 //! the fixed-point grid) → binning into [`raster::TILE`]² tiles →
 //! `raster::draw_tile` per tile on the thread pool (depth pass, then one
@@ -20,11 +21,14 @@ mod fragment;
 mod frame;
 mod geometry;
 pub mod job;
+mod lanes;
 mod prepare;
 mod raster;
 mod shade;
 mod simd;
+pub mod stages;
 mod texture;
+mod texture_lanes;
 mod view;
 
 pub use frame::{pack_rgb, Frame};
@@ -166,41 +170,7 @@ fn draw(
     frame: &mut Frame,
 ) {
     let (w, h) = (opts.width as i32, opts.height as i32);
-    let tiles_x = (w + raster::TILE - 1) / raster::TILE;
-    let tiles_y = (h + raster::TILE - 1) / raster::TILE;
-    bins.resize_with((tiles_x * tiles_y) as usize, raster::Bin::default);
-    for b in bins.iter_mut() {
-        b.clear();
-    }
-    fn bin_all(
-        bins: &mut [raster::Bin],
-        tiles_x: i32,
-        boxes: impl Iterator<Item = [i32; 4]>,
-        pick: fn(&mut raster::Bin) -> &mut Vec<u32>,
-    ) {
-        for (i, b) in boxes.enumerate() {
-            let (tx0, ty0) = (b[0] / raster::TILE, b[1] / raster::TILE);
-            let (tx1, ty1) = ((b[2] - 1) / raster::TILE, (b[3] - 1) / raster::TILE);
-            for ty in ty0..=ty1 {
-                for tx in tx0..=tx1 {
-                    pick(&mut bins[(ty * tiles_x + tx) as usize]).push(i as u32);
-                }
-            }
-        }
-    }
-    bin_all(bins, tiles_x, p.opaque.iter().map(|t| t.bbox), |b| {
-        &mut b.opaque
-    });
-    bin_all(bins, tiles_x, p.transparent.iter().map(|t| t.bbox), |b| {
-        &mut b.transparent
-    });
-    bin_all(bins, tiles_x, p.lines.iter().map(|l| l.bbox), |b| {
-        &mut b.lines
-    });
-    bin_all(bins, tiles_x, p.points.iter().map(|q| q.bbox), |b| {
-        &mut b.points
-    });
-
+    let tiles_x = bin_tiles(p, bins, w, h);
     // Bands of one tile row each run in parallel; a band draws its tiles left
     // to right straight into its rows of the frame.
     let band = raster::TILE as usize * w as usize;
@@ -242,6 +212,47 @@ fn draw(
             }
             SCRATCH.with(|s| *s.borrow_mut() = Some(scratch));
         });
+}
+
+/// Bins the prepared primitives into the `TILE`² tiles of a `w`×`h` frame
+/// (row-major, each list in drawing order); returns the tiles per row.
+fn bin_tiles(p: &prepare::Prepared, bins: &mut Vec<raster::Bin>, w: i32, h: i32) -> i32 {
+    let tiles_x = (w + raster::TILE - 1) / raster::TILE;
+    let tiles_y = (h + raster::TILE - 1) / raster::TILE;
+    bins.resize_with((tiles_x * tiles_y) as usize, raster::Bin::default);
+    for b in bins.iter_mut() {
+        b.clear();
+    }
+    fn bin_all(
+        bins: &mut [raster::Bin],
+        tiles_x: i32,
+        boxes: impl Iterator<Item = [i32; 4]>,
+        pick: fn(&mut raster::Bin) -> &mut Vec<u32>,
+    ) {
+        for (i, b) in boxes.enumerate() {
+            let (tx0, ty0) = (b[0] / raster::TILE, b[1] / raster::TILE);
+            let (tx1, ty1) = ((b[2] - 1) / raster::TILE, (b[3] - 1) / raster::TILE);
+            for ty in ty0..=ty1 {
+                for tx in tx0..=tx1 {
+                    pick(&mut bins[(ty * tiles_x + tx) as usize]).push(i as u32);
+                }
+            }
+        }
+    }
+    bin_all(bins, tiles_x, p.opaque.iter().map(|t| t.bbox), |b| {
+        &mut b.opaque
+    });
+    bin_all(bins, tiles_x, p.transparent.iter().map(|t| t.bbox), |b| {
+        &mut b.transparent
+    });
+    bin_all(bins, tiles_x, p.lines.iter().map(|l| l.bbox), |b| {
+        &mut b.lines
+    });
+    bin_all(bins, tiles_x, p.points.iter().map(|q| q.bbox), |b| {
+        &mut b.points
+    });
+
+    tiles_x
 }
 
 /// A rayon pool per requested thread count, built once and reused (the

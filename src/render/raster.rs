@@ -285,6 +285,18 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
     );
     let inv_area = V::splat(ed.inv_area);
     let zero = V::splat(0.0);
+    // Edge values over the blocks stay below 2⁵² in magnitude (always, for
+    // triangles near the screen): lanes are then converted through exact
+    // f64 (`V8::from_edge`), giving the bits of `i64 as f32`.
+    let span_x = (x1 - rect[0] - c0 as i32 + 8) as i64;
+    let span_y = (y1 - y0) as i64;
+    let exact = (0..3).all(|k| {
+        ed.row[k]
+            .saturating_abs()
+            .saturating_add(s[k].saturating_abs().saturating_mul(span_x))
+            .saturating_add(ed.step_y[k].saturating_abs().saturating_mul(span_y))
+            < 1 << 52
+    });
     for y in y0..y1 {
         let mut e = ed.row;
         let row = (y - rect[1]) as usize * TILE as usize;
@@ -315,10 +327,8 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
                     }
                 }
                 if mask != 0 {
-                    let e1: [f32; 8] = std::array::from_fn(|l| (e[1] + l as i64 * s[1]) as f32);
-                    let e2: [f32; 8] = std::array::from_fn(|l| (e[2] + l as i64 * s[2]) as f32);
-                    let w1 = V::load(&e1) * inv_area;
-                    let w2 = V::load(&e2) * inv_area;
+                    let w1 = edge_lanes::<V>(exact, e[1], s[1]) * inv_area;
+                    let w2 = edge_lanes::<V>(exact, e[2], s[2]) * inv_area;
                     let z = z0 + w1 * dz1 + w2 * dz2;
                     let i0 = row + c;
                     let depth: &mut [f32; 8] =
@@ -353,6 +363,34 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
     }
 }
 
+/// Lanes `(e + l·s) as f32`, through exact f64 when `exact` (a function,
+/// not a closure: closures lose the caller's AVX target feature and their
+/// lane operations stop being inlined).
+#[inline(always)]
+fn edge_lanes<V: V8>(exact: bool, e: i64, s: i64) -> V {
+    if exact {
+        V::from_edge(e, s)
+    } else {
+        let mut a = [0.0; 8];
+        for (l, a) in a.iter_mut().enumerate() {
+            *a = (e + l as i64 * s) as f32;
+        }
+        V::load(&a)
+    }
+}
+
+/// Writes the first `dst.len()` (at most 8) of `px`: a whole block as one
+/// fixed-size copy (a variable-length one becomes a `memmove` call).
+#[inline(always)]
+fn put8(dst: &mut [u32], px: &[u32; 8]) {
+    let n = dst.len().min(8);
+    if let Ok(d) = <&mut [u32; 8]>::try_from(&mut dst[..n]) {
+        *d = *px;
+    } else {
+        dst[..n].copy_from_slice(&px[..n]);
+    }
+}
+
 #[inline]
 fn depth_at(t: &Tri, b1: f32, b2: f32) -> f32 {
     t.z[0] + b1 * (t.z[1] - t.z[0]) + b2 * (t.z[2] - t.z[0])
@@ -370,39 +408,20 @@ fn shade_attrs(item: &Item, a: &[f32; ATTRS], eye: Vec3) -> Vec3 {
     shade(&item.material, color, &item.lights, p, n, eye)
 }
 
-/// Draws every primitive of `bin` into the tile `rect`.
-pub fn draw_tile(
-    p: &Prepared,
-    bin: &Bin,
-    rect: Rect,
-    background: Vec3,
-    eye: Vec3,
-    scratch: &mut Scratch,
-    target: &mut Target,
-) {
-    let tw = (rect[2] - rect[0]) as usize;
-    let th = (rect[3] - rect[1]) as usize;
+/// Stage 1 of a tile: per sample, the nearest opaque triangle of `bin`
+/// (the first on ties) with its depth and barycentric weights.
+pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch) {
     let ns = scratch.samples;
-    let offsets = sample_offsets(ns);
-    let at = |x: i32, y: i32| (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
     let Scratch {
-        r,
-        g,
-        b,
         depth,
-        ids,
         winner,
         b1,
         b2,
-        cover,
-        cover_b,
         ..
     } = scratch;
     depth.fill(1.0);
     winner.fill(NONE);
-
-    // 1. Depth pass per sample: nearest opaque triangle (first wins on ties).
-    for (s, &off) in offsets.iter().enumerate() {
+    for (s, &off) in sample_offsets(ns).iter().enumerate() {
         let plane = s * TILE_PIXELS..(s + 1) * TILE_PIXELS;
         depth_pass(
             p,
@@ -417,7 +436,24 @@ pub fn draw_tile(
             },
         );
     }
-    // 2. Shade each visible pixel once per triangle it shows.
+}
+
+/// Stage 2 of a tile: shade each visible sample once per triangle it
+/// shows (after [`depth_tile`]), then the sky behind what was drawn.
+pub fn shade_tile(p: &Prepared, rect: Rect, background: Vec3, eye: Vec3, scratch: &mut Scratch) {
+    let tw = (rect[2] - rect[0]) as usize;
+    let th = (rect[3] - rect[1]) as usize;
+    let ns = scratch.samples;
+    let Scratch {
+        r,
+        g,
+        b,
+        ids,
+        winner,
+        b1,
+        b2,
+        ..
+    } = scratch;
     fragment::shade_visible(
         p,
         eye,
@@ -426,7 +462,6 @@ pub fn draw_tile(
         &Visible { winner, b1, b2 },
         &mut Shaded { r, g, b, ids },
     );
-    // 2b. A gradient or panorama background behind what was drawn.
     if let Some(sky) = &p.sky {
         for s in 0..ns {
             let pl = s * TILE_PIXELS..(s + 1) * TILE_PIXELS;
@@ -434,6 +469,34 @@ pub fn draw_tile(
             sky.fill_tile((rect[0], rect[1]), (tw, th), TILE as usize, &ids[pl], rgb);
         }
     }
+}
+
+/// Draws every primitive of `bin` into the tile `rect`: depth pass,
+/// shading pass, lines and points, transparent triangles, resolve.
+pub fn draw_tile(
+    p: &Prepared,
+    bin: &Bin,
+    rect: Rect,
+    background: Vec3,
+    eye: Vec3,
+    scratch: &mut Scratch,
+    target: &mut Target,
+) {
+    depth_tile(p, bin, rect, scratch);
+    shade_tile(p, rect, background, eye, scratch);
+    let ns = scratch.samples;
+    let offsets = sample_offsets(ns);
+    let at = |x: i32, y: i32| (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
+    let Scratch {
+        r,
+        g,
+        b,
+        depth,
+        ids,
+        cover,
+        cover_b,
+        ..
+    } = scratch;
     fn put(rgb: [&mut [f32]; 3], i: usize, c: Vec3) {
         rgb[0][i] = c.x;
         rgb[1][i] = c.y;
@@ -508,7 +571,12 @@ pub fn draw_tile(
     for &ti in &bin.transparent {
         let t = &p.transparent[ti as usize];
         let item = &p.items[t.item as usize];
+        // Alpha-tested (glTF MASK) pixels below the cutoff are not drawn.
+        let masks = item.texture.as_ref().is_some_and(|s| s.masks());
         let mut blend = |j: usize, (c, alpha): (Vec3, f32)| {
+            if masks && alpha == 0.0 {
+                return;
+            }
             let under = Vec3::new(r[j], g[j], b[j]);
             put([r, g, b], j, c * alpha + under * (1.0 - alpha));
             ids[j] = item.id;
@@ -575,16 +643,34 @@ pub fn draw_tile(
             }
         }
     }
-    // 5. Resolve into the frame: the mean of the samples (a box filter),
-    // the nearest sample's depth, the id of the first sample showing one.
+    resolve_tile(rect, scratch, target);
+}
+
+/// Stage 5 of a tile: resolve its samples into the frame — the mean of
+/// the samples (a box filter), the nearest sample's depth, the id of the
+/// first sample showing one.
+pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
+    let tw = (rect[2] - rect[0]) as usize;
+    let ns = scratch.samples;
+    let Scratch {
+        r,
+        g,
+        b,
+        depth,
+        ids,
+        ..
+    } = scratch;
     let inv = 1.0 / ns as f32;
     for (row, y) in (rect[1]..rect[3]).enumerate() {
         let dst = (y - target.y0) as usize * target.stride + rect[0] as usize;
         let src = row * TILE as usize;
         if ns == 1 {
-            for k in 0..tw {
-                target.color[dst + k] =
-                    super::frame::pack_rgb(Vec3::new(r[src + k], g[src + k], b[src + k]));
+            // Eight at a time (tile rows are TILE long, so the last block
+            // may read past `tw` but only `tw` pixels are written).
+            for k in (0..tw).step_by(8) {
+                let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
+                let px = super::frame::pack_rgb8(ld(r), ld(g), ld(b));
+                put8(&mut target.color[dst + k..dst + tw], &px);
             }
             target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
             target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
@@ -597,7 +683,7 @@ pub fn draw_tile(
         let mut id = [0u32; TILE as usize];
         for s in 0..ns {
             let j = s * TILE_PIXELS + src;
-            for (a, c) in acc.iter_mut().zip([&*r, &*g, &*b]) {
+            for (a, c) in acc.iter_mut().zip([r, g, b]) {
                 for (a, c) in a[..tw].iter_mut().zip(&c[j..j + tw]) {
                     *a += c;
                 }
@@ -609,9 +695,12 @@ pub fn draw_tile(
                 *i = if *i == 0 { *d } else { *i };
             }
         }
-        for (k, out) in target.color[dst..dst + tw].iter_mut().enumerate() {
-            let c = Vec3::new(acc[0][k], acc[1][k], acc[2][k]);
-            *out = super::frame::pack_rgb(c * inv);
+        let inv = Sse8::splat(inv);
+        for k in (0..tw).step_by(8) {
+            let ld =
+                |c: &[f32; TILE as usize]| Sse8::load(c[k..k + 8].try_into().expect("8")) * inv;
+            let px = super::frame::pack_rgb8(ld(&acc[0]), ld(&acc[1]), ld(&acc[2]));
+            put8(&mut target.color[dst + k..dst + tw], &px);
         }
         target.depth[dst..dst + tw].copy_from_slice(&zmin[..tw]);
         target.ids[dst..dst + tw].copy_from_slice(&id[..tw]);

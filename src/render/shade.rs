@@ -12,6 +12,7 @@
 //! the cut-off (the OpenGL spot exponent Inventor maps dropOffRate to).
 //! Lights are prepared once per frame in world space.
 
+use super::lanes::Lanes;
 use super::simd::{Sse8, V8};
 use crate::scene::{Light, LightKind, Material};
 use glam::{Mat4, Vec3};
@@ -141,7 +142,13 @@ pub fn shade(
     n: Vec3,
     eye: Vec3,
 ) -> Vec3 {
-    let s = |v: Vec3| [Sse8::splat(v.x), Sse8::splat(v.y), Sse8::splat(v.z)];
+    let s = |v: Vec3| {
+        [
+            <Sse8 as V8>::splat(v.x),
+            <Sse8 as V8>::splat(v.y),
+            <Sse8 as V8>::splat(v.z),
+        ]
+    };
     let c = shade8(m, lights, eye, s(p), s(n), s(diffuse));
     let lane0 = |v: Sse8| {
         let mut a = [0.0; 8];
@@ -152,21 +159,21 @@ pub fn shade(
 }
 
 #[inline(always)]
-fn dot<V: V8>(a: &[V; 3], b: &[V; 3]) -> V {
+fn dot<V: Lanes>(a: &[V; 3], b: &[V; 3]) -> V {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 #[inline(always)]
-fn splat3<V: V8>(v: Vec3) -> [V; 3] {
+fn splat3<V: Lanes>(v: Vec3) -> [V; 3] {
     [V::splat(v.x), V::splat(v.y), V::splat(v.z)]
 }
 
 /// `v / |v|`, or zero for a zero vector; also returns |v|.
 #[inline(always)]
-fn normalize<V: V8>(v: [V; 3]) -> ([V; 3], V) {
+fn normalize<V: Lanes>(v: [V; 3]) -> ([V; 3], V) {
     let len = dot(&v, &v).sqrt();
     let zero = V::splat(0.0);
-    let inv = V::select(len.gt(zero), V::splat(1.0) / len, zero);
+    let inv = (V::splat(1.0) / len).keep(len.gt(zero));
     ([v[0] * inv, v[1] * inv, v[2] * inv], len)
 }
 
@@ -176,7 +183,7 @@ fn normalize<V: V8>(v: [V; 3]) -> ([V; 3], V) {
 /// never changes a result; per-light and per-material constants are
 /// computed once per call, outside the lane arithmetic.
 #[inline(always)]
-pub fn shade8<V: V8>(
+pub fn shade8<V: Lanes>(
     m: &ShadeMaterial,
     lights: &[WorldLight],
     eye: Vec3,
@@ -208,7 +215,7 @@ pub fn shade8<V: V8>(
                 let denom =
                     (V::splat(a.x) + V::splat(a.y) * dist + V::splat(a.z) * (dist * dist)).max(one);
                 let reach = dist.le(V::splat(radius)).and(dist.gt(zero));
-                let mut factor = V::select(reach, one / denom, zero);
+                let mut factor = (one / denom).keep(reach);
                 if let WorldLightKind::Spot { axis, .. } = l.kind {
                     let cos = zero - dot(&to_light, &splat3(axis));
                     factor = spot(&l.kind, factor, cos);
@@ -221,7 +228,7 @@ pub fn shade8<V: V8>(
         let spec = if use_specular {
             let (h, _) = normalize([to_light[0] + v[0], to_light[1] + v[1], to_light[2] + v[2]]);
             let ndh = dot(&n, &h).max(zero);
-            V::select(ndl.gt(zero), powi(ndh, m.exponent as u32), zero)
+            powi(ndh, m.exponent as u32).keep(ndl.gt(zero))
         } else {
             zero
         };
@@ -241,7 +248,7 @@ pub fn shade8<V: V8>(
 /// ramp — 1 within the beam width, linear in the angle down to 0 at the
 /// cut-off.
 #[inline(always)]
-fn spot<V: V8>(kind: &WorldLightKind, factor: V, cos: V) -> V {
+fn spot<V: Lanes>(kind: &WorldLightKind, factor: V, cos: V) -> V {
     let WorldLightKind::Spot {
         cos_cut_off,
         cos_beam,
@@ -255,7 +262,7 @@ fn spot<V: V8>(kind: &WorldLightKind, factor: V, cos: V) -> V {
     };
     let zero = V::splat(0.0);
     let inside = cos.gt(V::splat(cos_cut_off)).and(factor.gt(zero));
-    let factor = V::select(inside, factor, zero);
+    let factor = factor.keep(inside);
     if inside.bits() == 0 {
         return factor;
     }
@@ -265,16 +272,13 @@ fn spot<V: V8>(kind: &WorldLightKind, factor: V, cos: V) -> V {
             // An integer exponent (dropOffRate k/128): exact repeated squaring.
             return factor * powi(c, exponent as u32);
         }
-        let mut f = [0.0; 8];
-        let mut cs = [0.0; 8];
-        factor.store(&mut f);
-        c.store(&mut cs);
-        for k in 0..8 {
-            if f[k] != 0.0 {
-                f[k] *= libm::powf(cs[k], exponent);
+        return factor.map2(c, |f, c| {
+            if f != 0.0 {
+                f * libm::powf(c, exponent)
+            } else {
+                f
             }
-        }
-        return V::load(&f);
+        });
     }
     let full = V::splat(cos_beam).le(cos);
     if full.bits() & inside.bits() == inside.bits() {
@@ -290,7 +294,7 @@ fn spot<V: V8>(kind: &WorldLightKind, factor: V, cos: V) -> V {
 /// 0 ≤ x ≤ 1 (absolute error ≤ 2·10⁻⁸), and `acos x = π − acos(−x)` below
 /// 0. Only + − × √, so every machine gives the same bits.
 #[inline(always)]
-fn acos<V: V8>(x: V) -> V {
+fn acos<V: Lanes>(x: V) -> V {
     // a0 is A&S's coefficient (one f32 ulp below π/2), not π/2 itself.
     #[allow(clippy::approx_constant)]
     const A: [f32; 8] = [
@@ -318,7 +322,7 @@ fn acos<V: V8>(x: V) -> V {
 /// `x^e` per lane by repeated squaring: the same bits on every machine and
 /// build, unlike platform `powf`.
 #[inline(always)]
-fn powi<V: V8>(mut x: V, mut e: u32) -> V {
+fn powi<V: Lanes>(mut x: V, mut e: u32) -> V {
     let mut r = V::splat(1.0);
     while e > 0 {
         if e & 1 == 1 {
@@ -439,7 +443,7 @@ mod tests {
         let c = shade(&m, Vec3::ZERO, &[l], Vec3::ZERO, tilted, Vec3::Z * 3.0);
         assert!((c.x - tilted.z.powi(64)).abs() < 1e-6);
         let mut out = [0.0; 8];
-        powi(Sse8::splat(0.5), 10).store(&mut out);
+        powi(<Sse8 as V8>::splat(0.5), 10).store(&mut out);
         assert_eq!(out, [1.0 / 1024.0; 8]);
     }
 
@@ -448,7 +452,7 @@ mod tests {
         for k in 0..=2000 {
             let x = -1.0 + k as f32 / 1000.0;
             let mut out = [0.0; 8];
-            acos(Sse8::splat(x)).store(&mut out);
+            acos(<Sse8 as V8>::splat(x)).store(&mut out);
             assert!((out[0] - libm::acosf(x)).abs() < 1e-6, "{x}: {}", out[0]);
         }
     }

@@ -59,6 +59,55 @@ mod imp {
         pub fn sqrt(self) -> F4 {
             unsafe { F4(_mm_sqrt_ps(self.0)) }
         }
+        /// `self > o ? self : o` (what MAXPS computes, NaN → `o`).
+        #[inline(always)]
+        pub fn max(self, o: F4) -> F4 {
+            unsafe { F4(_mm_max_ps(self.0, o.0)) }
+        }
+        /// `self < o ? self : o` (what MINPS computes, NaN → `o`).
+        #[inline(always)]
+        pub fn min(self, o: F4) -> F4 {
+            unsafe { F4(_mm_min_ps(self.0, o.0)) }
+        }
+        /// Truncated towards zero to i32, as `as i32` for values in range.
+        #[inline(always)]
+        pub fn trunc_i32(self) -> [i32; 4] {
+            let mut out = [0i32; 4];
+            unsafe { _mm_storeu_si128(out.as_mut_ptr().cast(), _mm_cvttps_epi32(self.0)) };
+            out
+        }
+        /// Bitwise OR (of masks).
+        #[inline(always)]
+        pub fn or(self, o: F4) -> F4 {
+            unsafe { F4(_mm_or_ps(self.0, o.0)) }
+        }
+        /// `(e + (first + k)·step) as f32` for k = 0..4 through exact f64
+        /// (see `V8::from_edge`).
+        #[inline(always)]
+        pub fn from_edge(e: i64, step: i64, first: i64) -> F4 {
+            unsafe {
+                let base = _mm_set1_pd(e as f64);
+                let st = _mm_set1_pd(step as f64);
+                let k = first as f64;
+                let lo = _mm_add_pd(base, _mm_mul_pd(_mm_set_pd(k + 1.0, k), st));
+                let hi = _mm_add_pd(base, _mm_mul_pd(_mm_set_pd(k + 3.0, k + 2.0), st));
+                F4(_mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi)))
+            }
+        }
+        /// Four RGBA8 words as R, G, B, A lanes (0..=255, exact).
+        #[inline(always)]
+        pub fn unpack_rgba8(w: &[u32; 4]) -> [F4; 4] {
+            unsafe {
+                let v = _mm_loadu_si128(w.as_ptr().cast());
+                let m = _mm_set1_epi32(0xFF);
+                [
+                    F4(_mm_cvtepi32_ps(_mm_and_si128(v, m))),
+                    F4(_mm_cvtepi32_ps(_mm_and_si128(_mm_srli_epi32::<8>(v), m))),
+                    F4(_mm_cvtepi32_ps(_mm_and_si128(_mm_srli_epi32::<16>(v), m))),
+                    F4(_mm_cvtepi32_ps(_mm_srli_epi32::<24>(v))),
+                ]
+            }
+        }
         #[inline(always)]
         pub fn gt(self, o: F4) -> M4 {
             unsafe { M4(_mm_cmpgt_ps(self.0, o.0)) }
@@ -143,6 +192,26 @@ mod imp {
         pub fn div(self, o: F4) -> F4 {
             map(self, o, |a, b| a / b)
         }
+        pub fn max(self, o: F4) -> F4 {
+            map(self, o, |a, b| if a > b { a } else { b })
+        }
+        pub fn min(self, o: F4) -> F4 {
+            map(self, o, |a, b| if a < b { a } else { b })
+        }
+        pub fn trunc_i32(self) -> [i32; 4] {
+            self.0.map(|v| v as i32)
+        }
+        pub fn or(self, o: F4) -> F4 {
+            map(self, o, |a, b| f32::from_bits(a.to_bits() | b.to_bits()))
+        }
+        pub fn from_edge(e: i64, step: i64, first: i64) -> F4 {
+            F4(std::array::from_fn(|k| {
+                (e + (first + k as i64) * step) as f32
+            }))
+        }
+        pub fn unpack_rgba8(w: &[u32; 4]) -> [F4; 4] {
+            std::array::from_fn(|c| F4(w.map(|v| (v >> (8 * c) & 0xFF) as f32)))
+        }
         pub fn sqrt(self) -> F4 {
             F4(self.0.map(f32::sqrt))
         }
@@ -225,14 +294,48 @@ pub trait V8:
         let a = std::array::from_fn(|k| f32::from_bits(if bits >> k & 1 == 1 { !0 } else { 0 }));
         Self::load(&a)
     }
-    /// Lane-wise `a > b ? a : b`.
+    /// Lane-wise `self > o ? self : o` (so a NaN in either gives `o`):
+    /// exactly MAXPS.
+    fn max(self, o: Self) -> Self;
+    /// Lane-wise `self < o ? self : o`: exactly MINPS.
+    fn min(self, o: Self) -> Self;
+    /// Lane-wise `mask ? self : 0` — one AND, cheaper than a select.
+    fn keep(self, mask: Self) -> Self;
+    /// Each lane truncated towards zero to an i32 (lanes must lie within
+    /// i32; exactly what `as i32` gives there).
+    fn trunc_i32(self) -> [i32; 8];
+    /// Eight RGBA8 words (R in the low byte) as four channel lanes of
+    /// 0.0..=255.0 (exact conversions).
+    fn unpack_rgba8(words: &[u32; 8]) -> [Self; 4];
+
+    /// Lane-wise `f32::floor` for finite lanes, bit for bit (−0 stays −0;
+    /// |x| ≥ 2²³ is already whole). Built from truncation, so it needs no
+    /// SSE4.1 `ROUNDPS` and no `floorf` call.
     #[inline(always)]
-    fn max(self, o: Self) -> Self {
-        Self::select(self.gt(o), self, o)
+    fn floor(self) -> Self {
+        let whole = V8::le(Self::splat(8_388_608.0), self)
+            .or(self.le(Self::splat(-8_388_608.0)))
+            .or(self.eq(Self::splat(0.0)));
+        let t = Self::from_i32(self.trunc_i32().map(|i| i as f32));
+        let t = Self::select(t.gt(self), t - Self::splat(1.0), t);
+        Self::select(whole, self, t)
     }
+    /// Lane-wise `a == b` as a mask.
     #[inline(always)]
-    fn min(self, o: Self) -> Self {
-        Self::select(o.gt(self), self, o)
+    fn eq(self, o: Self) -> Self {
+        self.le(o).and(o.le(self))
+    }
+    /// Lane-wise mask OR.
+    fn or(self, o: Self) -> Self;
+    /// Lanes `(e + k·step) as f32` for k = 0..8, for integer edge values
+    /// whose magnitudes stay below 2⁵³: computed exactly in f64 and rounded
+    /// once to f32, which is what `i64 as f32` gives, without eight scalar
+    /// conversions.
+    fn from_edge(e: i64, step: i64) -> Self;
+    /// Lanes from an array (an alias of `load` taking it by value).
+    #[inline(always)]
+    fn from_i32(a: [f32; 8]) -> Self {
+        Self::load(&a)
     }
 }
 
@@ -283,6 +386,37 @@ impl V8 for Sse8 {
     #[inline(always)]
     fn bits(self) -> u32 {
         self.0.as_mask().bits() | self.1.as_mask().bits() << 4
+    }
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        Sse8(self.0.max(o.0), self.1.max(o.1))
+    }
+    #[inline(always)]
+    fn min(self, o: Self) -> Self {
+        Sse8(self.0.min(o.0), self.1.min(o.1))
+    }
+    #[inline(always)]
+    fn keep(self, mask: Self) -> Self {
+        Sse8::and(mask, self)
+    }
+    #[inline(always)]
+    fn trunc_i32(self) -> [i32; 8] {
+        let (a, b) = (self.0.trunc_i32(), self.1.trunc_i32());
+        [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
+    }
+    #[inline(always)]
+    fn or(self, o: Self) -> Self {
+        Sse8(F4::or(self.0, o.0), F4::or(self.1, o.1))
+    }
+    #[inline(always)]
+    fn from_edge(e: i64, step: i64) -> Self {
+        Sse8(F4::from_edge(e, step, 0), F4::from_edge(e, step, 4))
+    }
+    #[inline(always)]
+    fn unpack_rgba8(words: &[u32; 8]) -> [Self; 4] {
+        let lo = F4::unpack_rgba8(words[..4].try_into().expect("4"));
+        let hi = F4::unpack_rgba8(words[4..].try_into().expect("4"));
+        std::array::from_fn(|c| Sse8(lo[c], hi[c]))
     }
 }
 
@@ -369,7 +503,62 @@ mod avx_lanes {
         }
         #[inline(always)]
         fn select(mask: Self, a: Self, b: Self) -> Self {
-            unsafe { Avx8(_mm256_blendv_ps(b.0, a.0, mask.0)) }
+            // AND/ANDNOT/OR rather than BLENDVPS: LLVM rewrites BLENDVPS
+            // into a sign test, which AVX without AVX2 does by converting
+            // the mask to floats and comparing (three extra instructions).
+            unsafe {
+                Avx8(_mm256_or_ps(
+                    _mm256_and_ps(mask.0, a.0),
+                    _mm256_andnot_ps(mask.0, b.0),
+                ))
+            }
+        }
+        #[inline(always)]
+        fn max(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_max_ps(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn min(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_min_ps(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn keep(self, mask: Self) -> Self {
+            unsafe { Avx8(_mm256_and_ps(mask.0, self.0)) }
+        }
+        #[inline(always)]
+        fn trunc_i32(self) -> [i32; 8] {
+            let mut out = [0i32; 8];
+            unsafe { _mm256_storeu_si256(out.as_mut_ptr().cast(), _mm256_cvttps_epi32(self.0)) };
+            out
+        }
+        #[inline(always)]
+        fn or(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_or_ps(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn from_edge(e: i64, step: i64) -> Self {
+            unsafe {
+                let base = _mm256_set1_pd(e as f64);
+                let st = _mm256_set1_pd(step as f64);
+                let lo = _mm256_add_pd(base, _mm256_mul_pd(_mm256_set_pd(3.0, 2.0, 1.0, 0.0), st));
+                let hi = _mm256_add_pd(base, _mm256_mul_pd(_mm256_set_pd(7.0, 6.0, 5.0, 4.0), st));
+                Avx8(_mm256_set_m128(_mm256_cvtpd_ps(hi), _mm256_cvtpd_ps(lo)))
+            }
+        }
+        #[inline(always)]
+        fn unpack_rgba8(words: &[u32; 8]) -> [Self; 4] {
+            // Integer shifts on 256 bits need AVX2: unpack two halves.
+            let lo = F4::unpack_rgba8(words[..4].try_into().expect("4"));
+            let hi = F4::unpack_rgba8(words[4..].try_into().expect("4"));
+            // SAFETY: as above (no closure: it would lose the AVX feature).
+            unsafe {
+                [
+                    Avx8(_mm256_set_m128(hi[0].0, lo[0].0)),
+                    Avx8(_mm256_set_m128(hi[1].0, lo[1].0)),
+                    Avx8(_mm256_set_m128(hi[2].0, lo[2].0)),
+                    Avx8(_mm256_set_m128(hi[3].0, lo[3].0)),
+                ]
+            }
         }
         #[inline(always)]
         fn and(self, o: Self) -> Self {
@@ -388,6 +577,31 @@ mod avx_lanes {
         |a: Avx8, b: Avx8| unsafe { Avx8(_mm256_mul_ps(a.0, b.0)) },
         |a: Avx8, b: Avx8| unsafe { Avx8(_mm256_div_ps(a.0, b.0)) }
     );
+}
+
+/// Whether the AVX-512 register file may serve the AVX path: the CPU has
+/// AVX-512F and VL, and `ANIMED_SIMD` is neither `sse2` nor `avx`. The
+/// same eight-lane AVX instructions then get 32 registers instead of 16
+/// (the lighting of a [`crate::render::lanes::Pair`] no longer spills);
+/// nothing fused is ever emitted (Rust never contracts a multiply and an
+/// add on its own), so the bytes stay the same.
+pub fn avx512() -> bool {
+    use std::sync::OnceLock;
+    static AVX512: OnceLock<bool> = OnceLock::new();
+    *AVX512.get_or_init(|| {
+        let forced_off = std::env::var("ANIMED_SIMD").is_ok_and(|v| v == "sse2" || v == "avx");
+        #[cfg(target_arch = "x86_64")]
+        {
+            !forced_off
+                && std::arch::is_x86_feature_detected!("avx512f")
+                && std::arch::is_x86_feature_detected!("avx512vl")
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let _ = forced_off;
+            false
+        }
+    })
 }
 
 /// Whether the AVX path may run: the CPU has AVX and `ANIMED_SIMD` is not
@@ -427,6 +641,10 @@ mod tests {
             a.min(b),
             V::select(a.gt(b), a, b * b),
             V::select(a.le(b).and(V::from_bits(0b1010_1010)), a, b),
+            a.keep(a.gt(b)),
+            V::load(&a.trunc_i32().map(|i| i as f32)),
+            a.floor(),
+            (b * V::splat(1e-3)).floor(),
         ] {
             let mut o = [0.0; 8];
             v.store(&mut o);
@@ -442,6 +660,51 @@ mod tests {
         assert_eq!(sse[0][0], 1.5f32 + 0.3);
         assert_eq!(sse[3][1], -2.25f32 / 4.0);
         assert_eq!(sse[4][1], 2.0);
+        assert_eq!(sse[9], [1.5, 0.0, 3.0e-3, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        assert_eq!(sse[10], [1.0, -2.0, 0.0, 7.0, 0.0, 0.0, 0.0, 3.0]);
+        let floors = |v: [f32; 8]| v.map(|x: f32| x.floor().to_bits());
+        let a = [1.5f32, -2.25, 3.0e-3, 7.0, 0.1, 1e-30, -0.0, 3.0];
+        assert_eq!(sse[11].map(f32::to_bits), floors(a));
+        let b = [0.3f32, 4.0, -1.0e5, 7.0, 0.7, 3.0, 2.0, 9.0].map(|x| x * 1e-3);
+        assert_eq!(sse[12].map(f32::to_bits), floors(b));
+        let big = [
+            -1e9f32, 1e9, -8388607.5, 8388607.5, -0.5, 0.5, -1.0, 16777215.0,
+        ];
+        let mut o = [0.0; 8];
+        Sse8::load(&big).floor().store(&mut o);
+        assert_eq!(o.map(f32::to_bits), floors(big));
+        for (e, st) in [
+            (0i64, 1i64),
+            (-5, 3),
+            (1 << 40, -(1 << 30) - 7),
+            ((1 << 52) - 9, 1),
+            (123_456_789_012, -987_654_321),
+        ] {
+            Sse8::from_edge(e, st).store(&mut o);
+            assert_eq!(o, std::array::from_fn(|k| (e + k as i64 * st) as f32));
+        }
+        let words = [
+            0x8040_20FFu32,
+            0,
+            u32::MAX,
+            0x0102_0304,
+            7,
+            8,
+            9,
+            0xFF00_0000,
+        ];
+        let px = Sse8::unpack_rgba8(&words);
+        for (c, lane) in px.iter().enumerate() {
+            lane.store(&mut o);
+            assert_eq!(o, words.map(|w| (w >> (8 * c) & 0xFF) as f32));
+        }
+        // MAXPS/MINPS semantics: the second operand on NaN.
+        let nan = V8::max(Sse8::splat(f32::NAN), Sse8::splat(2.0));
+        let mut o = [0.0; 8];
+        nan.store(&mut o);
+        assert_eq!(o, [2.0; 8]);
+        V8::min(Sse8::splat(f32::NAN), Sse8::splat(-1.0)).store(&mut o);
+        assert_eq!(o, [-1.0; 8]);
         assert_eq!(
             sse[7],
             [1.5, 16.0, 3.0e-3, 49.0, 0.7f32 * 0.7, 9.0, 4.0, 81.0]

@@ -13,7 +13,7 @@
 //! Everything is plain f32 arithmetic with no fused operations, so results
 //! are the same on every machine and for any thread count.
 
-use crate::scene::{Image, MipLevel, Texture, TextureModel, Wrap};
+use crate::scene::{Filter, Image, MipLevel, MipMode, Texture, TextureModel, Wrap};
 use glam::{Affine2, Vec2, Vec3, Vec4};
 
 /// A texture ready to sample: the image (a cheap shared clone), wraps and
@@ -30,6 +30,8 @@ pub struct Sampler {
     pub components: u8,
     blend_color: Vec3,
     translucent: bool,
+    filter: Filter,
+    alpha_cutoff: Option<f32>,
 }
 
 impl Sampler {
@@ -45,6 +47,43 @@ impl Sampler {
             components: image.components(),
             blend_color: t.blend_color,
             translucent: uses_alpha && image.has_alpha(),
+            filter: t.filter,
+            alpha_cutoff: t.alpha_cutoff,
+        }
+    }
+
+    /// The image sampled.
+    pub(super) fn image(&self) -> &Image {
+        &self.image
+    }
+    pub(super) fn wrap_s(&self) -> Wrap {
+        self.wrap_s
+    }
+    pub(super) fn wrap_t(&self) -> Wrap {
+        self.wrap_t
+    }
+    /// Whether the eight-lane path (`texture_lanes`) covers this sampler:
+    /// repeat/clamp wraps, trilinear filtering, no transform.
+    pub(super) fn lanes_cover(&self) -> bool {
+        self.identity
+            && self.filter == Filter::default()
+            && self.wrap_s != Wrap::Mirror
+            && self.wrap_t != Wrap::Mirror
+    }
+
+    /// Whether pixels are alpha-tested (glTF MASK): then a pixel of alpha
+    /// 0 from [`Sampler::masked`] is not drawn at all.
+    pub fn masks(&self) -> bool {
+        self.alpha_cutoff.is_some()
+    }
+
+    /// The alpha after the alpha test: 1 at or above the cutoff, 0 below
+    /// (unchanged without one).
+    pub fn masked(&self, alpha: f32) -> f32 {
+        match self.alpha_cutoff {
+            Some(c) if alpha >= c => 1.0,
+            Some(_) => 0.0,
+            None => alpha,
         }
     }
 
@@ -92,6 +131,9 @@ impl Sampler {
 
     /// The filtered RGBA (0..1) at transformed coordinates `st`.
     pub fn sample(&self, st: Vec2, lod: f32) -> Vec4 {
+        if self.filter != Filter::default() {
+            return self.sample_filtered(st, lod);
+        }
         let levels = self.image.levels();
         let last = levels.len() - 1;
         let lod = if lod.is_finite() { lod.max(0.0) } else { 0.0 };
@@ -108,6 +150,71 @@ impl Sampler {
         a + (b - a) * f
     }
 
+    /// [`Sampler::sample`] with glTF's other filters (OpenGL 4.6 §8.14,
+    /// §8.15): λ ≤ 0 is magnification (the mag filter on the base level);
+    /// minified, MIPMAP_NEAREST takes level ⌈λ + ½⌉ − 1 (0 for λ ≤ ½),
+    /// MIPMAP_LINEAR blends the two levels around λ, no mipmap stays on the
+    /// base level; within a level NEAREST takes the texel under the point.
+    fn sample_filtered(&self, st: Vec2, lod: f32) -> Vec4 {
+        let levels = self.image.levels();
+        let last = levels.len() - 1;
+        let lod = if lod.is_finite() { lod } else { 0.0 };
+        let in_level = |level: &MipLevel, nearest: bool| {
+            if nearest {
+                self.nearest(level, st)
+            } else {
+                self.bilinear(level, st)
+            }
+        };
+        if lod <= 0.0 {
+            return in_level(&levels[0], self.filter.mag_nearest);
+        }
+        let nearest = self.filter.min_nearest;
+        match self.filter.mip {
+            MipMode::None => in_level(&levels[0], nearest),
+            MipMode::Nearest => {
+                let d = if lod <= 0.5 {
+                    0
+                } else {
+                    ((lod + 0.5).ceil() as usize).saturating_sub(1)
+                };
+                in_level(&levels[d.min(last)], nearest)
+            }
+            MipMode::Linear => {
+                if lod >= last as f32 {
+                    return in_level(&levels[last], nearest);
+                }
+                let i = lod as usize;
+                let f = lod - i as f32;
+                let a = in_level(&levels[i], nearest);
+                let b = in_level(&levels[i + 1], nearest);
+                a + (b - a) * f
+            }
+        }
+    }
+
+    /// A coordinate reduced to one period of its wrap (two for mirror), so
+    /// huge values keep their fraction; non-finite ones read as 0.
+    fn reduce(c: f32, wrap: Wrap) -> f32 {
+        let c = if c.is_finite() { c } else { 0.0 };
+        match wrap {
+            Wrap::Repeat => c - c.floor(),
+            Wrap::Mirror => c - 2.0 * (c * 0.5).floor(),
+            Wrap::Clamp => c,
+        }
+    }
+
+    /// The texel under `st` in one level (OpenGL NEAREST: ⌊s·w⌋).
+    fn nearest(&self, level: &MipLevel, st: Vec2) -> Vec4 {
+        let (w, h) = (level.width() as i64, level.height() as i64);
+        let s = Self::reduce(st.x, self.wrap_s);
+        let t = Self::reduce(st.y, self.wrap_t);
+        let x = (s * w as f32).floor().clamp(-2.0, 2.0 * w as f32) as i64;
+        let y = ((1.0 - t) * h as f32).floor().clamp(-2.0, 2.0 * h as f32) as i64;
+        let p = level.pixels()[wrap(y, h, self.wrap_t) * w as usize + wrap(x, w, self.wrap_s)];
+        Vec4::new(p[0] as f32, p[1] as f32, p[2] as f32, p[3] as f32) * (1.0 / 255.0)
+    }
+
     /// Bilinear filtering in one level (texel centres at half-integers).
     fn bilinear(&self, level: &MipLevel, st: Vec2) -> Vec4 {
         let (w, h) = (level.width() as i64, level.height() as i64);
@@ -122,6 +229,18 @@ impl Sampler {
         };
         let t = if self.wrap_t == Wrap::Repeat {
             t - t.floor()
+        } else {
+            t
+        };
+        // Mirrored: two periods (the scalar forms above stay as they were,
+        // so repeat and clamp keep their bits).
+        let s = if self.wrap_s == Wrap::Mirror {
+            Self::reduce(s, Wrap::Mirror)
+        } else {
+            s
+        };
+        let t = if self.wrap_t == Wrap::Mirror {
+            Self::reduce(t, Wrap::Mirror)
         } else {
             t
         };
@@ -219,7 +338,7 @@ impl Sampler {
 /// addition or subtraction and divides only in the rare rest (same result
 /// as `rem_euclid`, without an integer division per texel).
 #[inline]
-fn wrap(i: i64, n: i64, mode: Wrap) -> usize {
+pub(super) fn wrap(i: i64, n: i64, mode: Wrap) -> usize {
     match mode {
         Wrap::Repeat => {
             let j = if i < 0 {
@@ -236,6 +355,11 @@ fn wrap(i: i64, n: i64, mode: Wrap) -> usize {
             }
         }
         Wrap::Clamp => i.clamp(0, n - 1) as usize,
+        // OpenGL 4.6 §8.14.2: period 2n, the second half flipped.
+        Wrap::Mirror => {
+            let j = i.rem_euclid(2 * n);
+            (if j < n { j } else { 2 * n - 1 - j }) as usize
+        }
     }
 }
 
@@ -300,6 +424,74 @@ mod tests {
         assert_eq!(cl.sample(Vec2::new(7.0, 0.5), 0.0).x, 1.0);
         // Non-finite coordinates do not panic.
         let _ = rep.sample(Vec2::new(f32::NAN, f32::INFINITY), f32::NAN);
+    }
+
+    #[test]
+    fn mirrored_repeat_flips_every_other_period() {
+        // 4 texels: 0, 85, 170, 255 left to right.
+        let img = image(4, 1, 3, |x, _| [(x * 85) as u8; 4]);
+        let mut t = tex();
+        t.wrap_s = Wrap::Mirror;
+        t.filter.mag_nearest = true;
+        let s = Sampler::new(&t, &img);
+        let at = |u: f32| (s.sample(Vec2::new(u, 0.5), 0.0).x * 255.0).round() as u32;
+        // First period as is, second flipped, third as is; negative side
+        // mirrored about 0.
+        assert_eq!([at(0.1), at(0.4), at(0.9)], [0, 85, 255]);
+        assert_eq!([at(1.1), at(1.4), at(1.9)], [255, 170, 0]);
+        assert_eq!([at(2.1), at(-0.1), at(-0.9)], [0, 0, 255]);
+        assert_eq!(wrap(-1, 4, Wrap::Mirror), 0);
+        assert_eq!(wrap(4, 4, Wrap::Mirror), 3);
+        assert_eq!(wrap(9, 4, Wrap::Mirror), 1);
+        // Bilinear across the mirror seam at s = 1 blends texel 3 with itself.
+        t.filter.mag_nearest = false;
+        let s = Sampler::new(&t, &img);
+        assert_eq!(s.sample(Vec2::new(1.0, 0.5), 0.0).x, 1.0);
+    }
+
+    #[test]
+    fn nearest_filters_and_mip_modes() {
+        // 4x4 checker of single texels: magnified nearest keeps hard edges.
+        let img = image(4, 4, 3, |x, y| {
+            if (x + y) % 2 == 0 {
+                [255; 4]
+            } else {
+                [0, 0, 0, 255]
+            }
+        });
+        let mut t = tex();
+        t.filter.mag_nearest = true;
+        let s = Sampler::new(&t, &img);
+        assert_eq!(s.sample(Vec2::new(0.26, 0.99), 0.0).x, 0.0);
+        assert_eq!(s.sample(Vec2::new(0.24, 0.99), 0.0).x, 1.0);
+        // Minified with NEAREST and no mipmap: still a texel of the base level.
+        t.filter.min_nearest = true;
+        t.filter.mip = MipMode::None;
+        let s = Sampler::new(&t, &img);
+        assert!([0.0, 1.0].contains(&s.sample(Vec2::new(0.3, 0.3), 2.0).x));
+        // MIPMAP_NEAREST at λ = 1.6 takes level 2 (the 1x1 grey mean).
+        t.filter.mip = MipMode::Nearest;
+        let s = Sampler::new(&t, &img);
+        let c = s.sample(Vec2::new(0.3, 0.3), 1.6).x;
+        assert!((c - 0.5).abs() < 0.01, "{c}");
+        // λ = 0.4: level 0.
+        assert!([0.0, 1.0].contains(&s.sample(Vec2::new(0.3, 0.3), 0.4).x));
+    }
+
+    #[test]
+    fn alpha_cutoff_is_a_test() {
+        let img = image(1, 1, 4, |_, _| [9; 4]);
+        let mut t = tex();
+        let s = Sampler::new(&t, &img);
+        assert!(!s.masks());
+        assert_eq!(s.masked(0.3), 0.3);
+        t.alpha_cutoff = Some(0.5);
+        let s = Sampler::new(&t, &img);
+        assert!(s.masks());
+        assert_eq!(
+            (s.masked(0.49), s.masked(0.5), s.masked(0.9)),
+            (0.0, 1.0, 1.0)
+        );
     }
 
     #[test]

@@ -37,7 +37,7 @@ pub use normals::{
 };
 pub use skin::{InfluenceReport, Skin, SkinId, SkinWeights, MAX_JOINTS};
 pub use text::{FontFamily, Justify, TextKind, TextSpec};
-pub use texture::{TexTransform, TexTransformOrder, Texture, TextureModel, Wrap};
+pub use texture::{Filter, MipMode, TexTransform, TexTransformOrder, Texture, TextureModel, Wrap};
 pub use transform::Transform;
 
 use crate::anim::Animation;

@@ -11,6 +11,45 @@ pub enum Wrap {
     #[default]
     Repeat,
     Clamp,
+    /// Every other period flipped (glTF MIRRORED_REPEAT, OpenGL
+    /// `MIRRORED_REPEAT`); VRML and Inventor cannot say it and write repeat.
+    Mirror,
+}
+
+/// How texels are filtered (glTF samplers; VRML and Inventor always use
+/// the defaults: bilinear within a level, linear between mip levels).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Filter {
+    /// Magnified: the nearest texel instead of bilinear (glTF magFilter
+    /// NEAREST).
+    pub mag_nearest: bool,
+    /// Minified: the nearest texel within a level (glTF NEAREST,
+    /// NEAREST_MIPMAP_*).
+    pub min_nearest: bool,
+    /// Minified: how mip levels are used (glTF's minFilter suffix).
+    pub mip: MipMode,
+}
+
+/// Mip-map use when minified.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MipMode {
+    /// Only the base level (glTF NEAREST / LINEAR).
+    None,
+    /// The nearest level (glTF *_MIPMAP_NEAREST).
+    Nearest,
+    /// Blend the two nearest levels (glTF *_MIPMAP_LINEAR): trilinear.
+    #[default]
+    Linear,
+}
+
+impl Default for Filter {
+    fn default() -> Self {
+        Filter {
+            mag_nearest: false,
+            min_nearest: false,
+            mip: MipMode::Linear,
+        }
+    }
 }
 
 /// How the texture colour combines with the material and the lighting.
@@ -108,6 +147,10 @@ pub struct Texture {
     pub model: TextureModel,
     /// Only for [`TextureModel::Blend`], linear 0..1 RGB.
     pub blend_color: Vec3,
+    pub filter: Filter,
+    /// glTF alphaMode MASK: a pixel is drawn opaque where its alpha
+    /// (material × texture) reaches this value and not at all below.
+    pub alpha_cutoff: Option<f32>,
 }
 
 impl Texture {
@@ -120,6 +163,8 @@ impl Texture {
             transform: TexTransform::default(),
             model: TextureModel::Vrml97,
             blend_color: Vec3::ZERO,
+            filter: Filter::default(),
+            alpha_cutoff: None,
         }
     }
 }

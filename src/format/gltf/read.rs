@@ -28,7 +28,7 @@ use crate::scene::{
     SourceFormat, Transform,
 };
 use glam::{Mat4, Quat, Vec3};
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 use std::path::Path;
 
 /// What the caller may choose about a glTF load.
@@ -84,7 +84,6 @@ fn read_inner(
     let mut b = Builder {
         images,
         opaque_images: HashMap::new(),
-        warned: HashSet::new(),
         nodes: doc.nodes().collect(),
         gltf_materials: doc.materials().collect(),
         buffers: &buffers,
@@ -284,7 +283,6 @@ struct Builder<'a, 'b> {
     images: Vec<Option<ImageId>>,
     /// An image without its alpha, for OPAQUE materials.
     opaque_images: HashMap<ImageId, ImageId>,
-    warned: HashSet<String>,
 }
 
 /// A node's local transform: TRS as given, a matrix split into TRS when it
@@ -354,15 +352,12 @@ impl<'a> Builder<'a, '_> {
     /// materials ignore the texture's alpha (§3.9.4), so they get a copy of
     /// the image without it (made once).
     fn texture(&mut self, m: &gltf::Material) -> Option<(crate::scene::Texture, u32)> {
-        let warned = &mut self.warned;
-        let warnings = &mut self.warnings;
-        let mut warn_once = |key: &str, text: String| {
-            if warned.insert(key.to_string()) {
-                warnings.push(text);
-            }
-        };
-        let (mut t, set) = texture::base_color_texture(m, &self.images, &mut warn_once)?;
+        let (mut t, set) = texture::base_color_texture(m, &self.images)?;
         let opaque = m.alpha_mode() == gltf::material::AlphaMode::Opaque;
+        if m.alpha_mode() == gltf::material::AlphaMode::Mask {
+            // §3.9.4: drawn opaque where alpha ≥ alphaCutoff (default 0.5).
+            t.alpha_cutoff = Some(m.alpha_cutoff().unwrap_or(0.5));
+        }
         let img = self.scene.image(t.image)?;
         if opaque && img.has_alpha() {
             t.image = match self.opaque_images.get(&t.image) {

@@ -9,16 +9,18 @@
 //! ([`transform_from_khr`]) so it maps the same texels.
 //!
 //! An image that cannot be read is a warning naming its JSON pointer; the
-//! material is then drawn untextured. Samplers always filter trilinearly
-//! (NEAREST filters are drawn smoothed, with one warning); MIRRORED_REPEAT
-//! repeats without mirroring (one warning).
+//! material is then drawn untextured. Sampler wraps (REPEAT,
+//! CLAMP_TO_EDGE, MIRRORED_REPEAT) and filters (NEAREST/LINEAR, mipmap
+//! NEAREST/LINEAR or none) are drawn as given; alphaMode MASK is an alpha
+//! test against alphaCutoff (see `read.rs`).
 
 use super::container::Buffers;
 use super::pointer::pointer;
 use super::uri;
 use crate::format::textures::decode;
 use crate::scene::{
-    ImageId, ImageSource, Scene, TexTransform, TexTransformOrder, Texture, TextureModel, Wrap,
+    Filter, ImageId, ImageSource, MipMode, Scene, TexTransform, TexTransformOrder, Texture,
+    TextureModel, Wrap,
 };
 use glam::{Affine2, Vec2};
 use gltf::texture::{MagFilter, MinFilter, WrappingMode};
@@ -116,7 +118,6 @@ fn image_bytes(
 pub fn base_color_texture(
     m: &gltf::Material,
     images: &[Option<ImageId>],
-    warn_once: &mut dyn FnMut(&str, String),
 ) -> Option<(Texture, u32)> {
     let info = m.pbr_metallic_roughness().base_color_texture()?;
     let tex = info.texture();
@@ -125,35 +126,14 @@ pub fn base_color_texture(
     let mut t = Texture::new(id);
     t.model = TextureModel::MultiplyDiffuse;
     let s = tex.sampler();
-    let here = pointer(&[&"samplers", &s.index().unwrap_or(0)]);
-    let wrap = |w: WrappingMode, warn_once: &mut dyn FnMut(&str, String)| match w {
+    let wrap = |w: WrappingMode| match w {
         WrappingMode::ClampToEdge => Wrap::Clamp,
         WrappingMode::Repeat => Wrap::Repeat,
-        WrappingMode::MirroredRepeat => {
-            warn_once(
-                "mirror",
-                format!("{here}: MIRRORED_REPEAT is drawn as REPEAT (not mirrored)"),
-            );
-            Wrap::Repeat
-        }
+        WrappingMode::MirroredRepeat => Wrap::Mirror,
     };
-    t.wrap_s = wrap(s.wrap_s(), warn_once);
-    t.wrap_t = wrap(s.wrap_t(), warn_once);
-    let nearest = s.mag_filter() == Some(MagFilter::Nearest)
-        || matches!(
-            s.min_filter(),
-            Some(
-                MinFilter::Nearest
-                    | MinFilter::NearestMipmapNearest
-                    | MinFilter::NearestMipmapLinear
-            )
-        );
-    if nearest {
-        warn_once(
-            "nearest",
-            format!("{here}: NEAREST texture filters are drawn with trilinear filtering"),
-        );
-    }
+    t.wrap_s = wrap(s.wrap_s());
+    t.wrap_t = wrap(s.wrap_t());
+    t.filter = filter(s.mag_filter(), s.min_filter());
     let set = uv_set(m)?;
     if let Some(x) = info.texture_transform() {
         t.transform = transform_from_khr(
@@ -163,6 +143,25 @@ pub fn base_color_texture(
         );
     }
     Some((t, set))
+}
+
+/// glTF sampler filters (§3.8.4; absent = the implementation's choice:
+/// trilinear) as the scene's [`Filter`].
+pub fn filter(mag: Option<MagFilter>, min: Option<MinFilter>) -> Filter {
+    use MinFilter::*;
+    let (min_nearest, mip) = match min {
+        None | Some(LinearMipmapLinear) => (false, MipMode::Linear),
+        Some(Nearest) => (true, MipMode::None),
+        Some(Linear) => (false, MipMode::None),
+        Some(NearestMipmapNearest) => (true, MipMode::Nearest),
+        Some(LinearMipmapNearest) => (false, MipMode::Nearest),
+        Some(NearestMipmapLinear) => (true, MipMode::Linear),
+    };
+    Filter {
+        mag_nearest: mag == Some(MagFilter::Nearest),
+        min_nearest,
+        mip,
+    }
 }
 
 /// The TEXCOORD set a material's base colour texture reads

@@ -375,8 +375,14 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                             })
                                     });
                                 let mut mj = material_json(&src, name, !mesh.solid, white, info);
-                                if alpha {
-                                    mj["alphaMode"] = json!("BLEND");
+                                let cutoff = src.texture.as_ref().and_then(|t| t.alpha_cutoff);
+                                match (alpha, cutoff) {
+                                    (true, Some(c)) => {
+                                        mj["alphaMode"] = json!("MASK");
+                                        mj["alphaCutoff"] = num(c);
+                                    }
+                                    (true, None) => mj["alphaMode"] = json!("BLEND"),
+                                    _ => {}
                                 }
                                 materials.push(mj);
                                 material_cache.insert(key, materials.len() - 1);

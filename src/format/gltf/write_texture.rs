@@ -13,7 +13,7 @@ use super::bin::{num, Bin};
 use super::texture::khr_from_transform;
 use crate::format::export::WriteReport;
 use crate::format::textures::decode::read_file;
-use crate::scene::{Image, ImageSource, Scene, Texture, TextureModel, Wrap};
+use crate::scene::{Image, ImageSource, MipMode, Scene, Texture, TextureModel, Wrap};
 use serde_json::{json, Value as Json};
 use std::collections::BTreeMap;
 
@@ -24,7 +24,8 @@ pub struct TextureWriter {
     pub samplers: Vec<Json>,
     pub textures: Vec<Json>,
     image_index: BTreeMap<u32, usize>,
-    sampler_index: BTreeMap<(bool, bool), usize>,
+    /// Samplers by (wrapS, wrapT, magFilter, minFilter) codes.
+    sampler_index: BTreeMap<[u32; 4], usize>,
     texture_index: BTreeMap<(usize, usize), usize>,
     /// Whether any texture info carries KHR_texture_transform.
     pub transform_used: bool,
@@ -56,14 +57,13 @@ impl TextureWriter {
                 self.images.len() - 1
             }
         };
-        let clamp = (t.wrap_s == Wrap::Clamp, t.wrap_t == Wrap::Clamp);
-        let si = *self.sampler_index.entry(clamp).or_insert_with(|| {
-            let w = |c: bool| if c { 33071 } else { 10497 };
+        let key = sampler_codes(t);
+        let si = *self.sampler_index.entry(key).or_insert_with(|| {
             self.samplers.push(json!({
-                "magFilter": 9729,
-                "minFilter": 9987,
-                "wrapS": w(clamp.0),
-                "wrapT": w(clamp.1),
+                "magFilter": key[2],
+                "minFilter": key[3],
+                "wrapS": key[0],
+                "wrapT": key[1],
             }));
             self.samplers.len() - 1
         });
@@ -236,6 +236,27 @@ fn uri_escape(url: &str) -> String {
         }
     }
     s
+}
+
+/// A texture's glTF sampler codes (§5.26): wrapS, wrapT, magFilter,
+/// minFilter.
+fn sampler_codes(t: &Texture) -> [u32; 4] {
+    let wrap = |w: Wrap| match w {
+        Wrap::Repeat => 10497,
+        Wrap::Clamp => 33071,
+        Wrap::Mirror => 33648,
+    };
+    let f = t.filter;
+    let mag = if f.mag_nearest { 9728 } else { 9729 };
+    let min = match (f.min_nearest, f.mip) {
+        (true, MipMode::None) => 9728,
+        (false, MipMode::None) => 9729,
+        (true, MipMode::Nearest) => 9984,
+        (false, MipMode::Nearest) => 9985,
+        (true, MipMode::Linear) => 9986,
+        (false, MipMode::Linear) => 9987,
+    };
+    [wrap(t.wrap_s), wrap(t.wrap_t), mag, min]
 }
 
 #[cfg(test)]

@@ -235,7 +235,61 @@ def textured():
     }
     write("textured.gltf", doc, b)
 
+def sampler_modes():
+    """Two quads showing glTF sampler modes (read in tests/render_textures.rs):
+    left, a 4x4 RGB texture (each texel its own colour) with magFilter and
+    minFilter NEAREST and wrapS MIRRORED_REPEAT, u running 0..2 so the right
+    half is the mirror image of the left, hard texel edges; right, a 4x4
+    RGBA texture whose alpha is 255 on a plus shape and 0 elsewhere,
+    alphaMode MASK (alphaCutoff 0.5), NEAREST: a hard-edged opaque plus."""
+    b = Buf()
+    pos = [-2.2, -1, 0, -0.2, -1, 0, -0.2, 1, 0, -2.2, 1, 0,
+           0.2, -1, 0, 2.2, -1, 0, 2.2, 1, 0, 0.2, 1, 0]
+    uv = [0, 1, 2, 1, 2, 0, 0, 0,
+          0, 1, 1, 1, 1, 0, 0, 0]
+    p = b.f32(pos, "VEC3", 3, target=34962, minmax=bounds(pos, 3))
+    t = b.f32(uv, "VEC2", 2, target=34962)
+    ia = b.add("H", [0, 1, 2, 0, 2, 3], 5123, "SCALAR", 6, target=34963)
+    ib = b.add("H", [4, 5, 6, 4, 6, 7], 5123, "SCALAR", 6, target=34963)
+    rgb = [[(60 * x + 20, 60 * y + 20, 200 - 50 * x) for x in range(4)] for y in range(4)]
+    plus = [[(230, 200, 40, 255 if x in (1, 2) or y in (1, 2) else 0) for x in range(4)] for y in range(4)]
+    imgs = [png(4, 4, rgb, False), png(4, 4, plus, True)]
+    views = []
+    for img in imgs:
+        while len(b.data) % 4:
+            b.data.append(0)
+        b.views.append({"buffer": 0, "byteOffset": len(b.data), "byteLength": len(img)})
+        views.append(len(b.views) - 1)
+        b.data += img
+    doc = {
+        "asset": {"version": "2.0", "generator": "make.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"name": "Mirrored", "mesh": 0}, {"name": "Masked", "mesh": 1}],
+        "meshes": [
+            {"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t}, "indices": ia, "material": 0}]},
+            {"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t}, "indices": ib, "material": 1}]},
+        ],
+        "materials": [
+            {"name": "Nearest", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicFactor": 0}},
+            {"name": "Plus", "alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True,
+             "pbrMetallicRoughness": {"baseColorTexture": {"index": 1}, "metallicFactor": 0}},
+        ],
+        "samplers": [
+            {"wrapS": 33648, "wrapT": 33071, "magFilter": 9728, "minFilter": 9728},
+            {"wrapS": 33071, "wrapT": 33071, "magFilter": 9728, "minFilter": 9984},
+        ],
+        "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 1}],
+        "images": [
+            {"bufferView": views[0], "mimeType": "image/png", "name": "colours"},
+            {"bufferView": views[1], "mimeType": "image/png", "name": "plus"},
+        ],
+    }
+    write("sampler_modes.gltf", doc, b)
+
+
 if __name__ == "__main__":
+    sampler_modes()
     textured()
     animated()
     topologies()
