@@ -401,3 +401,40 @@ fn frame_png(f: &animed::internals::render::Frame, name: &str) {
     let _ = std::fs::create_dir_all(&dir);
     let _ = f.save_png(&dir.join(format!("editor_rig_{name}.png")));
 }
+
+#[test]
+fn the_rotate_handle_keys_a_joint_in_record_mode() {
+    use animed::internals::editor::manip::Handle;
+    let (s, [_, _, lower, _]) = arm();
+    let mut ed = Editor::new(s, None, W, H);
+    key(&mut ed, Key::Num(1), Mods::NONE);
+    ed.select(Some(lower));
+    key(&mut ed, Key::Char('e'), Mods::NONE);
+    key(&mut ed, Key::Char('r'), Mods::NONE);
+    // The ring about z (facing the eye in the front view) from a grabbable
+    // point half a radian on, through points on the ring as a mouse goes.
+    let h = Handle::Ring(2);
+    let t0 = (0..63)
+        .map(|k| k as f32 * 0.1)
+        .find(|&t| {
+            let p = ed.ring_pixel(h, t).unwrap();
+            ed.handle_at(p.0, p.1) == Some(h)
+        })
+        .expect("a grabbable point on the view ring");
+    let pts: Vec<(f32, f32)> = (0..=6)
+        .map(|k| ed.ring_pixel(h, t0 + 0.5 * k as f32 / 6.0).unwrap())
+        .collect();
+    let steps = ed.history().labels().count();
+    drag_via(&mut ed, &pts, Mods::NONE);
+    assert_eq!(
+        ed.history().labels().count(),
+        steps + 1,
+        "{}",
+        ed.status().text
+    );
+    let turned = rotation_of(&ed, lower);
+    assert!(turned.angle_between(Quat::IDENTITY) > 0.2, "{turned:?}");
+    let keys = rotation_keys(&ed, lower);
+    assert_eq!(keys.len(), 1, "keyed in record mode");
+    assert!(near(keys[0].1, turned));
+}
