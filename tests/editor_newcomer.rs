@@ -867,3 +867,175 @@ fn a_shorter_scene_keeps_its_late_keys_visible_greyed_and_says_so() {
     key(&mut ed, Key::Char('z'), Mods::ctrl());
     assert_eq!(ed.scene().settings.duration, 96.0);
 }
+
+// ----- item 2: context menus in the strip and lists, tooltips -----
+
+fn right_click(ed: &mut Editor, (x, y): (f32, f32)) {
+    let button = MouseButton::Right;
+    ed.handle(Event::MouseMove {
+        x,
+        y,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::MouseDown {
+        button,
+        x,
+        y,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::MouseUp {
+        button,
+        x,
+        y,
+        mods: Mods::NONE,
+    });
+}
+
+/// Picks the open menu's item whose label starts with `label`.
+fn pick(ed: &mut Editor, label: &str) {
+    let m = ed.menu().expect("a menu is open");
+    let i = m
+        .items
+        .iter()
+        .position(|it| it.label.starts_with(label))
+        .unwrap_or_else(|| panic!("no {label} in {:?}", m.items));
+    let r = m.item_rect(ed.layout().window, i);
+    click(ed, ((r.x + 10) as f32, (r.y + 5) as f32));
+    assert!(ed.menu().is_none());
+}
+
+#[test]
+fn the_key_strips_context_menu_edits_the_keys_under_the_mouse() {
+    use animed::internals::anim::{Interp, Keys, Property, Target, TargetRef};
+    use animed::internals::editor::keystrip::Row;
+    let mut ed = big_stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    let row = Row::Track(Property::Translation);
+    let at = ed.key_marker_at(row, 24.0).unwrap();
+    right_click(&mut ed, at);
+    let labels: Vec<String> = ed
+        .menu()
+        .expect("the strip's menu")
+        .items
+        .iter()
+        .map(|i| i.label.clone())
+        .collect();
+    assert_eq!(
+        labels,
+        [
+            "Interpolation: step",
+            "Interpolation: linear",
+            "Interpolation: tcb",
+            "Ease in and out",
+            "No ease",
+            "Delete keys",
+            "Copy keys",
+            "Select all on row"
+        ]
+    );
+    let keys = |ed: &Editor| {
+        let t = Target {
+            of: TargetRef::Node(ball),
+            property: Property::Translation,
+        };
+        match &ed.scene().animation.track(t).unwrap().keys {
+            Keys::Vec3(k) => k.clone(),
+            _ => panic!("vector keys"),
+        }
+    };
+    pick(&mut ed, "Interpolation: step");
+    assert_eq!(keys(&ed)[1].interp, Interp::Step, "the key at 24");
+    assert_ne!(keys(&ed)[2].interp, Interp::Step, "only that key");
+    right_click(&mut ed, at);
+    pick(&mut ed, "Ease in and out");
+    assert_eq!((keys(&ed)[1].ease_in, keys(&ed)[1].ease_out), (1.0, 1.0));
+    // Select all on the row, then delete them; undo brings them back.
+    right_click(&mut ed, at);
+    pick(&mut ed, "Select all on row");
+    assert_eq!(ed.status().text, "Selected 5 keys on the row");
+    right_click(&mut ed, at);
+    pick(&mut ed, "Copy keys");
+    right_click(&mut ed, at);
+    pick(&mut ed, "Delete keys");
+    assert!(ed
+        .scene()
+        .animation
+        .track(Target {
+            of: TargetRef::Node(ball),
+            property: Property::Translation
+        })
+        .is_none_or(|t| t.key_count() == 0));
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(keys(&ed).len(), 5);
+    // With keys on the clipboard the menu offers pasting them.
+    let at48 = ed.key_marker_at(row, 48.0).unwrap();
+    right_click(&mut ed, at48);
+    assert!(ed
+        .menu()
+        .unwrap()
+        .items
+        .iter()
+        .any(|i| i.label == "Paste at frame 0"));
+    key(&mut ed, Key::Escape, Mods::NONE);
+}
+
+#[test]
+fn the_lists_context_menu_renames_duplicates_and_deletes() {
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    let row = find(&ed, &format!("node: NodeId({})", ball.0));
+    right_click(&mut ed, row);
+    assert_eq!(ed.selection(), Some(ball), "the row is selected");
+    pick(&mut ed, "Rename");
+    ed.handle(Event::Text("Planet".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert_eq!(ed.scene().node(ball).name, "Planet");
+    let row = find(&ed, &format!("node: NodeId({})", ball.0));
+    right_click(&mut ed, row);
+    pick(&mut ed, "Duplicate");
+    let copy = ed.selection().unwrap();
+    assert_ne!(copy, ball);
+    assert!(ed.scene().node(copy).name.starts_with("Planet"));
+    let row = find(&ed, &format!("node: NodeId({})", copy.0));
+    right_click(&mut ed, row);
+    pick(&mut ed, "Delete");
+    assert!(ed.scene().find_node(&ed.scene().node(ball).name).is_some());
+    assert_eq!(ed.selection(), None);
+}
+
+#[test]
+fn tooltips_explain_toolbar_buttons_and_fields_after_half_a_second() {
+    let mut ed = stage();
+    let imp = find(&ed, "Import");
+    hover(&mut ed, imp);
+    assert!(
+        ed.wants_ticks(),
+        "a pending tooltip keeps the clock running"
+    );
+    ed.handle(Event::Tick { time: 5.0 });
+    ed.handle(Event::Tick { time: 5.3 });
+    assert_eq!(ed.tooltip(), None, "not before 0.5 s");
+    assert!(ed.handle(Event::Tick { time: 5.55 }), "appearing redraws");
+    assert_eq!(
+        ed.tooltip().as_deref(),
+        Some("Import a model as a new object (Ctrl+I)")
+    );
+    golden::check("editor_tooltip", &ed.render_frame());
+    // Another widget: gone, and back after its own delay.
+    let style = find(&ed, "ViewStyle");
+    assert!(ed.handle(Event::MouseMove {
+        x: style.0,
+        y: style.1,
+        mods: Mods::NONE
+    }));
+    assert_eq!(ed.tooltip(), None);
+    ed.handle(Event::Tick { time: 6.0 });
+    ed.handle(Event::Tick { time: 6.6 });
+    assert!(ed.tooltip().unwrap().starts_with("Viewport style"));
+    // A click hides it.
+    let len = find(&ed, "Field(Duration)");
+    click(&mut ed, len);
+    assert_eq!(ed.tooltip(), None);
+    key(&mut ed, Key::Escape, Mods::NONE);
+}

@@ -33,6 +33,7 @@ impl Editor {
         self.draw_timeline(&mut p, &l);
         self.draw_panels(&mut p, &l);
         self.draw_modal(&mut p);
+        self.draw_tooltip(&mut p);
         self.draw_help(&mut p);
         p.end(frame);
         self.painter = p;
@@ -297,6 +298,25 @@ impl Editor {
             let (xa, xb) = (x_of(a) as i32, x_of(b) as i32);
             p.fill_rect(Rect::new(xa, y, (xb - xa).max(1), 2), theme::ACCENT);
         }
+    }
+
+    /// The tooltip below and right of the mouse, kept inside the window.
+    fn draw_tooltip(&self, p: &mut Painter) {
+        let Some(t) = self.hover.text() else { return };
+        let win = self.layout().window;
+        let w = (text::width(&t) + 10).min(win.w);
+        let h = text::LINE_H + 6;
+        let (mx, my) = (self.mouse.0 as i32, self.mouse.1 as i32);
+        let x = (mx + 10).clamp(win.x, (win.right() - w).max(win.x));
+        let y = if my + 20 + h <= win.bottom() {
+            my + 20
+        } else {
+            my - 8 - h
+        };
+        let r = Rect::new(x, y.max(win.y), w, h);
+        p.fill_rect(r, theme::DIALOG);
+        p.stroke_rect(r, theme::ACCENT);
+        p.text_clipped(r.x + 5, r.y + 3, &t, theme::TEXT, r.w - 8);
     }
 
     fn draw_modal(&self, p: &mut Painter) {

@@ -41,6 +41,7 @@ mod route;
 mod screen;
 pub mod script;
 pub mod timeline;
+pub mod tooltip;
 mod viewport;
 pub mod views;
 
@@ -184,6 +185,8 @@ pub struct Editor {
     dialog: Option<Dialog>,
     /// An open pop-up menu (Add, context, View): modal while open.
     menu: Option<menu::Menu>,
+    /// The tooltip timer.
+    hover: tooltip::Hover,
     status: Status,
     quit: bool,
     /// The F1 key reference is shown.
@@ -244,6 +247,7 @@ impl Editor {
             browser_then: None,
             dialog: None,
             menu: None,
+            hover: tooltip::Hover::default(),
             status: Status::default(),
             quit: false,
             help: false,
@@ -341,7 +345,12 @@ impl Editor {
     }
     /// Whether the app should keep sending `Tick`s (playback runs).
     pub fn wants_ticks(&self) -> bool {
-        self.playback.is_some()
+        self.playback.is_some() || self.hover.pending()
+    }
+
+    /// The tooltip shown under the mouse, if any.
+    pub fn tooltip(&self) -> Option<String> {
+        self.hover.text()
     }
     /// "animed — name.wrl *" (the mark when there are unsaved changes).
     pub fn window_title(&self) -> String {

@@ -42,6 +42,16 @@ impl Editor {
         self.menu = Some(Menu::new("Viewport", items, (x, y)));
     }
 
+    /// The objects and lights lists' context menu (on the selected row).
+    pub fn open_list_menu(&mut self, x: i32, y: i32) {
+        let items = vec![
+            MenuItem::new("Rename", "", Action::Rename),
+            MenuItem::new("Duplicate", "Shift+D", Action::Duplicate),
+            MenuItem::new("Delete", "Delete", Action::Delete),
+        ];
+        self.menu = Some(Menu::new("Object", items, (x, y)));
+    }
+
     /// An open menu takes every input event; `None` when no menu is open
     /// or the event is not input.
     pub(in crate::internals::editor) fn menu_event(&mut self, ev: &Event) -> Option<bool> {
