@@ -1039,3 +1039,32 @@ fn tooltips_explain_toolbar_buttons_and_fields_after_half_a_second() {
     assert_eq!(ed.tooltip(), None);
     key(&mut ed, Key::Escape, Mods::NONE);
 }
+
+#[test]
+fn f3_searches_every_command_by_name() {
+    let mut ed = Editor::new(Scene::new(), None, 480, 320);
+    key(&mut ed, Key::F(3), Mods::NONE);
+    let n = ed.search().expect("F3 opens the search").menu.items.len();
+    assert!(n > 10, "the whole list shows first ({n})");
+    // Typing filters; the keys typed are text, not shortcuts.
+    key(&mut ed, Key::Char('b'), Mods::NONE);
+    ed.handle(Event::Text("Box".into()));
+    let s = ed.search().unwrap();
+    assert_eq!(s.menu.items[0].label, "Add Box");
+    assert_eq!(s.menu.items[0].shortcut, "Shift+A");
+    golden::check("editor_search", &ed.render_frame());
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert!(ed.search().is_none());
+    assert_eq!(ed.scene().node(ed.selection().unwrap()).name, "Box1");
+    // Esc closes without running anything.
+    key(&mut ed, Key::F(3), Mods::NONE);
+    ed.handle(Event::Text("sphere".into()));
+    key(&mut ed, Key::Escape, Mods::NONE);
+    assert!(ed.search().is_none());
+    assert!(ed.scene().find_node("Sphere1").is_none());
+    assert_eq!(
+        ed.mode(),
+        animed::internals::editor::Mode::Select,
+        "Esc only closed the search"
+    );
+}

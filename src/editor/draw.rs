@@ -362,6 +362,9 @@ impl Editor {
         if let Some(m) = &self.menu {
             m.draw(p, win);
         }
+        if let Some(s) = &self.search {
+            s.menu.draw(p, win);
+        }
         if let Some(d) = &self.dialog {
             p.fill_rect_alpha(win, 0x000000, 110);
             let r = self.dialog_rect();

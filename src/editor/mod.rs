@@ -40,6 +40,7 @@ pub mod recovery;
 mod route;
 mod screen;
 pub mod script;
+pub mod search;
 pub mod timeline;
 pub mod tooltip;
 mod viewport;
@@ -187,6 +188,8 @@ pub struct Editor {
     menu: Option<menu::Menu>,
     /// The tooltip timer.
     hover: tooltip::Hover,
+    /// The F3 command search, when open.
+    search: Option<search::Search>,
     status: Status,
     quit: bool,
     /// The F1 key reference is shown.
@@ -248,6 +251,7 @@ impl Editor {
             dialog: None,
             menu: None,
             hover: tooltip::Hover::default(),
+            search: None,
             status: Status::default(),
             quit: false,
             help: false,

@@ -37,6 +37,9 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn dispatch(&mut self, ev: Event) -> bool {
+        if let Some(redraw) = self.search_event(&ev) {
+            return redraw;
+        }
         if let Some(redraw) = self.menu_event(&ev) {
             return redraw;
         }
@@ -779,6 +782,7 @@ impl Editor {
                 }
             }
             (Key::F(1), _, _) => self.set_help(true),
+            (Key::F(3), _, _) => self.open_search(),
             (Key::Char('f'), false, _) => self.frame_selection(),
             (Key::Home, _, _) if self.layout().timeline.contains(self.mouse.0, self.mouse.1) => {
                 self.reset_timeline_view()
