@@ -778,6 +778,8 @@ fn the_wheel_zooms_the_timeline_and_a_middle_drag_pans_it() {
         "{p:?}"
     );
     assert_eq!(ed.current_frame(), frame0, "panning does not seek");
+    let said = format!("Timeline shows frames {} to", p.0.round());
+    assert!(ed.status().text.starts_with(&said), "{}", ed.status().text);
     // Home over the timeline shows the whole scene again.
     hover(&mut ed, (x, y));
     key(&mut ed, Key::Home, Mods::NONE);

@@ -407,6 +407,7 @@ impl Editor {
                 let r = self.timeline.preview;
                 self.set_preview_range(r);
             }
+            Drag::StripPan { .. } => self.say_timeline_span(),
             _ => {}
         }
     }
