@@ -752,6 +752,16 @@ fn the_wheel_zooms_the_timeline_and_a_middle_drag_pans_it() {
         "the wheel no longer steps frames"
     );
     assert!(ed.status().text.starts_with("Timeline shows frames"));
+    // Frame 0 is out of view now: no cursor line anywhere on the ruler
+    // (it used to land on the names column).
+    assert!(z.0 > 0.0);
+    let f = ed.render_frame();
+    let tl = ed.layout().timeline;
+    let cursor_px = (tl.y..tl.bottom())
+        .flat_map(|y| (0..f.width as i32).map(move |x| (x, y)))
+        .filter(|&(x, y)| f.color[(y * f.width as i32 + x) as usize] == 0x4cc2ff)
+        .count();
+    assert_eq!(cursor_px, 0);
     // Keys follow the zoom: the key at 48 is where the span puts it.
     let m = ed
         .key_marker_at(animed::internals::editor::keystrip::Row::Summary, 48.0)

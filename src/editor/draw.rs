@@ -247,8 +247,14 @@ impl Editor {
             false => self.draw_key_strip(p, l),
         }
         self.draw_time_shading(p, l, span);
-        // Current frame cursor with its number.
-        let cx = l.frame_to_x_in(self.frame.clamp(0.0, dur), span) as i32;
+        // Current frame cursor with its number (not when zoomed or panned
+        // away from it: it would land on the names column).
+        let cxf = l.frame_to_x_in(self.frame.clamp(0.0, dur), span);
+        let (x0, x1) = l.ruler_span();
+        if cxf < x0 - 0.5 || cxf > x1 + 0.5 {
+            return;
+        }
+        let cx = cxf as i32;
         p.fill_rect(
             // Through the key strip; the graph draws its own frame line.
             Rect::new(

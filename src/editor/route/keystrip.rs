@@ -222,7 +222,9 @@ impl Editor {
         let cx = l
             .frame_to_x_in(self.frame.clamp(0.0, dur.max(0.0)), self.time_span())
             .floor();
-        (x - (cx + 0.5)).abs() <= 2.5
+        let (x0, x1) = l.ruler_span();
+        // Zoomed or panned away from the cursor: there is none to grab.
+        (x0 - 0.5..=x1 + 0.5).contains(&cx) && (x - (cx + 0.5)).abs() <= 2.5
     }
 
     /// Keys whose markers lie in the box between two window points.
