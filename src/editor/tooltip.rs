@@ -166,7 +166,7 @@ mod tests {
             Action::ToggleGraph,
             Action::ViewStyle,
         ] {
-            let t = text_for(&button(a.clone()).unwrap()).unwrap_or_default();
+            let t = text_for(&button(a).unwrap()).unwrap_or_default();
             // Short enough for the smallest window (480 px, 7 px glyphs).
             assert!(!t.is_empty() && t.len() <= 60, "{a:?}: {t}");
         }
