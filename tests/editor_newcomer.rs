@@ -752,6 +752,16 @@ fn the_wheel_zooms_the_timeline_and_a_middle_drag_pans_it() {
         "the wheel no longer steps frames"
     );
     assert!(ed.status().text.starts_with("Timeline shows frames"));
+    // Frame 0 is out of view now: no cursor line anywhere on the ruler
+    // (it used to land on the names column).
+    assert!(z.0 > 0.0);
+    let f = ed.render_frame();
+    let tl = ed.layout().timeline;
+    let cursor_px = (tl.y..tl.bottom())
+        .flat_map(|y| (0..f.width as i32).map(move |x| (x, y)))
+        .filter(|&(x, y)| f.color[(y * f.width as i32 + x) as usize] == 0x4cc2ff)
+        .count();
+    assert_eq!(cursor_px, 0);
     // Keys follow the zoom: the key at 48 is where the span puts it.
     let m = ed
         .key_marker_at(animed::internals::editor::keystrip::Row::Summary, 48.0)
@@ -778,6 +788,8 @@ fn the_wheel_zooms_the_timeline_and_a_middle_drag_pans_it() {
         "{p:?}"
     );
     assert_eq!(ed.current_frame(), frame0, "panning does not seek");
+    let said = format!("Timeline shows frames {} to", p.0.round());
+    assert!(ed.status().text.starts_with(&said), "{}", ed.status().text);
     // Home over the timeline shows the whole scene again.
     hover(&mut ed, (x, y));
     key(&mut ed, Key::Home, Mods::NONE);
@@ -866,4 +878,205 @@ fn a_shorter_scene_keeps_its_late_keys_visible_greyed_and_says_so() {
     // Undo: the scene is long again and nothing is greyed.
     key(&mut ed, Key::Char('z'), Mods::ctrl());
     assert_eq!(ed.scene().settings.duration, 96.0);
+}
+
+// ----- item 2: context menus in the strip and lists, tooltips -----
+
+fn right_click(ed: &mut Editor, (x, y): (f32, f32)) {
+    let button = MouseButton::Right;
+    ed.handle(Event::MouseMove {
+        x,
+        y,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::MouseDown {
+        button,
+        x,
+        y,
+        mods: Mods::NONE,
+    });
+    ed.handle(Event::MouseUp {
+        button,
+        x,
+        y,
+        mods: Mods::NONE,
+    });
+}
+
+/// Picks the open menu's item whose label starts with `label`.
+fn pick(ed: &mut Editor, label: &str) {
+    let m = ed.menu().expect("a menu is open");
+    let i = m
+        .items
+        .iter()
+        .position(|it| it.label.starts_with(label))
+        .unwrap_or_else(|| panic!("no {label} in {:?}", m.items));
+    let r = m.item_rect(ed.layout().window, i);
+    click(ed, ((r.x + 10) as f32, (r.y + 5) as f32));
+    assert!(ed.menu().is_none());
+}
+
+#[test]
+fn the_key_strips_context_menu_edits_the_keys_under_the_mouse() {
+    use animed::internals::anim::{Interp, Keys, Property, Target, TargetRef};
+    use animed::internals::editor::keystrip::Row;
+    let mut ed = big_stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    let row = Row::Track(Property::Translation);
+    let at = ed.key_marker_at(row, 24.0).unwrap();
+    right_click(&mut ed, at);
+    let labels: Vec<String> = ed
+        .menu()
+        .expect("the strip's menu")
+        .items
+        .iter()
+        .map(|i| i.label.clone())
+        .collect();
+    assert_eq!(
+        labels,
+        [
+            "Interpolation: step",
+            "Interpolation: linear",
+            "Interpolation: tcb",
+            "Ease in and out",
+            "No ease",
+            "Delete keys",
+            "Copy keys",
+            "Select all on row"
+        ]
+    );
+    let keys = |ed: &Editor| {
+        let t = Target {
+            of: TargetRef::Node(ball),
+            property: Property::Translation,
+        };
+        match &ed.scene().animation.track(t).unwrap().keys {
+            Keys::Vec3(k) => k.clone(),
+            _ => panic!("vector keys"),
+        }
+    };
+    pick(&mut ed, "Interpolation: step");
+    assert_eq!(keys(&ed)[1].interp, Interp::Step, "the key at 24");
+    assert_ne!(keys(&ed)[2].interp, Interp::Step, "only that key");
+    right_click(&mut ed, at);
+    pick(&mut ed, "Ease in and out");
+    assert_eq!((keys(&ed)[1].ease_in, keys(&ed)[1].ease_out), (1.0, 1.0));
+    // Select all on the row, then delete them; undo brings them back.
+    right_click(&mut ed, at);
+    pick(&mut ed, "Select all on row");
+    assert_eq!(ed.status().text, "Selected 5 keys on the row");
+    right_click(&mut ed, at);
+    pick(&mut ed, "Copy keys");
+    right_click(&mut ed, at);
+    pick(&mut ed, "Delete keys");
+    assert!(ed
+        .scene()
+        .animation
+        .track(Target {
+            of: TargetRef::Node(ball),
+            property: Property::Translation
+        })
+        .is_none_or(|t| t.key_count() == 0));
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(keys(&ed).len(), 5);
+    // With keys on the clipboard the menu offers pasting them.
+    let at48 = ed.key_marker_at(row, 48.0).unwrap();
+    right_click(&mut ed, at48);
+    assert!(ed
+        .menu()
+        .unwrap()
+        .items
+        .iter()
+        .any(|i| i.label == "Paste at frame 0"));
+    key(&mut ed, Key::Escape, Mods::NONE);
+}
+
+#[test]
+fn the_lists_context_menu_renames_duplicates_and_deletes() {
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    let row = find(&ed, &format!("node: NodeId({})", ball.0));
+    right_click(&mut ed, row);
+    assert_eq!(ed.selection(), Some(ball), "the row is selected");
+    pick(&mut ed, "Rename");
+    ed.handle(Event::Text("Planet".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert_eq!(ed.scene().node(ball).name, "Planet");
+    let row = find(&ed, &format!("node: NodeId({})", ball.0));
+    right_click(&mut ed, row);
+    pick(&mut ed, "Duplicate");
+    let copy = ed.selection().unwrap();
+    assert_ne!(copy, ball);
+    assert!(ed.scene().node(copy).name.starts_with("Planet"));
+    let row = find(&ed, &format!("node: NodeId({})", copy.0));
+    right_click(&mut ed, row);
+    pick(&mut ed, "Delete");
+    assert!(ed.scene().find_node(&ed.scene().node(ball).name).is_some());
+    assert_eq!(ed.selection(), None);
+}
+
+#[test]
+fn tooltips_explain_toolbar_buttons_and_fields_after_half_a_second() {
+    let mut ed = stage();
+    let imp = find(&ed, "Import");
+    hover(&mut ed, imp);
+    assert!(
+        ed.wants_ticks(),
+        "a pending tooltip keeps the clock running"
+    );
+    ed.handle(Event::Tick { time: 5.0 });
+    ed.handle(Event::Tick { time: 5.3 });
+    assert_eq!(ed.tooltip(), None, "not before 0.5 s");
+    assert!(ed.handle(Event::Tick { time: 5.55 }), "appearing redraws");
+    assert_eq!(
+        ed.tooltip().as_deref(),
+        Some("Import a model as a new object (Ctrl+I)")
+    );
+    golden::check("editor_tooltip", &ed.render_frame());
+    // Another widget: gone, and back after its own delay.
+    let style = find(&ed, "ViewStyle");
+    assert!(ed.handle(Event::MouseMove {
+        x: style.0,
+        y: style.1,
+        mods: Mods::NONE
+    }));
+    assert_eq!(ed.tooltip(), None);
+    ed.handle(Event::Tick { time: 6.0 });
+    ed.handle(Event::Tick { time: 6.6 });
+    assert!(ed.tooltip().unwrap().starts_with("Viewport style"));
+    // A click hides it.
+    let len = find(&ed, "Field(Duration)");
+    click(&mut ed, len);
+    assert_eq!(ed.tooltip(), None);
+    key(&mut ed, Key::Escape, Mods::NONE);
+}
+
+#[test]
+fn f3_searches_every_command_by_name() {
+    let mut ed = Editor::new(Scene::new(), None, 480, 320);
+    key(&mut ed, Key::F(3), Mods::NONE);
+    let n = ed.search().expect("F3 opens the search").menu.items.len();
+    assert!(n > 10, "the whole list shows first ({n})");
+    // Typing filters; the keys typed are text, not shortcuts.
+    key(&mut ed, Key::Char('b'), Mods::NONE);
+    ed.handle(Event::Text("Box".into()));
+    let s = ed.search().unwrap();
+    assert_eq!(s.menu.items[0].label, "Add Box");
+    assert_eq!(s.menu.items[0].shortcut, "Shift+A");
+    golden::check("editor_search", &ed.render_frame());
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert!(ed.search().is_none());
+    assert_eq!(ed.scene().node(ed.selection().unwrap()).name, "Box1");
+    // Esc closes without running anything.
+    key(&mut ed, Key::F(3), Mods::NONE);
+    ed.handle(Event::Text("sphere".into()));
+    key(&mut ed, Key::Escape, Mods::NONE);
+    assert!(ed.search().is_none());
+    assert!(ed.scene().find_node("Sphere1").is_none());
+    assert_eq!(
+        ed.mode(),
+        animed::internals::editor::Mode::Select,
+        "Esc only closed the search"
+    );
 }

@@ -34,6 +34,7 @@ impl Editor {
         self.draw_timeline(&mut p, &l);
         self.draw_panels(&mut p, &l);
         self.draw_modal(&mut p);
+        self.draw_tooltip(&mut p);
         self.draw_help(&mut p);
         p.end(frame);
         self.painter = p;
@@ -257,8 +258,14 @@ impl Editor {
             false => self.draw_key_strip(p, l),
         }
         self.draw_time_shading(p, l, span);
-        // Current frame cursor with its number.
-        let cx = l.frame_to_x_in(self.frame.clamp(0.0, dur), span) as i32;
+        // Current frame cursor with its number (not when zoomed or panned
+        // away from it: it would land on the names column).
+        let cxf = l.frame_to_x_in(self.frame.clamp(0.0, dur), span);
+        let (x0, x1) = l.ruler_span();
+        if cxf < x0 - 0.5 || cxf > x1 + 0.5 {
+            return;
+        }
+        let cx = cxf as i32;
         p.fill_rect(
             // Through the key strip; the graph draws its own frame line.
             Rect::new(
@@ -310,6 +317,25 @@ impl Editor {
         }
     }
 
+    /// The tooltip below and right of the mouse, kept inside the window.
+    fn draw_tooltip(&self, p: &mut Painter) {
+        let Some(t) = self.hover.text() else { return };
+        let win = self.layout().window;
+        let w = (text::width(&t) + 10).min(win.w);
+        let h = text::LINE_H + 6;
+        let (mx, my) = (self.mouse.0 as i32, self.mouse.1 as i32);
+        let x = (mx + 10).clamp(win.x, (win.right() - w).max(win.x));
+        let y = if my + 20 + h <= win.bottom() {
+            my + 20
+        } else {
+            my - 8 - h
+        };
+        let r = Rect::new(x, y.max(win.y), w, h);
+        p.fill_rect(r, theme::DIALOG);
+        p.stroke_rect(r, theme::ACCENT);
+        p.text_clipped(r.x + 5, r.y + 3, &t, theme::TEXT, r.w - 8);
+    }
+
     fn draw_modal(&self, p: &mut Painter) {
         let win = self.layout().window;
         if let Some(b) = &self.browser {
@@ -352,6 +378,9 @@ impl Editor {
         }
         if let Some(m) = &self.menu {
             m.draw(p, win);
+        }
+        if let Some(s) = &self.search {
+            s.menu.draw(p, win);
         }
         if let Some(d) = &self.dialog {
             p.fill_rect_alpha(win, 0x000000, 110);

@@ -49,7 +49,7 @@ pub const HELP: &[(&str, &str)] = &[
     ("G, L", "grid; light on/off"),
     ("Ctrl+Z / Ctrl+Y", "undo / redo"),
     ("Ctrl+O / S / I / N", "open, save, import, new"),
-    ("F1", "this help (any key or click closes it)"),
+    ("F1 / F3", "this help / search every command by name"),
 ];
 
 /// Width of the keys column, in characters.

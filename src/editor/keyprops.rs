@@ -28,6 +28,14 @@ pub enum KeyAction {
     /// Show the node's properties / the key panel.
     ShowNode,
     ShowKeys,
+    /// The key strip's context menu: ease in and out fully (`true`) or
+    /// not at all, delete, copy, paste at the current frame, and select
+    /// every key of a row.
+    Ease(bool),
+    Delete,
+    Copy,
+    Paste,
+    SelectRow(super::keystrip::Row),
 }
 
 /// The number a field shows for `key`.

@@ -41,7 +41,9 @@ pub mod rig;
 mod route;
 mod screen;
 pub mod script;
+pub mod search;
 pub mod timeline;
+pub mod tooltip;
 mod viewport;
 pub mod views;
 
@@ -185,6 +187,10 @@ pub struct Editor {
     dialog: Option<Dialog>,
     /// An open pop-up menu (Add, context, View): modal while open.
     menu: Option<menu::Menu>,
+    /// The tooltip timer.
+    hover: tooltip::Hover,
+    /// The F3 command search, when open.
+    search: Option<search::Search>,
     status: Status,
     quit: bool,
     /// The F1 key reference is shown.
@@ -247,6 +253,8 @@ impl Editor {
             browser_then: None,
             dialog: None,
             menu: None,
+            hover: tooltip::Hover::default(),
+            search: None,
             status: Status::default(),
             quit: false,
             help: false,
@@ -345,7 +353,12 @@ impl Editor {
     }
     /// Whether the app should keep sending `Tick`s (playback runs).
     pub fn wants_ticks(&self) -> bool {
-        self.playback.is_some()
+        self.playback.is_some() || self.hover.pending()
+    }
+
+    /// The tooltip shown under the mouse, if any.
+    pub fn tooltip(&self) -> Option<String> {
+        self.hover.text()
     }
     /// "animed — name.wrl *" (the mark when there are unsaved changes).
     pub fn window_title(&self) -> String {

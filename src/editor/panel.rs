@@ -46,6 +46,8 @@ pub enum Action {
     ToggleLight(NodeId),
     ObjectStyle,
     Delete,
+    /// Start typing the selection's name (the lists' context menu).
+    Rename,
     DialogSave,
     DialogDiscard,
     DialogCancel,

@@ -42,6 +42,51 @@ impl Editor {
         self.menu = Some(Menu::new("Viewport", items, (x, y)));
     }
 
+    /// F3: the command search over the window.
+    pub fn open_search(&mut self) {
+        self.menu = None;
+        self.search = Some(crate::editor::search::Search::new(self.layout().window));
+    }
+
+    /// The open command search, if any.
+    pub fn search(&self) -> Option<&crate::editor::search::Search> {
+        self.search.as_ref()
+    }
+
+    /// The command search takes every input event and text while open.
+    pub(in crate::internals::editor) fn search_event(&mut self, ev: &Event) -> Option<bool> {
+        if matches!(
+            ev,
+            Event::Tick { .. } | Event::Resize { .. } | Event::KeyUp { .. }
+        ) {
+            return None;
+        }
+        let window = self.layout().window;
+        let s = self.search.as_mut()?;
+        match s.handle(ev, window) {
+            Reply::Stay(redraw) => Some(redraw),
+            Reply::Close => {
+                self.search = None;
+                Some(true)
+            }
+            Reply::Pick(a) => {
+                self.search = None;
+                self.run_action(a);
+                Some(true)
+            }
+        }
+    }
+
+    /// The objects and lights lists' context menu (on the selected row).
+    pub fn open_list_menu(&mut self, x: i32, y: i32) {
+        let items = vec![
+            MenuItem::new("Rename", "", Action::Rename),
+            MenuItem::new("Duplicate", "Shift+D", Action::Duplicate),
+            MenuItem::new("Delete", "Delete", Action::Delete),
+        ];
+        self.menu = Some(Menu::new("Object", items, (x, y)));
+    }
+
     /// An open menu takes every input event; `None` when no menu is open
     /// or the event is not input.
     pub(in crate::internals::editor) fn menu_event(&mut self, ev: &Event) -> Option<bool> {

@@ -37,6 +37,9 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn dispatch(&mut self, ev: Event) -> bool {
+        if let Some(redraw) = self.search_event(&ev) {
+            return redraw;
+        }
         if let Some(redraw) = self.menu_event(&ev) {
             return redraw;
         }
@@ -48,13 +51,17 @@ impl Editor {
                 changed
             }
             Event::Tick { time } => self.tick(time),
-            Event::MouseMove { x, y, mods } => self.mouse_move(x, y, mods),
+            Event::MouseMove { x, y, mods } => {
+                let tip_gone = self.hover_move(x, y);
+                self.mouse_move(x, y, mods) | tip_gone
+            }
             Event::MouseDown { .. } | Event::KeyDown { .. } if self.help_shown() => {
                 // Any key or click closes the help.
                 self.set_help(false);
                 true
             }
             Event::MouseDown { button, x, y, mods } => {
+                self.hover.moved(None);
                 self.mouse = (x, y);
                 self.mouse_down(button, x, y, mods);
                 true
@@ -74,8 +81,18 @@ impl Editor {
         }
     }
 
+    /// Restarts the tooltip timer for the widget under (x, y) (none during
+    /// drags, menus and dialogs); `true` when a shown tooltip went away.
+    fn hover_move(&mut self, x: f32, y: f32) -> bool {
+        let over = match (&self.drag, &self.menu, &self.dialog, &self.browser) {
+            (Drag::None, None, None, None) => self.widget_at(x, y).map(|w| w.kind),
+            _ => None,
+        };
+        self.hover.moved(over)
+    }
+
     pub(in crate::internals::editor) fn tick(&mut self, time: f64) -> bool {
-        let status = self.autosave_tick(time);
+        let status = self.autosave_tick(time) | self.hover.tick(time);
         let Some(pb) = &mut self.playback else {
             return status;
         };
@@ -269,6 +286,19 @@ impl Editor {
             };
             return;
         }
+        if button == MouseButton::Right {
+            if let Some(WidgetKind::Row { node, .. }) = self.widget_at(x, y).map(|w| w.kind) {
+                self.commit_edit();
+                self.selection = Some(node);
+                self.open_list_menu(x as i32, y as i32);
+                return;
+            }
+        }
+        if button == MouseButton::Right && l.key_rows.contains(x, y) {
+            self.commit_edit();
+            self.open_strip_menu(x, y);
+            return;
+        }
         let on_strip = l.ruler.contains(x, y) || l.key_rows.contains(x, y);
         if button == MouseButton::Middle && on_strip {
             self.commit_edit();
@@ -380,6 +410,7 @@ impl Editor {
                 let r = self.timeline.preview;
                 self.set_preview_range(r);
             }
+            Drag::StripPan { .. } => self.say_timeline_span(),
             _ => {}
         }
     }
@@ -802,6 +833,7 @@ impl Editor {
                 }
             }
             (Key::F(1), _, _) => self.set_help(true),
+            (Key::F(3), _, _) => self.open_search(),
             (Key::Char('f'), false, _) => self.frame_selection(),
             (Key::Home, _, _) if self.layout().timeline.contains(self.mouse.0, self.mouse.1) => {
                 self.reset_timeline_view()
@@ -974,6 +1006,18 @@ impl Editor {
                 self.open_add_menu(at.0, at.1);
             }
             Action::Delete => self.delete_selection(),
+            Action::Rename => {
+                if let Some(sel) = self.selection {
+                    self.keys.node_panel = true;
+                    let name = self.scene.node(sel).name.clone();
+                    self.edit = Some(TextEdit {
+                        field: FieldId::Name,
+                        text: name,
+                        fresh: true,
+                    });
+                    self.set_status("Type the new name, Enter sets it, Esc cancels", false);
+                }
+            }
             Action::DialogCancel => {
                 if self
                     .dialog

@@ -222,7 +222,9 @@ impl Editor {
         let cx = l
             .frame_to_x_in(self.frame.clamp(0.0, dur.max(0.0)), self.time_span())
             .floor();
-        (x - (cx + 0.5)).abs() <= 2.5
+        let (x0, x1) = l.ruler_span();
+        // Zoomed or panned away from the cursor: there is none to grab.
+        (x0 - 0.5..=x1 + 0.5).contains(&cx) && (x - (cx + 0.5)).abs() <= 2.5
     }
 
     /// Keys whose markers lie in the box between two window points.
@@ -471,6 +473,95 @@ impl Editor {
     /// Keys the strip handles (returns true when it used the key): Esc
     /// cancels a strip drag or clears the key selection, Delete removes
     /// selected keys, Ctrl+C copies them, Ctrl+V pastes at the current frame.
+    /// Copies the selected keys to the strip's clipboard (Ctrl+C).
+    pub(in crate::internals::editor) fn copy_selected_keys(&mut self) {
+        self.keys.clipboard = copy(&self.scene.animation, &self.selected_keys());
+        let n = self.keys.clipboard.keys.len();
+        self.set_status(
+            &format!("Copied {n} key{}", if n == 1 { "" } else { "s" }),
+            false,
+        );
+    }
+
+    /// Selects every key of `row` (the summary: every key of the selection).
+    pub(in crate::internals::editor) fn select_row_keys(&mut self, row: Row) {
+        let Some(sel) = self.selection else { return };
+        let ks: Vec<KeyRef> = match row {
+            Row::Track(p) => track_keys(&self.scene.animation, sel, p),
+            _ => self
+                .row_markers(Row::Summary)
+                .into_iter()
+                .flat_map(|(_, ks)| ks)
+                .collect(),
+        };
+        let n = ks.len();
+        self.set_key_selection(ks);
+        self.set_status(&format!("Selected {n} keys on the row"), false);
+    }
+
+    /// Right click in the key strip: selects the key under the mouse when
+    /// it is not selected yet, then opens the strip's context menu
+    /// (interpolation, ease, delete, copy/paste, select the row).
+    pub(in crate::internals::editor) fn open_strip_menu(&mut self, x: f32, y: f32) {
+        use crate::editor::keyprops::KeyAction as K;
+        use crate::editor::menu::{Menu, MenuItem};
+        use crate::editor::panel::Action;
+        let row = self
+            .key_strip_layout()
+            .into_iter()
+            .find(|(_, r)| r.contains(x, y))
+            .map(|(row, _)| row);
+        if let Some(Hit::Keys(ks)) = self.key_strip_hit(x, y) {
+            let current = self.selected_keys();
+            if !ks.iter().all(|k| current.iter().any(|c| c.same(k))) {
+                self.set_key_selection(ks);
+            }
+        }
+        let has = !self.selected_keys().is_empty();
+        let mut items = Vec::new();
+        if has {
+            let rot = self
+                .selected_keys()
+                .first()
+                .is_some_and(|k| k.property.kind() == crate::anim::ValueKind::Rotation);
+            for i in [
+                crate::anim::Interp::Step,
+                crate::anim::Interp::Linear,
+                crate::anim::Interp::Tcb,
+            ] {
+                let label = format!("Interpolation: {}", i.name(rot));
+                items.push(MenuItem::new(&label, "", Action::Key(K::Interp(i))));
+            }
+            items.push(MenuItem::new(
+                "Ease in and out",
+                "",
+                Action::Key(K::Ease(true)),
+            ));
+            items.push(MenuItem::new("No ease", "", Action::Key(K::Ease(false))));
+            items.push(MenuItem::new(
+                "Delete keys",
+                "Delete",
+                Action::Key(K::Delete),
+            ));
+            items.push(MenuItem::new("Copy keys", "Ctrl+C", Action::Key(K::Copy)));
+        }
+        if !self.keys.clipboard.keys.is_empty() {
+            let label = format!("Paste at frame {}", self.frame);
+            items.push(MenuItem::new(&label, "Ctrl+V", Action::Key(K::Paste)));
+        }
+        if let Some(r @ (Row::Summary | Row::Track(_))) = row {
+            items.push(MenuItem::new(
+                "Select all on row",
+                "",
+                Action::Key(K::SelectRow(r)),
+            ));
+        }
+        if items.is_empty() {
+            return;
+        }
+        self.menu = Some(Menu::new("Keys", items, (x as i32, y as i32)));
+    }
+
     pub(in crate::internals::editor) fn key_strip_key(&mut self, key: KeyName, m: Mods) -> bool {
         if self.keys.drag.is_some() {
             if key == KeyName::Escape {
@@ -489,12 +580,7 @@ impl Editor {
                 true
             }
             (KeyName::Char('c'), true) if has => {
-                self.keys.clipboard = copy(&self.scene.animation, &self.selected_keys());
-                let n = self.keys.clipboard.keys.len();
-                self.set_status(
-                    &format!("Copied {n} key{}", if n == 1 { "" } else { "s" }),
-                    false,
-                );
+                self.copy_selected_keys();
                 true
             }
             (KeyName::Char('v'), true) if !self.keys.clipboard.keys.is_empty() => {

@@ -70,6 +70,11 @@ impl Editor {
         let full = full_span(self.scene.settings.duration, self.last_key_frame());
         let about = l.x_to_frame_in(x, span);
         self.timeline.zoom(span, full, about, delta);
+        self.say_timeline_span();
+    }
+
+    /// The status line names the frames the strip shows.
+    pub(in crate::internals::editor) fn say_timeline_span(&mut self) {
         let s = self.time_span();
         let msg = if self.timeline.is_zoomed() {
             format!(
