@@ -568,3 +568,150 @@ fn textures_survive_gltf_and_glb_round_trips() {
         }
     }
 }
+
+/// KHR_animation_pointer (a file the gltf crate alone would refuse):
+/// pointers at a node's TRS play as ordinary channels; light colour and
+/// intensity, spot cone, camera yfov and base colour (BLEND: alpha →
+/// transparency) become animed tracks with the static mappings' units;
+/// an unknown pointer is a warning naming it.
+#[test]
+fn animation_pointer_channels_drive_lights_cameras_and_materials() {
+    let f = |v: &[f32]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    // Accessors: 0 times [0, 1]; 1 vec3 colours; 2 scalars (intensity);
+    // 3 scalars (angles); 4 vec4 base colours; 5 vec3 translations; 6 positions.
+    let parts: [Vec<u8>; 7] = [
+        f(&[0.0, 1.0]),
+        f(&[1.0, 0.0, 0.0, 0.0, 0.0, 1.0]),
+        f(&[10.0, 40.0]),
+        f(&[0.5, 0.25]),
+        f(&[1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.5]),
+        f(&[0.0, 0.0, 0.0, 2.0, 0.0, 0.0]),
+        f(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]),
+    ];
+    let (types, counts) = (
+        ["SCALAR", "VEC3", "SCALAR", "SCALAR", "VEC4", "VEC3", "VEC3"],
+        [2, 2, 2, 2, 2, 2, 3],
+    );
+    let mut buffer = Vec::new();
+    let mut views = Vec::new();
+    let mut accessors = Vec::new();
+    for (i, p) in parts.iter().enumerate() {
+        views.push(
+            serde_json::json!({"buffer": 0, "byteOffset": buffer.len(), "byteLength": p.len()}),
+        );
+        let mut a = serde_json::json!({"bufferView": i, "componentType": 5126, "count": counts[i], "type": types[i]});
+        if i == 0 {
+            a["min"] = serde_json::json!([0.0]);
+            a["max"] = serde_json::json!([1.0]);
+        }
+        if i == 6 {
+            a["min"] = serde_json::json!([0.0, 0.0, 0.0]);
+            a["max"] = serde_json::json!([1.0, 1.0, 0.0]);
+        }
+        accessors.push(a);
+        buffer.extend_from_slice(p);
+    }
+    let ptr = |p: &str, sampler: usize| {
+        serde_json::json!({"sampler": sampler, "target": {"path": "pointer",
+            "extensions": {"KHR_animation_pointer": {"pointer": p}}}})
+    };
+    let doc = serde_json::json!({
+        "asset": {"version": "2.0"},
+        "extensionsUsed": ["KHR_lights_punctual", "KHR_animation_pointer"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "spot", "color": [1, 1, 1], "intensity": 20.0,
+             "spot": {"innerConeAngle": 0.1, "outerConeAngle": 0.7}}]}},
+        "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+        "nodes": [
+            {"name": "Lamp", "extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 0, 3]},
+            {"name": "Cam", "camera": 0, "translation": [0, 0, 5]},
+            {"name": "Tri", "mesh": 0}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+        "materials": [{"alphaMode": "BLEND", "pbrMetallicRoughness": {"metallicFactor": 0.0}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 6}, "material": 0}]}],
+        "animations": [{"name": "pointers", "samplers": [
+            {"input": 0, "output": 1}, {"input": 0, "output": 2}, {"input": 0, "output": 3},
+            {"input": 0, "output": 4}, {"input": 0, "output": 5}],
+          "channels": [
+            ptr("/extensions/KHR_lights_punctual/lights/0/color", 0),
+            ptr("/extensions/KHR_lights_punctual/lights/0/intensity", 1),
+            ptr("/extensions/KHR_lights_punctual/lights/0/spot/outerConeAngle", 2),
+            ptr("/cameras/0/perspective/yfov", 2),
+            ptr("/materials/0/pbrMetallicRoughness/baseColorFactor", 3),
+            ptr("/nodes/2/translation", 4),
+            ptr("/materials/0/alphaCutoff", 2)]}],
+        "buffers": [{"byteLength": buffer.len(), "uri": "pointers.bin"}],
+        "bufferViews": views,
+        "accessors": accessors,
+    });
+    let path = Path::new("pointers.gltf");
+    let loaded = read(
+        doc.to_string().as_bytes(),
+        path,
+        &ReadOptions::default(),
+        &|_| Ok(buffer.clone()),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        loaded
+            .warnings
+            .iter()
+            .any(|w| w.contains("/materials/0/alphaCutoff")
+                && w.contains("/animations/0/channels/6")),
+        "{:?}",
+        loaded.warnings
+    );
+    assert!(
+        !loaded.warnings.iter().any(|w| w.contains("not supported")),
+        "{:?}",
+        loaded.warnings
+    );
+    let s = &loaded.scene;
+    assert_eq!(s.settings.fps, 24.0);
+    let light_node = |s: &Scene| {
+        s.nodes
+            .iter()
+            .position(|n| n.light().is_some())
+            .map(|i| animed::internals::scene::NodeId(i as u32))
+            .unwrap()
+    };
+    let cam_node = s
+        .nodes
+        .iter()
+        .position(|n| n.camera().is_some())
+        .map(|i| animed::internals::scene::NodeId(i as u32))
+        .unwrap();
+    let (l, c) = (light_node(s), cam_node);
+    let at = |t: f32| evaluate(s, t);
+    let (p0, p1, p_half) = (at(0.0), at(1.0), at(0.5));
+    // Colour: linear red → blue, shown in sRGB.
+    assert_eq!(p0.light(l).unwrap().color, Vec3::X);
+    assert_eq!(p1.light(l).unwrap().color, Vec3::Z);
+    // Intensity: 10 → 40 cd with the largest (40) as the reference:
+    // brightness I/(π d²) at every time.
+    let light = p0.light(l).unwrap();
+    assert!((light.attenuation.z - std::f32::consts::PI / 40.0).abs() < 1e-6);
+    assert!((light.intensity - 0.25).abs() < 1e-6, "{}", light.intensity);
+    assert!((p1.light(l).unwrap().intensity - 1.0).abs() < 1e-6);
+    let LightKind::Spot { cut_off_angle, .. } = p_half.light(l).unwrap().kind else {
+        panic!("a spot light")
+    };
+    assert!((cut_off_angle - 0.375).abs() < 1e-6, "{cut_off_angle}");
+    let fov = |p: &animed::internals::anim::Pose| match p.camera(c).unwrap().kind {
+        animed::internals::scene::CameraKind::Perspective { height_angle } => height_angle,
+        _ => panic!("perspective"),
+    };
+    assert!((fov(&p0) - 0.5).abs() < 1e-6 && (fov(&p1) - 0.25).abs() < 1e-6);
+    // Base colour white → black with alpha 1 → 0.5 (BLEND: transparency).
+    let m0 = &p0.materials[0];
+    let m1 = &p1.materials[0];
+    assert!(
+        m0.diffuse.x > 0.99 && m1.diffuse.x == 0.0,
+        "{:?} {:?}",
+        m0.diffuse,
+        m1.diffuse
+    );
+    assert_eq!((m0.transparency, m1.transparency), (0.0, 0.5));
+    // A node pointer is an ordinary translation channel.
+    assert_eq!(translation(s, "Tri", 1.0), Vec3::new(2.0, 0.0, 0.0));
+}

@@ -259,15 +259,21 @@ fn shared_dir() -> PathBuf {
     }
 }
 
-/// `path:line:column: message` with numeric line and column.
+/// `path:line:column: message` with line and column from 1 — or, for a
+/// compressed stream that does not decompress (no text position exists),
+/// `path: gzip …`. Readers print an unknown position as `path: message`,
+/// never as a fake `path:0:0:`.
 fn is_positioned(msg: &str, path: &Path) -> bool {
     let Some(rest) = msg.strip_prefix(&format!("{}:", path.display())) else {
         return false;
     };
+    if rest.starts_with(" gzip") {
+        return true;
+    }
     let mut parts = rest.splitn(3, ':');
     let line = parts.next().unwrap_or("");
     let col = parts.next().unwrap_or("");
-    line.parse::<u32>().is_ok() && col.parse::<u32>().is_ok()
+    line.parse::<u32>().is_ok_and(|l| l > 0) && col.parse::<u32>().is_ok_and(|c| c > 0)
 }
 
 /// Every X3D file of `corpus-next` (castle-engine demo models, both

@@ -408,3 +408,78 @@ fn textures_survive_read_write_read() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Broken or missing texture images are warnings at the statement that
+/// names them (the MTL line, or the glTF image's JSON pointer), the model
+/// still loads, draws untextured, and nothing panics.
+#[test]
+fn broken_texture_images_are_placed_warnings() {
+    let dir = std::env::temp_dir().join(format!("animed-bad-tex-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("broken.png"), b"\x89PNG\r\n\x1a\nGARBAGE").unwrap();
+    std::fs::write(
+        dir.join("tri.mtl"),
+        "# test\nnewmtl plain\nKd 1 0 0\nnewmtl m\nKd 1 1 1\n  map_Kd broken.png\nmap_d missing.png\n",
+    )
+    .unwrap();
+    let obj = dir.join("tri.obj");
+    let obj_text = "mtllib tri.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n";
+    let loaded = load_bytes(obj_text.as_bytes(), &obj).expect("loads despite bad images");
+    let mtl = dir.join("tri.mtl");
+    let want = [
+        format!(
+            "{}:6:3: material \"m\": cannot read texture 'broken.png'",
+            mtl.display()
+        ),
+        format!(
+            "{}:7:1: material \"m\": cannot read texture 'missing.png'",
+            mtl.display()
+        ),
+    ];
+    for w in &want {
+        assert!(
+            loaded
+                .warnings
+                .iter()
+                .any(|got| got.starts_with(w.as_str())),
+            "no warning starting {w:?} in {:?}",
+            loaded.warnings
+        );
+    }
+    assert!(loaded.scene.materials.iter().all(|m| m.texture.is_none()));
+    let frame = draw(&loaded.scene);
+    assert!(
+        frame.color.iter().any(|&p| p != frame.color[0]),
+        "the triangle is drawn"
+    );
+
+    // A missing library: the OBJ's own mtllib line.
+    let lost = load_bytes(b"v 0 0 0\nmtllib gone.mtl\n", &dir.join("lost.obj")).unwrap();
+    assert!(
+        lost.warnings.iter().any(|w| w.starts_with(&format!(
+            "{}:2:1: cannot read material library",
+            dir.join("lost.obj").display()
+        ))),
+        "{:?}",
+        lost.warnings
+    );
+
+    // glTF: an image that does not decode names its JSON pointer, no fake 0:0.
+    let gltf = dir.join("bad.gltf");
+    let json = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/gltf/textured.gltf"),
+    )
+    .unwrap();
+    let mut doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    doc["images"][0] = serde_json::json!({"uri": "data:image/png;base64,iVBORw0KGgpHQVJCQUdF"});
+    let loaded = load_bytes(doc.to_string().as_bytes(), &gltf).expect("loads");
+    assert!(
+        loaded.warnings.iter().any(|w| w.starts_with(&format!(
+            "{}: /images/0: cannot read texture",
+            gltf.display()
+        ))),
+        "{:?}",
+        loaded.warnings
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -238,15 +238,19 @@ if command -v python3 >/dev/null 2>&1; then
   app_pid=$!
   find_window
   sleep 1
-  xdotool mousemove $(at "$ROW_X" "$ROW_Y") mousedown 1 sleep 0.3 mouseup 1
-  sleep 0.3
-  xdotool mousemove $(at "$FIELD_X" "$FIELD_Y") mousedown 1 sleep 0.3 mouseup 1
-  sleep 0.3
-  xdotool type --delay 50 "5"
-  xdotool key Return
-  for _ in $(seq 1 50); do
-    case "$(xdotool getwindowname "$wid")" in *"*") break ;; esac
-    sleep 0.1
+  # A fresh editor under a loaded machine may not take the first click yet
+  # (seen at load 13): try the edit up to three times.
+  for _attempt in 1 2 3; do
+    xdotool mousemove $(at "$ROW_X" "$ROW_Y") mousedown 1 sleep 0.3 mouseup 1
+    sleep 0.3
+    xdotool mousemove $(at "$FIELD_X" "$FIELD_Y") mousedown 1 sleep 0.3 mouseup 1
+    sleep 0.3
+    xdotool type --delay 50 "5"
+    xdotool key Return
+    for _ in $(seq 1 50); do
+      case "$(xdotool getwindowname "$wid")" in *"*") break 2 ;; esac
+      sleep 0.1
+    done
   done
   case "$(xdotool getwindowname "$wid")" in *"*") ;; *) fail "second session: typing made no unsaved change" ;; esac
   wm_close "$wid"

@@ -120,3 +120,36 @@ fn textures_are_texture2_state_with_the_transform_baked_into_coordinates() {
     let (plain, _) = iv(&writers_common::demo_scene(), InventorVersion::V2_1);
     assert!(!plain.contains("Texture2"));
 }
+
+/// Inventor 1.0 / VRML 1.0 have no `TextureCoordinateBinding`: the 1.0
+/// file binds its coordinates with `textureCoordIndex` instead, and reads
+/// back with the same texture coordinates as the 2.1 file.
+#[test]
+fn v1_binds_texture_coordinates_by_index_not_by_a_binding_node() {
+    use animed::internals::format::load_bytes;
+    let scene = writers_common::textured_scene(std::path::Path::new("brick.png"));
+    let (v1, _) = iv(&scene, InventorVersion::V1_0);
+    let (v2, _) = iv(&scene, InventorVersion::V2_1);
+    assert!(!v1.contains("TextureCoordinateBinding"), "{v1}");
+    assert!(v1.contains("textureCoordIndex ["), "{v1}");
+    let coords = |text: &str| {
+        let l = load_bytes(text.as_bytes(), std::path::Path::new("t.iv")).unwrap();
+        let mut all: Vec<Vec<[u32; 2]>> = l
+            .scene
+            .meshes
+            .iter()
+            .map(|m| {
+                m.texcoords
+                    .iter()
+                    .map(|c| [c.x.to_bits(), c.y.to_bits()])
+                    .collect()
+            })
+            .filter(|t: &Vec<[u32; 2]>| !t.is_empty())
+            .collect();
+        all.sort();
+        all
+    };
+    let (a, b) = (coords(&v1), coords(&v2));
+    assert!(!a.is_empty(), "no texture coordinates read back from\n{v1}");
+    assert_eq!(a, b);
+}

@@ -1,7 +1,9 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-/// A reader error with its position (line and column are 1-based; 0 = unknown).
+/// A reader error with its position (line and column are 1-based; 0 = unknown
+/// or not a text position, e.g. a glTF error whose message starts with its
+/// JSON pointer; then it prints as `path: message`, never `path:0:0:`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadError {
     pub path: PathBuf,
@@ -23,6 +25,9 @@ impl LoadError {
 
 impl fmt::Display for LoadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.line == 0 {
+            return write!(f, "{}: {}", self.path.display(), self.message);
+        }
         write!(
             f,
             "{}:{}:{}: {}",

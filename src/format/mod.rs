@@ -10,6 +10,7 @@
 //! `hsv`) and the shared export code (`export/`: write plan, channels,
 //! sampling, key note, options, atomic save) beside them.
 
+mod build_log;
 mod error;
 pub mod export;
 pub mod gltf;
@@ -21,6 +22,7 @@ pub mod lexer;
 pub mod limits;
 mod loaded;
 pub mod obj;
+mod obj_lines;
 mod obj_texture;
 pub mod polygons;
 pub mod sgi_image;

@@ -6,7 +6,7 @@
 //! by our own scan of the text that finds the line and column of the first
 //! statement tobj would reject.
 
-use super::{LoadError, Loaded};
+use super::{obj_lines, LoadError, Loaded};
 use crate::scene::{
     mesh_from_polygons_textured, normals, Binding, Material, Node, NodeKind, PolyOptions, Scene,
     Shape, SourceFormat, TexCoords,
@@ -40,6 +40,8 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
         ));
     }
     let warnings = RefCell::new(Vec::new());
+    // The material libraries' texts, kept to place warnings about them.
+    let libraries = RefCell::new(Vec::new());
     let dir = path.parent().unwrap_or(Path::new("")).to_path_buf();
     let options = tobj::LoadOptions {
         single_index: false,
@@ -49,15 +51,23 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
     };
     let loaded = tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| {
         let full = dir.join(mtl);
+        let (line, column) =
+            obj_lines::find(bytes, "mtllib", &mtl.to_string_lossy()).unwrap_or((1, 1));
         match crate::format::limits::read_file(&full) {
-            Ok(data) => tobj::load_mtl_buf(&mut std::io::Cursor::new(data)).inspect_err(|e| {
-                warnings
-                    .borrow_mut()
-                    .push(format!("{}:0:0: material library: {e}", full.display()));
-            }),
+            Ok(data) => {
+                let read = tobj::load_mtl_buf(&mut std::io::Cursor::new(&data)).inspect_err(|e| {
+                    warnings.borrow_mut().push(format!(
+                        "{}:{line}:{column}: material library {}: {e}",
+                        path.display(),
+                        full.display()
+                    ));
+                });
+                libraries.borrow_mut().push((full, data));
+                read
+            }
             Err(e) => {
                 warnings.borrow_mut().push(format!(
-                    "{}:0:0: cannot read material library {}: {e}",
+                    "{}:{line}:{column}: cannot read material library {}: {e}",
                     path.display(),
                     full.display()
                 ));
@@ -77,6 +87,7 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
         }
     };
     let mut warnings = warnings.into_inner();
+    let libraries = libraries.into_inner();
     let mtl = materials.unwrap_or_default();
 
     let mut scene = Scene::new();
@@ -94,12 +105,15 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
         let mut msgs = Vec::new();
         material.texture =
             super::obj_texture::material_texture(m, &mut scene, &mut loader, &mut msgs);
-        for w in msgs {
-            warnings.push(format!(
-                "{}:0:0: material {:?}: {w}",
-                path.display(),
-                m.name
-            ));
+        for (statement, w) in msgs {
+            let place = libraries
+                .iter()
+                .find_map(|(lib, text)| {
+                    let (line, column) = obj_lines::find_in_material(text, &m.name, statement)?;
+                    Some(format!("{}:{line}:{column}", lib.display()))
+                })
+                .unwrap_or_else(|| format!("{}:1:1", path.display()));
+            warnings.push(format!("{place}: material {:?}: {w}", m.name));
         }
         material_ids.push(scene.add_material(material));
     }
@@ -217,8 +231,9 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<Loaded, LoadError> {
             Some(&id) => id,
             None => {
                 if let Some(i) = m.material_id {
+                    let (line, column) = obj_lines::find(bytes, "usemtl", "").unwrap_or((1, 1));
                     warnings.push(format!(
-                        "{}:0:0: object {:?} uses material {i}, which no material library defines",
+                        "{}:{line}:{column}: object {:?} uses material {i}, which no material library defines",
                         path.display(),
                         model.name
                     ));

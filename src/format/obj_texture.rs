@@ -80,36 +80,38 @@ pub fn parse_map(line: &str) -> MapSpec {
 }
 
 /// The texture of an MTL material with `map_Kd` and/or `map_d`, loading
-/// images through `loader`; warnings are pushed as texts without a place.
+/// images through `loader`; each warning is pushed with the MTL statement
+/// it is about (`map_Kd` or `map_d`), which the caller turns into a place.
 pub fn material_texture(
     m: &tobj::Material,
     scene: &mut Scene,
     loader: &mut Loader,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<(&'static str, String)>,
 ) -> Option<Texture> {
     let kd = m.diffuse_texture.as_deref().map(parse_map);
     let d = m.dissolve_texture.as_deref().map(parse_map);
     let color = kd.as_ref().and_then(|k| match loader.read(&k.file) {
         Ok(img) => Some(img),
         Err(e) => {
-            warnings.push(cannot_read(&k.file, &e));
+            warnings.push(("map_Kd", cannot_read(&k.file, &e)));
             None
         }
     });
     let alpha = d.as_ref().and_then(|k| match loader.read(&k.file) {
         Ok(img) => Some(img),
         Err(e) => {
-            warnings.push(cannot_read(&k.file, &e));
+            warnings.push(("map_d", cannot_read(&k.file, &e)));
             None
         }
     });
+    let statement = if color.is_some() { "map_Kd" } else { "map_d" };
     let spec = if color.is_some() { kd } else { d }?;
     let image = match (color, alpha) {
         (Some(c), None) => c,
         (c, Some(a)) => match with_alpha(c.as_ref(), &a) {
             Ok(img) => img,
             Err(e) => {
-                warnings.push(cannot_read(&a.name, &e));
+                warnings.push(("map_d", cannot_read(&a.name, &e)));
                 c?
             }
         },
@@ -118,7 +120,7 @@ pub fn material_texture(
     let id = match scene.add_image(image) {
         Ok(id) => id,
         Err(e) => {
-            warnings.push(cannot_read(&spec.file, &e.to_string()));
+            warnings.push((statement, cannot_read(&spec.file, &e.to_string())));
             return None;
         }
     };

@@ -148,7 +148,7 @@ pub fn mesh_from_polygons_corners(
         .collect();
 
     let corner_normals = match given_normals {
-        Some(n) => n.into_iter().map(|n| n.normalize_or_zero()).collect(),
+        Some(n) => n.into_iter().map(unit_as_given).collect(),
         None => crease_normals(positions.len(), faces, &face_normals, opts.crease_angle),
     };
 
@@ -397,6 +397,17 @@ fn crease_normals(n_pos: usize, faces: &[Vec<u32>], fnorm: &[Vec3], crease: f32)
         }
     }
     out
+}
+
+/// A given normal made unit length; one that already is (within a few
+/// ulps, as a written and re-read unit normal is) is kept bit for bit, so
+/// that reading a file and writing it again is a fixed point.
+fn unit_as_given(n: Vec3) -> Vec3 {
+    if (n.length_squared() - 1.0).abs() <= 4.0 * f32::EPSILON {
+        n
+    } else {
+        n.normalize_or_zero()
+    }
 }
 
 /// Splits one polygon into triangles (indices into `face`), keeping its

@@ -6,33 +6,10 @@
 // [{"time": t, "meshes": [{"name": "...", "min": [x,y,z], "max": [x,y,z]}]}]
 // A mesh is named by its nearest ancestor glTF node with a name.
 // Usage: NPM_DIR=... node three_bounds.mjs FILE CLIP_INDEX T1,T2,...
-import fs from 'fs';
-import path from 'path';
-import { pathToFileURL } from 'url';
-const npm = process.env.NPM_DIR || '.';
-const three = await import(pathToFileURL(path.join(npm, 'node_modules/three/build/three.module.js')));
-const { GLTFLoader } = await import(pathToFileURL(path.join(npm, 'node_modules/three/examples/jsm/loaders/GLTFLoader.js')));
-
-globalThis.ProgressEvent ??= class extends Event {
-  constructor(type, init = {}) { super(type); Object.assign(this, init); }
-};
-const realFetch = globalThis.fetch;
-globalThis.fetch = async (url, opts) => {
-  const u = typeof url === 'string' ? url : (url.url ?? String(url));
-  if (u.startsWith('file://')) return new Response(fs.readFileSync(new URL(u)));
-  return realFetch(url, opts);
-};
+import { three, loadPlaying } from './three_load.mjs';
 
 const [file, clipArg, timesArg] = process.argv.slice(2);
-const bytes = fs.readFileSync(file);
-const loader = new GLTFLoader();
-const dir = pathToFileURL(path.dirname(path.resolve(file)) + '/').href;
-const gltf = await new Promise((resolve, reject) =>
-  loader.parse(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength), dir, resolve, reject));
-const scene = gltf.scene;
-const mixer = new three.AnimationMixer(scene);
-const clip = gltf.animations[Number(clipArg || 0)];
-if (clip) mixer.clipAction(clip).play();
+const { gltf, scene, mixer } = await loadPlaying(file, clipArg);
 
 function nameOf(o) {
   for (let p = o; p && p !== scene; p = p.parent) {

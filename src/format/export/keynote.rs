@@ -561,7 +561,7 @@ pub fn apply_to_loaded(loaded: &mut Loaded, path: &Path) {
             .warnings
             .retain(|w| !w.contains("field connections (engines) are not evaluated")),
         Err(e) => loaded.warnings.push(format!(
-            "{}:0:0: ignored the animed key note ({e}); using the file's interpolators",
+            "{}: ignored the animed key note ({e}); using the file's interpolators",
             path.display()
         )),
     }

@@ -109,10 +109,6 @@ pub fn read_clips(
             };
             let sampler = ch.sampler();
             let sp = format!("{here}/samplers/{}", sampler.index());
-            let times = read_f32(&sampler.input(), buffers)
-                .map_err(|e| GltfError::at(format!("{sp}/input"), e.to_string()))?;
-            let values = read_f32(&sampler.output(), buffers)
-                .map_err(|e| GltfError::at(format!("{sp}/output"), e.to_string()))?;
             let rotation = property.kind() == crate::anim::ValueKind::Rotation;
             let weights = property == Property::MorphWeights;
             let width = if rotation {
@@ -129,35 +125,7 @@ pub fn read_clips(
             } else {
                 3
             };
-            let cubic = sampler.interpolation() == Interpolation::CubicSpline;
-            let per_key = if cubic { 3 } else { 1 };
-            if values.len() != times.len() * per_key * width {
-                return Err(GltfError::at(
-                    format!("{sp}/output"),
-                    format!(
-                        "{} values for {} key times (expected {} {}-component values)",
-                        values.len() / width.max(1),
-                        times.len(),
-                        times.len() * per_key,
-                        width
-                    ),
-                ));
-            }
-            if let Some(bad) = times
-                .windows(2)
-                .position(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
-            {
-                return Err(GltfError::at(
-                    format!("{sp}/input"),
-                    format!(
-                        "key times must increase: key {} is not after key {bad}",
-                        bad + 1
-                    ),
-                ));
-            }
-            if let Some(bad) = times.iter().chain(&values).find(|v| !v.is_finite()) {
-                return Err(GltfError::at(sp, format!("a key holds {bad}")));
-            }
+            let (times, values) = sampler_values(&sampler, buffers, &sp, width)?;
             end = end.max(times.last().copied().unwrap_or(0.0));
             let keys = match sampler.interpolation() {
                 Interpolation::Step | Interpolation::Linear => {
@@ -207,10 +175,55 @@ pub fn read_clips(
     Ok(clips)
 }
 
+/// A sampler's key times and output values, checked: `width` components
+/// per value (three values per key for CUBICSPLINE), times increasing,
+/// every number finite. `sp` is the sampler's JSON pointer.
+pub(super) fn sampler_values(
+    sampler: &gltf::animation::Sampler,
+    buffers: &Buffers,
+    sp: &str,
+    width: usize,
+) -> Result<(Vec<f32>, Vec<f32>)> {
+    let times = read_f32(&sampler.input(), buffers)
+        .map_err(|e| GltfError::at(format!("{sp}/input"), e.to_string()))?;
+    let values = read_f32(&sampler.output(), buffers)
+        .map_err(|e| GltfError::at(format!("{sp}/output"), e.to_string()))?;
+    let cubic = sampler.interpolation() == Interpolation::CubicSpline;
+    let per_key = if cubic { 3 } else { 1 };
+    if values.len() != times.len() * per_key * width {
+        return Err(GltfError::at(
+            format!("{sp}/output"),
+            format!(
+                "{} values for {} key times (expected {} {}-component values)",
+                values.len() / width.max(1),
+                times.len(),
+                times.len() * per_key,
+                width
+            ),
+        ));
+    }
+    if let Some(bad) = times
+        .windows(2)
+        .position(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
+    {
+        return Err(GltfError::at(
+            format!("{sp}/input"),
+            format!(
+                "key times must increase: key {} is not after key {bad}",
+                bad + 1
+            ),
+        ));
+    }
+    if let Some(bad) = times.iter().chain(&values).find(|v| !v.is_finite()) {
+        return Err(GltfError::at(sp, format!("a key holds {bad}")));
+    }
+    Ok((times, values))
+}
+
 /// Key frames for times in seconds: `t · fps`, kept strictly increasing
 /// (two times a few ulps apart, as a jump in a sampled curve is written,
 /// may land on one frame number after the multiplication).
-fn frames_of(times: impl IntoIterator<Item = f32>, fps: f32) -> Vec<f32> {
+pub(super) fn frames_of(times: impl IntoIterator<Item = f32>, fps: f32) -> Vec<f32> {
     let mut out: Vec<f32> = Vec::new();
     for t in times {
         let mut f = t * fps;
@@ -259,6 +272,25 @@ fn direct_weights(times: &[f32], values: &[f32], n: usize, fps: f32, interp: Int
 /// segment halved until every component's chord is within
 /// [`CUBIC_TOLERANCE`] (relative to the largest weight) at the eighths.
 fn cubic_weights(times: &[f32], values: &[f32], n: usize, fps: f32) -> Keys {
+    let out = cubic_rows(times, values, n);
+    let frames = frames_of(out.iter().map(|(t, _)| *t), fps);
+    Keys::Weights(
+        frames
+            .into_iter()
+            .zip(out)
+            .map(|(f, (_, w))| {
+                Key::new(f, Weights::from_slice_truncated(&w)).with_interp(Interp::Linear)
+            })
+            .collect(),
+    )
+}
+
+/// A CUBICSPLINE sampler of `n` independent components (in-tangent, value,
+/// out-tangent per key) sampled into rows `(time, values)` to be joined
+/// linearly: each segment halved until every component's chord is within
+/// [`CUBIC_TOLERANCE`] (relative to the largest value) at the eighths, at
+/// most 64 pieces a segment.
+pub(super) fn cubic_rows(times: &[f32], values: &[f32], n: usize) -> Vec<(f32, Vec<f32>)> {
     let get = |k: usize, part: usize, c: usize| values[(3 * k + part) * n + c];
     let scale = (0..times.len())
         .flat_map(|k| (0..n).map(move |c| (k, c)))
@@ -313,16 +345,7 @@ fn cubic_weights(times: &[f32], values: &[f32], n: usize, fps: f32) -> Keys {
     if let Some(k) = times.len().checked_sub(1) {
         out.push((times[k], (0..n).map(|c| get(k, 1, c)).collect()));
     }
-    let frames = frames_of(out.iter().map(|(t, _)| *t), fps);
-    Keys::Weights(
-        frames
-            .into_iter()
-            .zip(out)
-            .map(|(f, (_, w))| {
-                Key::new(f, Weights::from_slice_truncated(&w)).with_interp(Interp::Linear)
-            })
-            .collect(),
-    )
+    out
 }
 
 fn direct_keys(times: &[f32], values: &[f32], rotation: bool, fps: f32, interp: Interp) -> Keys {

@@ -57,6 +57,7 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_emissive_strength",
     "KHR_texture_transform",
     "KHR_mesh_quantization",
+    super::pointer_anim::EXTENSION,
 ];
 
 /// Whether `bytes` look like a .glb (magic `glTF`).

@@ -5,7 +5,8 @@
 //! chunks, parse, validation, buffers), `uri` (data: URIs, files beside),
 //! `accessor` (typed, bounds-checked reads), `mesh` (primitives),
 //! `material` (metallic-roughness ⇄ Phong, colour space), `lights` (light
-//! units, cameras), `anim` (animations → clips), `texture` (base colour
+//! units, cameras), `anim` (animations → clips), `pointer_anim`
+//! (KHR_animation_pointer channels onto lights, cameras, materials), `texture` (base colour
 //! textures, samplers, KHR_texture_transform), `read` (the node tree and
 //! the entry point); the writer: `write`, `write_anim`, `write_texture`,
 //! `bin`. Errors name the JSON pointer of the offending part.
@@ -19,6 +20,7 @@ mod lights;
 mod material;
 mod mesh;
 mod pointer;
+mod pointer_anim;
 mod read;
 mod texture;
 mod uri;

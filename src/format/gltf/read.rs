@@ -20,6 +20,7 @@ use super::lights::{camera_from_gltf, light_from_extras, light_from_punctual, Pu
 use super::material::{phong_from_extras, phong_from_pbr, Pbr};
 use super::mesh::primitive_mesh;
 use super::pointer::pointer;
+use super::pointer_anim;
 use super::texture;
 use crate::format::{LoadError, Loaded};
 use crate::scene::{
@@ -71,6 +72,10 @@ fn read_inner(
     } else {
         (bytes, None)
     };
+    // KHR_animation_pointer channels the gltf crate cannot parse are taken
+    // out first (pointer_anim.rs) and mapped after the animations.
+    let taken = pointer_anim::take(json)?;
+    let json = taken.as_ref().map_or(json, |(j, _)| j.as_slice());
     let doc = parse_document(json, &mut warnings)?;
     let base = path.parent().unwrap_or(Path::new("."));
     let buffers = Buffers::load(&doc, bin, base, read_file)?;
@@ -90,6 +95,8 @@ fn read_inner(
         node_ids: vec![None; doc.nodes().len()],
         part_of: vec![None; doc.nodes().len()],
         skinned: Vec::new(),
+        lights: Vec::new(),
+        cameras: Vec::new(),
     };
     b.scene.format = SourceFormat::Gltf;
     let scene_index = pick_scene(&doc, opts.scene)?;
@@ -135,7 +142,24 @@ fn read_inner(
         }
     };
     let mut clip_warnings = Vec::new();
-    let clips = read_clips(&doc, &buffers, &target_of, fps, &mut clip_warnings)?;
+    let mut clips = read_clips(&doc, &buffers, &target_of, fps, &mut clip_warnings)?;
+    if let Some((_, channels)) = &taken {
+        let targets = pointer_anim::Targets {
+            fps,
+            lights: &b.lights,
+            cameras: &b.cameras,
+            materials: &b.materials,
+        };
+        pointer_anim::add_tracks(
+            &doc,
+            &buffers,
+            channels,
+            &targets,
+            &mut b.scene,
+            &mut clips,
+            &mut clip_warnings,
+        )?;
+    }
     let static_duration = b.scene.settings.duration;
     b.scene.set_clips(clips, 0);
     if b.scene.clips.is_empty() {
@@ -159,7 +183,7 @@ fn read_inner(
     warnings.extend(b.warnings);
     let warnings = warnings
         .into_iter()
-        .map(|w| format!("{}:0:0: {w}", path.display()))
+        .map(|w| format!("{}: {w}", path.display()))
         .collect();
     Ok(Loaded {
         scene: b.scene,
@@ -252,6 +276,10 @@ struct Builder<'a, 'b> {
     part_of: Vec<Option<NodeId>>,
     /// (glTF skin index, animed shape node) for every skinned shape.
     skinned: Vec<(usize, NodeId)>,
+    /// (glTF light / camera index, the animed node holding it), for
+    /// KHR_animation_pointer channels.
+    lights: Vec<(usize, NodeId)>,
+    cameras: Vec<(usize, NodeId)>,
     /// Decoded images by glTF image index (None: unused or unreadable).
     images: Vec<Option<ImageId>>,
     /// An image without its alpha, for OPAQUE materials.
@@ -572,12 +600,24 @@ impl<'a> Builder<'a, '_> {
             }
         }
         let transform = node_transform(g);
+        let light_index = g
+            .light()
+            .or_else(|| part.and_then(|p| p.light()))
+            .map(|l| l.index());
+        let camera_index = g
+            .camera()
+            .or_else(|| part.and_then(|p| p.camera()))
+            .map(|c| c.index());
         let own = if parts.len() == 1 {
             parts.pop().unwrap_or(NodeKind::Group)
         } else {
             NodeKind::Group
         };
         let own_shape = matches!(own, NodeKind::Shape(_));
+        let (own_light, own_camera) = (
+            matches!(own, NodeKind::Light(_)),
+            matches!(own, NodeKind::Camera(_)),
+        );
         let id = self
             .scene
             .add_node(parent, Node::new(name, own).with_transform(transform));
@@ -585,9 +625,23 @@ impl<'a> Builder<'a, '_> {
         if let (Some(k), true) = (skin, own_shape) {
             self.skinned.push((k, id));
         }
+        let mut place = |light: bool, camera: bool, at: NodeId| {
+            if let (true, Some(l)) = (light, light_index) {
+                self.lights.push((l, at));
+            }
+            if let (true, Some(c)) = (camera, camera_index) {
+                self.cameras.push((c, at));
+            }
+        };
+        place(own_light, own_camera, id);
         for kind in parts {
             let shape = matches!(kind, NodeKind::Shape(_));
+            let (light, camera) = (
+                matches!(kind, NodeKind::Light(_)),
+                matches!(kind, NodeKind::Camera(_)),
+            );
             let child = self.scene.add_node(Some(id), Node::new("", kind));
+            place(light, camera, child);
             if let (Some(k), true) = (skin, shape) {
                 self.skinned.push((k, child));
             }

@@ -9,12 +9,12 @@
 
 use super::shapes;
 use super::state::State;
+use crate::format::build_log::BuildLog;
 use crate::format::inline;
 use crate::format::lexer::Pos;
 use crate::format::limits::{self, LimitError};
 use crate::format::syntax::{AstNode, NodeRef, Parsed};
 use crate::format::textures;
-use crate::format::vrml97::fmt_warning;
 use crate::format::LoadError;
 use crate::format::Loaded;
 use crate::scene::{
@@ -22,8 +22,8 @@ use crate::scene::{
     NodeKind, Scene, Shape, Texture, Transform,
 };
 use glam::{Mat4, Quat, Vec3};
-use std::collections::{HashMap, HashSet};
-use std::path::{Path, PathBuf};
+use std::collections::HashMap;
+use std::path::Path;
 use std::rc::Rc;
 
 /// Deepest scene tree built: the parser already bounds the expanded
@@ -79,21 +79,18 @@ struct MeshKey {
 }
 
 pub struct Builder {
-    path: PathBuf,
+    /// Warnings and the first input limit passed (shared with the VRML97
+    /// builder).
+    log: BuildLog,
     depth: usize,
     vrml1: bool,
     pub(super) scene: Scene,
-    warnings: Vec<String>,
-    warned: HashSet<String>,
     /// By (Material, BaseColor, unlit, Texture2, texture transform).
     materials: HashMap<(usize, usize, bool, usize, [u32; 7]), MaterialId>,
     meshes: HashMap<MeshKey, Option<MeshId>>,
     coords: HashMap<usize, Rc<Vec<Vec3>>>,
     build_depth: usize,
-    full: bool,
     inlines: inline::Cache,
-    /// The input limit the build passed, if any: the load fails with it.
-    fatal: Option<LoadError>,
     pub(super) loader: textures::Loader,
     /// Each Texture2 node's image (None: it did not load).
     pub(super) texture_images: HashMap<usize, Option<ImageId>>,
@@ -102,19 +99,15 @@ pub struct Builder {
 impl Builder {
     pub fn new(path: &Path, depth: usize, vrml1: bool) -> Self {
         Builder {
-            path: path.to_path_buf(),
+            log: BuildLog::new(path),
             depth,
             vrml1,
             scene: Scene::new(),
-            warnings: Vec::new(),
-            warned: HashSet::new(),
             materials: HashMap::new(),
             meshes: HashMap::new(),
             coords: HashMap::new(),
             build_depth: 0,
-            full: false,
             inlines: inline::Cache::new(),
-            fatal: None,
             loader: textures::Loader::new(path),
             texture_images: HashMap::new(),
         }
@@ -139,64 +132,27 @@ impl Builder {
 
     /// The scene, or the input limit the build passed.
     pub fn finish(self) -> Result<Loaded, LoadError> {
-        if let Some(e) = self.fatal {
-            return Err(e);
-        }
         let mut scene = self.scene;
         super::text::size_text2(&mut scene);
-        Ok(Loaded {
-            scene,
-            warnings: self.warnings,
-        })
+        self.log.finish(scene)
     }
 
     /// Ends the build with a passed input limit (the first one is kept).
     fn stop(&mut self, pos: Pos, e: LimitError) {
-        self.full = true;
-        if self.fatal.is_none() {
-            self.fatal = Some(LoadError::new(
-                &self.path,
-                pos.line,
-                pos.column,
-                e.to_string(),
-            ));
-        }
-    }
-
-    /// Counts a new scene node (and its mesh, once per instance).
-    fn charge(&mut self, pos: Pos, node: &Node) -> bool {
-        let geometry = match &node.kind {
-            NodeKind::Shape(s) => self
-                .scene
-                .meshes
-                .get(s.mesh.0 as usize)
-                .map_or(0, |m| (m.positions.len() + m.triangles.len()) as u64),
-            _ => 0,
-        };
-        match limits::charge_nodes(1).and_then(|()| limits::charge_geometry(geometry)) {
-            Ok(()) => true,
-            Err(e) => {
-                self.stop(pos, e);
-                false
-            }
-        }
+        self.log.stop(pos, e);
     }
 
     pub(super) fn warn(&mut self, pos: Pos, msg: &str) {
-        if self.warnings.len() < 10_000 {
-            self.warnings.push(fmt_warning(&self.path, pos, msg));
-        }
+        self.log.warn(pos, msg);
     }
 
     fn warn_once(&mut self, key: &str, pos: Pos, msg: &str) {
-        if self.warned.insert(key.to_string()) {
-            self.warn(pos, msg);
-        }
+        self.log.warn_once(key, pos, msg);
     }
 
     /// Adds a scene node at the cursor (carrying the pending transforms).
     fn add(&mut self, pos: Pos, cur: &Cursor, mut node: Node) -> Option<NodeId> {
-        if self.full || !self.charge(pos, &node) {
+        if self.log.full() || !self.log.charge(pos, &self.scene, &node) {
             return None;
         }
         if cur.pending != Mat4::IDENTITY {
@@ -215,7 +171,7 @@ impl Builder {
     }
 
     fn node(&mut self, n: &NodeRef, st: &mut State, cur: &mut Cursor) {
-        if self.build_depth >= MAX_BUILD_DEPTH || self.full {
+        if self.build_depth >= MAX_BUILD_DEPTH || self.log.full() {
             self.warn_once(
                 "depth",
                 n.pos,
@@ -309,9 +265,9 @@ impl Builder {
                     let urls = n.strings("name");
                     let r = inline::load_into(
                         &mut self.scene,
-                        &mut self.warnings,
+                        &mut self.log.warnings,
                         &mut self.inlines,
-                        &self.path,
+                        &self.log.path,
                         n.pos,
                         &urls,
                         id,

@@ -11,8 +11,8 @@ mod texture;
 pub mod write;
 mod write_text;
 
+use super::build_log::fmt_warning;
 use super::syntax::{self, Options};
-use super::vrml97::fmt_warning;
 use super::{LoadError, Loaded};
 use crate::scene::SourceFormat;
 use std::path::Path;

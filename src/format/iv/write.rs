@@ -519,7 +519,7 @@ impl Writer<'_> {
             return;
         };
         self.material(s.material.0 as usize, mesh);
-        self.texture(s.material.0 as usize, mesh);
+        let tex_coords = self.texture(s.material.0 as usize, mesh);
         if let Some(t) = super::write_text::writable(mesh).filter(|_| !self.v1) {
             super::write_text::write(&mut self.out, &def(faces_name), t);
             return;
@@ -566,6 +566,12 @@ impl Writer<'_> {
             }
         }
         self.out.line(hints);
+        if mesh.triangles.is_empty() && mesh.lines.is_empty() && mesh.points.is_empty() {
+            // An empty mesh stays a shape node (without a shape node the
+            // Separator reads back as an empty group).
+            self.out
+                .line(&format!("{}IndexedFaceSet {{ }}", def(faces_name)));
+        }
         if !mesh.triangles.is_empty() {
             self.out.open(&format!("{}IndexedFaceSet", def(faces_name)));
             self.out.list(
@@ -577,6 +583,19 @@ impl Writer<'_> {
                     ",",
                 ),
             );
+            if tex_coords && self.v1 {
+                // 1.0 has no TextureCoordinateBinding: the coordinates are
+                // bound through their own index (the same as coordIndex).
+                self.out.list(
+                    "textureCoordIndex",
+                    rows(
+                        &mesh.triangles,
+                        4,
+                        |t| format!("{}, {}, {}, -1", t[0], t[1], t[2]),
+                        ",",
+                    ),
+                );
+            }
             self.out.close("}");
         }
         if !mesh.lines.is_empty() {
@@ -606,9 +625,10 @@ impl Writer<'_> {
     /// so in a scene with any texture each shape states its own (`Texture2 {}`
     /// switches texturing off), and the texture transform is baked into the
     /// shape's TextureCoordinate2 points instead of written as a node.
-    fn texture(&mut self, mi: usize, mesh: &Mesh) {
+    /// True when it wrote texture coordinates for the shape's vertices.
+    fn texture(&mut self, mi: usize, mesh: &Mesh) -> bool {
         if !self.textured_scene {
-            return;
+            return false;
         }
         let has_coords = !mesh.texcoords.is_empty() && mesh.texcoords.len() == mesh.positions.len();
         let tex = self
@@ -619,7 +639,7 @@ impl Writer<'_> {
         let image = tex.and_then(|t| self.scene.image(t.image));
         let (Some(t), Some(image), true) = (tex, image, has_coords) else {
             self.out.line("Texture2 { }");
-            return;
+            return false;
         };
         self.out.open("Texture2");
         match &image.source {
@@ -667,8 +687,11 @@ impl Writer<'_> {
             rows(&coords, 6, |c| format!("{} {}", num(c.x), num(c.y)), ","),
         );
         self.out.close("}");
-        self.out
-            .line("TextureCoordinateBinding { value PER_VERTEX_INDEXED }");
+        if !self.v1 {
+            self.out
+                .line("TextureCoordinateBinding { value PER_VERTEX_INDEXED }");
+        }
+        true
     }
 
     fn material(&mut self, mi: usize, mesh: &Mesh) {

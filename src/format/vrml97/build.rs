@@ -2,7 +2,8 @@
 //! shapes (with shared meshes and materials), lights, viewpoints and the
 //! world settings (NavigationInfo, Background, WorldInfo).
 
-use super::{animation, fmt_warning, geometry, hanim};
+use super::{animation, geometry, hanim};
+use crate::format::build_log::BuildLog;
 use crate::format::inline;
 use crate::format::lexer::Pos;
 use crate::format::limits::{self, LimitError};
@@ -15,8 +16,8 @@ use crate::scene::{
     NodeKind, Scene, Shape, Texture, Transform,
 };
 use glam::{Quat, Vec3};
-use std::collections::{HashMap, HashSet};
-use std::path::{Path, PathBuf};
+use std::collections::HashMap;
+use std::path::Path;
 use std::rc::Rc;
 
 /// Deepest scene tree built: the parser already bounds the expanded
@@ -38,10 +39,11 @@ const IGNORED: &[&str] = &[
 ];
 
 pub struct Builder {
-    pub(super) path: PathBuf,
+    /// Warnings and the first input limit passed (shared with the
+    /// Inventor builder).
+    pub(super) log: BuildLog,
     depth: usize,
     pub(super) scene: Scene,
-    pub(super) warnings: Vec<String>,
     /// Scene nodes made from each AST node (several when USEd).
     pub(super) instances: HashMap<*const AstNode, Vec<NodeId>>,
     pub(super) materials: HashMap<*const AstNode, MaterialId>,
@@ -59,14 +61,10 @@ pub struct Builder {
     pub(super) coord_users: HashMap<*const AstNode, Vec<(NodeRef, bool, MeshId)>>,
     unlit: Option<MaterialId>,
     default_material: Option<MaterialId>,
-    warned: HashSet<String>,
     saw_navigation: bool,
     saw_background: bool,
     build_depth: usize,
-    full: bool,
     inlines: inline::Cache,
-    /// The input limit the build passed, if any: the load fails with it.
-    fatal: Option<LoadError>,
     /// Non-zero while adding a Switch choice that is not shown: its shapes are
     /// kept (hidden) but its lights, viewpoints and bindable nodes are not.
     hidden: usize,
@@ -75,10 +73,9 @@ pub struct Builder {
 impl Builder {
     pub fn new(path: &Path, depth: usize) -> Self {
         Builder {
-            path: path.to_path_buf(),
+            log: BuildLog::new(path),
             depth,
             scene: Scene::new(),
-            warnings: Vec::new(),
             instances: HashMap::new(),
             materials: HashMap::new(),
             textured_materials: HashMap::new(),
@@ -89,13 +86,10 @@ impl Builder {
             coord_users: HashMap::new(),
             unlit: None,
             default_material: None,
-            warned: HashSet::new(),
             saw_navigation: false,
             saw_background: false,
             build_depth: 0,
-            full: false,
             inlines: inline::Cache::new(),
-            fatal: None,
             hidden: 0,
         }
     }
@@ -110,62 +104,25 @@ impl Builder {
 
     /// The scene, or the input limit the build passed.
     pub fn finish(self) -> Result<Loaded, LoadError> {
-        if let Some(e) = self.fatal {
-            return Err(e);
-        }
-        Ok(Loaded {
-            scene: self.scene,
-            warnings: self.warnings,
-        })
+        self.log.finish(self.scene)
     }
 
     /// Ends the build with a passed input limit (the first one is kept).
     fn stop(&mut self, pos: Pos, e: LimitError) {
-        self.full = true;
-        if self.fatal.is_none() {
-            self.fatal = Some(LoadError::new(
-                &self.path,
-                pos.line,
-                pos.column,
-                e.to_string(),
-            ));
-        }
-    }
-
-    /// Counts a new scene node (and its mesh, once per instance).
-    fn charge(&mut self, pos: Pos, node: &Node) -> bool {
-        let geometry = match &node.kind {
-            NodeKind::Shape(s) => self
-                .scene
-                .meshes
-                .get(s.mesh.0 as usize)
-                .map_or(0, |m| (m.positions.len() + m.triangles.len()) as u64),
-            _ => 0,
-        };
-        match limits::charge_nodes(1).and_then(|()| limits::charge_geometry(geometry)) {
-            Ok(()) => true,
-            Err(e) => {
-                self.stop(pos, e);
-                false
-            }
-        }
+        self.log.stop(pos, e);
     }
 
     pub(super) fn warn(&mut self, pos: Pos, msg: &str) {
-        if self.warnings.len() < 10_000 {
-            self.warnings.push(fmt_warning(&self.path, pos, msg));
-        }
+        self.log.warn(pos, msg);
     }
 
     /// Warns once per `key` (e.g. once per unknown node type).
     pub(super) fn warn_once(&mut self, key: &str, pos: Pos, msg: &str) {
-        if self.warned.insert(key.to_string()) {
-            self.warn(pos, msg);
-        }
+        self.log.warn_once(key, pos, msg);
     }
 
     fn push(&mut self, ast: &NodeRef, parent: Option<NodeId>, node: Node) -> Option<NodeId> {
-        if self.full || !self.charge(ast.pos, &node) {
+        if self.log.full() || !self.log.charge(ast.pos, &self.scene, &node) {
             return None;
         }
         let id = self.scene.add_node(parent, node);
@@ -252,9 +209,9 @@ impl Builder {
                     let urls = eff.strings("url");
                     let r = inline::load_into(
                         &mut self.scene,
-                        &mut self.warnings,
+                        &mut self.log.warnings,
                         &mut self.inlines,
-                        &self.path,
+                        &self.log.path,
                         eff.pos,
                         &urls,
                         id,

@@ -12,7 +12,6 @@ pub mod write;
 mod write_morph;
 mod write_text;
 
-use super::lexer::Pos;
 use super::syntax::{self, Options, Parsed};
 use super::{LoadError, Loaded};
 use crate::scene::SourceFormat;
@@ -61,10 +60,7 @@ pub(crate) fn build_parsed(
     Ok(loaded)
 }
 
-/// `path:line:column: message`.
-pub(crate) fn fmt_warning(path: &Path, pos: Pos, msg: &str) -> String {
-    format!("{}:{}:{}: {}", path.display(), pos.line, pos.column, msg)
-}
+pub(crate) use super::build_log::fmt_warning;
 
 #[cfg(test)]
 mod tests;

@@ -26,6 +26,7 @@ use crate::format::export::plan::WritePlan;
 use crate::format::export::sampling::{per_frame_keys, Tolerances};
 use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
 use crate::format::export::textures::{image_field, transform_in};
+use crate::format::export::vertex_order;
 use crate::scene::{
     Camera, CameraKind, ImageSource, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene,
     Shape, TexTransformOrder, Texture, TextureModel, Transform, Wrap,
@@ -38,6 +39,11 @@ struct Writer<'a> {
     out: Out,
     written_materials: Vec<bool>,
     written_meshes: Vec<bool>,
+    /// Meshes that a shape with a texture uses. A reader keeps texture
+    /// coordinates only under a texture, so writing them for an untextured
+    /// mesh (a primitive's default mapping) would not survive a re-read and
+    /// a second export would differ from the first.
+    textured_meshes: Vec<bool>,
     report: WriteReport,
     /// Raw matrices that lost shear when written: how many, and the path
     /// of the first (warned once at the end, not once per node).
@@ -68,6 +74,7 @@ fn write_dialect(scene: &Scene, opts: &WriteOptions, x3d: bool) -> (String, Writ
         out: Out::default(),
         written_materials: vec![false; scene.materials.len()],
         written_meshes: vec![false; scene.meshes.len()],
+        textured_meshes: textured_meshes(scene),
         report: WriteReport::default(),
         lossy_matrices: (0, None),
         deforming: Vec::new(),
@@ -122,6 +129,23 @@ fn write_dialect(scene: &Scene, opts: &WriteOptions, x3d: bool) -> (String, Writ
         ));
     }
     (w.out.text, w.report)
+}
+
+/// Per mesh: whether a shape whose material has a texture uses it.
+fn textured_meshes(scene: &Scene) -> Vec<bool> {
+    let mut out = vec![false; scene.meshes.len()];
+    for n in &scene.nodes {
+        if let NodeKind::Shape(sh) = &n.kind {
+            let textured = scene
+                .materials
+                .get(sh.material.0 as usize)
+                .is_some_and(|m| m.texture.is_some());
+            if let (true, Some(t)) = (textured, out.get_mut(sh.mesh.0 as usize)) {
+                *t = true;
+            }
+        }
+    }
+    out
 }
 
 /// `Root/Arm/Hand`: the names from the root down (`#N` for unnamed nodes).
@@ -337,7 +361,10 @@ impl Writer<'_> {
                 0 if !mesh.triangles.is_empty() => self.face_set(s, mesh, n == 0),
                 1 => self.line_set(mesh),
                 2 => self.point_set(mesh),
-                _ => {}
+                // An empty mesh (a face set without faces, a PointSet without
+                // points) stays a shape: a Shape without geometry reads back
+                // as nothing, and the node would be lost.
+                _ => self.out.line("geometry IndexedFaceSet { }"),
             }
             self.out.close("}");
         }
@@ -478,16 +505,23 @@ impl Writer<'_> {
             super::write_text::write(&mut self.out, &def(&name), t);
             return;
         }
-        self.out
-            .open(&format!("geometry {}IndexedFaceSet", def(&name)));
-        if !mesh.solid {
-            self.out.line("solid FALSE");
-        }
         let morph = self
             .deforming
             .iter()
             .find(|(d, _, _)| d.mesh.0 as usize == mi)
             .map(|(_, c, n)| (c.clone(), n.clone()));
+        // Vertices as a reader numbers them (not for a deforming mesh: its
+        // interpolators' values follow the mesh's own order).
+        let ordered = match morph {
+            None => vertex_order::first_use_order(mesh),
+            Some(_) => None,
+        };
+        let mesh = ordered.as_ref().unwrap_or(mesh);
+        self.out
+            .open(&format!("geometry {}IndexedFaceSet", def(&name)));
+        if !mesh.solid {
+            self.out.line("solid FALSE");
+        }
         match &morph {
             Some((c, _)) => {
                 self.out.open(&format!("coord DEF {c} Coordinate"));
@@ -507,7 +541,10 @@ impl Writer<'_> {
             self.out.close("}");
         }
         self.colors(mesh);
-        if !mesh.texcoords.is_empty() && mesh.texcoords.len() == mesh.positions.len() {
+        if !mesh.texcoords.is_empty()
+            && mesh.texcoords.len() == mesh.positions.len()
+            && self.textured_meshes.get(mi).copied().unwrap_or(false)
+        {
             // No texCoordIndex: coordIndex then indexes the coordinates too.
             self.out.open("texCoord TextureCoordinate");
             self.out.list(
