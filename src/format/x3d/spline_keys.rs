@@ -26,7 +26,7 @@ use crate::anim::{Interp, Key, Keys, Property, Repeat, Track};
 pub fn exact_node(track: &Track, duration: f32) -> Option<&'static str> {
     let frames = track.keys.frames();
     let (first, last) = (*frames.first()?, *frames.last()?);
-    if frames.len() < 2 || !(duration > 0.0) || first < 0.0 || last > duration {
+    if frames.len() < 2 || duration.is_nan() || duration <= 0.0 || first < 0.0 || last > duration {
         return None;
     }
     // Outside its keys an X3D interpolator holds its end values: a loop
