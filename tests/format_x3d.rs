@@ -430,6 +430,54 @@ fn writer_round_trips_in_both_encodings() {
     assert_eq!(format!("{:?}", scenes[0]), format!("{:?}", scenes[1]));
 }
 
+/// With `x3d_splines`, tracks X3D's splines carry exactly are written as
+/// SplinePosition/SquadOrientation interpolators with their own keys (said
+/// in the report): with the key note removed, the file alone plays the same
+/// curves. Off by default (view3dscene 4.2 does not play these nodes).
+#[test]
+fn exact_splines_play_without_the_key_note() {
+    use animed::internals::anim::evaluate;
+    use animed::internals::format::save::{to_bytes, OutputFormat};
+    use animed::internals::format::WriteOptions;
+    let src = load("splines.x3dv").scene;
+    let plain = to_bytes(&src, OutputFormat::X3dClassic, &WriteOptions::default()).0;
+    assert!(
+        !String::from_utf8(plain).unwrap().contains("Spline"),
+        "off by default"
+    );
+    let opts = WriteOptions {
+        x3d_splines: true,
+        ..Default::default()
+    };
+    let (a, report) = to_bytes(&src, OutputFormat::X3dClassic, &opts);
+    let text = String::from_utf8(a).unwrap();
+    assert!(text.contains("DEF A_translation SplinePositionInterpolator"));
+    assert!(text.contains("DEF C_rotation SquadOrientationInterpolator"));
+    // D's linear keys carry ease in/out: no X3D node says that, sampled.
+    assert!(text.contains("DEF D_translation PositionInterpolator"));
+    let names: Vec<&str> = report.channels.iter().map(|c| c.name.as_str()).collect();
+    assert!(
+        names.contains(&"A.translation (SplinePositionInterpolator, exact)"),
+        "{names:?}"
+    );
+    let no_note = text.replace("\"animed-keys 1", "\"no note");
+    let back = format::load_bytes(no_note.as_bytes(), &data("n.x3dv"))
+        .unwrap_or_else(|e| panic!("{e}"))
+        .scene;
+    for name in ["A", "C"] {
+        let (i, j) = (src.find_node(name).unwrap(), back.find_node(name).unwrap());
+        for t in [0.0f32, 0.37, 1.0, 1.61, 2.5, 3.3, 3.99] {
+            let (p, q) = (evaluate(&src, t), evaluate(&back, t));
+            let (m, n) = (p.world[i.0 as usize], q.world[j.0 as usize]);
+            let d = (m - n)
+                .to_cols_array()
+                .iter()
+                .fold(0f32, |a, x| a.max(x.abs()));
+            assert!(d < 1e-4, "{name} t={t}: {d}");
+        }
+    }
+}
+
 /// An orthographic camera is written as X3D's OrthoViewpoint and read back
 /// with the same view height.
 #[test]

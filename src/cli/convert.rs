@@ -25,6 +25,12 @@ pub struct Args {
     /// Inventor text version for .iv output: 2.1 (animated) or 1.0 (still scene).
     #[arg(long, default_value = "2.1", value_parser = ["2.1", "1.0"])]
     pub inventor_version: String,
+    /// X3D output: write exactly-expressible spline and squad tracks as
+    /// SplinePositionInterpolator / SplineScalarInterpolator /
+    /// SquadOrientationInterpolator (view3dscene 4.2 does not play them)
+    /// instead of sampled linear interpolators.
+    #[arg(long)]
+    pub x3d_splines: bool,
     /// Print key counts per animated field and what the format could not hold.
     #[arg(long, short)]
     pub verbose: bool,
@@ -77,6 +83,7 @@ pub fn run(args: Args) -> i32 {
         eprintln!("warning: {w}");
     }
     let opts = WriteOptions {
+        x3d_splines: args.x3d_splines,
         tolerance: args.tolerance,
         angle_tolerance: args.angle_tolerance,
         inventor_version: if args.inventor_version == "1.0" {

@@ -290,3 +290,59 @@ fn normal_interpolator_moving_with_the_points_gives_the_normal_deltas() {
         }
     }
 }
+
+#[test]
+fn linear_morph_keys_are_written_back_as_they_are() {
+    // Morph weights read from a CoordinateInterpolator (one-hot, linear) are
+    // written as a CoordinateInterpolator keyed exactly at the weights keys,
+    // so reading the file back gives the same targets count and the key
+    // note's keys bit for bit (corpus warbird.wrl lost them before).
+    use animed::internals::anim::Keys;
+    use animed::internals::format::save::{to_bytes, OutputFormat};
+    use animed::internals::format::WriteOptions;
+    // The middle key lies on the line between the others: sampling within
+    // a tolerance would drop it (and the 3 weights would no longer fit).
+    let wrl = "#VRML V2.0 utf8
+DEF T TimeSensor { cycleInterval 2 loop TRUE }
+DEF Quad Shape { geometry IndexedFaceSet {
+  coord DEF C Coordinate { point [0 0 0, 1 0 0, 1 1 0, 0 1 0] } coordIndex [0 1 2 3 -1] } }
+DEF CI CoordinateInterpolator { key [0, 0.5, 1]
+  keyValue [0 0 0, 1 0 0, 1 1 0, 0 1 0,  0 0 0, 1 0 0, 1 1 0.5, 0 1 0,  0 0 0, 1 0 0, 1 1 1, 0 1 0] }
+ROUTE T.fraction_changed TO CI.set_fraction
+ROUTE CI.value_changed TO C.set_point
+";
+    let s = load_bytes(wrl.as_bytes(), Path::new("m.wrl"))
+        .unwrap()
+        .scene;
+    let (bytes, _) = to_bytes(&s, OutputFormat::Vrml97, &WriteOptions::default());
+    let text = String::from_utf8(bytes.clone()).unwrap();
+    let ci = text
+        .split("CoordinateInterpolator")
+        .nth(1)
+        .expect("a CoordinateInterpolator");
+    let key_line = ci.split("key ").nth(1).unwrap().split(']').next().unwrap();
+    let keys: Vec<f32> = key_line
+        .split(|c: char| c == ',' || c == '[' || c.is_whitespace())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    assert_eq!(keys, [0.0, 0.5, 1.0], "key {key_line}]");
+    let back = load_bytes(&bytes, Path::new("x.wrl")).unwrap().scene;
+    assert_eq!(back.meshes[0].morph.as_ref().map(|m| m.len()), Some(3));
+    let weights = |sc: &Scene| match &sc.animation.tracks[0].keys {
+        Keys::Weights(k) => k
+            .iter()
+            .map(|k| {
+                (
+                    k.frame.to_bits(),
+                    k.value
+                        .as_slice()
+                        .iter()
+                        .map(|w| w.to_bits())
+                        .collect::<Vec<_>>(),
+                )
+            })
+            .collect::<Vec<_>>(),
+        k => panic!("{k:?}"),
+    };
+    assert_eq!(weights(&s), weights(&back));
+}

@@ -21,6 +21,11 @@ pub struct WriteOptions {
     /// Rotation/direction/angle tolerance in degrees.
     pub angle_tolerance: f32,
     pub inventor_version: InventorVersion,
+    /// X3D output: write tracks that X3D's SplinePosition/SplineScalar/
+    /// SquadOrientation interpolators carry exactly as those nodes
+    /// (`x3d::spline_keys`) instead of sampled linear ones. Off by default:
+    /// view3dscene 4.2 reads these nodes but does not play them.
+    pub x3d_splines: bool,
 }
 
 impl Default for WriteOptions {
@@ -29,6 +34,7 @@ impl Default for WriteOptions {
             tolerance: 0.001,
             angle_tolerance: 0.1,
             inventor_version: InventorVersion::V2_1,
+            x3d_splines: false,
         }
     }
 }

@@ -21,7 +21,7 @@
 //!   render styles, orthographic cameras (written as a Viewpoint).
 
 use super::write_morph::{self, Deforming};
-use crate::anim::{Property, TargetRef, Value};
+use crate::anim::{Keys, Property, TargetRef, Value};
 use crate::format::export::channels::{channels, scene_diagonal, Channel};
 use crate::format::export::keynote;
 use crate::format::export::options::{ChannelReport, WriteOptions, WriteReport};
@@ -732,6 +732,10 @@ impl Writer<'_> {
                 continue;
             };
             let target = target.to_string();
+            if self.x3d && opts.x3d_splines && self.spline(ch, &target, field, &clock, &mut routes)
+            {
+                continue;
+            }
             let (kind, values): (&str, Vec<String>) = match ch.samples[0].1 {
                 Value::Rotation(_) => (
                     "OrientationInterpolator",
@@ -851,6 +855,69 @@ impl Writer<'_> {
 
     /// The VRML97 field a channel drives, or `None` (with a warning) when
     /// the target has no such field.
+    /// X3D: a channel whose one track X3D's Spline*/Squad interpolator
+    /// plays exactly (`x3d::spline_keys`) is written as that node with the
+    /// track's own keys; false when it is sampled instead.
+    fn spline(
+        &mut self,
+        ch: &Channel,
+        target: &str,
+        field: &str,
+        clock: &str,
+        routes: &mut Vec<String>,
+    ) -> bool {
+        let scene = self.scene;
+        let duration = scene.settings.duration;
+        // Scale also carries visibility, intensity `on`: those stay sampled.
+        let merged = |p: Property| match ch.property {
+            Property::Scale => p == Property::Visibility,
+            Property::LightIntensity => p == Property::LightOn,
+            _ => false,
+        };
+        let own: Vec<&crate::anim::Track> = scene
+            .animation
+            .tracks
+            .iter()
+            .filter(|t| t.target.of == ch.of)
+            .filter(|t| t.target.property == ch.property || merged(t.target.property))
+            .collect();
+        let [track] = own.as_slice() else {
+            return false;
+        };
+        if track.target.property != ch.property {
+            return false;
+        }
+        let Some(kind) = crate::format::x3d::spline_keys::exact_node(track, duration) else {
+            return false;
+        };
+        let (frames, values): (Vec<f32>, Vec<String>) = match &track.keys {
+            Keys::Scalar(k) => k.iter().map(|k| (k.frame, num(k.value))).unzip(),
+            Keys::Vec3(k) => k.iter().map(|k| (k.frame, vec3(k.value))).unzip(),
+            Keys::Rotation(k) => k.iter().map(|k| (k.frame, rotation(k.value))).unzip(),
+            _ => return false,
+        };
+        let interp = self.plan.internal(&format!("{target}_{field}"));
+        self.out.open(&format!("DEF {interp} {kind}"));
+        let keys: Vec<f32> = frames.iter().map(|f| f / duration).collect();
+        self.out.list("key", rows(&keys, 8, |k| num(*k), ","));
+        self.out
+            .list("keyValue", rows(&values, 4, |v| v.clone(), ","));
+        self.out.close("}");
+        routes.push(format!(
+            "ROUTE {clock}.fraction_changed TO {interp}.set_fraction"
+        ));
+        routes.push(format!(
+            "ROUTE {interp}.value_changed TO {target}.set_{field}"
+        ));
+        self.report.channels.push(ChannelReport {
+            name: format!("{target}.{field} ({kind}, exact)"),
+            authored_keys: ch.authored_keys,
+            written_keys: frames.len(),
+            per_frame_keys: per_frame_keys(duration),
+        });
+        true
+    }
+
     fn route_field(&mut self, ch: &Channel) -> Option<&'static str> {
         let kind = match ch.of {
             TargetRef::Node(id) => Some(&self.scene.node(id).kind),

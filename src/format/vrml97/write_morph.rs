@@ -6,7 +6,7 @@
 //! them stays within the position tolerance for every vertex (the same rule
 //! `export::sampling` uses for positions).
 
-use crate::anim::{evaluate_into, Pose};
+use crate::anim::{evaluate_into, Interp, Keys, Pose, Property, Repeat, TargetRef};
 use crate::scene::{MeshId, NodeId, NodeKind, Scene};
 use glam::{Mat3, Vec3};
 
@@ -103,9 +103,78 @@ fn local_at(scene: &Scene, d: Deforming, frame: f32, pose: &mut Pose) -> (Vec<Ve
     )
 }
 
+/// The frames at which shape `d`'s vertices are exactly piecewise linear
+/// in time, when they are: a morph (not a skin) whose weights tracks all
+/// have linear keys without ease, inside [0, duration] (holding, or keyed
+/// at both ends when looping). Positions are affine in the weights, so
+/// keying every weights key reproduces the deformation exactly — and a
+/// morph read from a CoordinateInterpolator is written back with its own
+/// keys (the key note's weights then fit the targets read back).
+fn exact_frames(scene: &Scene, d: Deforming) -> Option<Vec<f32>> {
+    if scene.node(d.node).skin.is_some() {
+        return None;
+    }
+    let duration = scene.settings.duration.max(0.0);
+    // A weights track on the shape, or on a group above it, drives it.
+    let drives = |of: TargetRef| {
+        let TargetRef::Node(at) = of else {
+            return false;
+        };
+        let mut on = Some(d.node);
+        while let Some(n) = on {
+            if n == at {
+                return true;
+            }
+            on = scene.node(n).parent;
+        }
+        false
+    };
+    let mut frames = vec![0.0, duration];
+    let mut any = false;
+    for t in &scene.animation.tracks {
+        if t.target.property != Property::MorphWeights || !drives(t.target.of) {
+            continue;
+        }
+        let Keys::Weights(keys) = &t.keys else {
+            return None;
+        };
+        let (first, last) = (keys.first()?.frame, keys.last()?.frame);
+        let inside = first >= 0.0 && last <= duration;
+        let ends_keyed = first == 0.0 && last == duration;
+        let linear = keys[..keys.len() - 1]
+            .iter()
+            .all(|k| k.interp == Interp::Linear && k.ease_in == 0.0 && k.ease_out == 0.0);
+        if !inside || !linear || (t.repeat != Repeat::Constant && !ends_keyed) {
+            return None;
+        }
+        frames.extend(keys.iter().map(|k| k.frame));
+        any = true;
+    }
+    if !any {
+        return None;
+    }
+    frames.sort_by(f32::total_cmp);
+    frames.dedup();
+    (frames.len() <= MAX_CANDIDATES).then_some(frames)
+}
+
 /// Samples shape `d` over the scene's duration within `tolerance` (a
-/// distance in the shape's space).
+/// distance in the shape's space); exactly at its weights keys when those
+/// say everything (see [`exact_frames`]).
 pub fn sample(scene: &Scene, d: Deforming, tolerance: f32) -> Sampled {
+    if let Some(frames) = exact_frames(scene, d) {
+        let mut pose = Pose::default();
+        let (positions, normals) = frames
+            .iter()
+            .map(|&f| local_at(scene, d, f, &mut pose))
+            .unzip();
+        return Sampled {
+            candidates: frames.len(),
+            frames,
+            positions,
+            normals,
+        };
+    }
     let duration = scene.settings.duration.max(0.0);
     let mut frames: Vec<f32> = (0..=duration.ceil() as usize).map(|f| f as f32).collect();
     for t in &scene.animation.tracks {

@@ -13,6 +13,7 @@
 pub(crate) mod interp;
 mod material;
 mod nodes;
+pub(crate) mod spline_keys;
 pub mod write;
 mod xml;
 
