@@ -6,6 +6,8 @@
 #[path = "common/golden.rs"]
 mod golden;
 
+mod anim_hanim;
+
 use animed::internals::anim::{
     evaluate, Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Weights,
 };

@@ -659,3 +659,211 @@ fn a_track_loops_from_the_key_panel() {
     assert_eq!(ed.scene().animation.track(t).unwrap().repeat, Repeat::Loop);
     assert_eq!(ed.status().text, "Track loops its keys");
 }
+
+// ----- item 7: selection display -----
+
+#[test]
+fn selection_keeps_the_objects_colour_and_handles_shrink_on_small_objects() {
+    let mut ed = Editor::new(Scene::new(), None, 480, 320);
+    let vp = ed.layout().viewport;
+    hover(&mut ed, ((vp.x + 60) as f32, (vp.y + 60) as f32));
+    key(&mut ed, Key::Char('a'), Mods::shift());
+    key(&mut ed, Key::Char('b'), Mods::NONE);
+    let b = ed.selection().expect("Box1 selected");
+    key(&mut ed, Key::Num(1), Mods::NONE);
+    let c = ed.camera().target;
+    let arrow = |ed: &mut Editor| {
+        let p = ed.handle_points().expect("move handles");
+        ((p[1].0 - p[0].0).powi(2) + (p[1].1 - p[0].1).powi(2)).sqrt()
+    };
+    // A unit box seen from 10 units is ~33 px wide, so the arrows shrink
+    // from their 70 px to 2.5 box radii (never under half).
+    let small = arrow(&mut ed);
+    assert!((35.0..=50.0).contains(&small), "small object: {small} px");
+    // The box's lower-left quadrant (clear of the handles) keeps its own
+    // grey: the tint moves each channel by at most an eighth.
+    let at = ed.pixel_of(c + glam::Vec3::new(-0.3, -0.3, 0.5)).unwrap();
+    let sel = ed.render_frame();
+    golden::check("editor_selected_small", &sel);
+    ed.select(None);
+    let plain = ed.render_frame();
+    let i = at.1 as usize * sel.width as usize + at.0 as usize;
+    let ch = |c: u32, s: u32| ((c >> s) & 255) as i32;
+    for s in [16, 8, 0] {
+        let d = (ch(sel.color[i], s) - ch(plain.color[i], s)).abs();
+        assert!(
+            d <= 33,
+            "channel {s}: {:06x} vs {:06x}",
+            sel.color[i],
+            plain.color[i]
+        );
+    }
+    assert_ne!(plain.color[i], 0, "the probe is on the box");
+    // The outline runs outside the box's left edge.
+    let edge = ed.pixel_of(c + glam::Vec3::new(-0.5, -0.2, 0.5)).unwrap();
+    let row = edge.1 as usize * sel.width as usize;
+    let x0 = edge.0 as usize;
+    assert!(
+        (x0.saturating_sub(3)..x0 + 1)
+            .any(|x| sel.color[row + x] == 0xff9a1f && plain.color[row + x] != sel.color[row + x]),
+        "an orange outline left of the box"
+    );
+    // Framed, the box is big on screen and the handles are full size.
+    ed.select(Some(b));
+    key(&mut ed, Key::Char('f'), Mods::NONE);
+    let big = arrow(&mut ed);
+    assert!((big - 70.0).abs() < 1.0, "big object: {big} px");
+}
+
+// ----- item 3: timeline zoom/pan, preview range, keys after the end -----
+
+#[test]
+fn the_wheel_zooms_the_timeline_and_a_middle_drag_pans_it() {
+    let mut ed = stage();
+    ed.select(Some(node(&ed, "Ball")));
+    let full = ed.time_span();
+    assert_eq!(full, (0.0, 96.0));
+    let r = ed.layout().ruler;
+    let (x, y) = (r.x as f32 + r.w as f32 * 0.6, (r.y + r.h / 2) as f32);
+    // The frame under the mouse stays under it while zooming in.
+    let frame_at = |ed: &Editor, x: f32| {
+        let s = ed.time_span();
+        let l = ed.layout();
+        let a = l.frame_to_x_in(s.0, s);
+        let b = l.frame_to_x_in(s.1, s);
+        s.0 + (x - a) / (b - a) * (s.1 - s.0)
+    };
+    let before = frame_at(&ed, x);
+    let frame0 = ed.current_frame();
+    for _ in 0..4 {
+        ed.handle(Event::Wheel {
+            delta: 1.0,
+            x,
+            y,
+            mods: Mods::NONE,
+        });
+    }
+    let z = ed.time_span();
+    assert!(z.1 - z.0 < 60.0, "zoomed in: {z:?}");
+    assert!((frame_at(&ed, x) - before).abs() < 0.01);
+    assert_eq!(
+        ed.current_frame(),
+        frame0,
+        "the wheel no longer steps frames"
+    );
+    assert!(ed.status().text.starts_with("Timeline shows frames"));
+    // Keys follow the zoom: the key at 48 is where the span puts it.
+    let m = ed
+        .key_marker_at(animed::internals::editor::keystrip::Row::Summary, 48.0)
+        .unwrap();
+    assert!((m.0 - ed.layout().frame_to_x_in(48.0, z)).abs() < 1e-3);
+    // A middle drag 40 px to the left shows later frames.
+    let mid = animed::internals::editor::MouseButton::Middle;
+    ed.handle(Event::MouseDown {
+        button: mid,
+        x,
+        y,
+        mods: Mods::NONE,
+    });
+    move_to(&mut ed, (x - 40.0, y), Mods::NONE);
+    ed.handle(Event::MouseUp {
+        button: mid,
+        x: x - 40.0,
+        y,
+        mods: Mods::NONE,
+    });
+    let p = ed.time_span();
+    assert!(
+        p.0 > z.0 + 1.0 && ((p.1 - p.0) - (z.1 - z.0)).abs() < 1e-3,
+        "{p:?}"
+    );
+    assert_eq!(ed.current_frame(), frame0, "panning does not seek");
+    // Home over the timeline shows the whole scene again.
+    hover(&mut ed, (x, y));
+    key(&mut ed, Key::Home, Mods::NONE);
+    assert_eq!(ed.time_span(), full);
+}
+
+#[test]
+fn playback_loops_over_a_preview_range_set_on_the_ruler() {
+    let mut ed = stage();
+    let r = ed.layout().ruler;
+    let y = (r.y + r.h / 2) as f32;
+    let x_of = |ed: &Editor, f: f32| ed.layout().frame_to_x_in(f, ed.time_span());
+    // Shift+drag on the ruler from frame 20 to frame 40.
+    let (a, b) = (x_of(&ed, 20.0), x_of(&ed, 40.0));
+    drag(&mut ed, (a, y), (b, y), Mods::shift());
+    assert_eq!(ed.preview_range(), Some((20.0, 40.0)));
+    assert!(
+        ed.status().text.starts_with("Preview frames 20 to 40"),
+        "{}",
+        ed.status().text
+    );
+    assert_eq!(ed.current_frame(), 0.0, "setting the range does not seek");
+    // Play from frame 0 (outside): playback runs inside 20..=40 only and
+    // comes round again.
+    key(&mut ed, Key::Space, Mods::NONE);
+    let mut seen = Vec::new();
+    for i in 0..100 {
+        ed.handle(Event::Tick {
+            time: 100.0 + i as f64 * 0.05,
+        });
+        seen.push(ed.current_frame());
+    }
+    assert!(seen.iter().all(|f| (20.0..=40.0).contains(f)), "{seen:?}");
+    assert!(
+        seen.contains(&40.0) && seen.windows(2).any(|w| w[1] < w[0]),
+        "loops"
+    );
+    key(&mut ed, Key::Space, Mods::NONE);
+    ed.select(Some(node(&ed, "Ball")));
+    golden::check("editor_timeline_preview", &ed.render_frame());
+    // [ and ] set the ends at the current frame; Alt+P clears.
+    let f = find(&ed, "Field(Frame)");
+    click(&mut ed, f);
+    ed.handle(Event::Text("10".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    key(&mut ed, Key::Char('['), Mods::NONE);
+    assert_eq!(ed.preview_range(), Some((10.0, 40.0)));
+    click(&mut ed, f);
+    ed.handle(Event::Text("30".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    key(&mut ed, Key::Char(']'), Mods::NONE);
+    assert_eq!(ed.preview_range(), Some((10.0, 30.0)));
+    key(&mut ed, Key::Char('p'), Mods::alt());
+    assert_eq!(ed.preview_range(), None);
+    assert!(ed.status().text.starts_with("Preview range cleared"));
+}
+
+#[test]
+fn a_shorter_scene_keeps_its_late_keys_visible_greyed_and_says_so() {
+    let mut ed = stage();
+    ed.select(Some(node(&ed, "Ball")));
+    // The len field takes an expression like the other number fields.
+    let len = find(&ed, "Field(Duration)");
+    click(&mut ed, len);
+    ed.handle(Event::Text("2*24".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert_eq!(ed.scene().settings.duration, 48.0);
+    let s = ed.status().text.clone();
+    assert_eq!(s, "13 keys after frame 48 kept (greyed)");
+    // The strip still reaches the key at 96, past the end.
+    assert_eq!(ed.time_span(), (0.0, 96.0));
+    let row = animed::internals::editor::keystrip::Row::Summary;
+    let late = ed.key_marker_at(row, 96.0).unwrap();
+    let early = ed.key_marker_at(row, 24.0).unwrap();
+    let frame = ed.render_frame();
+    let px =
+        |p: (f32, f32)| frame.color[p.1 as usize * frame.width as usize + p.0.round() as usize];
+    let lum = |c: u32| ((c >> 16) & 255) + ((c >> 8) & 255) + (c & 255);
+    assert!(
+        lum(px(late)) * 2 < lum(px(early)),
+        "late key {:06x} greyed against {:06x}",
+        px(late),
+        px(early)
+    );
+    golden::check("editor_timeline_late_keys", &frame);
+    // Undo: the scene is long again and nothing is greyed.
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(ed.scene().settings.duration, 96.0);
+}

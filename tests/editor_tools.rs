@@ -164,11 +164,20 @@ fn an_edge_on_ring_turns_by_the_mouse_motion_along_it() {
     // The front of the ring moves towards +x (screen right) as y turns; a
     // few pixels off the ring's line (where ray–plane hits run away) do
     // not matter.
+    // The edge-on ring is a line on screen as long as its diameter (its
+    // size depends on the pyramid's: handles shrink on small objects).
+    let c = ed.handle_points().unwrap()[0];
+    let e = ed.ring_pixel(Handle::Ring(1), PI / 2.0).unwrap();
+    let radius = ((e.0 - c.0).powi(2) + (e.1 - c.1).powi(2)).sqrt();
     drag_via(&mut ed, &[a, (a.0 + 30.0, a.1 + 4.0)], Mods::NONE);
     let (axis, angle) = rotation(&ed, pyr).to_axis_angle();
     assert!((axis - Vec3::Y).length() < 1e-3, "about +y: {axis}");
-    // 30 px along a ring about 60 px in radius: about half a radian.
-    assert!(angle > 0.3 && angle < 0.7, "angle {angle}");
+    // 30 px along a ring of that radius: about 30 / radius radians.
+    let want = 30.0 / radius;
+    assert!(
+        angle > want * 0.6 && angle < want * 1.4,
+        "angle {angle}, ring radius {radius} px"
+    );
 }
 
 #[test]
@@ -204,10 +213,14 @@ fn view_ring_turns_about_the_view_direction() {
 /// A pixel inside the rotate rings that is neither a ring nor `id`'s body.
 fn trackball_pixel(ed: &mut Editor, id: NodeId) -> (f32, f32) {
     let c = ed.handle_points().unwrap()[0];
-    for r in [30, 36, 24, 42] {
+    // The view ring is a circle on screen; the axis rings lie inside it.
+    let v = ed.ring_pixel(Handle::ViewRing, 0.0).unwrap();
+    let view_r = ((v.0 - c.0).powi(2) + (v.1 - c.1).powi(2)).sqrt();
+    for f in [0.39, 0.47, 0.31, 0.55, 0.25] {
+        let r = view_r * f;
         for k in 0..16 {
             let a = k as f32 / 16.0 * std::f32::consts::TAU;
-            let p = (c.0 + a.cos() * r as f32, c.1 + a.sin() * r as f32);
+            let p = (c.0 + a.cos() * r, c.1 + a.sin() * r);
             if ed.pick_at(p.0, p.1) != Some(id) && ed.handle_at(p.0, p.1).is_none() {
                 return p;
             }
@@ -289,6 +302,25 @@ fn rotating_an_animated_object_without_record_is_pending() {
     assert!(q.angle_between(ed.posed_node(spin).transform.rotation) < 1e-5);
 }
 
+/// World distance along `dir` from `pivot` whose pixel lies three
+/// quarters of the way from the pivot's pixel to scale box `box_i` (found
+/// by bisection; handle sizes depend on the object's size on screen).
+fn along_handle(ed: &mut Editor, pivot: Vec3, dir: Vec3, box_i: usize) -> f32 {
+    let p = ed.scale_points().unwrap();
+    let dist = |q: (f32, f32)| ((q.0 - p[0].0).powi(2) + (q.1 - p[0].1).powi(2)).sqrt();
+    let want = dist(p[box_i]) * 0.75;
+    let (mut lo, mut hi) = (0.0f32, 50.0f32);
+    for _ in 0..60 {
+        let mid = (lo + hi) * 0.5;
+        if dist(ed.pixel_of(pivot + dir * mid).unwrap()) < want {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
 #[test]
 fn scale_axis_drag_doubles_at_twice_the_distance() {
     let mut ed = stage();
@@ -296,8 +328,9 @@ fn scale_axis_drag_doubles_at_twice_the_distance() {
     ed.select(Some(pyr));
     key(&mut ed, Key::Char('t'), Mods::NONE);
     let pivot = ed.scene().node(pyr).transform.translation;
-    let a = ed.pixel_of(pivot + Vec3::X * 1.5).unwrap();
-    let b = ed.pixel_of(pivot + Vec3::X * 3.0).unwrap();
+    let s = along_handle(&mut ed, pivot, Vec3::X, 1);
+    let a = ed.pixel_of(pivot + Vec3::X * s).unwrap();
+    let b = ed.pixel_of(pivot + Vec3::X * s * 2.0).unwrap();
     assert_eq!(ed.handle_at(a.0, a.1), Some(Handle::ScaleAxis(0)));
     drag_via(&mut ed, &[a, b], Mods::NONE);
     let s = ed.scene().node(pyr).transform.scale;
@@ -306,8 +339,9 @@ fn scale_axis_drag_doubles_at_twice_the_distance() {
     assert_eq!(ed.status().text, "Scale Pyramid: scale 2 1 1");
     assert_eq!(labels(&ed), vec!["Scale Pyramid"]);
     // Ctrl: steps of 0.1 (z: 1 × 2.26 = 2.26 → 2.3).
-    let a = ed.pixel_of(pivot + Vec3::Z * 1.5).unwrap();
-    let b = ed.pixel_of(pivot + Vec3::Z * 1.5 * 2.26).unwrap();
+    let s = along_handle(&mut ed, pivot, Vec3::Z, 3);
+    let a = ed.pixel_of(pivot + Vec3::Z * s).unwrap();
+    let b = ed.pixel_of(pivot + Vec3::Z * s * 2.26).unwrap();
     assert_eq!(ed.handle_at(a.0, a.1), Some(Handle::ScaleAxis(2)));
     drag_via(&mut ed, &[a, b], Mods::ctrl());
     let z = ed.scene().node(pyr).transform.scale.z;

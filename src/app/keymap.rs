@@ -46,6 +46,8 @@ pub fn key(k: K) -> Option<Key> {
         return Some(Key::Char(*c));
     }
     Some(match k {
+        K::LeftBracket => Key::Char('['),
+        K::RightBracket => Key::Char(']'),
         K::Escape => Key::Escape,
         K::Enter | K::NumPadEnter => Key::Enter,
         K::Tab => Key::Tab,

@@ -5,7 +5,7 @@
 use super::ops::{self, NewLight};
 use crate::scene::primitives::{box_mesh, cone, cylinder, sphere};
 use crate::scene::{Camera, Material, Mesh, Node, NodeId, NodeKind, Scene, Shape, Transform};
-use glam::{Quat, Vec2, Vec3};
+use glam::{Mat4, Quat, Vec2, Vec3};
 
 /// One entry of the Add menu.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -246,9 +246,143 @@ pub fn reparent(scene: &mut Scene, id: NodeId, parent: Option<NodeId>) -> Result
     Ok(())
 }
 
+/// Moves `id` under `parent` as [`reparent`] does, but keeps where it is
+/// in the world: `old_parent` and `new_parent` are the two parents' world
+/// matrices (identity for the top level) at the frame shown, and the
+/// correction C = new⁻¹·old is folded into the node. When C is a
+/// similarity (rotation, uniform scale, translation — every parent made in
+/// the editor) it goes into the translation, rotation and scale and into
+/// every key of the node's tracks of those, so the keys still play where
+/// they did; otherwise (a sheared parent) it goes into the node's extra
+/// matrix, which the keys' values stay inside. Exact for still parents; an
+/// animated parent is matched at the frame shown, as Blender does.
+pub fn reparent_keeping_world(
+    scene: &mut Scene,
+    id: NodeId,
+    parent: Option<NodeId>,
+    old_parent: Mat4,
+    new_parent: Mat4,
+) -> Result<(), String> {
+    use crate::anim::{Keys, Property, TargetRef};
+    let before = scene.node(id).parent;
+    reparent(scene, id, parent)?;
+    if before == parent {
+        return Ok(());
+    }
+    let c = new_parent.inverse() * old_parent;
+    if !c.is_finite() {
+        return Err("the new parent is scaled to nothing; cannot keep the position".into());
+    }
+    let sim = similarity(&c);
+    let tr = &mut scene.nodes[id.0 as usize].transform;
+    let Some((cs, cr, _)) = sim.filter(|_| tr.extra.is_none()) else {
+        tr.extra = Some(c * tr.extra.unwrap_or(Mat4::IDENTITY));
+        return Ok(());
+    };
+    let center = tr.center;
+    let point = |t: Vec3| c.transform_point3(t + center) - center;
+    tr.translation = point(tr.translation);
+    tr.rotation = (cr * tr.rotation).normalize();
+    tr.scale *= cs;
+    for t in &mut scene.animation.tracks {
+        if t.target.of != TargetRef::Node(id) {
+            continue;
+        }
+        match (t.target.property, &mut t.keys) {
+            (Property::Translation, Keys::Vec3(k)) => {
+                k.iter_mut().for_each(|k| k.value = point(k.value))
+            }
+            (Property::Rotation, Keys::Rotation(k)) => k
+                .iter_mut()
+                .for_each(|k| k.value = (cr * k.value).normalize()),
+            (Property::Scale, Keys::Vec3(k)) => k.iter_mut().for_each(|k| k.value *= cs),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// `m` as (uniform scale, rotation, translation) when it is a similarity
+/// (within 1e-4 relative), else `None`.
+fn similarity(m: &Mat4) -> Option<(f32, glam::Quat, Vec3)> {
+    let (s, r, t) = m.to_scale_rotation_translation();
+    let k = (s.x + s.y + s.z) / 3.0;
+    let uniform = k > 0.0 && (s - Vec3::splat(k)).abs().max_element() <= 1e-4 * k;
+    let back = Mat4::from_scale_rotation_translation(Vec3::splat(k), r, t);
+    let tol = 1e-4
+        * (1.0
+            + m.abs()
+                .to_cols_array()
+                .iter()
+                .fold(0.0f32, |a, &b| a.max(b)));
+    let same = (back - *m).abs().to_cols_array().iter().all(|&d| d <= tol);
+    (uniform && same).then_some((k, r, t))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn parenting_keeps_the_world_transform_and_the_keys_world_path() {
+        use crate::anim::{Key, Keys, Property, Repeat, Target, TargetRef, Track};
+        use glam::Quat;
+        let mut s = Scene::new();
+        let mut pt = crate::scene::Transform::from_translation(Vec3::new(3.0, 1.0, -2.0));
+        pt.rotation = Quat::from_rotation_y(0.7);
+        pt.scale = Vec3::splat(2.0);
+        let p = s.add_node(None, Node::new("P", NodeKind::Group));
+        s.nodes[p.0 as usize].transform = pt;
+        let b = s.add_node(None, Node::new("B", NodeKind::Group));
+        s.nodes[b.0 as usize].transform.translation = Vec3::new(1.0, 2.0, 3.0);
+        s.nodes[b.0 as usize].transform.rotation = Quat::from_rotation_x(0.3);
+        let keys = vec![
+            Key::new(0.0, Vec3::ZERO),
+            Key::new(10.0, Vec3::new(4.0, 0.0, 0.0)),
+        ];
+        let target = Target {
+            of: TargetRef::Node(b),
+            property: Property::Translation,
+        };
+        s.animation
+            .tracks
+            .push(Track::new(target, Repeat::Constant, Keys::Vec3(keys)).unwrap());
+        let world_b = s.node(b).transform.matrix();
+        reparent_keeping_world(&mut s, b, Some(p), Mat4::IDENTITY, pt.matrix()).unwrap();
+        let now = pt.matrix() * s.node(b).transform.matrix();
+        assert!(
+            (now - world_b)
+                .abs()
+                .to_cols_array()
+                .iter()
+                .all(|d| *d < 1e-4),
+            "{now} vs {world_b}"
+        );
+        assert_eq!(
+            s.node(b).transform.extra,
+            None,
+            "a similarity goes into T/R/S"
+        );
+        // The key at frame 10 still puts B at world (4, 0, 0).
+        let Keys::Vec3(k) = &s.animation.tracks[0].keys else {
+            panic!()
+        };
+        let w = pt.matrix().transform_point3(k[1].value);
+        assert!((w - Vec3::new(4.0, 0.0, 0.0)).length() < 1e-4, "{w}");
+        // Back to the top level: where it was.
+        reparent_keeping_world(&mut s, b, None, pt.matrix(), Mat4::IDENTITY).unwrap();
+        assert!((s.node(b).transform.translation - Vec3::new(1.0, 2.0, 3.0)).length() < 1e-4);
+        // Under a non-uniformly scaled, turned parent: the extra matrix.
+        let shear = Mat4::from_scale(Vec3::new(1.0, 3.0, 1.0)) * Mat4::from_rotation_z(0.5);
+        reparent_keeping_world(&mut s, b, Some(p), Mat4::IDENTITY, shear).unwrap();
+        let now = shear * s.node(b).transform.matrix();
+        assert!((now - world_b)
+            .abs()
+            .to_cols_array()
+            .iter()
+            .all(|d| *d < 1e-4));
+        assert!(s.node(b).transform.extra.is_some());
+    }
 
     #[test]
     fn sizes_are_round_and_follow_the_scene() {

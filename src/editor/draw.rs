@@ -207,7 +207,8 @@ impl Editor {
         );
         let r = l.ruler;
         let dur = self.scene.settings.duration.max(1.0);
-        let px_per_frame = (l.frame_to_x(dur, dur) - l.frame_to_x(0.0, dur)) / dur;
+        let span = self.time_span();
+        let px_per_frame = l.frame_to_x_in(1.0, span) - l.frame_to_x_in(0.0, span);
         // Minor ticks at least 4 px apart, labels at least 40 px apart.
         let nice = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000];
         let minor = nice
@@ -221,9 +222,14 @@ impl Editor {
             .find(|&s| s as f32 * px_per_frame >= 40.0 && s % minor == 0)
             .unwrap_or(10000);
         let base = r.bottom() - 2;
-        let mut f = 0;
-        while f as f32 <= dur {
-            let x = l.frame_to_x(f as f32, dur) as i32;
+        let ruler_r = l.ruler_span();
+        let mut f = ((span.0.max(0.0) / minor as f32).ceil() as i64 * minor as i64) as i32;
+        while f as f32 <= span.1 {
+            let x = l.frame_to_x_in(f as f32, span) as i32;
+            if (x as f32) < ruler_r.0 - 0.5 || (x as f32) > ruler_r.1 + 0.5 {
+                f += minor;
+                continue;
+            }
             let is_major = f % major == 0;
             let th = if is_major { 7 } else { 3 };
             p.fill_rect(Rect::new(x, base - th, 1, th), theme::TEXT_DIM);
@@ -239,8 +245,9 @@ impl Editor {
             true => self.draw_graph(p, l),
             false => self.draw_key_strip(p, l),
         }
+        self.draw_time_shading(p, l, span);
         // Current frame cursor with its number.
-        let cx = l.frame_to_x(self.frame.clamp(0.0, dur), dur) as i32;
+        let cx = l.frame_to_x_in(self.frame.clamp(0.0, dur), span) as i32;
         p.fill_rect(
             // Through the key strip; the graph draws its own frame line.
             Rect::new(
@@ -260,6 +267,36 @@ impl Editor {
             theme::CURSOR,
             255,
         );
+    }
+
+    /// Darkens the frames after the scene's end (keys there are greyed
+    /// and do not play) and outside the preview range, and marks the
+    /// preview range's ends on the ruler.
+    fn draw_time_shading(&self, p: &mut Painter, l: &Layout, span: (f32, f32)) {
+        let (x0, x1) = l.ruler_span();
+        let rows_h = if self.graph_shown { 0 } else { l.key_rows.h };
+        let (y, h) = (l.ruler.y, l.ruler.h + rows_h);
+        let x_of = |f: f32| l.frame_to_x_in(f, span).clamp(x0, x1);
+        let shade = |p: &mut Painter, a: f32, b: f32, alpha: u8| {
+            let (a, b) = (a.round() as i32, b.round() as i32);
+            if b > a {
+                p.fill_rect_alpha(Rect::new(a, y, b - a, h), 0x000000, alpha);
+            }
+        };
+        let dur = self.scene.settings.duration.max(0.0);
+        shade(p, x_of(dur) + 1.0, x1 + 1.0, 110);
+        if let Some((a, b)) = self.timeline.preview {
+            shade(p, x0, x_of(a), 70);
+            shade(p, x_of(b) + 1.0, x_of(dur) + 1.0, 70);
+            for f in [a, b] {
+                let x = l.frame_to_x_in(f, span);
+                if x >= x0 - 0.5 && x <= x1 + 0.5 {
+                    p.fill_rect(Rect::new(x as i32, y, 1, l.ruler.h), theme::ACCENT);
+                }
+            }
+            let (xa, xb) = (x_of(a) as i32, x_of(b) as i32);
+            p.fill_rect(Rect::new(xa, y, (xb - xa).max(1), 2), theme::ACCENT);
+        }
     }
 
     fn draw_modal(&self, p: &mut Painter) {

@@ -42,6 +42,14 @@ pub(super) enum Drag {
         last: (f32, f32),
         moved: bool,
     },
+    /// Middle button over the ruler or key strip: pans the frames shown.
+    StripPan {
+        last_x: f32,
+    },
+    /// Shift+drag on the ruler: the preview range from the press's frame.
+    Preview {
+        from: f32,
+    },
     /// Dragging the timeline's top edge: the key strip's height.
     StripResize {
         y0: f32,

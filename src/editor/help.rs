@@ -20,6 +20,11 @@ pub const HELP: &[(&str, &str)] = &[
     ("Space, Ctrl+P", "play / stop"),
     ("Left / Right", "previous / next frame"),
     ("Up / Down", "next / previous key"),
+    ("wheel, middle-drag", "zoom / pan the ruler and strip"),
+    (
+        "Shift+drag ruler",
+        "preview range (loops); [ ] ends, Alt+P clears",
+    ),
     ("", "Key strip"),
     (
         "click, Shift+click",

@@ -13,6 +13,8 @@ const SUMMARY_MARKER: u32 = 0x9a9ca3;
 const ROW_A: u32 = 0x26272b;
 const ROW_B: u32 = 0x2d2f34;
 const SUMMARY_BG: u32 = 0x33363c;
+/// Keys after the scene's last frame.
+const LATE_MARKER: u32 = 0x5e6066;
 const KEY_ROW_H_PX: i32 = crate::ui::layout::KEY_ROW_H;
 
 impl Editor {
@@ -22,6 +24,7 @@ impl Editor {
             return;
         }
         let dur = self.scene.settings.duration;
+        let span = self.time_span();
         let names_w = l.key_names_w();
         p.set_clip(Some(l.key_rows));
         for (i, (row, r)) in self.key_strip_layout().into_iter().enumerate() {
@@ -62,10 +65,12 @@ impl Editor {
             p.set_clip(Some(keys_r));
             let cy = r.y as f32 + r.h as f32 / 2.0;
             for (f, ks) in self.row_markers(row) {
-                let x = l.frame_to_x(f, dur);
+                let x = l.frame_to_x_in(f, span);
                 let sel = ks.iter().filter(|k| self.is_key_selected(k)).count();
                 let step = ks.iter().all(|k| self.key_interp(k) == Some(Interp::Step));
                 let color = match (sel, row) {
+                    // After the scene's end: greyed (they do not play).
+                    (0, _) if f > dur => LATE_MARKER,
                     (0, Row::Summary) => SUMMARY_MARKER,
                     (0, _) => MARKER,
                     _ => theme::SELECTED,

@@ -40,6 +40,7 @@ pub mod recovery;
 mod route;
 mod screen;
 pub mod script;
+pub mod timeline;
 mod viewport;
 pub mod views;
 
@@ -165,6 +166,8 @@ pub struct Editor {
     /// edge (`None`: `ui::layout::default_strip_h`). Never follows the
     /// selection, so selecting does not move the panels.
     strip_height: Option<i32>,
+    /// The strip's zoom/pan and the preview range.
+    timeline: timeline::Timeline,
     show_grid: bool,
     view_style: Option<RenderStyle>,
     /// Anti-aliasing samples per pixel of the viewport (1, 4, 8); the
@@ -228,6 +231,7 @@ impl Editor {
             graph_shown: false,
             graph_height: 140,
             strip_height: None,
+            timeline: timeline::Timeline::default(),
             show_grid: true,
             view_style: None,
             aa: 1,

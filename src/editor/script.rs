@@ -504,7 +504,7 @@ impl Runner {
                 let step = match to {
                     None => Step::Click(at.0, at.1, b, *mods),
                     Some(t) => {
-                        let x = ed.layout().frame_to_x(*t, ed.scene().settings.duration);
+                        let x = ed.layout().frame_to_x_in(*t, ed.time_span());
                         Step::Drag(at.0, at.1, x, at.1, b, *mods)
                     }
                 };

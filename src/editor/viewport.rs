@@ -2,6 +2,7 @@
 //! it changes), the ground grid behind it, the selection outline, light
 //! gizmos, and picking.
 
+use super::manip::ARROW_PX;
 use super::{gizmo, ops, Editor, LayerKey};
 use crate::input::camera::Projector;
 use crate::render::{self, Frame, RenderOptions};
@@ -34,6 +35,42 @@ impl Editor {
         let (_, r) = self.scene_radius();
         let v = self.camera.view(vp.w.max(1) as u32, vp.h.max(1) as u32, r);
         Projector::new(&v, vp.x as f32, vp.y as f32, vp.w as f32, vp.h as f32)
+    }
+
+    /// The projector the handles are sized with: a selection smaller on
+    /// screen than the handles gets them shrunk (not below 60 %) and kept
+    /// off its own disc, so they never bury it and a press on the object
+    /// still drags the object (issue 17 item 7). Lights (no pixels) and
+    /// big objects keep full-size handles.
+    pub(super) fn handle_projector(&mut self) -> Projector {
+        let proj = self.projector();
+        match self.selection.and_then(|s| self.selection_px_radius(s)) {
+            Some(r) if handle_scale(r) < 1.0 => proj.for_handles(handle_scale(r), r + 2.0),
+            _ => proj,
+        }
+    }
+
+    /// Half the larger side of the box around the selected subtree's
+    /// visible pixels in the viewport layer (`None` when none shows).
+    fn selection_px_radius(&mut self, sel: NodeId) -> Option<f32> {
+        self.update_layer();
+        let mut mine = vec![false; self.scene.nodes.len() + 1];
+        for id in ops::subtree(&self.scene, sel) {
+            mine[id.0 as usize + 1] = true;
+        }
+        let lf = &self.layer.frame;
+        let w = lf.width as usize;
+        let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
+        for (i, &id) in lf.ids.iter().enumerate() {
+            if id != 0 && mine.get(id as usize).copied().unwrap_or(false) {
+                let (x, y) = (i % w, i / w);
+                x0 = x0.min(x);
+                x1 = x1.max(x);
+                y0 = y0.min(y);
+                y1 = y1.max(y);
+            }
+        }
+        (x0 != usize::MAX).then(|| ((x1 - x0).max(y1 - y0) + 1) as f32 * 0.5)
     }
 
     /// How the viewport draws the scene (the onion copies too, so they
@@ -112,45 +149,36 @@ impl Editor {
         }
     }
 
-    /// Paints the border pixels of the selected subtree's silhouette and
-    /// tints its inside.
+    /// Outlines the selected subtree's silhouette from outside (a ring of
+    /// the selection colour with a dark ring beyond it, so it shows on
+    /// light and dark backgrounds) and tints its inside only lightly, so
+    /// the object's own colour stays readable (issue 17 item 7).
     fn outline(&self, frame: &mut Frame, vp: Rect, sel: NodeId) {
         let mut mine = vec![false; self.scene.nodes.len() + 1];
         for id in ops::subtree(&self.scene, sel) {
             mine[id.0 as usize + 1] = true;
         }
         let lf = &self.layer.frame;
-        let (w, h) = (lf.width as usize, lf.height as usize);
-        let ids = &lf.ids;
-        let is = |i: usize| mine.get(ids[i] as usize).copied().unwrap_or(false);
+        let w = (lf.width as usize).min(vp.w.max(0) as usize);
+        let h = (lf.height as usize).min(vp.h.max(0) as usize);
+        let lw = lf.width as usize;
+        let mask: Vec<bool> = (0..w * h)
+            .map(|i| {
+                let id = lf.ids[(i / w.max(1)) * lw + i % w.max(1)];
+                id != 0 && mine.get(id as usize).copied().unwrap_or(false)
+            })
+            .collect();
         let fw = frame.width as usize;
-        for y in 0..h.min(vp.h.max(0) as usize) {
-            let row = y * w;
-            for x in 0..w.min(vp.w.max(0) as usize) {
-                let i = row + x;
-                if ids[i] == 0 || !is(i) {
-                    continue;
-                }
-                let edge = x == 0
-                    || y == 0
-                    || x + 1 == w
-                    || y + 1 == h
-                    || !is(i - 1)
-                    || !is(i + 1)
-                    || !is(i - w)
-                    || !is(i + w);
+        for y in 0..h {
+            for x in 0..w {
                 let o = (vp.y as usize + y) * fw + vp.x as usize + x;
-                if edge {
-                    frame.color[o] = theme::SELECTED;
-                } else {
-                    // A light orange tint inside.
-                    let c = frame.color[o];
-                    let mix = |s: u32, t: u32| (s * 3 + t) / 4;
-                    let r = mix((c >> 16) & 255, 0xff);
-                    let g = mix((c >> 8) & 255, 0x9a);
-                    let b = mix(c & 255, 0x1f);
-                    frame.color[o] = (r << 16) | (g << 8) | b;
-                }
+                let c = frame.color[o];
+                frame.color[o] = match outline_ring(&mask, w, h, x, y) {
+                    Ring::Inside => theme::blend(c, theme::SELECTED, 1, 8),
+                    Ring::Near => theme::SELECTED,
+                    Ring::Far => theme::blend(c, 0x000000, 1, 2),
+                    Ring::None => continue,
+                };
             }
         }
     }
@@ -186,21 +214,26 @@ impl Editor {
         p.set_clip(None);
     }
 
-    /// A small xyz tripod in the viewport's lower-left corner.
+    /// A small xyz tripod in the viewport's lower-left corner, turned by
+    /// the viewport's own view matrix (the same up vector the scene is drawn
+    /// with, so straight down in the top view +x still points right).
     fn draw_axes(&self, p: &mut Painter, vp: Rect) {
-        let v = crate::input::camera::look_at(self.camera.back(), Vec3::ZERO, Vec3::Y);
+        let v = self
+            .camera
+            .view(vp.w.max(1) as u32, vp.h.max(1) as u32, 1.0)
+            .view;
         let c = (vp.x as f32 + 22.0, vp.bottom() as f32 - 22.0);
-        for (axis, color, name) in [
-            (Vec3::X, 0xe05050, "x"),
-            (Vec3::Y, 0x60c060, "y"),
-            (Vec3::Z, 0x5080e0, "z"),
-        ] {
-            let d = v.transform_vector3(axis);
-            let end = (c.0 + d.x * 15.0, c.1 - d.y * 15.0);
+        let dirs = corner_axes(&v);
+        for ((d, color), name) in dirs
+            .into_iter()
+            .zip([0xe05050, 0x60c060, 0x5080e0])
+            .zip(["x", "y", "z"])
+        {
+            let end = (c.0 + d.0 * 15.0, c.1 + d.1 * 15.0);
             p.line(c, end, color, 1.5);
             p.text(
-                (end.0 + d.x * 5.0 - 3.0) as i32,
-                (end.1 - d.y * 5.0 - 8.0) as i32,
+                (end.0 + d.0 * 5.0 - 3.0) as i32,
+                (end.1 + d.1 * 5.0 - 8.0) as i32,
                 name,
                 color,
             );
@@ -271,6 +304,117 @@ fn draw_grid(frame: &mut Frame, proj: &Projector, radius: f32) {
             if let Some((pa, pb)) = proj.segment(a, b) {
                 line::wu_line(&mut frame.color, (w, h), pa, pb, c, 0.8, &keep);
             }
+        }
+    }
+}
+
+/// Where a pixel lies relative to the selection's silhouette.
+#[derive(Debug, PartialEq, Eq)]
+enum Ring {
+    /// On the selection (tinted).
+    Inside,
+    /// Outside, touching it (the outline colour).
+    Near,
+    /// Outside, two pixels away (a dark edge behind the outline).
+    Far,
+    None,
+}
+
+/// Classifies pixel (x, y) of the `w`×`h` selection mask.
+fn outline_ring(mask: &[bool], w: usize, h: usize, x: usize, y: usize) -> Ring {
+    if mask[y * w + x] {
+        return Ring::Inside;
+    }
+    let at = |dx: i32, dy: i32| {
+        let (nx, ny) = (x as i32 + dx, y as i32 + dy);
+        nx >= 0
+            && ny >= 0
+            && (nx as usize) < w
+            && (ny as usize) < h
+            && mask[ny as usize * w + nx as usize]
+    };
+    let near = (-1..=1).any(|dy| (-1..=1).any(|dx| at(dx, dy)));
+    if near {
+        return Ring::Near;
+    }
+    let far = (-2..=2)
+        .any(|dy: i32| (-2..=2).any(|dx: i32| (dx.abs() == 2 || dy.abs() == 2) && at(dx, dy)));
+    if far {
+        Ring::Far
+    } else {
+        Ring::None
+    }
+}
+
+/// Handle size factor for a selection `r_px` pixels in radius: full size
+/// (arrows [`ARROW_PX`] long) once the arrows reach no further than 2.5
+/// radii, shrinking with the object below that, never under 60 % (still
+/// easy to grab).
+fn handle_scale(r_px: f32) -> f32 {
+    (r_px * 2.5 / ARROW_PX).clamp(0.6, 1.0)
+}
+
+/// Screen directions (x right, y down; length ≤ 1) of the world axes
+/// x, y, z under the view matrix `view`: the corner tripod's arms.
+fn corner_axes(view: &glam::Mat4) -> [(f32, f32); 3] {
+    [Vec3::X, Vec3::Y, Vec3::Z].map(|a| {
+        let d = view.transform_vector3(a);
+        (d.x, -d.y)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{corner_axes, handle_scale, outline_ring, Ring, ARROW_PX};
+
+    #[test]
+    fn the_outline_lies_outside_the_silhouette() {
+        // A 2×2 selected square in a 8×8 mask at (3, 3).
+        let (w, h) = (8, 8);
+        let mut mask = vec![false; w * h];
+        for (x, y) in [(3, 3), (4, 3), (3, 4), (4, 4)] {
+            mask[y * w + x] = true;
+        }
+        assert_eq!(outline_ring(&mask, w, h, 3, 3), Ring::Inside);
+        assert_eq!(outline_ring(&mask, w, h, 2, 3), Ring::Near);
+        assert_eq!(outline_ring(&mask, w, h, 5, 5), Ring::Near);
+        assert_eq!(outline_ring(&mask, w, h, 1, 4), Ring::Far);
+        assert_eq!(outline_ring(&mask, w, h, 6, 6), Ring::Far);
+        assert_eq!(outline_ring(&mask, w, h, 0, 0), Ring::None);
+        assert_eq!(outline_ring(&mask, w, h, 7, 3), Ring::None);
+    }
+
+    #[test]
+    fn handles_shrink_on_small_objects_only() {
+        assert_eq!(handle_scale(200.0), 1.0);
+        assert_eq!(handle_scale(ARROW_PX / 2.5), 1.0);
+        assert!((handle_scale(20.0) - 50.0 / ARROW_PX).abs() < 1e-6);
+        assert_eq!(handle_scale(2.0), 0.6);
+    }
+    use crate::editor::views::ViewCmd;
+    use crate::input::OrbitCamera;
+
+    #[test]
+    fn the_corner_tripod_agrees_with_the_standard_views() {
+        // Top view (looking down −y): +x right, −z up on screen.
+        // Front view (looking down −z): +x right, +y up.
+        for (cmd, x_right, up_axis, up_sign) in [
+            (ViewCmd::Top, 1.0, 2, -1.0),
+            (ViewCmd::Front, 1.0, 1, 1.0),
+            (ViewCmd::Bottom, 1.0, 2, 1.0),
+        ] {
+            let mut cam = OrbitCamera::default();
+            let (yaw, pitch) = cmd.angles().unwrap();
+            cam.yaw = yaw;
+            cam.pitch = pitch;
+            let a = corner_axes(&cam.view(100, 100, 1.0).view);
+            assert!((a[0].0 - x_right).abs() < 1e-4, "{cmd:?}: x {:?}", a[0]);
+            // Screen y grows downwards: "up" is a negative screen y.
+            assert!(
+                (a[up_axis].1 + up_sign).abs() < 1e-4,
+                "{cmd:?}: axis {up_axis} {:?}",
+                a[up_axis]
+            );
         }
     }
 }

@@ -186,15 +186,28 @@ pub struct Projector {
     pub w: f32,
     pub h: f32,
     near: f32,
+    /// Multiplies [`Projector::world_per_px`]: handles on a small object
+    /// are drawn smaller so they do not hide it ([`Projector::for_handles`]).
+    px_scale: f32,
+    /// Pixels around the pivot that handles leave empty (the small
+    /// object's own disc), 0 normally.
+    gap_px: f32,
 }
 
 impl Projector {
     pub fn new(v: &View, x: f32, y: f32, w: f32, h: f32) -> Projector {
-        // Recover the near plane from the projection (OpenGL form):
-        // p22 = (f+n)/(n-f), p32 = 2fn/(n-f) ⇒ n = p32/(p22-1).
+        // Recover the near plane from the projection (OpenGL form).
+        // Perspective: p22 = (f+n)/(n-f), p32 = 2fn/(n-f) ⇒ n = p32/(p22-1).
+        // Orthographic: p22 = -2/(f-n), p32 = -(f+n)/(f-n) ⇒ n = (p32+1)/p22.
         let p22 = v.proj.z_axis.z;
         let p32 = v.proj.w_axis.z;
-        let near = if (p22 - 1.0).abs() > 1e-9 {
+        let near = if is_ortho(&v.proj) {
+            if p22.abs() > 1e-12 {
+                ((p32 + 1.0) / p22).abs()
+            } else {
+                1e-3
+            }
+        } else if (p22 - 1.0).abs() > 1e-9 {
             (p32 / (p22 - 1.0)).abs()
         } else {
             1e-3
@@ -207,7 +220,28 @@ impl Projector {
             w,
             h,
             near: near.max(1e-5),
+            px_scale: 1.0,
+            gap_px: 0.0,
         }
+    }
+
+    /// The factor set by [`Projector::for_handles`] (1 unless shrunk).
+    pub fn px_scale(&self) -> f32 {
+        self.px_scale
+    }
+
+    /// The empty disc around the pivot set by [`Projector::for_handles`].
+    pub fn gap_px(&self) -> f32 {
+        self.gap_px
+    }
+
+    /// This projector as the editor's handles use it on a small object:
+    /// every constant-screen-size gizmo drawn `scale` times as large, and
+    /// nothing drawn or grabbed within `gap_px` of the pivot.
+    pub fn for_handles(mut self, scale: f32, gap_px: f32) -> Projector {
+        self.px_scale = scale;
+        self.gap_px = gap_px.max(0.0);
+        self
     }
 
     fn eye_to_px(&self, e: Vec3) -> (f32, f32) {
@@ -246,11 +280,22 @@ impl Projector {
     /// Pixels per world unit at distance of world point `p` (for sizing
     /// gizmos that keep a constant screen size).
     pub fn world_per_px(&self, p: Vec3) -> f32 {
+        let fy = self.proj.y_axis.y.max(1e-6);
+        // An orthographic view has the same scale at every depth
+        // (p11 = 1/half-height); a perspective one grows with depth.
+        if is_ortho(&self.proj) {
+            return self.px_scale * 2.0 / (fy * self.h.max(1.0));
+        }
         let e = self.view.transform_point3(p);
         let depth = (-e.z).max(self.near);
-        let fy = self.proj.y_axis.y.max(1e-6);
-        2.0 * depth / (fy * self.h.max(1.0))
+        self.px_scale * 2.0 * depth / (fy * self.h.max(1.0))
     }
+}
+
+/// Whether `proj` is orthographic: its w row is (0, 0, 0, 1), where a
+/// perspective projection's is (0, 0, −1, 0).
+pub fn is_ortho(proj: &Mat4) -> bool {
+    proj.z_axis.w == 0.0 && proj.w_axis.w == 1.0
 }
 
 #[cfg(test)]
@@ -293,6 +338,30 @@ mod tests {
         let (a, b) = p.segment(Vec3::ZERO, behind).unwrap();
         assert!(a.0.is_finite() && b.0.is_finite() && b.1.is_finite());
         assert!(p.segment(behind, behind + Vec3::X).is_none());
+    }
+
+    #[test]
+    fn orthographic_scale_does_not_grow_with_depth() {
+        // The orthographic volume is as tall as the perspective one at the
+        // target, so both give the same pixel size there; further away only
+        // the perspective one grows (handles sized from it stay small).
+        let mut cam = OrbitCamera::default();
+        let persp = Projector::new(&cam.view(200, 100, 5.0), 0.0, 0.0, 200.0, 100.0);
+        cam.ortho = true;
+        let ortho = Projector::new(&cam.view(200, 100, 5.0), 0.0, 0.0, 200.0, 100.0);
+        let at = |p: &Projector, q: Vec3| p.world_per_px(q);
+        let t = cam.target;
+        assert!((at(&persp, t) - at(&ortho, t)).abs() < 1e-5 * at(&persp, t));
+        let far = t - cam.back() * 20.0;
+        assert!(at(&persp, far) > 2.0 * at(&persp, t));
+        assert_eq!(at(&ortho, far), at(&ortho, t));
+        // The near plane is recovered from either projection.
+        assert!(
+            (ortho.near - persp.near).abs() < 1e-4,
+            "{} {}",
+            ortho.near,
+            persp.near
+        );
     }
 
     #[test]

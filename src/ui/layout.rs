@@ -92,8 +92,21 @@ impl Layout {
 
     /// X pixel of `frame` on the ruler for a timeline of `duration` frames.
     pub fn frame_to_x(&self, frame: f32, duration: f32) -> f32 {
+        self.frame_to_x_in(frame, (0.0, duration.max(1.0)))
+    }
+
+    /// X pixel of `frame` on the ruler when it shows frames `span.0` to
+    /// `span.1` (zoomed or panned).
+    pub fn frame_to_x_in(&self, frame: f32, span: (f32, f32)) -> f32 {
         let r = self.ruler_span();
-        r.0 + (frame / duration.max(1.0)) * (r.1 - r.0)
+        let w = (span.1 - span.0).max(1e-3);
+        r.0 + ((frame - span.0) / w) * (r.1 - r.0)
+    }
+
+    /// Frame under ruler pixel `x` when it shows `span` (not clamped).
+    pub fn x_to_frame_in(&self, x: f32, span: (f32, f32)) -> f32 {
+        let r = self.ruler_span();
+        span.0 + (x - r.0) / (r.1 - r.0).max(1.0) * (span.1 - span.0)
     }
 
     /// Frame under the ruler pixel `x` (clamped to 0..=duration).
@@ -114,7 +127,8 @@ impl Layout {
     }
 
     /// Left and right x of the ruler's usable span (a margin for labels).
-    fn ruler_span(&self) -> (f32, f32) {
+    /// Left and right x of the frames on the ruler.
+    pub fn ruler_span(&self) -> (f32, f32) {
         let x0 = (self.ruler.x + 8 + self.key_names_w()) as f32;
         let x1 = (self.ruler.right() - 8) as f32;
         (x0, x1.max(x0 + 1.0))

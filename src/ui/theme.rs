@@ -29,3 +29,13 @@ pub fn rgb(c: glam::Vec3) -> u32 {
     let q = |x: f32| ((x.clamp(0.0, 1.0) * 255.0 + 0.5) as u32).min(255);
     (q(c.x) << 16) | (q(c.y) << 8) | q(c.z)
 }
+
+/// `c` moved `num/den` of the way to `t`, per channel (integer, so the
+/// same bytes everywhere).
+pub fn blend(c: u32, t: u32, num: u32, den: u32) -> u32 {
+    let ch = |s: u32| {
+        let (a, b) = ((c >> s) & 255, (t >> s) & 255);
+        ((a * (den - num) + b * num) / den.max(1)) << s
+    };
+    ch(16) | ch(8) | ch(0)
+}

@@ -93,6 +93,18 @@ pub fn seg_dist(p: (f32, f32), a: (f32, f32), b: (f32, f32)) -> f32 {
     ((p.0 - cx).powi(2) + (p.1 - cy).powi(2)).sqrt()
 }
 
+/// Where a handle's shaft from pivot pixel `c` to `tip` starts when the
+/// handles keep `gap` pixels clear around the pivot (a small object's own
+/// disc): `c` itself without a gap, `None` when the gap swallows it.
+pub fn shaft_start(c: (f32, f32), tip: (f32, f32), gap: f32) -> Option<(f32, f32)> {
+    if gap <= 0.0 {
+        return Some(c);
+    }
+    let (dx, dy) = (tip.0 - c.0, tip.1 - c.1);
+    let l = (dx * dx + dy * dy).sqrt();
+    (l > gap + 4.0).then(|| (c.0 + dx / l * gap, c.1 + dy / l * gap))
+}
+
 /// Whether `p` is inside the convex quad `q` (either winding).
 pub fn in_quad(p: (f32, f32), q: &[(f32, f32); 4]) -> bool {
     let mut sign = 0.0f32;
@@ -210,6 +222,12 @@ pub(crate) mod tests {
         assert!((seg_dist((5.0, 3.0), (0.0, 0.0), (10.0, 0.0)) - 3.0).abs() < 1e-6);
         assert!((seg_dist((13.0, 4.0), (0.0, 0.0), (10.0, 0.0)) - 5.0).abs() < 1e-6);
         assert!(in_box((3.0, -3.0), (0.0, 0.0), 3.0));
+        assert_eq!(shaft_start((0.0, 0.0), (30.0, 40.0), 0.0), Some((0.0, 0.0)));
+        assert_eq!(
+            shaft_start((0.0, 0.0), (30.0, 40.0), 10.0),
+            Some((6.0, 8.0))
+        );
+        assert_eq!(shaft_start((0.0, 0.0), (3.0, 4.0), 10.0), None);
         assert!(!in_box((3.5, 0.0), (0.0, 0.0), 3.0));
     }
 }

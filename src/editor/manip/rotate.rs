@@ -160,8 +160,9 @@ pub fn edge_on_drag(
 /// Whether pixel (x, y) is inside the disc the axis rings outline (where a
 /// drag turns freely).
 pub fn in_trackball(proj: &Projector, pivot: Vec3, x: f32, y: f32) -> bool {
-    proj.point(pivot)
-        .is_some_and(|c| ((x - c.0).powi(2) + (y - c.1).powi(2)).sqrt() < RING_PX - GRAB_PX)
+    proj.point(pivot).is_some_and(|c| {
+        ((x - c.0).powi(2) + (y - c.1).powi(2)).sqrt() < RING_PX * proj.px_scale() - GRAB_PX
+    })
 }
 
 /// The trackball point under pixel (x, y): where the mouse ray first meets

@@ -9,7 +9,7 @@
 //! down shrinks. Ctrl snaps an axis scale to steps of 0.1 and the uniform
 //! factor to steps of 0.1.
 
-use super::geom::{closest_on_line, in_box, pixel_ray, seg_dist, snap};
+use super::geom::{closest_on_line, in_box, pixel_ray, seg_dist, shaft_start, snap};
 use super::{Handle, ARROW_PX, AXIS_COLORS, GRAB_PX, HOT};
 use crate::input::camera::Projector;
 use crate::scene::Node;
@@ -49,8 +49,10 @@ pub fn hit(proj: &Projector, pivot: Vec3, frame: &[Vec3; 3], x: f32, y: f32) -> 
         let end = pts[i as usize + 1];
         let d = if in_box((x, y), end, END_BOX + 1.0) {
             0.0
+        } else if let Some(start) = shaft_start(pts[0], end, proj.gap_px()) {
+            seg_dist((x, y), start, end)
         } else {
-            seg_dist((x, y), pts[0], end)
+            f32::INFINITY
         };
         if d <= GRAB_PX && best.is_none_or(|(bd, _)| d < bd) {
             best = Some((d, Handle::ScaleAxis(i)));
@@ -123,7 +125,9 @@ pub fn draw(
             AXIS_COLORS[i as usize]
         };
         let end = pts[i as usize + 1];
-        p.line(pts[0], end, color, 2.0);
+        if let Some(start) = shaft_start(pts[0], end, proj.gap_px()) {
+            p.line(start, end, color, 2.0);
+        }
         p.fill_polygon(&square(end, END_BOX), color, 255);
     }
     let color = if hot == Some(Handle::Uniform) {
@@ -132,7 +136,11 @@ pub fn draw(
         0xe0e0e0
     };
     let q = square(pts[0], CENTRE_BOX);
-    p.fill_polygon(&q, color, 140);
+    // Over a small object (handles kept off its disc) only the outline,
+    // so the object shows through.
+    if proj.gap_px() <= 0.0 {
+        p.fill_polygon(&q, color, 140);
+    }
     p.polyline(&q, color, 1.5, true);
 }
 

@@ -7,7 +7,9 @@
 //! the grabbed point's motion, so the object follows the mouse. Ctrl snaps
 //! the moved world coordinates to the grid step.
 
-use super::geom::{axis, closest_on_line, in_quad, pixel_ray, ray_plane, seg_dist, snap};
+use super::geom::{
+    axis, closest_on_line, in_quad, pixel_ray, ray_plane, seg_dist, shaft_start, snap,
+};
 use super::{Handle, ARROW_PX, AXIS_COLORS, GRAB_PX, HOT};
 use crate::anim::Property;
 use crate::input::camera::Projector;
@@ -28,15 +30,20 @@ pub fn plane_axes(n: u8) -> (u8, u8) {
     }
 }
 
-/// World corners of plane square `n` for a pivot and arrow length.
-fn plane_corners(pivot: Vec3, len: f32, n: u8) -> [Vec3; 4] {
+/// World corners of plane square `n` for a pivot and arrow length; with a
+/// gap around the pivot (a small object's disc, in pixels) the square moves
+/// out beyond it.
+fn plane_corners(proj: &Projector, pivot: Vec3, len: f32, n: u8) -> [Vec3; 4] {
     let (a, b) = plane_axes(n);
     let (u, v) = (axis(a) * len, axis(b) * len);
+    let len_px = len / proj.world_per_px(pivot).max(1e-12);
+    let from = PLANE_FROM.max(proj.gap_px() / len_px.max(1.0) + 0.05);
+    let to = from + (PLANE_TO - PLANE_FROM);
     [
-        pivot + u * PLANE_FROM + v * PLANE_FROM,
-        pivot + u * PLANE_TO + v * PLANE_FROM,
-        pivot + u * PLANE_TO + v * PLANE_TO,
-        pivot + u * PLANE_FROM + v * PLANE_TO,
+        pivot + u * from + v * from,
+        pivot + u * to + v * from,
+        pivot + u * to + v * to,
+        pivot + u * from + v * to,
     ]
 }
 
@@ -57,8 +64,9 @@ pub fn hit(proj: &Projector, pivot: Vec3, x: f32, y: f32) -> Option<Handle> {
     let c = proj.point(pivot)?;
     let mut best: Option<(f32, Handle)> = None;
     for i in 0..3u8 {
-        if let Some(tip) = proj.point(pivot + axis(i) * len) {
-            let d = seg_dist((x, y), c, tip);
+        let tip = proj.point(pivot + axis(i) * len);
+        if let Some((tip, start)) = tip.and_then(|t| Some((t, shaft_start(c, t, proj.gap_px())?))) {
+            let d = seg_dist((x, y), start, tip);
             if d <= GRAB_PX && best.is_none_or(|(bd, _)| d < bd) {
                 best = Some((d, Handle::Axis(i)));
             }
@@ -69,7 +77,7 @@ pub fn hit(proj: &Projector, pivot: Vec3, x: f32, y: f32) -> Option<Handle> {
     }
     (0..3u8).map(Handle::Plane).find(|&h| {
         let Handle::Plane(n) = h else { return false };
-        let w = plane_corners(pivot, len, n);
+        let w = plane_corners(proj, pivot, len, n);
         let q: Option<Vec<(f32, f32)>> = w.iter().map(|&p| proj.point(p)).collect();
         q.is_some_and(|q| in_quad((x, y), &[q[0], q[1], q[2], q[3]]))
     })
@@ -121,7 +129,7 @@ pub fn draw(p: &mut Painter, proj: &Projector, pivot: Vec3, hot: Option<Handle>)
     let len = proj.world_per_px(pivot) * ARROW_PX;
     let Some(c) = proj.point(pivot) else { return };
     for n in 0..3u8 {
-        let w = plane_corners(pivot, len, n);
+        let w = plane_corners(proj, pivot, len, n);
         let q: Option<Vec<(f32, f32)>> = w.iter().map(|&x| proj.point(x)).collect();
         if let Some(q) = q {
             let color = if hot == Some(Handle::Plane(n)) {
@@ -129,7 +137,8 @@ pub fn draw(p: &mut Painter, proj: &Projector, pivot: Vec3, hot: Option<Handle>)
             } else {
                 AXIS_COLORS[n as usize]
             };
-            p.fill_polygon(&q, color, 110);
+            // Light enough that what is behind stays readable.
+            p.fill_polygon(&q, color, 70);
             p.polyline(&q, color, 1.0, true);
         }
     }
@@ -142,7 +151,9 @@ pub fn draw(p: &mut Painter, proj: &Projector, pivot: Vec3, hot: Option<Handle>)
         } else {
             AXIS_COLORS[i as usize]
         };
-        p.line(c, tip, color, 2.0);
+        if let Some(start) = shaft_start(c, tip, proj.gap_px()) {
+            p.line(start, tip, color, 2.0);
+        }
         // Arrow head: a triangle along the screen direction.
         let (dx, dy) = (tip.0 - c.0, tip.1 - c.1);
         let l = (dx * dx + dy * dy).sqrt();
@@ -156,7 +167,9 @@ pub fn draw(p: &mut Painter, proj: &Projector, pivot: Vec3, hot: Option<Handle>)
             p.fill_polygon(&head, color, 255);
         }
     }
-    p.fill_circle(c, 3.0, 0xffffff);
+    if proj.gap_px() <= 0.0 {
+        p.fill_circle(c, 3.0, 0xffffff);
+    }
 }
 
 #[cfg(test)]

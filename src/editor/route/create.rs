@@ -104,10 +104,17 @@ impl Editor {
         self.set_status(&format!("Duplicated as {name} (with its keys)"), false);
     }
 
-    /// Puts `id` under `parent` (`None`: top level), one undoable step.
+    /// Puts `id` under `parent` (`None`: top level), one undoable step;
+    /// the object stays where it is in the world (at the frame shown).
     pub fn reparent(&mut self, id: NodeId, parent: Option<NodeId>) {
         let mut after = self.scene.clone();
-        if let Err(e) = create::reparent(&mut after, id, parent) {
+        let pose = self.pose().clone();
+        let world = |p: Option<NodeId>| {
+            p.and_then(|p| pose.world.get(p.0 as usize).copied())
+                .unwrap_or(glam::Mat4::IDENTITY)
+        };
+        let (old, new) = (world(self.scene.node(id).parent), world(parent));
+        if let Err(e) = create::reparent_keeping_world(&mut after, id, parent, old, new) {
             self.set_status(&e, true);
             return;
         }

@@ -80,11 +80,10 @@ impl Editor {
             return status;
         };
         let start = *pb.start_time.get_or_insert(time);
-        let fps = self.scene.settings.fps.max(1e-6) as f64;
-        let dur = self.scene.settings.duration.max(1.0) as f64;
-        let f = pb.start_frame as f64 + (time - start) * fps;
-        // Real time: frames are dropped rather than slowed down; loops.
-        let f = (f + 1e-6).rem_euclid(dur + 1.0).floor() as f32;
+        let start_frame = pb.start_frame;
+        // Real time: frames are dropped rather than slowed down; loops
+        // over the preview range or the whole scene.
+        let f = self.playback_frame(start_frame, time - start);
         let changed = f != self.frame;
         self.frame = f;
         changed || status
@@ -188,6 +187,18 @@ impl Editor {
                 };
                 true
             }
+            Drag::StripPan { last_x } => {
+                self.pan_timeline(x - last_x);
+                self.drag = Drag::StripPan { last_x: x };
+                true
+            }
+            Drag::Preview { from } => {
+                let l = self.layout();
+                let to = l.x_to_frame_in(x, self.time_span());
+                let dur = self.scene.settings.duration;
+                self.timeline.set_preview(from, to, dur);
+                true
+            }
             Drag::StripResize { y0, h0 } => {
                 let (w, h) = (self.width as i32, self.height as i32);
                 let want = h0 + (y0 - y).round() as i32;
@@ -201,7 +212,8 @@ impl Editor {
     pub(in crate::internals::editor) fn seek_to_x(&mut self, x: f32) {
         let l = self.layout();
         self.stop_playback();
-        self.frame = l.x_to_frame(x, self.scene.settings.duration).round();
+        let dur = self.scene.settings.duration.max(0.0);
+        self.frame = l.x_to_frame_in(x, self.time_span()).clamp(0.0, dur).round();
     }
 
     pub(in crate::internals::editor) fn mouse_down(
@@ -254,7 +266,19 @@ impl Editor {
             };
             return;
         }
+        let on_strip = l.ruler.contains(x, y) || l.key_rows.contains(x, y);
+        if button == MouseButton::Middle && on_strip {
+            self.commit_edit();
+            self.drag = Drag::StripPan { last_x: x };
+            return;
+        }
         if button != MouseButton::Left {
+            return;
+        }
+        if l.ruler.contains(x, y) && mods.shift {
+            self.commit_edit();
+            let from = l.x_to_frame_in(x, self.time_span());
+            self.drag = Drag::Preview { from };
             return;
         }
         if l.ruler.contains(x, y) {
@@ -349,6 +373,10 @@ impl Editor {
                 node, moved: true, ..
             } => self.drop_in_list(node, x, y),
             Drag::Context { moved: false, .. } => self.open_context_menu(x as i32, y as i32),
+            Drag::Preview { .. } => {
+                let r = self.timeline.preview;
+                self.set_preview_range(r);
+            }
             _ => {}
         }
     }
@@ -400,7 +428,13 @@ impl Editor {
                 return true;
             }
         }
-        if l.key_rows.contains(x, y) && self.scroll_key_rows(delta) {
+        // Over the key rows the wheel scrolls rows that overflow (Ctrl:
+        // zooms); elsewhere on the ruler and strip it zooms the frames.
+        if l.key_rows.contains(x, y) && !mods.ctrl && self.scroll_key_rows(delta) {
+            return true;
+        }
+        if l.ruler.contains(x, y) || l.key_rows.contains(x, y) {
+            self.zoom_timeline(x, delta);
             return true;
         }
         if l.timeline.contains(x, y) {
@@ -563,6 +597,9 @@ impl Editor {
                     .collect();
                 let c = self.recorded(c, &props);
                 self.execute(&format!("Set {:?}", edit.field), c);
+                if edit.field == FieldId::Duration {
+                    self.note_keys_after_end();
+                }
                 if let FieldValue::Number(x) = value {
                     let kept = edit.field.clamp(x);
                     let name = edit.field.label();
@@ -687,6 +724,10 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn shortcut(&mut self, key: Key, m: Mods) {
+        if key == Key::Char('p') && m.alt {
+            self.set_preview_range(None);
+            return;
+        }
         match (key, m.ctrl, m.shift) {
             (Key::Char('n'), true, _) => self.run_action(Action::New),
             (Key::Char('o'), true, _) => self.run_action(Action::Open),
@@ -712,7 +753,12 @@ impl Editor {
             }
             (Key::F(1), _, _) => self.set_help(true),
             (Key::Char('f'), false, _) => self.frame_selection(),
+            (Key::Home, _, _) if self.layout().timeline.contains(self.mouse.0, self.mouse.1) => {
+                self.reset_timeline_view()
+            }
             (Key::Home, _, _) => self.frame_all(),
+            (Key::Char('['), false, _) => self.preview_end_here(true),
+            (Key::Char(']'), false, _) => self.preview_end_here(false),
             (Key::Escape, _, _) => self.run_action(Action::Mode),
             (Key::Delete, _, _) => self.delete_key(),
             (Key::Char('r'), false, _) => self.run_action(Action::Record),

@@ -182,7 +182,7 @@ impl Editor {
             .into_iter()
             .find(|(rr, _)| *rr == row)?;
         let l = self.layout();
-        let x = l.frame_to_x(frame, self.scene.settings.duration);
+        let x = l.frame_to_x_in(frame, self.time_span());
         Some((x, r.y as f32 + r.h as f32 / 2.0))
     }
 
@@ -202,11 +202,11 @@ impl Editor {
         if x < (r.x + l.key_names_w()) as f32 {
             return Some(Hit::Name(row));
         }
-        let dur = self.scene.settings.duration;
+        let span = self.time_span();
         let best = self
             .row_markers(row)
             .into_iter()
-            .map(|(f, ks)| ((l.frame_to_x(f, dur) - x).abs(), ks))
+            .map(|(f, ks)| ((l.frame_to_x_in(f, span) - x).abs(), ks))
             .filter(|(d, _)| *d <= MARKER_R + 1.0)
             .min_by(|a, b| a.0.total_cmp(&b.0));
         Some(match best {
@@ -220,7 +220,7 @@ impl Editor {
         let l = self.layout();
         let dur = self.scene.settings.duration;
         let cx = l
-            .frame_to_x(self.frame.clamp(0.0, dur.max(0.0)), dur)
+            .frame_to_x_in(self.frame.clamp(0.0, dur.max(0.0)), self.time_span())
             .floor();
         (x - (cx + 0.5)).abs() <= 2.5
     }
@@ -232,7 +232,7 @@ impl Editor {
         b: (f32, f32),
     ) -> Vec<KeyRef> {
         let l = self.layout();
-        let dur = self.scene.settings.duration;
+        let span = self.time_span();
         let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
         let (y0, y1) = (a.1.min(b.1), a.1.max(b.1));
         let mut out: Vec<KeyRef> = Vec::new();
@@ -242,7 +242,7 @@ impl Editor {
                 continue;
             }
             for (f, ks) in self.row_markers(row) {
-                let x = l.frame_to_x(f, dur);
+                let x = l.frame_to_x_in(f, span);
                 if x >= x0 - MARKER_R && x <= x1 + MARKER_R {
                     add_unique(&mut out, ks);
                 }
@@ -385,11 +385,11 @@ impl Editor {
         scale: bool,
     ) {
         let l = self.layout();
-        let dur = self.scene.settings.duration;
-        let ppf = ((l.frame_to_x(dur, dur) - l.frame_to_x(0.0, dur)) / dur.max(1.0)).max(1e-3);
+        let span = self.time_span();
+        let ppf = (l.frame_to_x_in(1.0, span) - l.frame_to_x_in(0.0, span)).max(1e-3);
         let result = if scale {
             let pivot = self.frame;
-            let px = l.frame_to_x(pivot, dur);
+            let px = l.frame_to_x_in(pivot, span);
             let f = if (x0 - px).abs() >= 3.0 {
                 (x - px) / (x0 - px)
             } else {

@@ -82,7 +82,7 @@ impl Editor {
     /// (tests and scripts aim at them).
     pub fn handle_points(&mut self) -> Option<[(f32, f32); 4]> {
         let t = self.target(Tool::Translate)?;
-        crate::editor::manip::translate::points(&self.projector(), t.pivot)
+        crate::editor::manip::translate::points(&self.handle_projector(), t.pivot)
     }
 
     /// Window pixel of world point `p` as the viewport shows it (`None`
@@ -94,7 +94,7 @@ impl Editor {
     /// Pixel positions of the scale pivot and the three scale boxes.
     pub fn scale_points(&mut self) -> Option<[(f32, f32); 4]> {
         let t = self.target(Tool::Scale)?;
-        crate::editor::manip::scale::points(&self.projector(), t.pivot, &t.frame)
+        crate::editor::manip::scale::points(&self.handle_projector(), t.pivot, &t.frame)
     }
 
     /// Pixel of the point of ring `h` at angle `theta` (radians from the
@@ -103,7 +103,7 @@ impl Editor {
     /// the ring's axis, which for the view ring points at the eye).
     pub fn ring_pixel(&mut self, h: Handle, theta: f32) -> Option<(f32, f32)> {
         let t = self.target(Tool::Rotate)?;
-        let proj = self.projector();
+        let proj = self.handle_projector();
         let w =
             crate::editor::manip::rotate::ring_point(&proj, h, t.pivot, self.camera.back(), theta)?;
         proj.point(w)
@@ -116,7 +116,7 @@ impl Editor {
         }
         let tool = self.manip.tool;
         let t = self.target(tool)?;
-        let proj = self.projector();
+        let proj = self.handle_projector();
         match tool {
             Tool::Translate => crate::editor::manip::translate::hit(&proj, t.pivot, x, y),
             Tool::Rotate => {
@@ -135,7 +135,7 @@ impl Editor {
         x: f32,
         y: f32,
     ) -> bool {
-        let proj = self.projector();
+        let proj = self.handle_projector();
         let back = self.camera.back();
         let (mut grab, mut along, mut ring_axis, mut edge_on) = (t.pivot, 0.0, Vec3::Z, None);
         match h {
@@ -215,7 +215,7 @@ impl Editor {
             self.manip.armed = Some((Handle::Body, (x, y)));
         } else if tool == Tool::Rotate && self.mode == crate::editor::Mode::Select {
             if let Some(t) = self.target(Tool::Rotate) {
-                let proj = self.projector();
+                let proj = self.handle_projector();
                 if crate::editor::manip::rotate::in_trackball(&proj, t.pivot, x, y) {
                     self.manip.armed = Some((Handle::Trackball, (x, y)));
                 }
@@ -332,7 +332,7 @@ impl Editor {
         y: f32,
         mods: Mods,
     ) -> Option<Node> {
-        let proj = self.projector();
+        let proj = self.handle_projector();
         let back = self.camera.back();
         let t = d.t;
         match d.handle {
@@ -524,7 +524,7 @@ impl Editor {
         let Some(t) = self.target(tool) else {
             return;
         };
-        let proj = self.projector();
+        let proj = self.handle_projector();
         let active = self
             .manip
             .drag

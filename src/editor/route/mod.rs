@@ -13,4 +13,5 @@ mod onion;
 mod panel;
 mod record;
 mod recovery;
+mod timeline;
 mod views;

@@ -16,7 +16,7 @@ use crate::format::syntax::{AstNode, NodeRef, Route};
 use crate::format::x3d::interp as x3d_interp;
 use crate::scene::{NodeId, NodeKind, Settings};
 use glam::{Quat, Vec3};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::rc::Rc;
 
 /// Frame rates tried, in order, for one that puts every key on a whole frame.
@@ -181,6 +181,9 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
     let mut pending: Vec<Pending> = Vec::new();
     // CoordinateInterpolators: (interpolator, clock, Coordinate node).
     let mut coord_pending: Vec<(NodeRef, Clock, *const AstNode)> = Vec::new();
+    // NormalInterpolators: (interpolator, Normal node); each rides on the
+    // CoordinateInterpolator of the same shape when their keys agree.
+    let mut normal_pending: Vec<(NodeRef, *const AstNode)> = Vec::new();
     for r in routes {
         let mut sources = Vec::new();
         resolve(&r.from, &r.from_field, &mut sources, 0);
@@ -214,12 +217,14 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             continue;
         }
         if interp.kind == "NormalInterpolator" {
-            b.warn_once(
-                "NormalInterpolator",
-                interp.pos,
-                "NormalInterpolator is not imported: the normals of a shape morphed by a \
-                 CoordinateInterpolator are recomputed at every key instead",
-            );
+            let mut targets = Vec::new();
+            resolve(&r.to, &r.to_field, &mut targets, 0);
+            for (t, f) in targets {
+                let t = t.effective();
+                if t.kind == "Normal" && field_name(&f) == "vector" {
+                    normal_pending.push((interp.clone(), Rc::as_ptr(&t)));
+                }
+            }
             continue;
         }
         if interp.kind == "CoordinateInterpolator" {
@@ -388,9 +393,58 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             Err(msg) => b.warn(p.interp.pos, &msg),
         }
     }
+    let mut normals_used: HashSet<*const AstNode> = HashSet::new();
     for (interp, c, coord) in coord_pending {
-        import_coordinates(b, &interp, c, coord, fps);
+        import_coordinates(
+            b,
+            &interp,
+            c,
+            coord,
+            fps,
+            &normal_pending,
+            &mut normals_used,
+        );
     }
+    for (interp, _) in &normal_pending {
+        if !normals_used.contains(&Rc::as_ptr(interp)) {
+            b.warn_once(
+                "NormalInterpolator",
+                interp.pos,
+                "NormalInterpolator not imported: only one that moves with a \
+                 CoordinateInterpolator of the same shape (same keys) is read; normals are \
+                 recomputed at each key instead",
+            );
+        }
+    }
+}
+
+/// The key normals of the NormalInterpolator driving `g`'s Normal with
+/// the same key fractions as `coords`, one vector list per key.
+fn normal_keys(
+    g: &AstNode,
+    coords: &AstNode,
+    pending: &[(NodeRef, *const AstNode)],
+) -> Option<(NodeRef, Vec<Vec<Vec3>>)> {
+    let normal = g.node("normal")?.effective();
+    let (interp, _) = pending.iter().find(|(_, n)| *n == Rc::as_ptr(&normal))?;
+    let fractions = interp.nums("key").unwrap_or(&[]);
+    if fractions != coords.nums("key").unwrap_or(&[]) || fractions.is_empty() {
+        return None;
+    }
+    let kv = interp.nums("keyValue").unwrap_or(&[]);
+    let per = normal.nums("vector").map_or(0, |v| v.len());
+    if per == 0 || kv.len() != per * fractions.len() {
+        return None;
+    }
+    let keys = kv
+        .chunks_exact(per)
+        .map(|k| {
+            k.chunks_exact(3)
+                .map(|p| Vec3::new(p[0] as f32, p[1] as f32, p[2] as f32))
+                .collect()
+        })
+        .collect();
+    Some((interp.clone(), keys))
 }
 
 /// A CoordinateInterpolator as morph targets plus a weights track.
@@ -410,6 +464,8 @@ fn import_coordinates(
     c: Clock,
     coord: *const AstNode,
     fps: f32,
+    normal_pending: &[(NodeRef, *const AstNode)],
+    normals_used: &mut HashSet<*const AstNode>,
 ) {
     let fractions: Vec<f64> = interp.nums("key").unwrap_or(&[]).to_vec();
     let kv = interp.nums("keyValue").unwrap_or(&[]);
@@ -469,7 +525,12 @@ fn import_coordinates(
         Repeat::Constant
     };
     for (geom, textured, mesh) in users {
-        match geometry::ifs_morph(&geom, textured, &keys) {
+        let with_normals = normal_keys(&geom, interp, normal_pending);
+        if let Some((n, _)) = &with_normals {
+            normals_used.insert(Rc::as_ptr(n));
+        }
+        let nk = with_normals.as_ref().map(|(_, k)| k.as_slice());
+        match geometry::ifs_morph(&geom, textured, &keys, nk) {
             Ok(m) => b.scene.meshes[mesh.0 as usize].morph = Some(Box::new(m)),
             Err(e) => {
                 let msg = format!("CoordinateInterpolator not imported: {e}");

@@ -2,7 +2,7 @@
 //! shapes (with shared meshes and materials), lights, viewpoints and the
 //! world settings (NavigationInfo, Background, WorldInfo).
 
-use super::{animation, geometry};
+use super::{animation, geometry, hanim};
 use crate::format::build_log::BuildLog;
 use crate::format::inline;
 use crate::format::lexer::Pos;
@@ -98,6 +98,7 @@ impl Builder {
         for root in &parsed.roots {
             self.add(root, None);
         }
+        hanim::import(self, &parsed.roots);
         animation::import(self, &parsed.routes);
     }
 

@@ -159,7 +159,16 @@ fn ifs_parts(
 /// vertex from its base point to key i's point, and its normal to the one
 /// the same polygons get at key i (normals are recomputed, as VRML
 /// browsers do when coordinates change, unless the node gives its own).
-pub fn ifs_morph(g: &AstNode, textured: bool, keys: &[Vec<Vec3>]) -> Result<Morphs, String> {
+///
+/// `normal_keys` (a NormalInterpolator moving with the points, one vector
+/// list per key, as many as the Normal's) gives each key its own normals;
+/// without it they are recomputed from the key's points.
+pub fn ifs_morph(
+    g: &AstNode,
+    textured: bool,
+    keys: &[Vec<Vec3>],
+    normal_keys: Option<&[Vec<Vec3>]>,
+) -> Result<Morphs, String> {
     let base_points = sub_values(g, "coord", "point").unwrap_or_default();
     let mut msgs = Vec::new();
     let (faces, opts, texcoords) = ifs_parts(g, textured, &base_points);
@@ -190,10 +199,18 @@ pub fn ifs_morph(g: &AstNode, textured: bool, keys: &[Vec<Vec3>]) -> Result<Morp
                 base_points.len()
             ));
         }
+        let mut key_opts = opts.clone();
+        if let Some(normals) = normal_keys.and_then(|n| n.get(i)) {
+            key_opts.normals = binding(
+                Some(normals.clone()),
+                &indices(g, "normalIndex"),
+                g.bool("normalPerVertex", true),
+            );
+        }
         let (m, kc) = polygons::build_textured_corners(
             points,
             faces.clone(),
-            opts.clone(),
+            key_opts,
             texcoords.clone(),
             g.pos,
             &mut msgs,
@@ -217,6 +234,40 @@ pub fn ifs_morph(g: &AstNode, textured: bool, keys: &[Vec<Vec3>]) -> Result<Morp
         targets.push(MorphTarget::new(format!("key_{i}"), dp, dn));
     }
     Morphs::new(base.positions.len(), targets, Vec::new()).map_err(|e| e.to_string())
+}
+
+/// For every vertex of an IndexedFaceSet's mesh (as `mesh` builds it),
+/// the index of the `coord` point it came from: per-point data such as
+/// H-Anim skin weights (`skinCoordIndex`) follow the points into the mesh,
+/// whose vertices are split where normals or texture coordinates differ.
+pub fn ifs_vertex_points(g: &AstNode, textured: bool) -> Result<Vec<u32>, String> {
+    let points = sub_values(g, "coord", "point").unwrap_or_default();
+    let mut msgs = Vec::new();
+    let (faces, opts, texcoords) = ifs_parts(g, textured, &points);
+    // The builder clears faces that index past the points (it keeps them
+    // as empty faces, so corners still line up with this flattening).
+    let corner_points: Vec<u32> = polygons::drop_bad(faces.clone(), points.len())
+        .into_iter()
+        .flatten()
+        .collect();
+    let (mesh, corners) =
+        polygons::build_textured_corners(&points, faces, opts, texcoords, g.pos, &mut msgs)
+            .ok_or("the IndexedFaceSet has no mesh")?;
+    if corners.len() != corner_points.len() {
+        return Err("the mesh's corners do not follow the coordIndex".into());
+    }
+    let mut out = vec![u32::MAX; mesh.positions.len()];
+    for (c, &v) in corners.iter().enumerate() {
+        if let Some(slot) = out.get_mut(v as usize) {
+            if *slot == u32::MAX {
+                *slot = corner_points[c];
+            }
+        }
+    }
+    if out.contains(&u32::MAX) {
+        return Err("a mesh vertex comes from no coordIndex corner".into());
+    }
+    Ok(out)
 }
 
 fn indexed_line_set(g: &AstNode, msgs: &mut Msgs) -> Option<Mesh> {

@@ -6,6 +6,7 @@ mod animation;
 mod appearance;
 mod build;
 mod geometry;
+mod hanim;
 mod text;
 pub mod write;
 mod write_morph;

@@ -19,8 +19,9 @@
 //!   Appearance's texture when the Appearance has none.
 //! * Grouping: StaticGroup → Group; X3D's Switch and LOD `children` →
 //!   VRML97's `choice` and `level`; H-Anim (ISO/IEC 19774) humanoids,
-//!   joints, sites → Transform and segments → Group, so characters load
-//!   as rigid joint hierarchies (skin shown in its bind pose).
+//!   joints, sites → Transform and segments → Group (each marked with a
+//!   `hanim` field naming what it was), so characters load as joint
+//!   hierarchies that `vrml97::hanim` then reads as skins and morphs.
 //! * TextureBackground → Background (ImageTexture faces → the *Url fields).
 //! * UNIT angle (§4.3.6): every angle field is converted to radians here;
 //!   UNIT length is applied once to the whole scene by the reader.
@@ -64,8 +65,9 @@ pub fn rewrite(n: &mut AstNode, head: &X3dHead, warnings: &mut Warnings) {
         "Switch" => rename(n, "children", "choice"),
         "LOD" => rename(n, "children", "level"),
         "HAnimHumanoid" => humanoid(n),
-        "HAnimJoint" | "HAnimSite" => n.kind = "Transform".into(),
-        "HAnimSegment" => n.kind = "Group".into(),
+        "HAnimJoint" | "HAnimSite" => hanim(n, "Transform"),
+        "HAnimSegment" => hanim(n, "Group"),
+        "HAnimDisplacer" => mark_hanim(n),
         "TextureBackground" => texture_background(n),
         _ => {}
     }
@@ -295,8 +297,21 @@ fn humanoid(n: &mut AstNode) {
     for f in ["skeleton", "humanoidBody", "skin", "viewpoints"] {
         children.extend(n.nodes(f).iter().cloned());
     }
-    n.kind = "Transform".into();
+    hanim(n, "Transform");
     set(n, "children", Value::Nodes(children));
+}
+
+/// An H-Anim node becomes `kind`, remembering what it was in a `hanim`
+/// field: `vrml97::hanim` reads humanoids, joints and displacers as skins
+/// and morphs once the tree is built.
+fn hanim(n: &mut AstNode, kind: &str) {
+    mark_hanim(n);
+    n.kind = kind.into();
+}
+
+fn mark_hanim(n: &mut AstNode) {
+    let was = Value::Words(vec![n.kind.clone()]);
+    set(n, "hanim", was);
 }
 
 /// TextureBackground (§24.4.4) → Background with url fields.
