@@ -66,7 +66,7 @@ pub(super) enum Base {
     /// A key panel field: the animation and selected keys at press.
     Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
     /// A morph slider (`rig/morph.rs`).
-    Morph(Box<super::rig::morph::MorphBase>),
+    Morph(Box<super::rig::state::MorphBase>),
     /// The clip name field (`rig/clips.rs`): typed, never dragged.
     Clip,
 }

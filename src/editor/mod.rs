@@ -210,7 +210,7 @@ pub struct Editor {
     layer: SceneLayer,
     painter: Painter,
     /// Skeleton, IK, morph and clip tools' state (`rig/`).
-    rig: rig::RigState,
+    rig: rig::state::RigState,
 }
 
 impl Editor {
@@ -269,7 +269,7 @@ impl Editor {
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
             },
             painter: Painter::new(),
-            rig: rig::RigState::default(),
+            rig: rig::state::RigState::default(),
         };
         e.frame_all();
         e

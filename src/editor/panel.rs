@@ -57,7 +57,7 @@ pub enum Action {
     /// Key panel buttons (`keyprops.rs`).
     Key(super::keyprops::KeyAction),
     /// Clip buttons and menu items (`rig/clips.rs`).
-    Clip(super::rig::clips::ClipAction),
+    Clip(super::rig::clip_action::ClipAction),
 }
 
 /// Which list a row belongs to.

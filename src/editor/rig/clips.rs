@@ -22,21 +22,7 @@ use crate::scene::{Clip, Scene};
 use crate::ui::text;
 use crate::ui::Rect;
 
-/// What a clip button or menu item does.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ClipAction {
-    /// Play clip i (0-based).
-    Play(usize),
-    /// The next (+1) or previous (-1) clip.
-    Step(i32),
-    New,
-    Duplicate,
-    /// Start typing the playing clip's new name.
-    Rename,
-    Delete,
-    /// Open the clip menu under the Scene header's button.
-    Menu,
-}
+pub use super::clip_action::ClipAction;
 
 /// Most clips listed by name in the menu (the `<` `>` buttons reach all).
 const MENU_CLIPS: usize = 24;

@@ -22,39 +22,12 @@ use crate::scene::{Node, NodeId, Scene};
 use crate::ui::{Painter, Rect};
 use glam::{Quat, Vec3};
 
+pub use super::state::{IkDrag, IkPending};
+
 /// The target's colour (the IK handle).
 const IK: u32 = 0xf0d040;
 /// How close (pixels) a press must be to the end joint to grab the target.
 const GRAB_PX: f32 = 9.0;
-
-/// A running IK drag: the chain as it was at the press.
-#[derive(Clone, Debug)]
-pub struct IkDrag {
-    root: NodeId,
-    mid: NodeId,
-    chain: Chain,
-    /// Bend direction at the press (the chain keeps bending that way).
-    pole: Vec3,
-    /// The drag plane: through the end joint, facing the eye.
-    plane: (Vec3, Vec3),
-    /// Root and middle joint as shown at the press.
-    posed: [Node; 2],
-    /// World rotation of the root's parent, and of the root, at the press.
-    parent_rot: Quat,
-    root_rot: Quat,
-    /// Where the mouse put the target last (drawn).
-    target: Vec3,
-}
-
-/// Two joints shown with new rotations over their tracks (a drag in
-/// progress, or its result waiting for K on animated joints).
-#[derive(Clone, Debug, PartialEq)]
-pub struct IkPending {
-    pub joints: [(NodeId, Node); 2],
-    pub frame: f32,
-    /// History revision when made: undo or any edit drops it.
-    pub revision: u64,
-}
 
 /// The rotation part of a world matrix (scale and shear ignored).
 fn world_rotation(pose: &crate::anim::Pose, id: Option<NodeId>) -> Quat {

@@ -10,23 +10,12 @@
 //! methods, like `route/`.
 
 pub mod bones;
+pub mod clip_action;
 pub mod clips;
 pub mod ik;
 pub mod morph;
+pub mod state;
 mod view;
-
-/// The rig tools' own state, one field of the `Editor`.
-#[derive(Clone, Debug, Default)]
-pub struct RigState {
-    /// A morph slider change shown but not recorded (`morph.rs`).
-    pub morph_pending: Option<morph::MorphPending>,
-    /// The end joint whose IK handle is on (I).
-    pub ik: Option<crate::scene::NodeId>,
-    /// An IK drag in progress.
-    pub ik_drag: Option<ik::IkDrag>,
-    /// An IK pose shown but not recorded.
-    pub ik_pending: Option<ik::IkPending>,
-}
 
 impl crate::editor::Editor {
     /// The scene as shown while a morph or IK change is pending (their

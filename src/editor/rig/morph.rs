@@ -20,27 +20,7 @@ use crate::scene::{MeshId, Morphs, NodeId, NodeKind, Scene};
 use crate::ui::text::CHAR_W;
 use crate::ui::{theme, Painter, Rect};
 
-/// The weights a slider change shows before it is recorded (or while it
-/// waits for K on an animated track).
-#[derive(Clone, Debug, PartialEq)]
-pub struct MorphPending {
-    /// The node the weights track drives (the selection).
-    pub target: NodeId,
-    /// The morphed shape shown (the target or its first morphed child).
-    pub shape: NodeId,
-    pub frame: f32,
-    pub weights: Weights,
-    /// History revision when it was made: undo or any edit drops it.
-    pub revision: u64,
-}
-
-/// What a slider drag started from.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MorphBase {
-    pub target: NodeId,
-    pub shape: NodeId,
-    pub start: Weights,
-}
+pub use super::state::{MorphBase, MorphPending};
 
 /// The mesh of shape node `id` when it has morph targets.
 fn morph_mesh(scene: &Scene, id: NodeId) -> Option<(MeshId, &Morphs)> {

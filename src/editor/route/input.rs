@@ -584,7 +584,7 @@ impl Editor {
                 let v = v.and_then(|w| {
                     Self::morph_value(
                         id,
-                        &crate::editor::rig::morph::MorphBase {
+                        &crate::editor::rig::state::MorphBase {
                             start: w,
                             ..(*b).clone()
                         },
