@@ -122,16 +122,20 @@ pub fn split_glb(bytes: &[u8]) -> Result<(&[u8], Option<&[u8]>)> {
     Ok((json, bin))
 }
 
+/// A JSON syntax error, placed at its line and column.
+pub fn json_error(e: &serde_json::Error) -> GltfError {
+    let mut err = GltfError::whole(format!("not valid glTF JSON: {e}"));
+    err.line = e.line() as u32;
+    err.column = e.column() as u32;
+    err
+}
+
 /// Parses and validates the JSON document. Required extensions animed does
 /// not implement fail here, naming them; the crate's own validation errors
 /// are reported with their JSON pointer.
 pub fn parse_document(json: &[u8], warnings: &mut Vec<String>) -> Result<Document> {
-    let root: gltf::json::Root = gltf::json::deserialize::from_slice(json).map_err(|e| {
-        let mut err = GltfError::whole(format!("not valid glTF JSON: {e}"));
-        err.line = e.line() as u32;
-        err.column = e.column() as u32;
-        err
-    })?;
+    let root: gltf::json::Root =
+        gltf::json::deserialize::from_slice(json).map_err(|e| json_error(&e))?;
     for (i, ext) in root.extensions_required.iter().enumerate() {
         if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
             return Err(GltfError::at(

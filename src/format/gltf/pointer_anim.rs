@@ -27,7 +27,7 @@
 //! channels. Anything else is a warning naming the pointer.
 
 use super::anim::{cubic_rows, frames_of, sampler_values};
-use super::container::{GltfError, Result};
+use super::container::{json_error, GltfError, Result};
 use super::material::{srgb_from_linear, Pbr};
 use super::pointer::pointer;
 use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
@@ -58,12 +58,7 @@ pub fn take(json: &[u8]) -> Result<Option<(Vec<u8>, Vec<PointerChannel>)>> {
     if !contains(json, EXTENSION.as_bytes()) {
         return Ok(None);
     }
-    let mut root: Json = serde_json::from_slice(json).map_err(|e| {
-        let mut err = GltfError::whole(format!("not valid glTF JSON: {e}"));
-        err.line = e.line() as u32;
-        err.column = e.column() as u32;
-        err
-    })?;
+    let mut root: Json = serde_json::from_slice(json).map_err(|e| json_error(&e))?;
     let mut taken = Vec::new();
     let Some(animations) = root.get_mut("animations").and_then(Json::as_array_mut) else {
         return Ok(None);
