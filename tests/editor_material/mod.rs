@@ -28,7 +28,10 @@ fn run(ed: &mut Editor, s: &str) {
 
 /// Debug texts of the widgets shown now.
 fn shown(ed: &Editor) -> Vec<String> {
-    ed.widgets().iter().map(|w| format!("{:?}", w.kind)).collect()
+    ed.widgets()
+        .iter()
+        .map(|w| format!("{:?}", w.kind))
+        .collect()
 }
 
 fn has(ed: &Editor, needle: &str) -> bool {
@@ -63,7 +66,12 @@ fn diffuse_track(ed: &Editor, m: MaterialId) -> Option<Vec<(f32, Value)>> {
         of: TargetRef::Material(m),
         property: Property::Diffuse,
     })?;
-    Some((0..t.key_count()).filter_map(|i| t.key(i)).map(|k| (k.frame, k.value)).collect())
+    Some(
+        (0..t.key_count())
+            .filter_map(|i| t.key(i))
+            .map(|k| (k.frame, k.value))
+            .collect(),
+    )
 }
 
 #[test]
@@ -76,10 +84,20 @@ fn the_panel_shows_the_textured_boxs_material() {
     let sh = ed.material_panel().expect("open on the box");
     assert_eq!((sh.shapes, sh.differ), (1, false));
     assert!(has(&ed, "Header(\"Material\")"));
-    assert!(has(&ed, "text: \"Brick\""), "its DEF name: {:?}", shown(&ed));
+    assert!(
+        has(&ed, "text: \"Brick\""),
+        "its DEF name: {:?}",
+        shown(&ed)
+    );
     assert!(has(&ed, "text: \"brick_imagemagick.png\""));
     assert!(has(&ed, "label: \"S:Clamp\"") && has(&ed, "label: \"T:Rep\""));
-    for f in ["Diffuse(0)", "Specular(2)", "Emissive(1)", "Shininess", "Transparency"] {
+    for f in [
+        "Diffuse(0)",
+        "Specular(2)",
+        "Emissive(1)",
+        "Shininess",
+        "Transparency",
+    ] {
         assert!(has(&ed, &format!("Field(Material({f}))")), "{f}");
     }
     // M closes it; the object's fields are back.
@@ -109,16 +127,29 @@ fn a_group_shows_its_first_shape_and_says_how_many_differ() {
 fn typed_values_and_expressions_are_one_undo_step_each_and_clamps_are_said() {
     let mut ed = scene();
     let m = material_of(&mut ed, "Crate");
-    run(&mut ed, "key m\nclick-field Material(Diffuse(1))\ntype 0.25*2\nkey enter");
+    run(
+        &mut ed,
+        "key m\nclick-field Material(Diffuse(1))\ntype 0.25*2\nkey enter",
+    );
     let mat = |ed: &Editor| ed.scene().materials[m.0 as usize].clone();
     assert_eq!(mat(&ed).diffuse, Vec3::new(0.9, 0.5, 0.7));
     assert_eq!(ed.history().labels().count(), 1);
-    assert!(ed.status().text.contains("Diffuse g = 0.5"), "{:?}", ed.status());
-    run(&mut ed, "click-field Material(Shininess)\ntype 3\nkey enter");
+    assert!(
+        ed.status().text.contains("Diffuse g = 0.5"),
+        "{:?}",
+        ed.status()
+    );
+    run(
+        &mut ed,
+        "click-field Material(Shininess)\ntype 3\nkey enter",
+    );
     assert_eq!(mat(&ed).shininess, 1.0);
     let t = &ed.status().text;
     assert!(t.contains("Shininess: 3") && t.contains("set to 1"), "{t}");
-    run(&mut ed, "click-field Material(Transparency)\ntype half\nkey enter");
+    run(
+        &mut ed,
+        "click-field Material(Transparency)\ntype half\nkey enter",
+    );
     assert!(ed.status().error && ed.status().text.contains("'half' is not a number"));
     assert_eq!(ed.history().labels().count(), 2);
     run(&mut ed, "key ctrl+z");
@@ -142,7 +173,10 @@ fn an_animated_material_keeps_a_change_pending_until_k_and_record_mode_keys() {
     let before = diffuse_track(&ed, m).expect("the ColorInterpolator's track");
     assert!(before.iter().all(|(f, _)| *f != 54.0), "{before:?}");
     run(&mut ed, "key m\nclick-field Frame\ntype 54\nkey enter");
-    run(&mut ed, "click-field Material(Diffuse(2))\ntype 0.9\nkey enter");
+    run(
+        &mut ed,
+        "click-field Material(Diffuse(2))\ntype 0.9\nkey enter",
+    );
     // Pending: shown, not stored, no undo step.
     assert_eq!(diffuse_track(&ed, m).unwrap(), before);
     assert_eq!(ed.history().labels().count(), 0);
@@ -153,15 +187,23 @@ fn an_animated_material_keeps_a_change_pending_until_k_and_record_mode_keys() {
     let after = diffuse_track(&ed, m).unwrap();
     assert_eq!(after.len(), before.len() + 1, "{after:?}");
     let k = after.iter().find(|(f, _)| *f == 54.0).expect("a key at 54");
-    let Value::Vec3(c) = k.1 else { panic!("colour") };
+    let Value::Vec3(c) = k.1 else {
+        panic!("colour")
+    };
     assert!((c.z - 0.9).abs() < 1e-6, "{c}");
     assert_eq!(ed.history().labels().count(), 1);
     // A new frame drops a pending change.
-    run(&mut ed, "click-field Material(Diffuse(0))\ntype 0.1\nkey enter\nkey right");
+    run(
+        &mut ed,
+        "click-field Material(Diffuse(0))\ntype 0.1\nkey enter\nkey right",
+    );
     assert!(ed.material_pending().is_none());
     // Record mode keys an unanimated property at once, one undo step.
     run(&mut ed, "key r\nclick-field Frame\ntype 24\nkey enter");
-    run(&mut ed, "click-field Material(Shininess)\ntype 0.7\nkey enter");
+    run(
+        &mut ed,
+        "click-field Material(Shininess)\ntype 0.7\nkey enter",
+    );
     let shin = ed
         .scene()
         .animation

@@ -33,7 +33,11 @@ pub enum MatField {
 impl MatField {
     /// The five rows' fields, in panel order.
     pub const ROWS: [&'static [MatField]; 4] = [
-        &[MatField::Diffuse(0), MatField::Diffuse(1), MatField::Diffuse(2)],
+        &[
+            MatField::Diffuse(0),
+            MatField::Diffuse(1),
+            MatField::Diffuse(2),
+        ],
         &[
             MatField::Specular(0),
             MatField::Specular(1),
@@ -279,7 +283,10 @@ mod tests {
     fn a_group_shows_its_first_shape_and_says_when_others_differ() {
         let (s, g) = two_shapes(false);
         let sh = shown(&s, g).unwrap();
-        assert_eq!((sh.material, sh.shapes, sh.differ), (MaterialId(0), 2, true));
+        assert_eq!(
+            (sh.material, sh.shapes, sh.differ),
+            (MaterialId(0), 2, true)
+        );
         let (s, g) = two_shapes(true);
         assert!(!shown(&s, g).unwrap().differ, "names alone do not differ");
         let mut e = Scene::new();

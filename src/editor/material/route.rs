@@ -207,7 +207,10 @@ impl Editor {
         if !self.record && animated {
             self.show_material(id, vec![p], after);
             let msg = note.unwrap_or_else(|| "Pending".into());
-            self.set_status(&format!("{msg}: K keys the material, new frame drops it"), false);
+            self.set_status(
+                &format!("{msg}: K keys the material, new frame drops it"),
+                false,
+            );
             return;
         }
         self.material.pending = None;
@@ -368,7 +371,11 @@ impl Editor {
     }
 
     /// The "Mat" button in the object header that opens the panel.
-    pub(in crate::internals::editor) fn material_switch(&self, header: Rect, out: &mut Vec<Widget>) {
+    pub(in crate::internals::editor) fn material_switch(
+        &self,
+        header: Rect,
+        out: &mut Vec<Widget>,
+    ) {
         let Some(sel) = self.selection else { return };
         if shown(&self.scene, sel).is_none() {
             return;
@@ -376,7 +383,9 @@ impl Editor {
         // Left of the key panel's "Keys" button when that shows.
         let right = out
             .iter()
-            .filter(|w| w.rect.y == header.y + 1 && header.contains(w.rect.x as f32, w.rect.y as f32))
+            .filter(|w| {
+                w.rect.y == header.y + 1 && header.contains(w.rect.x as f32, w.rect.y as f32)
+            })
             .map(|w| w.rect.x)
             .min()
             .unwrap_or(header.right());
@@ -398,7 +407,12 @@ impl Editor {
         out.push(w(l.header, WidgetKind::Header("Material".into())));
         let bw = text::width("Obj") + 6;
         out.push(button(
-            Rect::new(l.header.right() - bw - 2, l.header.y + 1, bw, l.header.h - 2),
+            Rect::new(
+                l.header.right() - bw - 2,
+                l.header.y + 1,
+                bw,
+                l.header.h - 2,
+            ),
             "Obj",
             Action::Material(MatAction::Close),
             false,
@@ -426,9 +440,21 @@ impl Editor {
         }
         if ok(&se) {
             let (a, b) = se.take_left(se.w / 2);
-            field_row(out, a, "Shin", lw, &[FieldId::Material(MatField::Shininess)]);
+            field_row(
+                out,
+                a,
+                "Shin",
+                lw,
+                &[FieldId::Material(MatField::Shininess)],
+            );
             let b = Rect::new(b.x + 2, b.y, b.w - 2, b.h);
-            field_row(out, b, "Tra", 4 * CHAR_W, &[FieldId::Material(MatField::Transparency)]);
+            field_row(
+                out,
+                b,
+                "Tra",
+                4 * CHAR_W,
+                &[FieldId::Material(MatField::Transparency)],
+            );
         }
         let m = self.scene.materials.get(sh.material.0 as usize);
         let tex = m.and_then(|m| super::texture_name(&self.scene, m));

@@ -80,7 +80,11 @@ mod tests {
         assert_eq!(p.len(), 900);
         assert!(p.iter().all(|&c| c == p[0]), "uniform average");
         let (r, b) = (p[0] >> 16, p[0] & 0xff);
-        assert!((100..=155).contains(&r) && (100..=155).contains(&b), "{:06x}", p[0]);
+        assert!(
+            (100..=155).contains(&r) && (100..=155).contains(&b),
+            "{:06x}",
+            p[0]
+        );
     }
 
     #[test]
