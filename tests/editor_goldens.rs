@@ -5,6 +5,8 @@
 #[path = "common/golden.rs"]
 mod golden;
 
+mod editor_material;
+
 use animed::internals::editor::panel::WidgetKind;
 use animed::internals::editor::{script, Editor};
 use animed::internals::scene::{NodeId, Scene};

@@ -7,7 +7,7 @@
 //! state at press and the state at release.
 
 use crate::anim::Animation;
-use crate::scene::{Node, NodeId, Scene, Settings};
+use crate::scene::{Material, MaterialId, Node, NodeId, Scene, Settings};
 
 /// One undoable change.
 #[derive(Clone, Debug)]
@@ -33,6 +33,12 @@ pub enum Command {
         before: Box<Scene>,
         after: Box<Scene>,
     },
+    /// Replace one material (the material panel).
+    SetMaterial {
+        id: MaterialId,
+        before: Box<Material>,
+        after: Box<Material>,
+    },
     /// Several commands as one step (applied in order, reverted in reverse).
     Group(Vec<Command>),
 }
@@ -47,6 +53,12 @@ fn put_node(scene: &mut Scene, id: NodeId, n: &Node) {
     }
 }
 
+fn put_material(scene: &mut Scene, id: MaterialId, m: &Material) {
+    if let Some(slot) = scene.materials.get_mut(id.0 as usize) {
+        *slot = m.clone();
+    }
+}
+
 impl Command {
     pub fn apply(&self, scene: &mut Scene) {
         match self {
@@ -54,6 +66,7 @@ impl Command {
             Command::SetSettings { after, .. } => scene.settings = after.clone(),
             Command::SetAnimation { after, .. } => scene.animation = (**after).clone(),
             Command::ReplaceScene { after, .. } => *scene = (**after).clone(),
+            Command::SetMaterial { id, after, .. } => put_material(scene, *id, after),
             Command::Group(cs) => cs.iter().for_each(|c| c.apply(scene)),
         }
     }
@@ -64,6 +77,7 @@ impl Command {
             Command::SetSettings { before, .. } => scene.settings = before.clone(),
             Command::SetAnimation { before, .. } => scene.animation = (**before).clone(),
             Command::ReplaceScene { before, .. } => *scene = (**before).clone(),
+            Command::SetMaterial { id, before, .. } => put_material(scene, *id, before),
             Command::Group(cs) => cs.iter().rev().for_each(|c| c.revert(scene)),
         }
     }
@@ -76,6 +90,7 @@ impl Command {
             Command::SetSettings { before, after } => before == after,
             Command::SetAnimation { before, after } => before == after,
             Command::ReplaceScene { .. } => false,
+            Command::SetMaterial { before, after, .. } => before == after,
             Command::Group(cs) => cs.iter().all(Command::is_noop),
         }
     }

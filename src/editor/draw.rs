@@ -110,6 +110,7 @@ impl Editor {
         for w in &widgets {
             self.draw_widget(p, w);
         }
+        self.draw_material_extras(p);
         if let Drag::RowMove {
             node, moved: true, ..
         } = &self.drag
@@ -191,6 +192,9 @@ impl Editor {
         }
         if id == FieldId::ClipName {
             return self.clip_name();
+        }
+        if let FieldId::Material(f) = id {
+            return self.material_text(f, max_chars);
         }
         if let FieldId::Morph(i) = id {
             let v = self.morph_text(i);

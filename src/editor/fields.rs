@@ -30,6 +30,8 @@ pub enum FieldId {
     Morph(u8),
     /// The playing clip's name (`rig/clips.rs`).
     ClipName,
+    /// A value of the selection's material (`material/`).
+    Material(super::material::MatField),
 }
 
 /// A field's value.
@@ -105,6 +107,7 @@ impl FieldId {
             FieldId::Key(k) => format!("Key {k:?}"),
             FieldId::Morph(i) => format!("Weight {i}"),
             FieldId::ClipName => "Clip name".into(),
+            FieldId::Material(m) => m.label(),
             other => format!("{other:?}"),
         }
     }
@@ -114,7 +117,10 @@ impl FieldId {
         match self {
             FieldId::Fps | FieldId::Duration | FieldId::Frame => 0.25,
             FieldId::Rotation(_) | FieldId::LightCutOff => 0.5,
-            FieldId::LightColor(_) | FieldId::LightDirection(_) | FieldId::Morph(_) => 0.005,
+            FieldId::LightColor(_)
+            | FieldId::LightDirection(_)
+            | FieldId::Morph(_)
+            | FieldId::Material(_) => 0.005,
             FieldId::LightIntensity | FieldId::Scale(_) => 0.01,
             _ => 0.02,
         }
@@ -128,6 +134,7 @@ impl FieldId {
             FieldId::Frame => v.max(0.0),
             FieldId::LightColor(_) | FieldId::LightIntensity => v.clamp(0.0, 1.0),
             FieldId::LightCutOff => v.clamp(0.0, 90.0),
+            FieldId::Material(m) => m.clamp(v),
             _ => v,
         }
     }

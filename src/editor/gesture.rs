@@ -69,6 +69,8 @@ pub(super) enum Base {
     Morph(Box<super::rig::state::MorphBase>),
     /// The clip name field (`rig/clips.rs`): typed, never dragged.
     Clip,
+    /// A material field (`material/`).
+    Material(Box<super::material::MatBase>),
 }
 
 /// Pixels the mouse may move before a press counts as a drag.

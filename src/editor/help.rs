@@ -16,6 +16,7 @@ pub const HELP: &[(&str, &str)] = &[
     ("Ctrl (drag)", "snap: grid, 15 degrees, 0.1"),
     ("K", "key the changed properties"),
     ("O", "onion skin at the previous/next key"),
+    ("M", "material panel: colours, shininess, texture"),
     ("", "Time"),
     ("Space, Ctrl+P", "play / stop"),
     ("Left / Right", "previous / next frame"),

@@ -30,6 +30,7 @@ pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
 pub mod manip;
+pub mod material;
 pub mod menu;
 pub mod motion_path;
 mod onion;
@@ -211,6 +212,8 @@ pub struct Editor {
     painter: Painter,
     /// Skeleton, IK, morph and clip tools' state (`rig/`).
     rig: rig::state::RigState,
+    /// The material panel's state (`material/`).
+    material: material::MatState,
 }
 
 impl Editor {
@@ -270,6 +273,7 @@ impl Editor {
             },
             painter: Painter::new(),
             rig: rig::state::RigState::default(),
+            material: material::MatState::default(),
         };
         e.frame_all();
         e

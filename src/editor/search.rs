@@ -56,6 +56,11 @@ pub fn commands() -> Vec<MenuItem> {
         MenuItem::new("Grid on/off", "G", Action::Grid),
         MenuItem::new("Onion skin", "O", Action::Onion),
         MenuItem::new("Graph editor", "Shift+F6", Action::ToggleGraph),
+        MenuItem::new(
+            "Material panel",
+            "M",
+            Action::Material(super::material::MatAction::Open),
+        ),
         MenuItem::new("Viewport render style", "", Action::ViewStyle),
         MenuItem::new("Select / view mode", "Esc", Action::Mode),
     ]);

@@ -7,6 +7,7 @@
 use super::fields::FieldId;
 use super::keyprops::KeyAction;
 use super::manip::Tool;
+use super::material::MatAction;
 use super::panel::{Action, WidgetKind};
 
 /// Seconds the mouse rests before the tooltip shows.
@@ -100,6 +101,11 @@ fn action_text(a: &Action) -> Option<&'static str> {
         Action::Key(KeyAction::ToggleBool) => "Flip the selected keys' on/off value",
         Action::Key(KeyAction::ShowNode) => "Show the object's properties",
         Action::Key(KeyAction::ShowKeys) => "Show the selected keys",
+        Action::Material(MatAction::Open) => "Material: colours, shininess, texture (M)",
+        Action::Material(MatAction::Close) => "Back to the object's properties (M)",
+        Action::Material(MatAction::WrapS) => "Texture wrap across (S): repeat or clamp",
+        Action::Material(MatAction::WrapT) => "Texture wrap up (T): repeat or clamp",
+        Action::Material(MatAction::RemoveTexture) => "Take the texture off (Ctrl+Z undoes)",
         _ => return None,
     })
 }
@@ -110,6 +116,7 @@ fn field_text(id: FieldId) -> String {
         FieldId::Duration => "Scene length in frames (2*24 works)".into(),
         FieldId::Frame => "Current frame: type one (Left/Right step)".into(),
         FieldId::Name => "Object name: click to type".into(),
+        FieldId::Material(m) => format!("{}: 0..1, drag or type; K keys it", m.label()),
         other => format!("{}: drag to change, click to type", other.label()),
     }
 }
@@ -165,6 +172,9 @@ mod tests {
             Action::Onion,
             Action::ToggleGraph,
             Action::ViewStyle,
+            Action::Material(MatAction::Open),
+            Action::Material(MatAction::WrapS),
+            Action::Material(MatAction::RemoveTexture),
         ] {
             let t = text_for(&button(a).unwrap()).unwrap_or_default();
             // Short enough for the smallest window (480 px, 7 px glyphs).

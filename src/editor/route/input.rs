@@ -501,6 +501,9 @@ impl Editor {
         if id == FieldId::ClipName {
             return Some(Base::Clip);
         }
+        if let FieldId::Material(_) = id {
+            return self.material_base().map(|b| Base::Material(Box::new(b)));
+        }
         let sel = self.selection?;
         // Fields edit what is shown: animated values at the current frame.
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
@@ -518,6 +521,10 @@ impl Editor {
             Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
             Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
             Base::Clip => Some(FieldValue::Text(self.clip_name())),
+            Base::Material(b) => match id {
+                FieldId::Material(f) => Some(FieldValue::Number(f.read(&b.start))),
+                _ => None,
+            },
         }
     }
 
@@ -530,7 +537,9 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_) | Base::Keys(..) | Base::Morph(_) | Base::Clip => None,
+            Base::Frame(_) | Base::Keys(..) | Base::Morph(_) | Base::Clip | Base::Material(_) => {
+                None
+            }
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -568,6 +577,10 @@ impl Editor {
             self.drag_morph(id, b, v);
             return;
         }
+        if let (Base::Material(b), FieldId::Material(f)) = (base, id) {
+            self.drag_material(f, b, v);
+            return;
+        }
         if let Some(c) = self.field_command(id, base, &FieldValue::Number(v)) {
             // Preview from the base state: the command's `after` is absolute.
             self.preview(&c);
@@ -578,6 +591,11 @@ impl Editor {
         let label = format!("Drag {id:?}");
         match base {
             Base::Frame(_) | Base::Clip => {}
+            Base::Material(b) => {
+                if let FieldId::Material(f) = id {
+                    self.finish_material_drag(f, &b);
+                }
+            }
             Base::Keys(before, _) => self.finish_key_field_drag(id, before),
             Base::Morph(b) => {
                 let v = self.morph_pending().map(|p| p.weights);
@@ -637,6 +655,12 @@ impl Editor {
         }
         if let (FieldId::ClipName, FieldValue::Text(t)) = (edit.field, &value) {
             self.rename_clip(t);
+            return;
+        }
+        if let (FieldId::Material(f), FieldValue::Number(x)) = (edit.field, &value) {
+            if let Some(b) = self.material_base() {
+                self.set_material(f, &b, *x);
+            }
             return;
         }
         if let (FieldId::Morph(_), FieldValue::Number(x)) = (edit.field, &value) {
@@ -778,6 +802,7 @@ impl Editor {
                 Base::Frame(f) => self.frame = f,
                 Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
                 Base::Clip => {}
+                Base::Material(_) => self.cancel_material_drag(),
                 Base::Morph(_) => {
                     self.rig.morph_pending = None;
                     self.scene_rev += 1;
@@ -823,6 +848,7 @@ impl Editor {
             }
             (Key::Char('d'), false, true) => self.run_action(Action::Duplicate),
             (Key::Char('i'), false, false) => self.toggle_ik(),
+            (Key::Char('m'), false, false) => self.toggle_material_panel(),
             (Key::Char('c'), false, false) => {
                 let (x, y) = self.mouse;
                 self.open_clip_menu(x as i32, y as i32);
@@ -890,6 +916,7 @@ impl Editor {
         }
         match a {
             Action::Clip(c) => self.clip_action(c),
+            Action::Material(m) => self.material_action(m),
             Action::New => self.ask_unsaved(After::New),
             Action::Open => self.ask_unsaved(After::Open),
             Action::Import => self.browse(Purpose::Import, None),

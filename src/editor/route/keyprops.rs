@@ -407,6 +407,9 @@ impl Editor {
     /// Rows of the properties section: the key panel's, or the node's plus
     /// its key list row.
     pub(in crate::internals::editor) fn section_rows(&self) -> i32 {
+        if let Some(n) = self.material_rows() {
+            return n;
+        }
         if self.key_panel_shown() {
             self.key_panel_rows()
         } else {

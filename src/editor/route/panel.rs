@@ -250,6 +250,10 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn prop_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
+        if self.material_panel().is_some() {
+            self.material_widgets(r, out);
+            return;
+        }
         if self.key_panel_shown() {
             self.key_panel_widgets(r, out);
             return;
@@ -365,6 +369,7 @@ impl Editor {
             row(out, &|o, r| self.key_list_row(i, r, o));
         }
         self.key_panel_switch(h, out);
+        self.material_switch(h, out);
     }
 
     pub(in crate::internals::editor) fn controls_widgets(&self, r: Rect, out: &mut Vec<Widget>) {

@@ -28,6 +28,9 @@ impl Editor {
         if let Some(s) = self.rig_shown_scene() {
             return crate::anim::evaluate(&s, t);
         }
+        if let Some(s) = self.material_shown_scene() {
+            return crate::anim::evaluate(&s, t);
+        }
         let Some(p) = self.pending() else {
             return crate::anim::evaluate(&self.scene, t);
         };
@@ -112,7 +115,7 @@ impl Editor {
             self.set_status("Select something to key (K)", false);
             return;
         };
-        if self.key_ik() || self.key_morph() {
+        if self.key_ik() || self.key_morph() || self.key_material() {
             return;
         }
         let n = self.posed_node(sel);
