@@ -118,59 +118,50 @@ fn emissive_maps_survive_gltf_and_glb_round_trips() {
     }
 }
 
-/// Loads emissive.gltf with its JSON changed by `edit`, from a scratch
-/// folder (so image files named by the edit are missing).
-fn load_edited(tag: &str, edit: impl Fn(&mut serde_json::Value)) -> format::Loaded {
+/// Loads emissive.gltf with its JSON changed by `edit` from a scratch
+/// folder (so image files named by the edit are missing) and asserts a
+/// warning `PATH: want…`.
+fn warns(tag: &str, edit: impl Fn(&mut serde_json::Value), want: &str) -> Scene {
     let mut doc: serde_json::Value =
         serde_json::from_slice(&std::fs::read(src()).unwrap()).unwrap();
     edit(&mut doc);
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_emissive_bad");
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(format!("{tag}.gltf"));
-    load_bytes(&serde_json::to_vec(&doc).unwrap(), &path).expect("loads with warnings")
-}
-
-/// Asserts a warning `PATH: start…` for the file `load_edited(tag, …)`
-/// read.
-fn assert_warns(l: &format::Loaded, tag: &str, start: &str) {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_emissive_bad");
-    let want = format!("{}: {start}", dir.join(format!("{tag}.gltf")).display());
+    let l = load_bytes(&serde_json::to_vec(&doc).unwrap(), &path).expect("loads with warnings");
+    let want = format!("{}: {want}", path.display());
     assert!(
         l.warnings.iter().any(|w| w.starts_with(&want)),
         "no warning starting {want:?} in {:?}",
         l.warnings
     );
+    l.scene
 }
 
 #[test]
 fn wrong_texcoord_sets_and_missing_images_are_warnings_with_json_pointers() {
     // The emissive map reads another set than the base colour texture:
     // meshes keep one set, so it is left out, said at the material.
-    let l = load_edited("two_sets", |d| {
-        d["materials"][1]["emissiveTexture"]["texCoord"] = 1.into();
-    });
-    assert_warns(
-        &l,
+    let s = warns(
         "two_sets",
+        |d| d["materials"][1]["emissiveTexture"]["texCoord"] = 1.into(),
         "/materials/1/emissiveTexture: the emissive texture reads TEXCOORD_1",
     );
-    assert!(material(&l.scene, "Lit").emissive_texture.is_none());
-    assert!(material(&l.scene, "Lit").texture.is_some());
+    assert!(material(&s, "Lit").emissive_texture.is_none());
+    assert!(material(&s, "Lit").texture.is_some());
     // A set the primitive does not have: said at the primitive, drawn plain.
-    let l = load_edited("no_set", |d| {
-        d["materials"][0]["emissiveTexture"]["texCoord"] = 3.into();
-    });
-    assert_warns(
-        &l,
+    warns(
         "no_set",
+        |d| d["materials"][0]["emissiveTexture"]["texCoord"] = 3.into(),
         "/meshes/0/primitives/0: the material's texture reads TEXCOORD_3",
     );
-    // An image that is not there: said at the image; Glow loses its map,
-    // nothing panics and the scene still draws.
-    let l = load_edited("missing", |d| {
-        d["images"][0] = serde_json::json!({ "uri": "nowhere.png" });
-    });
-    assert_warns(&l, "missing", "/images/0: cannot read texture 'image0'");
-    assert!(material(&l.scene, "Glow").emissive_texture.is_none());
-    assert!(material(&l.scene, "Unlit").emissive_texture.is_none());
+    // An image that is not there: said at the image; Glow and Unlit lose
+    // their maps and nothing panics.
+    let s = warns(
+        "missing",
+        |d| d["images"][0] = serde_json::json!({ "uri": "nowhere.png" }),
+        "/images/0: cannot read texture 'image0'",
+    );
+    assert!(material(&s, "Glow").emissive_texture.is_none());
+    assert!(material(&s, "Unlit").emissive_texture.is_none());
 }

@@ -35,6 +35,17 @@ class Buf:
     def f32(self, values, typ, n, **kw):
         return self.add("f", values, 5126, typ, len(values) // n, **kw)
 
+    def images(self, imgs):
+        """Appends encoded images, each in a buffer view; their view indices."""
+        views = []
+        for img in imgs:
+            while len(self.data) % 4:
+                self.data.append(0)
+            self.views.append({"buffer": 0, "byteOffset": len(self.data), "byteLength": len(img)})
+            views.append(len(self.views) - 1)
+            self.data += img
+        return views
+
     def uri(self):
         return "data:application/octet-stream;base64," + base64.b64encode(bytes(self.data)).decode()
 
@@ -254,13 +265,7 @@ def sampler_modes():
     rgb = [[(60 * x + 20, 60 * y + 20, 200 - 50 * x) for x in range(4)] for y in range(4)]
     plus = [[(230, 200, 40, 255 if x in (1, 2) or y in (1, 2) else 0) for x in range(4)] for y in range(4)]
     imgs = [png(4, 4, rgb, False), png(4, 4, plus, True)]
-    views = []
-    for img in imgs:
-        while len(b.data) % 4:
-            b.data.append(0)
-        b.views.append({"buffer": 0, "byteOffset": len(b.data), "byteLength": len(img)})
-        views.append(len(b.views) - 1)
-        b.data += img
+    views = b.images(imgs)
     doc = {
         "asset": {"version": "2.0", "generator": "make.py"},
         "scene": 0,
@@ -313,13 +318,7 @@ def emissive():
     glow = [[(255, 200 - 40 * y, 40 + 60 * x) if (x + y) % 2 == 0 else (0, 0, 0) for x in range(4)] for y in range(4)]
     grey = [[(200, 200, 200), (90, 90, 90)], [(90, 90, 90), (200, 200, 200)]]
     imgs = [png(4, 4, glow, False), png(2, 2, grey, False)]
-    views = []
-    for img in imgs:
-        while len(b.data) % 4:
-            b.data.append(0)
-        b.views.append({"buffer": 0, "byteOffset": len(b.data), "byteLength": len(img)})
-        views.append(len(b.views) - 1)
-        b.data += img
+    views = b.images(imgs)
     prim = lambda k, m: {"attributes": {"POSITION": p, "NORMAL": nn, "TEXCOORD_0": t}, "indices": idx[k], "material": m}
     doc = {
         "asset": {"version": "2.0", "generator": "make.py"},
