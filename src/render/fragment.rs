@@ -318,7 +318,12 @@ fn shade_group<V: V8>(
         texels = Some(t);
     }
     if item.unlit {
-        return diffuse;
+        // Unlit (no normals): the unlit colour is the lit colour, so the
+        // texture models that act after lighting still apply.
+        return match (&item.texture, texels) {
+            (Some(s), Some(t)) => after_lighting(s, &t, diffuse),
+            _ => diffuse,
+        };
     }
     let lit = shade8(
         &item.material,
@@ -567,7 +572,11 @@ pub fn shade_textured(
     let (diffuse, alpha) = s.before_lighting(texel, color, item.material.alpha);
     let p = Vec3::new(a[A_POS], a[A_POS + 1], a[A_POS + 2]);
     let n = Vec3::new(a[A_NORMAL], a[A_NORMAL + 1], a[A_NORMAL + 2]);
-    let lit = super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye);
+    let lit = if item.unlit {
+        diffuse
+    } else {
+        super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye)
+    };
     let (c, alpha) = s.after_lighting(texel, lit, alpha);
     (c, s.masked(alpha))
 }

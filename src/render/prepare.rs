@@ -208,11 +208,11 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
         let smat = ShadeMaterial::new(material);
         let item = out.items.len() as u32;
         // Textured: the material's texture, when its image exists and the
-        // mesh has coordinates for it.
+        // mesh has coordinates for it (lit or not: an unlit mesh's colour
+        // stands in for the lit one, see `fragment::shade_group`).
         let texture = material.texture.as_ref().and_then(|t| {
             let image = scene.image(t.image)?;
-            let has_uv = mesh.texcoords.len() == mesh.positions.len() && has_normals;
-            has_uv.then(|| Sampler::new(t, image))
+            has_texcoords(mesh).then(|| Sampler::new(t, image))
         });
         let translucent = texture.as_ref().is_some_and(Sampler::translucent);
 
