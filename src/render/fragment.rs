@@ -16,7 +16,7 @@
 
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
 use super::lanes::Pair;
-use super::prepare::{Item, Prepared, Tri, INV_W, SUBPIXEL};
+use super::prepare::{EmissiveMap, Item, Prepared, Tri, INV_W, SUBPIXEL};
 use super::shade::shade8;
 use super::simd::{self, Sse8, V8};
 use super::texture::Sampler;
@@ -319,11 +319,13 @@ fn shade_group<V: V8>(
     }
     let mut diffuse = [v[6], v[7], v[8]];
     let mut texels = None;
+    let mut uvs = None;
     if item.textured {
         let uv = UvLanes::new(p, win, group, b1, b2, s);
         let (d, t) = apply_texture(item, &uv, diffuse);
         diffuse = d;
         texels = Some(t);
+        uvs = Some(uv);
     }
     if item.unlit {
         // Unlit (no normals): the unlit colour is the lit colour, so the
@@ -333,7 +335,7 @@ fn shade_group<V: V8>(
             _ => diffuse,
         };
     }
-    let lit = shade8(
+    let mut lit = shade8(
         &item.material,
         &item.lights,
         eye,
@@ -341,6 +343,9 @@ fn shade_group<V: V8>(
         [v[3], v[4], v[5]],
         diffuse,
     );
+    if let (Some(e), Some(uv)) = (&item.emissive, &uvs) {
+        lit = add_emissive(e, uv, lit);
+    }
     match (&item.texture, texels) {
         (Some(s), Some(t)) => after_lighting(s, &t, lit),
         _ => lit,
@@ -459,6 +464,7 @@ fn shade_pair<V: V8>(
     let mut diffuse = [v[6], v[7], v[8]];
     // Textured: sampled per block, lit as a pair, combined per block.
     let mut texels = None;
+    let mut uvs = None;
     if it.textured {
         let uva = UvLanes::new(p, &wa, 0xFF, b1a, b2a, sa);
         let uvb = UvLanes::new(p, &wb, 0xFF, b1b, b2b, sb);
@@ -466,6 +472,7 @@ fn shade_pair<V: V8>(
         let (db, tb) = apply_texture(it, &uvb, [v[6].1, v[7].1, v[8].1]);
         diffuse = [Pair(da[0], db[0]), Pair(da[1], db[1]), Pair(da[2], db[2])];
         texels = Some((ta, tb));
+        uvs = Some((uva, uvb));
     }
     let mut lit = shade8(
         &it.material,
@@ -475,6 +482,11 @@ fn shade_pair<V: V8>(
         [v[3], v[4], v[5]],
         diffuse,
     );
+    if let (Some(e), Some((uva, uvb))) = (&it.emissive, &uvs) {
+        let la = add_emissive(e, uva, [lit[0].0, lit[1].0, lit[2].0]);
+        let lb = add_emissive(e, uvb, [lit[0].1, lit[1].1, lit[2].1]);
+        lit = [Pair(la[0], lb[0]), Pair(la[1], lb[1]), Pair(la[2], lb[2])];
+    }
     if let (Some(s), Some((ta, tb))) = (&it.texture, texels) {
         let la = after_lighting(s, &ta, [lit[0].0, lit[1].0, lit[2].0]);
         let lb = after_lighting(s, &tb, [lit[0].1, lit[1].1, lit[2].1]);
@@ -544,6 +556,19 @@ impl<V: V8> UvLanes<V> {
             dv_dy: (m[6] - v * m[7]) * s,
         }
     }
+
+    /// The coordinates as the lane sampler takes them.
+    #[inline(always)]
+    fn input(&self) -> UvIn<V> {
+        UvIn {
+            u: self.u,
+            v: self.v,
+            du_dx: self.du_dx,
+            dv_dx: self.dv_dx,
+            du_dy: self.du_dy,
+            dv_dy: self.dv_dy,
+        }
+    }
 }
 
 /// The texture of a textured item applied to eight lanes before lighting:
@@ -556,15 +581,22 @@ pub fn apply_texture<V: V8>(item: &Item, uv: &UvLanes<V>, diffuse: [V; 3]) -> ([
     let Some(s) = &item.texture else {
         return (diffuse, [V::splat(1.0); 4]);
     };
-    let t = s.texel8(&UvIn {
-        u: uv.u,
-        v: uv.v,
-        du_dx: uv.du_dx,
-        dv_dx: uv.dv_dx,
-        du_dy: uv.du_dy,
-        dv_dy: uv.dv_dy,
-    });
+    let t = s.texel8(&uv.input());
     (s.before_lighting8(&t, diffuse), t)
+}
+
+/// The emissive map's `factor × texel` added to eight lit lanes (before
+/// anything clamps them), with the one-pixel path's exact operations:
+/// see [`shade_textured`].
+#[inline(always)]
+pub fn add_emissive<V: V8>(e: &EmissiveMap, uv: &UvLanes<V>, lit: [V; 3]) -> [V; 3] {
+    let t = e.map.texel8(&uv.input());
+    let f = e.factor;
+    [
+        lit[0] + V::splat(f.x) * t[0],
+        lit[1] + V::splat(f.y) * t[1],
+        lit[2] + V::splat(f.z) * t[2],
+    ]
 }
 
 /// The texture models that act on the lit colour (Replace, MODULATE, DECAL,
@@ -576,15 +608,9 @@ pub fn after_lighting<V: V8>(s: &Sampler, texels: &[V; 4], lit: [V; 3]) -> [V; 3
 
 /// One pixel of a textured triangle drawn outside the 8-lane pass (the
 /// transparent pass): colour and alpha at screen weights `b1`, `b2`, with
-/// the same texture arithmetic as the lanes.
-pub fn shade_textured(
-    item: &Item,
-    s: &Sampler,
-    t: &Tri,
-    b1: f32,
-    b2: f32,
-    eye: Vec3,
-) -> (Vec3, f32) {
+/// the same texture arithmetic as the lanes (texture, then lighting, then
+/// the emissive map, then the models acting after lighting).
+pub fn shade_textured(item: &Item, t: &Tri, b1: f32, b2: f32, eye: Vec3) -> (Vec3, f32) {
     let a = t.attrs_at(b1, b2);
     let plane = |j: usize| t.base[j] + b1 * t.d1[j] + b2 * t.d2[j];
     let inv_q = 1.0 / plane(INV_W);
@@ -598,18 +624,33 @@ pub fn shade_textured(
         (g.uv[0][1] - u * g.q[1]) * inv_q,
         (g.uv[1][1] - v * g.q[1]) * inv_q,
     );
-    let texel = s.texel(Vec2::new(u, v), ddx, ddy);
+    let uv = Vec2::new(u, v);
     let color = Vec3::new(a[A_COLOR], a[A_COLOR + 1], a[A_COLOR + 2]);
-    let (diffuse, alpha) = s.before_lighting(texel, color, item.material.alpha);
+    let mut diffuse = color;
+    let mut alpha = item.material.alpha;
+    let texel = item.texture.as_ref().map(|s| s.texel(uv, ddx, ddy));
+    if let (Some(s), Some(texel)) = (&item.texture, texel) {
+        (diffuse, alpha) = s.before_lighting(texel, color, alpha);
+    }
     let p = Vec3::new(a[A_POS], a[A_POS + 1], a[A_POS + 2]);
     let n = Vec3::new(a[A_NORMAL], a[A_NORMAL + 1], a[A_NORMAL + 2]);
-    let lit = if item.unlit {
+    // Unlit (no normals): the unlit colour is the lit colour, as in
+    // `shade_group` (its emission is already that colour).
+    let mut lit = if item.unlit {
         diffuse
     } else {
         super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye)
     };
-    let (c, alpha) = s.after_lighting(texel, lit, alpha);
-    (c, s.masked(alpha))
+    if let (Some(e), false) = (&item.emissive, item.unlit) {
+        lit += e.factor * e.map.texel(uv, ddx, ddy).truncate();
+    }
+    match (&item.texture, texel) {
+        (Some(s), Some(texel)) => {
+            let (c, alpha) = s.after_lighting(texel, lit, alpha);
+            (c, s.masked(alpha))
+        }
+        _ => (lit, alpha),
+    }
 }
 
 /// Screen-space gradients of a triangle's planes, per pixel step.
