@@ -619,3 +619,39 @@ fn broken_texture_images_are_placed_warnings() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A mesh without normals is drawn unlit, and keeps its texture: without
+/// a Material (VRML97's unlit REPLACE) the picture is the same whether the
+/// quads carry normals or not, for the opaque lane pass (RGB checker) and
+/// the transparent pass (RGBA disc) alike. The renderer used to drop the
+/// texture coordinates of meshes without normals (flat white quads).
+#[test]
+fn unlit_meshes_without_normals_keep_their_texture() {
+    let src = [
+        quad(-1.0, "texture ImageTexture { url \"checker.png\" }"),
+        quad(1.0, "texture ImageTexture { url \"rgba.png\" }"),
+    ]
+    .concat();
+    let mut s = load(&format!("{HEAD}{src}"));
+    let with_normals = draw(&s);
+    assert!(s.meshes.iter().all(|m| !m.normals.is_empty()));
+    for m in &mut s.meshes {
+        m.normals.clear();
+    }
+    let without = draw(&s);
+    let count = |f: &Frame, want: fn([u32; 3]) -> bool| {
+        f.color
+            .iter()
+            .filter(|&&c| want([c >> 16 & 0xFF, c >> 8 & 0xFF, c & 0xFF]))
+            .count()
+    };
+    // The checker's red and white texels and the disc's green, unlit (the
+    // magnified checker is bilinear, so no texel colour is exact).
+    let red: fn([u32; 3]) -> bool = |[r, g, b]| r > 180 && g < 110 && b < 110;
+    let white: fn([u32; 3]) -> bool = |[r, g, b]| r > 200 && g > 200 && b > 200;
+    let green: fn([u32; 3]) -> bool = |[r, g, b]| g > 180 && r < 60 && b < 90;
+    for (name, want) in [("red", red), ("white", white), ("green", green)] {
+        assert!(count(&without, want) > 50, "{name}: texture missing");
+    }
+    assert!(with_normals.color == without.color, "unlit texture differs");
+}

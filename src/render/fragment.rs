@@ -73,32 +73,33 @@ pub fn shade_visible(
     shade_visible_in::<Sse8>(p, eye, background, size, vis, out);
 }
 
-/// The AVX path compiled with AVX-512's 32 registers (see `simd::avx512`).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx,avx2,avx512f,avx512vl")]
-unsafe fn shade_visible_avx512(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    size: (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
-    shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
+/// `shade_visible_in` on AVX lanes compiled with the target features
+/// `$features`: the same generic code, so the same bits; only the
+/// registers and encodings the compiler may use differ.
+macro_rules! avx_entry {
+    ($(#[$doc:meta])* $name:ident, $features:literal) => {
+        $(#[$doc])*
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = $features)]
+        unsafe fn $name(
+            p: &Prepared,
+            eye: Vec3,
+            background: Vec3,
+            size: (usize, usize, usize),
+            vis: &Visible,
+            out: &mut Shaded,
+        ) {
+            shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
+        }
+    };
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn shade_visible_avx(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    size: (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
-    shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
-}
+avx_entry!(
+    /// The AVX path compiled with AVX-512's 32 registers (see `simd::avx512`).
+    shade_visible_avx512,
+    "avx,avx2,avx512f,avx512vl"
+);
+avx_entry!(shade_visible_avx, "avx");
 
 #[inline(always)]
 fn lanes8<T>(s: &[T], i: usize) -> &[T; 8] {
@@ -154,12 +155,19 @@ fn shade_visible_in<V: V8>(
                 continue;
             }
             let i0 = row * TILE as usize + bx;
-            // Two blocks of one lit item: lit together.
-            if ns == 1 && bx + 8 < w {
+            // Two blocks of one lit item: lit together. Under multisampling
+            // only where every sample of their pixels shows the triangle of
+            // the first sample (inside a surface, away from its edges): the
+            // rounds below would shade each pixel once at its first sample
+            // and give every sample that colour, which is what this does.
+            if bx + 8 < w {
                 if let Some(item) = pair_item(p, vis.winner, i0) {
-                    shade_pair::<V>(p, item, eye, vis, out, i0);
-                    next = bx + 16;
-                    continue;
+                    if ns == 1 || samples_agree(vis.winner, i0, ns) {
+                        shade_pair::<V>(p, item, eye, vis, out, i0);
+                        copy_to_samples(out, i0, ns);
+                        next = bx + 16;
+                        continue;
+                    }
                 }
             }
             // Per sample, the lanes still to colour.
@@ -320,7 +328,12 @@ fn shade_group<V: V8>(
         uvs = Some(uv);
     }
     if item.unlit {
-        return diffuse;
+        // Unlit (no normals): the unlit colour is the lit colour, so the
+        // texture models that act after lighting still apply.
+        return match (&item.texture, texels) {
+            (Some(s), Some(t)) => after_lighting(s, &t, diffuse),
+            _ => diffuse,
+        };
     }
     let mut lit = shade8(
         &item.material,
@@ -397,6 +410,29 @@ fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
         }
     }
     (!p.items[item as usize].unlit).then_some(item)
+}
+
+/// Whether every sample plane shows, in the sixteen pixels at `i0`, the
+/// triangles of the first plane.
+#[inline(always)]
+fn samples_agree(winner: &[u32], i0: usize, ns: usize) -> bool {
+    const PLANE: usize = (TILE * TILE) as usize;
+    let first = &winner[i0..i0 + 16];
+    (1..ns).all(|s| &winner[s * PLANE + i0..s * PLANE + i0 + 16] == first)
+}
+
+/// Copies the colours and ids of the sixteen pixels at `i0` from the first
+/// sample plane to the other `ns − 1`.
+#[inline(always)]
+fn copy_to_samples(out: &mut Shaded, i0: usize, ns: usize) {
+    const PLANE: usize = (TILE * TILE) as usize;
+    for s in 1..ns {
+        let j0 = s * PLANE + i0;
+        for c in [&mut *out.r, &mut *out.g, &mut *out.b] {
+            c.copy_within(i0..i0 + 16, j0);
+        }
+        out.ids.copy_within(i0..i0 + 16, j0);
+    }
 }
 
 /// Shades the sixteen pixels at `i0` (one row, two blocks) that all show
@@ -598,8 +634,14 @@ pub fn shade_textured(item: &Item, t: &Tri, b1: f32, b2: f32, eye: Vec3) -> (Vec
     }
     let p = Vec3::new(a[A_POS], a[A_POS + 1], a[A_POS + 2]);
     let n = Vec3::new(a[A_NORMAL], a[A_NORMAL + 1], a[A_NORMAL + 2]);
-    let mut lit = super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye);
-    if let Some(e) = &item.emissive {
+    // Unlit (no normals): the unlit colour is the lit colour, as in
+    // `shade_group` (its emission is already that colour).
+    let mut lit = if item.unlit {
+        diffuse
+    } else {
+        super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye)
+    };
+    if let (Some(e), false) = (&item.emissive, item.unlit) {
         lit += e.factor * e.map.texel(uv, ddx, ddy).truncate();
     }
     match (&item.texture, texel) {
@@ -652,6 +694,7 @@ mod tests {
     use super::*;
     use crate::render::clip::ATTRS;
     use crate::render::prepare::planes;
+    use crate::render::simd::Lanes;
 
     /// Screen positions, 1/w and texture coordinates of three vertices.
     type Corners = ([(f32, f32); 3], [f32; 3], [[f32; 2]; 3]);

@@ -222,8 +222,9 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
         let mut smat = ShadeMaterial::new(material);
         let item = out.items.len() as u32;
         // Textured: the material's texture, when its image exists and the
-        // mesh has coordinates for it.
-        let has_uv = mesh.texcoords.len() == mesh.positions.len() && has_normals;
+        // mesh has coordinates for it (lit or not: an unlit mesh's colour
+        // stands in for the lit one, see `fragment::shade_group`).
+        let has_uv = has_texcoords(mesh);
         let sampler = |t: &crate::scene::Texture| {
             let image = scene.image(t.image)?;
             has_uv.then(|| Sampler::new(t, image))

@@ -9,7 +9,7 @@ use super::clip::ATTRS;
 use super::fragment::{self, store_masked, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, POINT_SIZE, SUBPIXEL};
 use super::shade::shade;
-use super::simd::{self, Sse8, V8};
+use super::simd::{self, Lanes, Sse8, V8};
 use glam::Vec3;
 
 pub use super::fragment::TILE;
