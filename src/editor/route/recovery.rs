@@ -526,6 +526,12 @@ mod tests {
         );
     }
 
+    /// The clock ticks the editor, then the shell writes what it asked.
+    fn tick(ed: &mut Editor, now: f64) {
+        ed.autosave_tick(now);
+        crate::editor::shell::perform(ed);
+    }
+
     #[test]
     fn autosave_waits_for_the_interval_and_a_save_deletes_the_copy() {
         let d = tmp_dir("save");
@@ -539,17 +545,17 @@ mod tests {
         after.transform.translation.x = 5.0;
         let before = Box::new(ed.scene().node(id).clone());
         ed.execute("move", Command::SetNode { id, before, after });
-        ed.autosave_tick(100.0);
-        ed.autosave_tick(129.0);
+        tick(&mut ed, 100.0);
+        tick(&mut ed, 129.0);
         assert!(!copy.exists(), "29 s after the first change: not yet");
-        ed.autosave_tick(130.5);
+        tick(&mut ed, 130.5);
         assert!(copy.exists(), "30 s after the first change");
         assert_eq!(ed.autosaved_to(), Some(copy.as_path()));
         let back = crate::format::load(&copy).unwrap().scene;
         assert_eq!(back.node(id).transform.translation.x, 5.0);
         // Nothing new: the copy is not rewritten.
         std::fs::remove_file(&copy).unwrap();
-        ed.autosave_tick(200.0);
+        tick(&mut ed, 200.0);
         assert!(!copy.exists());
         ed.autosave_now().unwrap();
         assert!(copy.exists());
@@ -572,18 +578,18 @@ mod tests {
         let before = Box::new(ed.scene().node(id).clone());
         ed.execute("move", Command::SetNode { id, before, after });
         let (x, y, mods) = (-5.0, -5.0, crate::editor::Mods::NONE);
-        ed.autosave_tick(0.0);
+        tick(&mut ed, 0.0);
         ed.handle(Event::MouseDown {
             button: MouseButton::Middle,
             x,
             y,
             mods,
         });
-        ed.autosave_tick(5.0);
-        ed.autosave_tick(12.0);
+        tick(&mut ed, 5.0);
+        tick(&mut ed, 12.0);
         assert!(!recovery_path(&scene).exists(), "held: wait");
         // Held for a whole interval: a lost release; save anyway.
-        ed.autosave_tick(15.5);
+        tick(&mut ed, 15.5);
         assert!(recovery_path(&scene).exists());
         std::fs::remove_file(recovery_path(&scene)).unwrap();
         ed.handle(Event::MouseUp {
@@ -596,8 +602,8 @@ mod tests {
         let mut after = before.clone();
         after.transform.translation.z = 4.0;
         ed.execute("move", Command::SetNode { id, before, after });
-        ed.autosave_tick(30.0);
-        ed.autosave_tick(40.0);
+        tick(&mut ed, 30.0);
+        tick(&mut ed, 40.0);
         assert!(recovery_path(&scene).exists(), "released: saved");
         std::fs::remove_dir_all(&d).unwrap();
     }
@@ -614,11 +620,11 @@ mod tests {
         after.transform.translation.y = 2.0;
         let before = Box::new(ed.scene().node(id).clone());
         ed.execute("move", Command::SetNode { id, before, after });
-        ed.autosave_tick(0.0);
-        ed.autosave_tick(1.0);
+        tick(&mut ed, 0.0);
+        tick(&mut ed, 1.0);
         assert!(recovery_path(&scene).exists());
         ed.undo();
-        ed.autosave_tick(1.5);
+        tick(&mut ed, 1.5);
         assert!(!recovery_path(&scene).exists());
         std::fs::remove_dir_all(&d).unwrap();
     }
