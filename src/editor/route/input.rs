@@ -126,22 +126,21 @@ impl Editor {
     pub(in crate::internals::editor) fn mouse_move(&mut self, x: f32, y: f32, mods: Mods) -> bool {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
-        if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
-            let ev = Event::MouseMove { x, y, mods };
-            if let Some(redraw) = self.graph_event(&ev) {
-                return redraw;
-            }
-        }
-        if let Some(redraw) = self.ik_move(x, y) {
-            return redraw;
-        }
-        if let Some(redraw) = self.handles_move(x, y, mods) {
-            return redraw;
-        }
-        if let Some(redraw) = self.key_strip_move(x, y) {
+        // The part that holds the gesture gets the move, and only it.
+        let part = match &self.drag {
+            Drag::Graph => self.graph_event(&Event::MouseMove { x, y, mods }),
+            Drag::Ik(_) => self.ik_move(x, y),
+            Drag::Keys(_) => self.key_strip_move(x, y),
+            // A handle drag, a pick about to become one, or hover over
+            // the handles.
+            Drag::Handle(_) | Drag::Pick { .. } | Drag::None => self.handles_move(x, y, mods),
+            _ => None,
+        };
+        if let Some(redraw) = part {
             return redraw;
         }
         match self.drag.clone() {
+            Drag::Handle(_) | Drag::Keys(_) | Drag::Ik(_) | Drag::Graph => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -252,6 +251,7 @@ impl Editor {
         }
         let l = self.layout();
         if self.graph_shown && l.key_rows.contains(x, y) {
+            // A drag it starts becomes the gesture (`graph_event`).
             self.commit_edit();
             self.graph_event(&Event::MouseDown { button, x, y, mods });
             return;
@@ -278,7 +278,10 @@ impl Editor {
                 (MouseButton::Left, _) if mods.alt => Drag::Orbit { last: (x, y) },
                 (MouseButton::Left, Mode::View) if mods.shift => Drag::Pan { last: (x, y) },
                 (MouseButton::Left, Mode::View) => Drag::Orbit { last: (x, y) },
-                (MouseButton::Left, Mode::Select) => Drag::Pick { at: (x, y) },
+                (MouseButton::Left, Mode::Select) => Drag::Pick {
+                    at: (x, y),
+                    armed: None,
+                },
                 (MouseButton::Right, _) => Drag::Context {
                     at: (x, y),
                     last: (x, y),
@@ -371,12 +374,25 @@ impl Editor {
         y: f32,
         mods: Mods,
     ) {
-        if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
-            self.graph_event(&Event::MouseUp { button, x, y, mods });
-            return;
-        }
-        if self.ik_release() || self.handles_release() || self.key_strip_release() {
-            return;
+        // The part that holds the gesture ends it.
+        match &self.drag {
+            Drag::Graph => {
+                self.graph_event(&Event::MouseUp { button, x, y, mods });
+                return;
+            }
+            Drag::Ik(_) => {
+                self.ik_release();
+                return;
+            }
+            Drag::Handle(_) => {
+                self.handles_release();
+                return;
+            }
+            Drag::Keys(_) => {
+                self.key_strip_release();
+                return;
+            }
+            _ => {}
         }
         match std::mem::take(&mut self.drag) {
             Drag::Field {
@@ -400,7 +416,9 @@ impl Editor {
                 base,
                 ..
             } => self.finish_field_drag(id, base),
-            Drag::Pick { at } if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP => {
+            Drag::Pick { at, .. }
+                if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP =>
+            {
                 self.pick(x, y);
             }
             Drag::RowMove {
@@ -987,19 +1005,7 @@ impl Editor {
             Action::KeySelection => self.insert_keys(),
             Action::Duplicate => self.duplicate_selection(),
             Action::AddMenu => {
-                let at = self
-                    .widgets()
-                    .into_iter()
-                    .find(|w| {
-                        matches!(
-                            w.kind,
-                            WidgetKind::Button {
-                                action: Action::AddMenu,
-                                ..
-                            }
-                        )
-                    })
-                    .map_or((0, 0), |w| (w.rect.x, w.rect.bottom()));
+                let at = self.under_button(Action::AddMenu).unwrap_or((0, 0));
                 self.open_add_menu(at.0, at.1);
             }
             Action::Delete => self.delete_selection(),

@@ -398,6 +398,17 @@ impl Editor {
         }
     }
 
+    /// Where a menu opened by the button for `action` goes: under the
+    /// button (its bottom-left corner), if the button is shown.
+    pub(in crate::internals::editor) fn under_button(&self, action: Action) -> Option<(i32, i32)> {
+        self.widgets().into_iter().find_map(|w| match w.kind {
+            WidgetKind::Button { action: a, .. } if a == action => {
+                Some((w.rect.x, w.rect.bottom()))
+            }
+            _ => None,
+        })
+    }
+
     /// The file browser's box.
     pub fn browser_rect(&self) -> Rect {
         let win = self.layout().window;
