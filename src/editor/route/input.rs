@@ -1,13 +1,13 @@
 //! The editor's side of `input`: routes events to it and applies what it returns.
 
 use crate::editor::browser::Purpose;
+use crate::editor::browser_ui::Reply;
 use crate::editor::command::Command;
 use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
 use crate::editor::ops;
 use crate::editor::panel::{Action, List, WidgetKind};
-use crate::editor::request::Request;
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -42,6 +42,9 @@ impl Editor {
             return redraw;
         }
         if let Some(redraw) = self.menu_event(&ev) {
+            return redraw;
+        }
+        if let Some(redraw) = self.browser_event(&ev) {
             return redraw;
         }
         match ev {
@@ -444,15 +447,6 @@ impl Editor {
         if self.dialog.is_some() {
             return false;
         }
-        if let Some(b) = &mut self.browser {
-            let steps = (delta.abs().ceil() as usize).max(1) * 3;
-            b.scroll = if delta > 0.0 {
-                b.scroll.saturating_sub(steps)
-            } else {
-                (b.scroll + steps).min(b.entries.len().saturating_sub(1))
-            };
-            return true;
-        }
         let l = self.layout();
         if self.graph_shown && l.key_rows.contains(x, y) {
             let ev = Event::Wheel { delta, x, y, mods };
@@ -707,12 +701,6 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn text(&mut self, s: &str) -> bool {
-        if let Some(b) = &mut self.browser {
-            if self.dialog.is_none() {
-                b.type_text(s);
-                return true;
-            }
-        }
         if let Some(e) = &mut self.edit {
             if e.fresh {
                 e.text.clear();
@@ -751,10 +739,6 @@ impl Editor {
                 Key::Char('d') | Key::Char('n') => self.run_action(Action::DialogDiscard),
                 _ => {}
             }
-            return;
-        }
-        if self.browser.is_some() {
-            self.browser_key(key, mods);
             return;
         }
         if let Some(e) = &mut self.edit {
@@ -1064,16 +1048,18 @@ impl Editor {
                 }
             }
             Action::Key(a) => self.key_action(a),
-            Action::BrowserAccept => self.browser_accept(),
+            Action::BrowserAccept => {
+                if let Some(b) = &mut self.browser {
+                    let r = b.choose();
+                    self.browser_reply(r);
+                }
+            }
             Action::BrowserCancel => {
-                self.browser = None;
-                self.browser_then = None;
+                self.browser_reply(Reply::Cancel);
             }
             Action::BrowserUp => {
                 if let Some(b) = &mut self.browser {
-                    if let Some(p) = b.dir.parent().map(|p| p.to_path_buf()) {
-                        b.enter(&p);
-                    }
+                    b.up();
                 }
             }
         }
@@ -1168,84 +1154,11 @@ impl Editor {
 
     // ----- modal boxes -----
 
+    /// A click while a question is open: its buttons (the browser
+    /// answers its own clicks, `browser_ui.rs`).
     pub(in crate::internals::editor) fn click_modal(&mut self, x: f32, y: f32) {
-        let Some(widget) = self.widget_at(x, y) else {
-            return;
-        };
-        match widget.kind {
-            WidgetKind::Button { action, .. } => self.run_action(action),
-            WidgetKind::Entry(i) => {
-                let Some(b) = &mut self.browser else { return };
-                let Some(e) = b.entries.get(i).cloned() else {
-                    return;
-                };
-                if e.is_dir {
-                    let target = if e.name == ".." {
-                        b.dir.parent().map(|p| p.to_path_buf())
-                    } else {
-                        Some(b.dir.join(&e.name))
-                    };
-                    if let Some(t) = target {
-                        b.enter(&t);
-                    }
-                } else if b.highlight == Some(i) {
-                    // A second click on the same file accepts it.
-                    self.browser_accept();
-                } else {
-                    b.highlight = Some(i);
-                    b.input = b.entry_path_text(i);
-                }
-            }
-            _ => {}
-        }
-    }
-
-    pub(in crate::internals::editor) fn browser_key(&mut self, key: Key, _mods: Mods) {
-        let rows = {
-            let r = self.browser_rect();
-            ((r.h - 3 * 16 - 20) / 16).max(1) as usize
-        };
-        let Some(b) = &mut self.browser else { return };
-        match key {
-            Key::Escape => self.run_action(Action::BrowserCancel),
-            Key::Enter => self.browser_accept(),
-            Key::Tab => b.complete(),
-            Key::Backspace => {
-                b.input.pop();
-                b.message = None;
-            }
-            Key::Up => {
-                b.step(-1);
-                b.scroll_to_highlight(rows);
-            }
-            Key::Down => {
-                b.step(1);
-                b.scroll_to_highlight(rows);
-            }
-            _ => {}
-        }
-    }
-
-    /// Enter / the accept button: a folder is entered, a file is used.
-    pub(in crate::internals::editor) fn browser_accept(&mut self) {
-        let Some(b) = &mut self.browser else { return };
-        let purpose = b.purpose;
-        let Some(path) = b.accept() else { return };
-        // The shell reads or writes; its answer (`route/files.rs`) closes
-        // the browser or shows why not.
-        match purpose {
-            Purpose::Open => self.requests.push(Request::Open(path)),
-            Purpose::Import => self.requests.push(Request::Import(path)),
-            Purpose::SaveAs => {
-                let path = if is_writable_type(&path) {
-                    path
-                } else {
-                    let mut s = path.into_os_string();
-                    s.push(".wrl");
-                    s.into()
-                };
-                self.request_save(path, None);
-            }
+        if let Some(WidgetKind::Button { action, .. }) = self.widget_at(x, y).map(|w| w.kind) {
+            self.run_action(action);
         }
     }
 }
