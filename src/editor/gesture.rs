@@ -1,7 +1,14 @@
-//! The editor's gesture in progress (camera, field drags, seek, pick) and
-//! what a field drag started from. Routing lives in `route/input.rs`.
+//! The editor's one gesture in progress: whatever a mouse press started
+//! (camera, field drag, seek, pick, a handle, keys in the strip, the IK
+//! target, the graph editor) is ONE value of [`Drag`], so a mouse move or
+//! release goes to exactly the part that holds the gesture instead of
+//! every part being asked in turn. Also what a field drag started from.
+//! Routing lives in `route/input.rs`.
 
 use super::fields::FieldId;
+use super::keystrip::StripDrag;
+use super::manip::{Handle, HandleDrag};
+use super::rig::state::IkDrag;
 use crate::scene::{Node, NodeId, Settings};
 
 /// State kept between mouse down and up.
@@ -9,6 +16,14 @@ use crate::scene::{Node, NodeId, Settings};
 pub(super) enum Drag {
     #[default]
     None,
+    /// A handle of the current tool (`manip/`): the node at press.
+    Handle(Box<HandleDrag>),
+    /// Keys moved or a selection box in the key strip.
+    Keys(StripDrag),
+    /// The IK target (`rig/ik.rs`).
+    Ik(Box<IkDrag>),
+    /// The graph editor took the press; it keeps its own drag state.
+    Graph,
     Orbit {
         last: (f32, f32),
     },
@@ -24,9 +39,12 @@ pub(super) enum Drag {
     },
     /// Dragging the current-frame cursor on the ruler.
     Seek,
-    /// Pressed in the viewport in select mode; selects on release.
+    /// Pressed in the viewport in select mode; selects on release. On the
+    /// selection (`armed`: its body, or inside the rotate rings) a move
+    /// past the slop turns it into that handle's drag instead.
     Pick {
         at: (f32, f32),
+        armed: Option<Handle>,
     },
     /// Pressed on an object list row: a drag drops it onto another row
     /// (parent) or onto the list's empty space (top level).
@@ -55,6 +73,41 @@ pub(super) enum Drag {
         y0: f32,
         h0: i32,
     },
+}
+
+impl Drag {
+    /// Ends the gesture and returns what `part` finds in it, when it is
+    /// that part's; any other gesture stays.
+    fn take_if<T>(&mut self, part: impl FnOnce(Drag) -> Result<T, Drag>) -> Option<T> {
+        match part(std::mem::take(self)) {
+            Ok(t) => Some(t),
+            Err(other) => {
+                *self = other;
+                None
+            }
+        }
+    }
+
+    /// The key strip's drag, if it holds the gesture (which then ends).
+    pub(super) fn take_keys(&mut self) -> Option<StripDrag> {
+        self.take_if(|d| if let Drag::Keys(k) = d { Ok(k) } else { Err(d) })
+    }
+
+    /// The handle drag, if it is the gesture (which then ends).
+    pub(super) fn take_handle(&mut self) -> Option<Box<HandleDrag>> {
+        self.take_if(|d| {
+            if let Drag::Handle(h) = d {
+                Ok(h)
+            } else {
+                Err(d)
+            }
+        })
+    }
+
+    /// The IK drag, if it is the gesture (which then ends).
+    pub(super) fn take_ik(&mut self) -> Option<Box<IkDrag>> {
+        self.take_if(|d| if let Drag::Ik(i) = d { Ok(i) } else { Err(d) })
+    }
 }
 
 /// What a field drag started from (to compute values and the command).

@@ -99,7 +99,6 @@ pub struct KeyStrip {
     /// selected.
     pub node_panel: bool,
     pub(super) clipboard: Clipboard,
-    pub(super) drag: Option<StripDrag>,
     /// Recent (animation, key selection) pairs, newest last: undo and redo
     /// bring back the selection that went with the animation they restore.
     pub(super) memo: Vec<(Animation, Vec<KeyRef>)>,

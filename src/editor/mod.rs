@@ -16,6 +16,7 @@
 
 pub mod bench;
 pub mod browser;
+pub mod browser_ui;
 pub mod command;
 pub mod component;
 pub mod create;

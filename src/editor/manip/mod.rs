@@ -95,15 +95,12 @@ impl Handle {
     }
 }
 
-/// Tool, hover and drag state of the handles.
+/// Tool and hover state of the handles (a drag is the editor's gesture,
+/// `gesture::Drag::Handle`).
 #[derive(Clone, Debug, Default)]
 pub struct Manip {
     pub tool: Tool,
     pub hover: Option<Handle>,
-    pub(super) drag: Option<HandleDrag>,
-    /// A press on the selection's body (or inside the rotate rings): what
-    /// it would drag and where, until it becomes a drag or a click.
-    pub(super) armed: Option<(Handle, (f32, f32))>,
 }
 
 /// What the handles of a tool act on.

@@ -212,20 +212,8 @@ impl Editor {
         match a {
             ClipAction::Menu => {
                 let at = self
-                    .widgets()
-                    .into_iter()
-                    .find(|w| {
-                        matches!(
-                            w.kind,
-                            WidgetKind::Button {
-                                action: Action::Clip(ClipAction::Menu),
-                                ..
-                            }
-                        )
-                    })
-                    .map_or((self.mouse.0 as i32, self.mouse.1 as i32), |w| {
-                        (w.rect.x, w.rect.bottom())
-                    });
+                    .under_button(Action::Clip(ClipAction::Menu))
+                    .unwrap_or((self.mouse.0 as i32, self.mouse.1 as i32));
                 self.open_clip_menu(at.0, at.1);
             }
             ClipAction::Rename => {

@@ -15,6 +15,7 @@
 use crate::anim::ik::{self, Chain};
 use crate::anim::{Property, Target, TargetRef};
 use crate::editor::command::Command;
+use crate::editor::gesture::Drag;
 use crate::editor::manip::geom::{pixel_ray, ray_plane};
 use crate::editor::record::with_keys;
 use crate::editor::Editor;
@@ -123,7 +124,7 @@ impl Editor {
             up
         };
         let parent = self.scene.node(root).parent;
-        self.rig.ik_drag = Some(IkDrag {
+        self.drag = Drag::Ik(Box::new(IkDrag {
             root,
             mid,
             chain,
@@ -133,7 +134,7 @@ impl Editor {
             parent_rot: world_rotation(&pose, parent),
             root_rot: world_rotation(&pose, Some(root)),
             target: chain.end,
-        });
+        }));
         self.stop_playback();
         true
     }
@@ -152,7 +153,10 @@ impl Editor {
     /// Mouse move during an IK drag: solves and shows. `None` when no IK
     /// drag runs.
     pub(in crate::internals::editor) fn ik_move(&mut self, x: f32, y: f32) -> Option<bool> {
-        let mut d = self.rig.ik_drag.clone()?;
+        let Drag::Ik(d) = &self.drag else {
+            return None;
+        };
+        let mut d = d.clone();
         let proj = self.projector();
         let (ro, rd) = pixel_ray(&proj, x, y);
         let Some(t) = ray_plane(d.plane.0, d.plane.1, ro, rd) else {
@@ -168,14 +172,14 @@ impl Editor {
             self.pending = None;
             self.scene_rev += 1;
         }
-        self.rig.ik_drag = Some(d);
+        self.drag = Drag::Ik(d);
         Some(true)
     }
 
     /// Mouse up: ends an IK drag as described in the module doc. False
     /// when no IK drag ran.
     pub(in crate::internals::editor) fn ik_release(&mut self) -> bool {
-        if self.rig.ik_drag.take().is_none() {
+        if self.drag.take_ik().is_none() {
             return false;
         }
         let Some(p) = self.ik_pending().cloned() else {
@@ -292,7 +296,10 @@ impl Editor {
                 p.line(a, b, IK, 1.5);
             }
         }
-        let target = self.rig.ik_drag.as_ref().map_or(pts[2], |d| d.target);
+        let target = match &self.drag {
+            Drag::Ik(d) => d.target,
+            _ => pts[2],
+        };
         if let Some((x, y)) = proj.point(target) {
             let r = 6.0;
             p.fill_polygon(&[(x, y - r), (x + r, y), (x, y + r), (x - r, y)], IK, 220);

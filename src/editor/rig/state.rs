@@ -1,5 +1,6 @@
 //! The rig tools' state (pure data, no `Editor`): the editor holds a
-//! `RigState`, the gesture layer a `MorphBase` while a slider is dragged.
+//! `RigState`, the gesture (`gesture::Drag`) an `IkDrag` and a
+//! `MorphBase` while a slider is dragged.
 //! It lives apart from the tools' `Editor` methods (`morph.rs`, `ik.rs`,
 //! `mod.rs`), which would otherwise close import circles through the
 //! editor (editor → rig → editor).
@@ -16,8 +17,6 @@ pub struct RigState {
     pub morph_pending: Option<MorphPending>,
     /// The end joint whose IK handle is on (I).
     pub ik: Option<crate::scene::NodeId>,
-    /// An IK drag in progress.
-    pub ik_drag: Option<IkDrag>,
     /// An IK pose shown but not recorded.
     pub ik_pending: Option<IkPending>,
 }

@@ -4,6 +4,7 @@
 
 use crate::editor::command::Command;
 use crate::editor::component::{Intent, Response};
+use crate::editor::gesture::Drag;
 use crate::editor::graph::{Ctx, GraphEditor};
 use crate::editor::Editor;
 use crate::input::{Event, Key, Mods};
@@ -69,12 +70,19 @@ impl Editor {
         let ctx = self.graph_ctx();
         // Keys go to the graph only while the mouse is over it.
         let over = ctx.rect.contains(self.mouse.0, self.mouse.1);
-        if matches!(ev, Event::KeyDown { .. }) && !over && !g.is_dragging() {
+        let holding = matches!(self.drag, Drag::Graph);
+        if matches!(ev, Event::KeyDown { .. }) && !over && !holding {
             self.graph = Some(g);
             return None;
         }
         g.follow(&ctx);
         let r = g.handle(ev, &ctx);
+        // A drag the graph runs (inside it) is the editor's one gesture.
+        match (g.is_dragging(), holding) {
+            (true, false) => self.drag = Drag::Graph,
+            (false, true) => self.drag = Drag::None,
+            _ => {}
+        }
         self.graph_height = g.height;
         self.graph = Some(g);
         self.apply_response(r)

@@ -1,13 +1,13 @@
 //! The editor's side of `input`: routes events to it and applies what it returns.
 
 use crate::editor::browser::Purpose;
+use crate::editor::browser_ui::Reply;
 use crate::editor::command::Command;
 use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
 use crate::editor::ops;
 use crate::editor::panel::{Action, List, WidgetKind};
-use crate::editor::request::Request;
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -42,6 +42,9 @@ impl Editor {
             return redraw;
         }
         if let Some(redraw) = self.menu_event(&ev) {
+            return redraw;
+        }
+        if let Some(redraw) = self.browser_event(&ev) {
             return redraw;
         }
         match ev {
@@ -126,22 +129,21 @@ impl Editor {
     pub(in crate::internals::editor) fn mouse_move(&mut self, x: f32, y: f32, mods: Mods) -> bool {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
-        if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
-            let ev = Event::MouseMove { x, y, mods };
-            if let Some(redraw) = self.graph_event(&ev) {
-                return redraw;
-            }
-        }
-        if let Some(redraw) = self.ik_move(x, y) {
-            return redraw;
-        }
-        if let Some(redraw) = self.handles_move(x, y, mods) {
-            return redraw;
-        }
-        if let Some(redraw) = self.key_strip_move(x, y) {
+        // The part that holds the gesture gets the move, and only it.
+        let part = match &self.drag {
+            Drag::Graph => self.graph_event(&Event::MouseMove { x, y, mods }),
+            Drag::Ik(_) => self.ik_move(x, y),
+            Drag::Keys(_) => self.key_strip_move(x, y),
+            // A handle drag, a pick about to become one, or hover over
+            // the handles.
+            Drag::Handle(_) | Drag::Pick { .. } | Drag::None => self.handles_move(x, y, mods),
+            _ => None,
+        };
+        if let Some(redraw) = part {
             return redraw;
         }
         match self.drag.clone() {
+            Drag::Handle(_) | Drag::Keys(_) | Drag::Ik(_) | Drag::Graph => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -252,6 +254,7 @@ impl Editor {
         }
         let l = self.layout();
         if self.graph_shown && l.key_rows.contains(x, y) {
+            // A drag it starts becomes the gesture (`graph_event`).
             self.commit_edit();
             self.graph_event(&Event::MouseDown { button, x, y, mods });
             return;
@@ -278,7 +281,10 @@ impl Editor {
                 (MouseButton::Left, _) if mods.alt => Drag::Orbit { last: (x, y) },
                 (MouseButton::Left, Mode::View) if mods.shift => Drag::Pan { last: (x, y) },
                 (MouseButton::Left, Mode::View) => Drag::Orbit { last: (x, y) },
-                (MouseButton::Left, Mode::Select) => Drag::Pick { at: (x, y) },
+                (MouseButton::Left, Mode::Select) => Drag::Pick {
+                    at: (x, y),
+                    armed: None,
+                },
                 (MouseButton::Right, _) => Drag::Context {
                     at: (x, y),
                     last: (x, y),
@@ -371,12 +377,25 @@ impl Editor {
         y: f32,
         mods: Mods,
     ) {
-        if self.graph_shown && self.graph.as_ref().is_some_and(|g| g.is_dragging()) {
-            self.graph_event(&Event::MouseUp { button, x, y, mods });
-            return;
-        }
-        if self.ik_release() || self.handles_release() || self.key_strip_release() {
-            return;
+        // The part that holds the gesture ends it.
+        match &self.drag {
+            Drag::Graph => {
+                self.graph_event(&Event::MouseUp { button, x, y, mods });
+                return;
+            }
+            Drag::Ik(_) => {
+                self.ik_release();
+                return;
+            }
+            Drag::Handle(_) => {
+                self.handles_release();
+                return;
+            }
+            Drag::Keys(_) => {
+                self.key_strip_release();
+                return;
+            }
+            _ => {}
         }
         match std::mem::take(&mut self.drag) {
             Drag::Field {
@@ -400,7 +419,9 @@ impl Editor {
                 base,
                 ..
             } => self.finish_field_drag(id, base),
-            Drag::Pick { at } if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP => {
+            Drag::Pick { at, .. }
+                if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP =>
+            {
                 self.pick(x, y);
             }
             Drag::RowMove {
@@ -425,15 +446,6 @@ impl Editor {
     ) -> bool {
         if self.dialog.is_some() {
             return false;
-        }
-        if let Some(b) = &mut self.browser {
-            let steps = (delta.abs().ceil() as usize).max(1) * 3;
-            b.scroll = if delta > 0.0 {
-                b.scroll.saturating_sub(steps)
-            } else {
-                (b.scroll + steps).min(b.entries.len().saturating_sub(1))
-            };
-            return true;
         }
         let l = self.layout();
         if self.graph_shown && l.key_rows.contains(x, y) {
@@ -713,12 +725,6 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn text(&mut self, s: &str) -> bool {
-        if let Some(b) = &mut self.browser {
-            if self.dialog.is_none() {
-                b.type_text(s);
-                return true;
-            }
-        }
         if let Some(e) = &mut self.edit {
             if e.fresh {
                 e.text.clear();
@@ -757,10 +763,6 @@ impl Editor {
                 Key::Char('d') | Key::Char('n') => self.run_action(Action::DialogDiscard),
                 _ => {}
             }
-            return;
-        }
-        if self.browser.is_some() {
-            self.browser_key(key, mods);
             return;
         }
         if let Some(e) = &mut self.edit {
@@ -1014,19 +1016,7 @@ impl Editor {
             Action::KeySelection => self.insert_keys(),
             Action::Duplicate => self.duplicate_selection(),
             Action::AddMenu => {
-                let at = self
-                    .widgets()
-                    .into_iter()
-                    .find(|w| {
-                        matches!(
-                            w.kind,
-                            WidgetKind::Button {
-                                action: Action::AddMenu,
-                                ..
-                            }
-                        )
-                    })
-                    .map_or((0, 0), |w| (w.rect.x, w.rect.bottom()));
+                let at = self.under_button(Action::AddMenu).unwrap_or((0, 0));
                 self.open_add_menu(at.0, at.1);
             }
             Action::Delete => self.delete_selection(),
@@ -1085,16 +1075,18 @@ impl Editor {
                 }
             }
             Action::Key(a) => self.key_action(a),
-            Action::BrowserAccept => self.browser_accept(),
+            Action::BrowserAccept => {
+                if let Some(b) = &mut self.browser {
+                    let r = b.choose();
+                    self.browser_reply(r);
+                }
+            }
             Action::BrowserCancel => {
-                self.browser = None;
-                self.browser_then = None;
+                self.browser_reply(Reply::Cancel);
             }
             Action::BrowserUp => {
                 if let Some(b) = &mut self.browser {
-                    if let Some(p) = b.dir.parent().map(|p| p.to_path_buf()) {
-                        b.enter(&p);
-                    }
+                    b.up();
                 }
             }
         }
@@ -1189,84 +1181,11 @@ impl Editor {
 
     // ----- modal boxes -----
 
+    /// A click while a question is open: its buttons (the browser
+    /// answers its own clicks, `browser_ui.rs`).
     pub(in crate::internals::editor) fn click_modal(&mut self, x: f32, y: f32) {
-        let Some(widget) = self.widget_at(x, y) else {
-            return;
-        };
-        match widget.kind {
-            WidgetKind::Button { action, .. } => self.run_action(action),
-            WidgetKind::Entry(i) => {
-                let Some(b) = &mut self.browser else { return };
-                let Some(e) = b.entries.get(i).cloned() else {
-                    return;
-                };
-                if e.is_dir {
-                    let target = if e.name == ".." {
-                        b.dir.parent().map(|p| p.to_path_buf())
-                    } else {
-                        Some(b.dir.join(&e.name))
-                    };
-                    if let Some(t) = target {
-                        b.enter(&t);
-                    }
-                } else if b.highlight == Some(i) {
-                    // A second click on the same file accepts it.
-                    self.browser_accept();
-                } else {
-                    b.highlight = Some(i);
-                    b.input = b.entry_path_text(i);
-                }
-            }
-            _ => {}
-        }
-    }
-
-    pub(in crate::internals::editor) fn browser_key(&mut self, key: Key, _mods: Mods) {
-        let rows = {
-            let r = self.browser_rect();
-            ((r.h - 3 * 16 - 20) / 16).max(1) as usize
-        };
-        let Some(b) = &mut self.browser else { return };
-        match key {
-            Key::Escape => self.run_action(Action::BrowserCancel),
-            Key::Enter => self.browser_accept(),
-            Key::Tab => b.complete(),
-            Key::Backspace => {
-                b.input.pop();
-                b.message = None;
-            }
-            Key::Up => {
-                b.step(-1);
-                b.scroll_to_highlight(rows);
-            }
-            Key::Down => {
-                b.step(1);
-                b.scroll_to_highlight(rows);
-            }
-            _ => {}
-        }
-    }
-
-    /// Enter / the accept button: a folder is entered, a file is used.
-    pub(in crate::internals::editor) fn browser_accept(&mut self) {
-        let Some(b) = &mut self.browser else { return };
-        let purpose = b.purpose;
-        let Some(path) = b.accept() else { return };
-        // The shell reads or writes; its answer (`route/files.rs`) closes
-        // the browser or shows why not.
-        match purpose {
-            Purpose::Open => self.requests.push(Request::Open(path)),
-            Purpose::Import => self.requests.push(Request::Import(path)),
-            Purpose::SaveAs => {
-                let path = if is_writable_type(&path) {
-                    path
-                } else {
-                    let mut s = path.into_os_string();
-                    s.push(".wrl");
-                    s.into()
-                };
-                self.request_save(path, None);
-            }
+        if let Some(WidgetKind::Button { action, .. }) = self.widget_at(x, y).map(|w| w.kind) {
+            self.run_action(action);
         }
     }
 }

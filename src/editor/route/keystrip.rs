@@ -2,6 +2,7 @@
 
 use crate::anim::{Animation, KEY_EPS};
 use crate::editor::command::Command;
+use crate::editor::gesture::Drag;
 use crate::editor::keyedit::{copy, retime};
 #[allow(unused_imports)]
 use crate::editor::keystrip::*;
@@ -255,8 +256,8 @@ impl Editor {
 
     /// The selection box being dragged, if any (for drawing).
     pub(in crate::internals::editor) fn key_box(&self) -> Option<Rect> {
-        match &self.keys.drag {
-            Some(StripDrag::Box { from, to, .. }) => {
+        match &self.drag {
+            Drag::Keys(StripDrag::Box { from, to, .. }) => {
                 let x = from.0.min(to.0) as i32;
                 let y = from.1.min(to.1) as i32;
                 let w = (from.0 - to.0).abs() as i32 + 1;
@@ -312,7 +313,7 @@ impl Editor {
                 let grabbed = now.iter().any(|c| ks.iter().any(|k| k.same(c)));
                 self.set_key_selection(now.clone());
                 if grabbed {
-                    self.keys.drag = Some(StripDrag::Keys {
+                    self.drag = Drag::Keys(StripDrag::Keys {
                         x0: x,
                         base: Box::new(self.scene.animation.clone()),
                         keys: now,
@@ -324,10 +325,10 @@ impl Editor {
             }
             Hit::Empty if self.near_cursor(x) => {
                 // The current-frame line runs through the strip: grab it.
-                self.drag = crate::editor::gesture::Drag::Seek;
+                self.drag = Drag::Seek;
             }
             Hit::Empty => {
-                self.keys.drag = Some(StripDrag::Box {
+                self.drag = Drag::Keys(StripDrag::Box {
                     from: (x, y),
                     to: (x, y),
                     add: mods.shift,
@@ -340,7 +341,7 @@ impl Editor {
     /// Mouse move during a strip drag (`None` when no strip drag runs).
     pub(in crate::internals::editor) fn key_strip_move(&mut self, x: f32, y: f32) -> Option<bool> {
         // Taken out so `self` can be borrowed; put back changed in place.
-        let mut drag = self.keys.drag.take()?;
+        let mut drag = self.drag.take_keys()?;
         let redraw = match &mut drag {
             StripDrag::Box {
                 from,
@@ -373,7 +374,7 @@ impl Editor {
                 true
             }
         };
-        self.keys.drag = Some(drag);
+        self.drag = Drag::Keys(drag);
         Some(redraw)
     }
 
@@ -416,7 +417,7 @@ impl Editor {
 
     /// Release of a strip drag; false when none ran.
     pub(in crate::internals::editor) fn key_strip_release(&mut self) -> bool {
-        let Some(drag) = self.keys.drag.take() else {
+        let Some(drag) = self.drag.take_keys() else {
             return false;
         };
         match drag {
@@ -457,7 +458,7 @@ impl Editor {
 
     /// Esc during a strip drag: puts back what it changed.
     pub(in crate::internals::editor) fn cancel_strip_drag(&mut self) {
-        match self.keys.drag.take() {
+        match self.drag.take_keys() {
             Some(StripDrag::Keys { base, keys, .. }) => {
                 self.scene.animation = *base;
                 self.scene_rev += 1;
@@ -563,7 +564,7 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn key_strip_key(&mut self, key: KeyName, m: Mods) -> bool {
-        if self.keys.drag.is_some() {
+        if matches!(self.drag, Drag::Keys(_)) {
             if key == KeyName::Escape {
                 self.cancel_strip_drag();
             }

@@ -21,7 +21,7 @@ impl Editor {
 
     /// Picks the tool (W / E / T, toolbar).
     pub fn set_tool(&mut self, t: Tool) {
-        if self.manip.drag.is_none() {
+        if self.handle_drag().is_none() {
             self.manip.tool = t;
             self.manip.hover = None;
         }
@@ -183,7 +183,7 @@ impl Editor {
             }
         }
         self.stop_playback();
-        self.manip.drag = Some(HandleDrag {
+        self.drag = Drag::Handle(Box::new(HandleDrag {
             handle: h,
             t,
             stored: Box::new(self.scene.node(t.id).clone()),
@@ -194,16 +194,25 @@ impl Editor {
             ring_axis,
             angle: 0.0,
             edge_on,
-        });
+        }));
         self.manip.hover = (h != Handle::Body && h != Handle::Trackball).then_some(h);
         true
     }
 
-    /// Mouse down in the viewport: starts a handle drag when one is hit
-    /// (true), or arms a body drag when the press is on the selection
-    /// (false: the click still picks on release unless the mouse moves).
+    /// The handle drag, when it is the editor's gesture.
+    pub(in crate::internals::editor) fn handle_drag(&self) -> Option<&HandleDrag> {
+        match &self.drag {
+            Drag::Handle(d) => Some(d),
+            _ => None,
+        }
+    }
+
+    /// Mouse down in the viewport (left, select mode): starts a handle
+    /// drag when one is hit, or, on the selection's body (or inside the
+    /// rotate rings), a pick armed to become that drag once the mouse
+    /// moves past the slop (a click still picks on release). True when
+    /// the press is the handles'.
     pub(in crate::internals::editor) fn handles_press(&mut self, x: f32, y: f32) -> bool {
-        self.manip.armed = None;
         let tool = self.manip.tool;
         if let Some(h) = self.handle_at(x, y) {
             if let Some(t) = self.target(tool) {
@@ -211,17 +220,21 @@ impl Editor {
             }
         }
         let sel = self.selection;
+        let mut armed = None;
         if sel.is_some() && self.pick_at(x, y) == sel && self.target(Tool::Translate).is_some() {
-            self.manip.armed = Some((Handle::Body, (x, y)));
+            armed = Some(Handle::Body);
         } else if tool == Tool::Rotate && self.mode == crate::editor::Mode::Select {
             if let Some(t) = self.target(Tool::Rotate) {
                 let proj = self.handle_projector();
                 if crate::editor::manip::rotate::in_trackball(&proj, t.pivot, x, y) {
-                    self.manip.armed = Some((Handle::Trackball, (x, y)));
+                    armed = Some(Handle::Trackball);
                 }
             }
         }
-        false
+        if armed.is_some() {
+            self.drag = Drag::Pick { at: (x, y), armed };
+        }
+        armed.is_some()
     }
 
     /// Mouse move: drags the active handle, or updates the hover highlight.
@@ -232,28 +245,23 @@ impl Editor {
         y: f32,
         mods: Mods,
     ) -> Option<bool> {
-        if self.manip.drag.is_none() {
-            if let Some((h, at)) = self.manip.armed {
-                if !matches!(self.drag, Drag::Pick { .. })
-                    || !crate::editor::manip::body::past_slop(at, x, y)
-                {
-                    return None;
-                }
-                // Past the slop: the press becomes a drag, not a click.
-                self.manip.armed = None;
-                let tool = if h == Handle::Body {
-                    Tool::Translate
-                } else {
-                    Tool::Rotate
-                };
-                let t = self.target(tool)?;
-                if !self.start_drag(h, t, at.0, at.1) {
-                    return None;
-                }
-                self.drag = Drag::None;
+        if let Drag::Pick { at, armed: Some(h) } = self.drag {
+            if !crate::editor::manip::body::past_slop(at, x, y) {
+                return None;
+            }
+            // Past the slop: the press becomes a drag, not a click.
+            self.drag = Drag::Pick { at, armed: None };
+            let tool = if h == Handle::Body {
+                Tool::Translate
+            } else {
+                Tool::Rotate
+            };
+            let t = self.target(tool)?;
+            if !self.start_drag(h, t, at.0, at.1) {
+                return None;
             }
         }
-        let Some(d) = self.manip.drag.clone() else {
+        let Some(d) = self.handle_drag().cloned() else {
             if !matches!(self.drag, Drag::None) {
                 return None;
             }
@@ -287,7 +295,7 @@ impl Editor {
         let verb = d.handle.verb();
         match d.handle {
             Handle::Ring(_) | Handle::ViewRing => {
-                let live = self.manip.drag.as_ref().map_or(d.angle, |l| l.angle);
+                let live = self.handle_drag().map_or(d.angle, |l| l.angle);
                 let a = if mods.ctrl {
                     snap(live, crate::editor::manip::rotate::SNAP)
                 } else {
@@ -382,7 +390,7 @@ impl Editor {
                         crate::editor::manip::geom::unwrap_angle(raw, d.angle)
                     }
                 };
-                if let Some(live) = &mut self.manip.drag {
+                if let Drag::Handle(live) = &mut self.drag {
                     live.angle = angle;
                 }
                 let shown = if mods.ctrl {
@@ -446,8 +454,7 @@ impl Editor {
     /// Mouse up: ends a handle drag as one undo step (with a key in record
     /// mode). False when no handle drag was running.
     pub(in crate::internals::editor) fn handles_release(&mut self) -> bool {
-        self.manip.armed = None;
-        let Some(d) = self.manip.drag.take() else {
+        let Some(d) = self.drag.take_handle() else {
             return false;
         };
         let id = d.t.id;
@@ -480,7 +487,7 @@ impl Editor {
     /// are ignored; otherwise W / E / T pick the tool and O toggles the
     /// onion skin. True when the key was taken.
     pub(in crate::internals::editor) fn handles_key(&mut self, key: Key, mods: Mods) -> bool {
-        let Some(d) = &self.manip.drag else {
+        let Some(d) = self.handle_drag() else {
             if mods.ctrl || mods.alt {
                 return false;
             }
@@ -503,7 +510,7 @@ impl Editor {
                 before: Box::new(self.scene.node(d.t.id).clone()),
                 after: d.stored.clone(),
             };
-            self.manip.drag = None;
+            self.drag = Drag::None;
             self.pending = None;
             self.preview(&c);
         }
@@ -512,7 +519,7 @@ impl Editor {
 
     /// Whether a handle drag is running.
     pub fn handle_dragging(&self) -> bool {
-        self.manip.drag.is_some()
+        self.handle_drag().is_some()
     }
 
     /// Draws the current tool's handles for the selection over the viewport.
@@ -526,9 +533,7 @@ impl Editor {
         };
         let proj = self.handle_projector();
         let active = self
-            .manip
-            .drag
-            .as_ref()
+            .handle_drag()
             .map(|d| d.handle)
             .filter(|&h| h != Handle::Body && h != Handle::Trackball);
         let hot = active.or(self.manip.hover);
@@ -539,7 +544,7 @@ impl Editor {
                 let back = self.camera.back();
                 // While turning, a spoke from the pivot to the grabbed point
                 // as turned shows the angle.
-                if let Some(d) = &self.manip.drag {
+                if let Some(d) = self.handle_drag() {
                     if matches!(d.handle, Handle::Ring(_) | Handle::ViewRing) {
                         let g = d.t.pivot
                             + Quat::from_axis_angle(d.ring_axis, d.angle) * (d.grab - d.t.pivot);

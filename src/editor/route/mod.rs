@@ -2,6 +2,7 @@
 //! apply what they return. Nothing outside this folder imports it, so the
 //! parts below never depend on the editor that holds them.
 
+mod browser;
 mod create;
 mod files;
 mod graph;

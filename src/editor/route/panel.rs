@@ -403,6 +403,17 @@ impl Editor {
         }
     }
 
+    /// Where a menu opened by the button for `action` goes: under the
+    /// button (its bottom-left corner), if the button is shown.
+    pub(in crate::internals::editor) fn under_button(&self, action: Action) -> Option<(i32, i32)> {
+        self.widgets().into_iter().find_map(|w| match w.kind {
+            WidgetKind::Button { action: a, .. } if a == action => {
+                Some((w.rect.x, w.rect.bottom()))
+            }
+            _ => None,
+        })
+    }
+
     /// The file browser's box.
     pub fn browser_rect(&self) -> Rect {
         let win = self.layout().window;
@@ -411,50 +422,9 @@ impl Editor {
         Rect::new((win.w - bw) / 2, (win.h - bh) / 2, bw, bh)
     }
 
-    /// Widgets of the file browser.
+    /// Widgets of the file browser (it lays them out, `browser_ui.rs`).
     pub fn browser_widgets(&self, b: &Browser) -> Vec<Widget> {
-        let r = self.browser_rect();
-        let mut out = Vec::new();
-        let (title, rest) = r.take_top(ROW + 2);
-        out.push(w(title, WidgetKind::Header(b.purpose.title().into())));
-        let inner = rest.inset(4);
-        let (path_row, rest) = inner.take_top(ROW + 2);
-        out.push(w(path_row, WidgetKind::PathInput));
-        let (list, buttons) = rest.take_top(rest.h - ROW - 6);
-        let list = Rect::new(list.x, list.y + 3, list.w, list.h - 3);
-        let cap = (list.h / ROW).max(0) as usize;
-        for (i, _) in b.entries.iter().enumerate().skip(b.scroll).take(cap) {
-            let y = list.y + (i - b.scroll) as i32 * ROW;
-            out.push(w(Rect::new(list.x, y, list.w, ROW), WidgetKind::Entry(i)));
-        }
-        let by = buttons.y + 4;
-        let cw = text::width("Cancel") + 10;
-        let aw = text::width(b.purpose.verb()) + 10;
-        let uw = text::width("Up") + 10;
-        out.push(button(
-            Rect::new(buttons.right() - cw, by, cw, ROW + 2),
-            "Cancel",
-            Action::BrowserCancel,
-            false,
-        ));
-        out.push(button(
-            Rect::new(buttons.right() - cw - aw - 4, by, aw, ROW + 2),
-            b.purpose.verb(),
-            Action::BrowserAccept,
-            true,
-        ));
-        out.push(button(
-            Rect::new(buttons.x, by, uw, ROW + 2),
-            "Up",
-            Action::BrowserUp,
-            false,
-        ));
-        if let Some(m) = &b.message {
-            let x = buttons.x + uw + 6;
-            let mw = buttons.right() - cw - aw - 10 - x;
-            out.push(label(Rect::new(x, by + 1, mw, ROW), m, true));
-        }
-        out
+        b.widgets(self.browser_rect())
     }
 
     pub fn dialog_rect(&self) -> Rect {
