@@ -22,6 +22,7 @@ mod frame;
 mod geometry;
 pub mod job;
 mod lanes;
+mod log2_lanes;
 mod prepare;
 mod raster;
 mod shade;
