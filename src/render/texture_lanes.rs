@@ -55,9 +55,7 @@ impl Sampler {
         // λ = ½·log2(ρ²) where ρ² > 1 (libm's bits, on lanes); 0 where
         // ρ² ≤ 1, and where ρ² = ∞ (λ would not be finite).
         let rho2 = lx.max(ly);
-        let in_range = rho2
-            .gt(V::splat(1.0))
-            .and(rho2.le(V::splat(f32::MAX)));
+        let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
         let safe = V::select(in_range, rho2, V::splat(2.0));
         let lods = to_arr((V::splat(0.5) * log2f8(safe)).keep(in_range));
         let levels = self.image().levels();
@@ -249,8 +247,8 @@ fn finite<V: V8>(x: V) -> V {
 
 /// `texture::wrap` of the texel indices `i` and `i + 1` for lanes of whole
 /// numbers in −2..=n (`n` per lane, the level's size): repeat is
-/// `i − n·⌊i/n⌋` (`rem_euclid`; i/n is never rounded across a whole number
-/// for sizes ≤ 16384), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
+/// `rem_euclid` (by one period's addition or subtraction, see
+/// [`repeat_once`]), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
 /// here (see `Sampler::lanes_cover`).
 #[inline(always)]
 fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
@@ -261,8 +259,21 @@ fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
             let (lo, hi) = (V::splat(0.0), n - one);
             (i.max(lo).min(hi), j.max(lo).min(hi))
         }
-        _ => (i - n * (i / n).floor(), j - n * (j / n).floor()),
+        // Repeat: i lies in −2..=n (the clamp before), j = i + 1, so one
+        // period up or down wraps them (small whole numbers: exact, the
+        // same as `rem_euclid`, with no division).
+        _ => (repeat_once(i, n), repeat_once(j, n)),
     }
+}
+
+/// `i` wrapped into 0..n for whole-number lanes in −2..=n + 1: one period
+/// up or down, then a clamp that only acts for n = 1 (where two periods
+/// may be needed and the answer is 0).
+#[inline(always)]
+fn repeat_once<V: V8>(i: V, n: V) -> V {
+    let zero = V::splat(0.0);
+    let once = i + n.keep(zero.gt(i)) - n.keep(n.le(i));
+    once.max(zero).min(n - V::splat(1.0))
 }
 
 #[cfg(test)]
