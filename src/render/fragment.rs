@@ -424,12 +424,17 @@ fn samples_agree(winner: &[u32], i0: usize, ns: usize) -> bool {
 /// sample plane to the other `ns − 1`.
 #[inline(always)]
 fn copy_to_samples(out: &mut Shaded, i0: usize, ns: usize) {
-    for s in 1..ns {
-        let j0 = s * PLANE + i0;
-        for c in [&mut *out.r, &mut *out.g, &mut *out.b] {
-            c.copy_within(i0..i0 + 16, j0);
+    // Fixed-size copies through arrays (`copy_within` becomes a `memmove`
+    // call per row of sixteen).
+    for c in [&mut *out.r, &mut *out.g, &mut *out.b] {
+        let v: [f32; 16] = c[i0..i0 + 16].try_into().expect("16 lanes");
+        for s in 1..ns {
+            c[s * PLANE + i0..s * PLANE + i0 + 16].copy_from_slice(&v);
         }
-        out.ids.copy_within(i0..i0 + 16, j0);
+    }
+    let v: [u32; 16] = out.ids[i0..i0 + 16].try_into().expect("16 lanes");
+    for s in 1..ns {
+        out.ids[s * PLANE + i0..s * PLANE + i0 + 16].copy_from_slice(&v);
     }
 }
 
