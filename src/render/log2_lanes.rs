@@ -9,7 +9,7 @@
 //! IEEE operations in the same order on lanes (no fused multiply-add)
 //! give the same bits; only the bit fiddling runs lane by lane.
 
-use super::simd::{Lanes, V8};
+use super::simd::V8;
 
 // libm's constants, written as libm writes them (so they parse to the same
 // f32 bits).
