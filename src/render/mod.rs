@@ -7,7 +7,7 @@
 //! Pipeline (one file per stage; `stages` runs them one at a time for the
 //! per-stage benchmarks):
 //! `prepare` (gather shapes/lights, transform, `clip`, project, cull, snap to
-//! the fixed-point grid) → binning into [`raster::TILE`]² tiles →
+//! the fixed-point grid) → binning into [`raster::TILE`]×[`raster::TILE_H`] tiles →
 //! `raster::draw_tile` per tile on the thread pool (depth pass, then one
 //! `shade` call per visible pixel, then lines/points, then transparent
 //! triangles back to front) → copy tiles into the [`Frame`].
@@ -22,6 +22,7 @@ mod frame;
 mod geometry;
 pub mod job;
 mod lanes;
+mod log2_lanes;
 mod prepare;
 mod raster;
 mod shade;
@@ -173,7 +174,7 @@ fn draw(
     let tiles_x = bin_tiles(p, bins, w, h);
     // Bands of one tile row each run in parallel; a band draws its tiles left
     // to right straight into its rows of the frame.
-    let band = raster::TILE as usize * w as usize;
+    let band = raster::TILE_H as usize * w as usize;
     let background = opts.background;
     frame
         .color
@@ -198,14 +199,14 @@ fn draw(
                 depth,
                 ids,
                 stride: w as usize,
-                y0: ty * raster::TILE,
+                y0: ty * raster::TILE_H,
             };
             for tx in 0..tiles_x {
                 let rect = [
                     tx * raster::TILE,
-                    ty * raster::TILE,
+                    ty * raster::TILE_H,
                     ((tx + 1) * raster::TILE).min(w),
-                    ((ty + 1) * raster::TILE).min(h),
+                    ((ty + 1) * raster::TILE_H).min(h),
                 ];
                 let bin = &bins[(ty * tiles_x + tx) as usize];
                 raster::draw_tile(p, bin, rect, background, eye, &mut scratch, &mut target);
@@ -214,11 +215,11 @@ fn draw(
         });
 }
 
-/// Bins the prepared primitives into the `TILE`² tiles of a `w`×`h` frame
+/// Bins the prepared primitives into the `TILE`×`TILE_H` tiles of a `w`×`h` frame
 /// (row-major, each list in drawing order); returns the tiles per row.
 fn bin_tiles(p: &prepare::Prepared, bins: &mut Vec<raster::Bin>, w: i32, h: i32) -> i32 {
     let tiles_x = (w + raster::TILE - 1) / raster::TILE;
-    let tiles_y = (h + raster::TILE - 1) / raster::TILE;
+    let tiles_y = (h + raster::TILE_H - 1) / raster::TILE_H;
     bins.resize_with((tiles_x * tiles_y) as usize, raster::Bin::default);
     for b in bins.iter_mut() {
         b.clear();
@@ -230,8 +231,8 @@ fn bin_tiles(p: &prepare::Prepared, bins: &mut Vec<raster::Bin>, w: i32, h: i32)
         pick: fn(&mut raster::Bin) -> &mut Vec<u32>,
     ) {
         for (i, b) in boxes.enumerate() {
-            let (tx0, ty0) = (b[0] / raster::TILE, b[1] / raster::TILE);
-            let (tx1, ty1) = ((b[2] - 1) / raster::TILE, (b[3] - 1) / raster::TILE);
+            let (tx0, ty0) = (b[0] / raster::TILE, b[1] / raster::TILE_H);
+            let (tx1, ty1) = ((b[2] - 1) / raster::TILE, (b[3] - 1) / raster::TILE_H);
             for ty in ty0..=ty1 {
                 for tx in tx0..=tx1 {
                     pick(&mut bins[(ty * tiles_x + tx) as usize]).push(i as u32);

@@ -12,7 +12,7 @@ use super::shade::shade;
 use super::simd::{self, Lanes, Sse8, V8};
 use glam::Vec3;
 
-pub use super::fragment::TILE;
+pub use super::fragment::{PLANE, TILE, TILE_H};
 
 /// A rectangle of pixels: `[x0, y0, x1, y1)`.
 pub type Rect = [i32; 4];
@@ -66,10 +66,8 @@ pub fn sample_offsets(samples: usize) -> &'static [(i64, i64)] {
     }
 }
 
-const TILE_PIXELS: usize = (TILE * TILE) as usize;
-
 /// Per-thread working buffers for one tile: every per-sample buffer holds
-/// `samples` planes of `TILE`×`TILE` (sample-major), reused from tile to
+/// `samples` planes of `TILE`×`TILE_H` (sample-major), reused from tile to
 /// tile. Depth and winner are reset for every tile; the shading pass writes
 /// every colour and id; barycentrics are read only where the depth pass
 /// wrote them. So reuse never changes a picture.
@@ -96,7 +94,7 @@ impl Scratch {
     }
 
     pub fn new(samples: usize) -> Scratch {
-        let n = samples * TILE_PIXELS;
+        let n = samples * PLANE;
         Scratch {
             samples,
             r: vec![0.0; n],
@@ -107,8 +105,8 @@ impl Scratch {
             winner: vec![NONE; n],
             b1: vec![0.0; n],
             b2: vec![0.0; n],
-            cover: vec![0; if samples > 1 { TILE_PIXELS } else { 0 }],
-            cover_b: vec![[0.0; 2]; if samples > 1 { TILE_PIXELS } else { 0 }],
+            cover: vec![0; if samples > 1 { PLANE } else { 0 }],
+            cover_b: vec![[0.0; 2]; if samples > 1 { PLANE } else { 0 }],
         }
     }
 }
@@ -422,7 +420,7 @@ pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch) {
     depth.fill(1.0);
     winner.fill(NONE);
     for (s, &off) in sample_offsets(ns).iter().enumerate() {
-        let plane = s * TILE_PIXELS..(s + 1) * TILE_PIXELS;
+        let plane = s * PLANE..(s + 1) * PLANE;
         depth_pass(
             p,
             bin,
@@ -464,7 +462,7 @@ pub fn shade_tile(p: &Prepared, rect: Rect, background: Vec3, eye: Vec3, scratch
     );
     if let Some(sky) = &p.sky {
         for s in 0..ns {
-            let pl = s * TILE_PIXELS..(s + 1) * TILE_PIXELS;
+            let pl = s * PLANE..(s + 1) * PLANE;
             let rgb = [&mut r[pl.clone()], &mut g[pl.clone()], &mut b[pl.clone()]];
             sky.fill_tile((rect[0], rect[1]), (tw, th), TILE as usize, &ids[pl], rgb);
         }
@@ -526,7 +524,7 @@ pub fn draw_tile(
             let i = at(x, y);
             let mut color = None;
             for s in 0..ns {
-                let j = s * TILE_PIXELS + i;
+                let j = s * PLANE + i;
                 if mask >> s & 1 == 1 && z < depth[j] && z >= 0.0 {
                     let c = *color.get_or_insert_with(|| shade_attrs(item, &facing(a, eye), eye));
                     depth[j] = z;
@@ -556,7 +554,7 @@ pub fn draw_tile(
                             continue;
                         }
                     }
-                    let j = s * TILE_PIXELS + i;
+                    let j = s * PLANE + i;
                     if pt.z < depth[j] && pt.z >= 0.0 {
                         depth[j] = pt.z;
                         put([r, g, b], j, c);
@@ -622,7 +620,7 @@ pub fn draw_tile(
             for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
                 let z = depth_at(t, w1, w2);
                 let i = at(x, y);
-                if z < depth[s * TILE_PIXELS + i] && z >= 0.0 {
+                if z < depth[s * PLANE + i] && z >= 0.0 {
                     if cover[i] == 0 {
                         cover_b[i] = [w1, w2];
                     }
@@ -640,7 +638,7 @@ pub fn draw_tile(
                 let c = color_at(w1, w2);
                 for s in 0..ns {
                     if cover[i] >> s & 1 == 1 {
-                        blend(s * TILE_PIXELS + i, c);
+                        blend(s * PLANE + i, c);
                     }
                 }
             }
@@ -685,7 +683,7 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
         let mut zmin = [f32::INFINITY; TILE as usize];
         let mut id = [0u32; TILE as usize];
         for s in 0..ns {
-            let j = s * TILE_PIXELS + src;
+            let j = s * PLANE + src;
             for (a, c) in acc.iter_mut().zip([r, g, b]) {
                 for (a, c) in a[..tw].iter_mut().zip(&c[j..j + tw]) {
                     *a += c;

@@ -10,7 +10,7 @@
 //! the thread pool and with lines, points and transparent triangles.
 
 use super::prepare::{self, Prepared};
-use super::raster::{self, Bin, Rect, Scratch, Target, TILE};
+use super::raster::{self, Bin, Rect, Scratch, Target, TILE, TILE_H};
 use super::{Frame, RenderOptions, View};
 use crate::anim::Pose;
 use crate::scene::Scene;
@@ -54,13 +54,13 @@ impl Stages {
     fn tiles(&self) -> Vec<(Rect, usize)> {
         let (w, h) = (self.opts.width as i32, self.opts.height as i32);
         let mut out = Vec::new();
-        for ty in 0..(h + TILE - 1) / TILE {
+        for ty in 0..(h + TILE_H - 1) / TILE_H {
             for tx in 0..self.tiles_x {
                 let rect = [
                     tx * TILE,
-                    ty * TILE,
+                    ty * TILE_H,
                     ((tx + 1) * TILE).min(w),
-                    ((ty + 1) * TILE).min(h),
+                    ((ty + 1) * TILE_H).min(h),
                 ];
                 out.push((rect, (ty * self.tiles_x + tx) as usize));
             }

@@ -5,9 +5,9 @@
 //! each a function call with its own `floorf` calls and integer
 //! conversions) cost more than three times the whole lighting of a pixel.
 //! Here the coordinate arithmetic and the four lerps per level run on
-//! [`V8`] lanes; only what is per lane by nature stays scalar: the level of
-//! detail's `log2f` (libm, so every machine agrees), choosing the mip
-//! level, wrapping the texel indices and fetching the texels. Every lane
+//! [`V8`] lanes, the level of detail's `log2f` too (`log2_lanes`: libm's
+//! bits); only what is per lane by nature stays scalar: choosing the mip
+//! level and fetching the texels. Every lane
 //! does the same IEEE operations in the same order as `texel` →
 //! `sample` → `bilinear`, so the picture does not change.
 //!
@@ -16,6 +16,7 @@
 //! NEAREST/non-trilinear filters, and NaN footprints (where `f32::max` and
 //! `MAXPS` disagree).
 
+use super::log2_lanes::log2f8;
 use super::simd::{Lanes, V8};
 use super::texture::Sampler;
 use crate::scene::{MipLevel, TextureModel, Wrap};
@@ -51,20 +52,19 @@ impl Sampler {
         if !self.lanes_cover() || !no_nan {
             return self.texel8_by_lane(uv);
         }
-        let rho2 = to_arr(lx.max(ly));
+        // λ = ½·log2(ρ²) where ρ² > 1 (libm's bits, on lanes); 0 where
+        // ρ² ≤ 1, and where ρ² = ∞ (λ would not be finite).
+        let rho2 = lx.max(ly);
+        let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
+        let safe = V::select(in_range, rho2, V::splat(2.0));
+        let lods = to_arr((V::splat(0.5) * log2f8(safe)).keep(in_range));
         let levels = self.image().levels();
         let last = levels.len() - 1;
         // Per lane: the two levels and the blend fraction (`Sampler::sample`).
         let mut lv = [[0usize; 8]; 2];
         let mut frac = [0.0f32; 8];
         for k in 0..8 {
-            let r = rho2[k];
-            let lod = if r.is_nan() || r <= 1.0 {
-                0.0
-            } else {
-                0.5 * libm::log2f(r)
-            };
-            let lod = if lod.is_finite() { lod.max(0.0) } else { 0.0 };
+            let lod = lods[k].max(0.0);
             if lod >= last as f32 {
                 // One level: blending it with itself by 0 gives it exactly.
                 lv[0][k] = last;
@@ -247,8 +247,8 @@ fn finite<V: V8>(x: V) -> V {
 
 /// `texture::wrap` of the texel indices `i` and `i + 1` for lanes of whole
 /// numbers in −2..=n (`n` per lane, the level's size): repeat is
-/// `i − n·⌊i/n⌋` (`rem_euclid`; i/n is never rounded across a whole number
-/// for sizes ≤ 16384), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
+/// `rem_euclid` (by one period's addition or subtraction, see
+/// [`repeat_once`]), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
 /// here (see `Sampler::lanes_cover`).
 #[inline(always)]
 fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
@@ -259,8 +259,21 @@ fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
             let (lo, hi) = (V::splat(0.0), n - one);
             (i.max(lo).min(hi), j.max(lo).min(hi))
         }
-        _ => (i - n * (i / n).floor(), j - n * (j / n).floor()),
+        // Repeat: i lies in −2..=n (the clamp before), j = i + 1, so one
+        // period up or down wraps them (small whole numbers: exact, the
+        // same as `rem_euclid`, with no division).
+        _ => (repeat_once(i, n), repeat_once(j, n)),
     }
+}
+
+/// `i` wrapped into 0..n for whole-number lanes in −2..=n + 1: one period
+/// up or down, then a clamp that only acts for n = 1 (where two periods
+/// may be needed and the answer is 0).
+#[inline(always)]
+fn repeat_once<V: V8>(i: V, n: V) -> V {
+    let zero = V::splat(0.0);
+    let once = i + n.keep(zero.gt(i)) - n.keep(n.le(i));
+    once.max(zero).min(n - V::splat(1.0))
 }
 
 #[cfg(test)]
