@@ -137,6 +137,20 @@ fn animation_flag_on_a_one_clip_file() {
     }
 }
 
+/// `animed info --strict tests/data/vrml97_bad/FILE` exits 3, warns at
+/// `FILE:at:` with `what`, and says why it failed.
+fn assert_flagged(file: &str, at: &str, what: &str) {
+    let path = format!("tests/data/vrml97_bad/{file}");
+    let (code, out, err) = animed(&["info", "--strict", &path]);
+    assert_eq!(code, 3, "{file}: {out}{err}");
+    let want = format!("{path}:{at}: ");
+    assert!(
+        out.lines().any(|l| l.contains(&want) && l.contains(what)),
+        "{file}: no warning '{want}…{what}' in\n{out}"
+    );
+    assert!(err.contains("--strict"), "{err}");
+}
+
 /// OpenVRML's invalid VRML97 files: each is flagged with a warning at the
 /// line and column of the offending statement, and `info --strict` turns
 /// that into exit status 3. (Expected rule and position per file.)
@@ -160,15 +174,7 @@ fn openvrml_bad_files_are_flagged_with_locations() {
         ),
     ];
     for (file, at, what) in cases {
-        let path = format!("tests/data/vrml97_bad/{file}");
-        let (code, out, err) = animed(&["info", "--strict", &path]);
-        assert_eq!(code, 3, "{file}: {out}{err}");
-        let want = format!("{path}:{at}: ");
-        assert!(
-            out.lines().any(|l| l.contains(&want) && l.contains(what)),
-            "{file}: no warning '{want}…{what}' in\n{out}"
-        );
-        assert!(err.contains("--strict"), "{err}");
+        assert_flagged(file, at, what);
     }
     // A valid file passes --strict.
     let (code, out, err) = animed(&["info", "--strict", "assets/demo.wrl"]);
@@ -211,14 +217,7 @@ fn routes_and_is_are_checked_against_node_interfaces() {
         ),
     ];
     for (file, at, what) in cases {
-        let path = format!("tests/data/vrml97_bad/{file}");
-        let (code, out, err) = animed(&["info", "--strict", &path]);
-        assert_eq!(code, 3, "{file}: {out}{err}");
-        let want = format!("{path}:{at}: ");
-        assert!(
-            out.lines().any(|l| l.contains(&want) && l.contains(what)),
-            "{file}: no warning '{want}…{what}' in\n{out}"
-        );
+        assert_flagged(file, at, what);
     }
     // The Script's good ROUTE (SFFloat to its SFFloat eventIn) is not
     // flagged: one ROUTE warning in that file, not two.
