@@ -403,11 +403,6 @@ impl Parser<'_> {
             self.script_decls.push(Vec::new());
         }
         let r = self.node_fields(&kind, pos);
-        let decls = if script {
-            self.script_decls.pop()
-        } else {
-            None
-        };
         self.depth -= 1;
         let fields = r?;
         let proto = self
@@ -452,9 +447,8 @@ impl Parser<'_> {
             return Err(self.too_deep(pos));
         }
         let node = Rc::new(node);
-        if let Some(d) = decls.filter(|d| !d.is_empty()) {
-            self.node_ifaces
-                .insert(Rc::as_ptr(&node), (node.clone(), Rc::new(d)));
+        if script {
+            self.keep_script_interface(&node);
         }
         Ok(node)
     }
@@ -547,41 +541,9 @@ impl Parser<'_> {
                     self.externproto_after_keyword(fpos)?;
                     continue;
                 }
-                "eventIn" | "eventOut" | "inputOnly" | "outputOnly" => {
-                    // Script interface: `eventIn SFType name [IS other]`.
-                    let (ty, _) = self.ident("a field type")?;
-                    let (n, npos) = self.ident("a field name")?;
-                    let own = self.declare(kind, &name, &ty, &n);
-                    if self.peek_is_ident("IS") {
-                        self.next()?;
-                        let (other, _) = self.ident("an interface name after IS")?;
-                        let is = Value::Is(other.clone());
-                        self.check_field(kind, &n, &is, npos, own);
-                        fields.push(Field {
-                            name: n,
-                            value: Value::Is(other),
-                            pos: npos,
-                        });
-                    }
-                    continue;
-                }
-                "field" | "exposedField" | "initializeOnly" | "inputOutput" => {
-                    if self.opts.vrml97 && kind == "Script" && name == "exposedField" {
-                        self.warn(
-                            fpos,
-                            "a VRML97 Script cannot declare an exposedField (§6.40: field, eventIn and eventOut only)",
-                        );
-                    }
-                    let (ty, _) = self.ident("a field type")?;
-                    let (n, npos) = self.ident("a field name")?;
-                    let own = self.declare(kind, &name, &ty, &n);
-                    let value = self.value()?;
-                    self.check_field(kind, &n, &value, npos, own);
-                    fields.push(Field {
-                        name: n,
-                        value,
-                        pos: npos,
-                    });
+                "eventIn" | "eventOut" | "inputOnly" | "outputOnly" | "field" | "exposedField"
+                | "initializeOnly" | "inputOutput" => {
+                    self.declaration(kind, &name, fpos, &mut fields)?;
                     continue;
                 }
                 _ => {}
@@ -602,10 +564,52 @@ impl Parser<'_> {
         }
     }
 
+    /// A Script's interface declaration `keyword type name` with its value
+    /// (fields) or `IS other` (events may have either or nothing). Never
+    /// inlined: its locals would grow the frame of `node_fields`, which
+    /// recurses once per nesting level.
+    #[inline(never)]
+    fn declaration(
+        &mut self,
+        kind: &str,
+        keyword: &str,
+        fpos: Pos,
+        fields: &mut Vec<Field>,
+    ) -> PResult<()> {
+        let event = matches!(keyword, "eventIn" | "eventOut" | "inputOnly" | "outputOnly");
+        if self.opts.vrml97 && kind == "Script" && keyword == "exposedField" {
+            self.warn(
+                fpos,
+                "a VRML97 Script cannot declare an exposedField (§6.40: field, eventIn and eventOut only)",
+            );
+        }
+        let (ty, _) = self.ident("a field type")?;
+        let (n, npos) = self.ident("a field name")?;
+        let own = self.declare(kind, keyword, &ty, &n);
+        let value = if !event {
+            self.value()?
+        } else if self.peek_is_ident("IS") {
+            // `eventIn SFType name IS other`.
+            self.next()?;
+            Value::Is(self.ident("an interface name after IS")?.0)
+        } else {
+            return Ok(());
+        };
+        self.check_field(kind, &n, &value, npos, own);
+        fields.push(Field {
+            name: n,
+            value,
+            pos: npos,
+        });
+        Ok(())
+    }
+
     /// VRML97 rules for one field of a node body (see `checks`): IS only
     /// inside a PROTO body, naming a field of its interface of a matching
     /// type and kind (`interfaces`); events take no value. `own` is the
-    /// field's declared access and type when a Script declares it.
+    /// field's declared access and type when a Script declares it. Never
+    /// inlined (see `declaration`).
+    #[inline(never)]
     fn check_field(
         &mut self,
         kind: &str,

@@ -65,6 +65,17 @@ impl Parser<'_> {
         Some((access, ty.to_string()))
     }
 
+    /// Files the interface the Script just read declared (popped from
+    /// `script_decls`) under the node. Never inlined: `node_body`
+    /// recurses once per nesting level.
+    #[inline(never)]
+    pub(super) fn keep_script_interface(&mut self, node: &NodeRef) {
+        if let Some(d) = self.script_decls.pop().filter(|d| !d.is_empty()) {
+            self.node_ifaces
+                .insert(Rc::as_ptr(node), (node.clone(), Rc::new(d)));
+        }
+    }
+
     /// The interface of nodes of type `kind`: a PROTO or EXTERNPROTO in
     /// scope (nearest first), else a built-in node's.
     fn interface_of_kind(&self, kind: &str) -> Option<Vec<Typed>> {
@@ -91,6 +102,7 @@ impl Parser<'_> {
     /// Warns about `ROUTE a.f TO b.g` (see `events::route_problems`) at
     /// the ROUTE statement.
     #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
     pub(super) fn check_route(
         &mut self,
         a: &str,
@@ -128,6 +140,7 @@ impl Parser<'_> {
     /// The message for `field IS iface` in a node of type `kind`, where the
     /// PROTO declares `iface` as `kw ty`; `own` is the field's declared
     /// access and type when a Script declares it.
+    #[inline(never)]
     pub(super) fn is_mismatch(
         &self,
         kind: &str,
