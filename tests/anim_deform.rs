@@ -5,6 +5,8 @@
 
 #[path = "common/golden.rs"]
 mod golden;
+#[path = "common/skinned_tube.rs"]
+mod skinned_tube;
 
 mod anim_hanim;
 
@@ -478,38 +480,10 @@ fn spec() -> FrameSpec {
 /// one way, then the other.
 fn bending_cylinder() -> Scene {
     staged(|s| {
-        let (rings, sides) = (20usize, 16usize);
-        let mut m = Mesh {
-            solid: true,
-            ..Mesh::default()
-        };
-        let mut joints = Vec::new();
-        let mut weights = Vec::new();
-        for r in 0..rings {
-            let y = -1.5 + 3.0 * r as f32 / (rings - 1) as f32;
+        let m = skinned_tube::tube((20, 16), 0.35, (-1.5, 1.5), |y| {
             let w1 = ((y + 0.5) / 1.0).clamp(0.0, 1.0);
-            let w1 = w1 * w1 * (3.0 - 2.0 * w1);
-            for k in 0..sides {
-                let a = std::f32::consts::TAU * k as f32 / sides as f32;
-                let n = Vec3::new(a.cos(), 0.0, -a.sin());
-                m.positions.push(n * 0.35 + Vec3::Y * y);
-                m.normals.push(n);
-                joints.push([0, 1, 0, 0]);
-                weights.push([1.0 - w1, w1, 0.0, 0.0]);
-            }
-        }
-        for r in 0..rings as u32 - 1 {
-            for k in 0..sides as u32 {
-                let (a, b) = (
-                    r * sides as u32 + k,
-                    r * sides as u32 + (k + 1) % sides as u32,
-                );
-                let (c, d) = (a + sides as u32, b + sides as u32);
-                m.triangles.push([a, b, d]);
-                m.triangles.push([a, d, c]);
-            }
-        }
-        m.skin_weights = Some(Box::new(SkinWeights::new(joints, weights).unwrap()));
+            w1 * w1 * (3.0 - 2.0 * w1)
+        });
         let j0 = s.add_node(
             None,
             Node::group("J0")

@@ -7,14 +7,14 @@
 #[path = "common/golden.rs"]
 mod golden;
 
+#[path = "common/skinned_tube.rs"]
+mod skinned_tube;
 #[path = "common/ui_input.rs"]
 mod ui_input;
 
 use animed::internals::anim::{Property, Target, TargetRef, Value};
 use animed::internals::editor::{Editor, Key, Mods};
-use animed::internals::scene::{
-    Material, Mesh, Node, NodeId, NodeKind, Scene, Shape, Skin, SkinWeights, Transform,
-};
+use animed::internals::scene::{Material, Node, NodeId, NodeKind, Scene, Shape, Skin, Transform};
 use glam::{Mat4, Quat, Vec3};
 use std::path::Path;
 use ui_input::*;
@@ -48,37 +48,9 @@ fn arm() -> (Scene, [NodeId; 4]) {
     let mut s = Scene::new();
     s.settings.fps = 24.0;
     s.settings.duration = 48.0;
-    let (rings, sides) = (9usize, 8usize);
-    let mut m = Mesh {
-        solid: true,
-        ..Mesh::default()
-    };
-    let mut joints = Vec::new();
-    let mut weights = Vec::new();
-    for r in 0..rings {
-        let y = 2.0 * r as f32 / (rings - 1) as f32;
-        let w1 = (y - 0.75).clamp(0.0, 0.5) * 2.0;
-        for k in 0..sides {
-            let a = std::f32::consts::TAU * k as f32 / sides as f32;
-            let n = Vec3::new(a.cos(), 0.0, -a.sin());
-            m.positions.push(n * 0.15 + Vec3::Y * y);
-            m.normals.push(n);
-            joints.push([0, 1, 0, 0]);
-            weights.push([1.0 - w1, w1, 0.0, 0.0]);
-        }
-    }
-    for r in 0..rings as u32 - 1 {
-        for k in 0..sides as u32 {
-            let (a, b) = (
-                r * sides as u32 + k,
-                r * sides as u32 + (k + 1) % sides as u32,
-            );
-            let (c, d) = (a + sides as u32, b + sides as u32);
-            m.triangles.push([a, b, d]);
-            m.triangles.push([a, d, c]);
-        }
-    }
-    m.skin_weights = Some(Box::new(SkinWeights::new(joints, weights).unwrap()));
+    let m = skinned_tube::tube((9, 8), 0.15, (0.0, 2.0), |y| {
+        (y - 0.75).clamp(0.0, 0.5) * 2.0
+    });
     let root = s.add_node(None, Node::group("Arm"));
     let upper = s.add_node(Some(root), Node::group("Upper"));
     let lower = s.add_node(

@@ -104,15 +104,45 @@ pub fn print_text(d: &Json) {
     if !skins.is_empty() {
         println!("skins:      {}", skins.len());
         for k in &skins {
-            println!(
-                "  {} `{}`: {} joints, up to {} influences per vertex, {} skinned vertices; shapes: {}",
-                k["index"],
-                k["name"].as_str().unwrap_or(""),
-                k["joints"],
-                k["influences"],
-                k["vertices"],
-                strs(&k["shapes"])
-            );
+            println!("{}", skin_line(k, &strs(&k["shapes"])));
         }
+    }
+}
+
+/// One skin's text line; a skin no shape uses (a skeleton only, such as
+/// an H-Anim humanoid without skinCoord) says so instead of an empty
+/// shape list.
+fn skin_line(k: &Json, shapes: &str) -> String {
+    let head = format!(
+        "  {} `{}`: {} joints",
+        k["index"],
+        k["name"].as_str().unwrap_or(""),
+        k["joints"]
+    );
+    if shapes.is_empty() {
+        return format!("{head}; skeleton only (no skinned shapes)");
+    }
+    format!(
+        "{head}, up to {} influences per vertex, {} skinned vertices; shapes: {shapes}",
+        k["influences"], k["vertices"]
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_skeleton_without_shapes_says_so() {
+        let k = json!({"index": 0, "name": "nancy", "joints": 17, "influences": 0, "vertices": 0, "shapes": []});
+        assert_eq!(
+            skin_line(&k, ""),
+            "  0 `nancy`: 17 joints; skeleton only (no skinned shapes)"
+        );
+        let k = json!({"index": 1, "name": "s", "joints": 2, "influences": 4, "vertices": 9, "shapes": ["Arm"]});
+        assert_eq!(
+            skin_line(&k, "Arm"),
+            "  1 `s`: 2 joints, up to 4 influences per vertex, 9 skinned vertices; shapes: Arm"
+        );
     }
 }

@@ -2,7 +2,9 @@
 //! §4.8 PROTO, §4.9 EXTERNPROTO, §5 field types, §6.40 Script), so files
 //! that break them are flagged with a position instead of loading silently.
 //! Rules that need every built-in node's field types (ROUTE type checks,
-//! ROUTEs from/to plain fields) are not checked here.
+//! ROUTEs from/to plain fields, IS kinds) are in `events.rs`, with the
+//! table in `node_table.rs`; the node/non-node IS check here stays for X3D
+//! and for nodes whose interface is unknown.
 
 use super::Value;
 

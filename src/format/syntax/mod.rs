@@ -6,6 +6,8 @@
 //! parser serves all three dialects and unknown nodes cost nothing.
 
 mod checks;
+mod events;
+mod node_table;
 mod parser;
 mod proto;
 

@@ -6,12 +6,16 @@
 //! stops parsing but keeps every node read so far (see [`Parsed::error`]).
 
 use super::checks;
+use super::node_table::Access;
 use super::proto::{expand, ProtoDef};
 use super::{AstNode, Field, NodeRef, Parsed, Route, Unit, Value, X3dHead};
 use crate::format::lexer::{LexError, Lexer, Pos, Tok};
 use crate::format::limits::{self, Limit, LimitError};
 use std::collections::HashMap;
 use std::rc::Rc;
+
+mod interfaces;
+use interfaces::Typed;
 
 /// Dialect switches and limits. Nodes and numbers are counted against the
 /// running load's budget ([`limits`]); the depth left for this file is
@@ -70,6 +74,8 @@ struct Scope {
     protos: HashMap<String, Rc<ProtoDef>>,
     /// EXTERNPROTO name → its interface's field names.
     externs: HashMap<String, Vec<String>>,
+    /// PROTO and EXTERNPROTO name → its typed interface (ROUTE/IS checks).
+    interfaces: HashMap<String, Rc<Vec<Typed>>>,
     routes: Vec<Route>,
 }
 
@@ -79,6 +85,7 @@ impl Scope {
             defs: HashMap::new(),
             protos: HashMap::new(),
             externs: HashMap::new(),
+            interfaces: HashMap::new(),
             routes: Vec::new(),
         }
     }
@@ -93,6 +100,10 @@ pub(super) struct Parser<'a> {
     /// Interfaces (keyword, type, name) of the PROTOs whose bodies are being
     /// read, innermost last: what an IS may name.
     ifaces: Vec<Vec<(String, String, String)>>,
+    /// The interfaces Script nodes declare, innermost Script last while
+    /// they are read; then by node (kept alive beside its address).
+    script_decls: Vec<Vec<Typed>>,
+    node_ifaces: HashMap<*const AstNode, (NodeRef, Rc<Vec<Typed>>)>,
     warnings: Vec<(Pos, String)>,
     head: X3dHead,
 }
@@ -106,6 +117,8 @@ pub fn parse(src: &[u8], opts: Options) -> Parsed {
         nodes: 0,
         scopes: vec![Scope::new()],
         ifaces: Vec::new(),
+        script_decls: Vec::new(),
+        node_ifaces: HashMap::new(),
         warnings: Vec::new(),
         head: X3dHead::default(),
     };
@@ -385,6 +398,10 @@ impl Parser<'_> {
         if self.depth > self.opts.max_depth {
             return Err(self.too_deep(pos));
         }
+        let script = kind == "Script";
+        if script {
+            self.script_decls.push(Vec::new());
+        }
         let r = self.node_fields(&kind, pos);
         self.depth -= 1;
         let fields = r?;
@@ -429,7 +446,11 @@ impl Parser<'_> {
         if self.depth + node.height as usize > self.opts.max_depth {
             return Err(self.too_deep(pos));
         }
-        Ok(Rc::new(node))
+        let node = Rc::new(node);
+        if script {
+            self.keep_script_interface(&node);
+        }
+        Ok(node)
     }
 
     /// Expands a PROTO instance in place. Never inlined (see
@@ -520,45 +541,16 @@ impl Parser<'_> {
                     self.externproto_after_keyword(fpos)?;
                     continue;
                 }
-                "eventIn" | "eventOut" | "inputOnly" | "outputOnly" => {
-                    // Script interface: `eventIn SFType name [IS other]`.
-                    self.ident("a field type")?;
-                    let (n, npos) = self.ident("a field name")?;
-                    if self.peek_is_ident("IS") {
-                        self.next()?;
-                        let (other, _) = self.ident("an interface name after IS")?;
-                        self.check_field(kind, &n, &Value::Is(other.clone()), npos);
-                        fields.push(Field {
-                            name: n,
-                            value: Value::Is(other),
-                            pos: npos,
-                        });
-                    }
-                    continue;
-                }
-                "field" | "exposedField" | "initializeOnly" | "inputOutput" => {
-                    if self.opts.vrml97 && kind == "Script" && name == "exposedField" {
-                        self.warn(
-                            fpos,
-                            "a VRML97 Script cannot declare an exposedField (§6.40: field, eventIn and eventOut only)",
-                        );
-                    }
-                    self.ident("a field type")?;
-                    let (n, npos) = self.ident("a field name")?;
-                    let value = self.value()?;
-                    self.check_field(kind, &n, &value, npos);
-                    fields.push(Field {
-                        name: n,
-                        value,
-                        pos: npos,
-                    });
+                "eventIn" | "eventOut" | "inputOnly" | "outputOnly" | "field" | "exposedField"
+                | "initializeOnly" | "inputOutput" => {
+                    self.declaration(kind, &name, fpos, &mut fields)?;
                     continue;
                 }
                 _ => {}
             }
             let vpos = self.lx.peek().map_or(fpos, |t| t.pos);
             let value = self.value()?;
-            self.check_field(kind, &name, &value, fpos);
+            self.check_field(kind, &name, &value, fpos, None);
             if self.opts.vrml97 && !self.is_proto_name(kind) {
                 if let Some(m) = checks::number_field_mismatch(&name, &value) {
                     self.warn(vpos, m);
@@ -572,10 +564,60 @@ impl Parser<'_> {
         }
     }
 
+    /// A Script's interface declaration `keyword type name` with its value
+    /// (fields) or `IS other` (events may have either or nothing). Never
+    /// inlined: its locals would grow the frame of `node_fields`, which
+    /// recurses once per nesting level.
+    #[inline(never)]
+    fn declaration(
+        &mut self,
+        kind: &str,
+        keyword: &str,
+        fpos: Pos,
+        fields: &mut Vec<Field>,
+    ) -> PResult<()> {
+        let event = matches!(keyword, "eventIn" | "eventOut" | "inputOnly" | "outputOnly");
+        if self.opts.vrml97 && kind == "Script" && keyword == "exposedField" {
+            self.warn(
+                fpos,
+                "a VRML97 Script cannot declare an exposedField (§6.40: field, eventIn and eventOut only)",
+            );
+        }
+        let (ty, _) = self.ident("a field type")?;
+        let (n, npos) = self.ident("a field name")?;
+        let own = self.declare(kind, keyword, &ty, &n);
+        let value = if !event {
+            self.value()?
+        } else if self.peek_is_ident("IS") {
+            // `eventIn SFType name IS other`.
+            self.next()?;
+            Value::Is(self.ident("an interface name after IS")?.0)
+        } else {
+            return Ok(());
+        };
+        self.check_field(kind, &n, &value, npos, own);
+        fields.push(Field {
+            name: n,
+            value,
+            pos: npos,
+        });
+        Ok(())
+    }
+
     /// VRML97 rules for one field of a node body (see `checks`): IS only
     /// inside a PROTO body, naming a field of its interface of a matching
-    /// type; events take no value.
-    fn check_field(&mut self, kind: &str, field: &str, value: &Value, pos: Pos) {
+    /// type and kind (`interfaces`); events take no value. `own` is the
+    /// field's declared access and type when a Script declares it. Never
+    /// inlined (see `declaration`).
+    #[inline(never)]
+    fn check_field(
+        &mut self,
+        kind: &str,
+        field: &str,
+        value: &Value,
+        pos: Pos,
+        own: Option<(Access, String)>,
+    ) {
         if !self.opts.vrml97 {
             return;
         }
@@ -588,7 +630,7 @@ impl Parser<'_> {
                     None => Some(format!(
                         "'{field} IS {iface}': the PROTO interface declares no '{iface}'"
                     )),
-                    Some((_, ty, _)) => checks::is_type_mismatch(field, iface, ty),
+                    Some((kw, ty, _)) => self.is_mismatch(kind, field, own, kw, ty, iface),
                 },
             },
             _ if checks::is_event_name(field) && !self.is_proto_name(kind) => Some(format!(
@@ -848,13 +890,16 @@ impl Parser<'_> {
             return Err((pos, "ROUTE needs Node.field on both sides".into()));
         };
         match (self.lookup(&fnode), self.lookup(&tnode)) {
-            (Some(f), Some(t)) => self.scope().routes.push(Route {
-                from: f,
-                from_field: ffield,
-                to: t,
-                to_field: tfield,
-                pos,
-            }),
+            (Some(f), Some(t)) => {
+                self.check_route(&fnode, &f, &ffield, &tnode, &t, &tfield, pos);
+                self.scope().routes.push(Route {
+                    from: f,
+                    from_field: ffield,
+                    to: t,
+                    to_field: tfield,
+                    pos,
+                })
+            }
             (f, _) => {
                 let missing = if f.is_none() { fnode } else { tnode };
                 self.warn(
@@ -922,6 +967,7 @@ impl Parser<'_> {
             return Err(self.too_deep(pos));
         }
         // The body is its own DEF scope; PROTOs declared outside stay visible.
+        self.record_interface(&name, &decls);
         self.scopes.push(Scope::new());
         self.ifaces.push(decls);
         let mut body = Vec::new();
@@ -975,6 +1021,11 @@ impl Parser<'_> {
         for m in checks::interface_conflicts(&pairs) {
             self.warn(pos, format!("EXTERNPROTO {name}: {m}"));
         }
+        let typed: Vec<(String, String, String)> = words
+            .chunks_exact(3)
+            .map(|d| (d[0].clone(), d[1].clone(), d[2].clone()))
+            .collect();
+        self.record_interface(&name, &typed);
         let names = pairs.into_iter().map(|(_, n)| n).collect();
         self.scope().externs.insert(name.clone(), names);
         self.warn(

@@ -436,15 +436,19 @@ fn normal_keys(
     if per == 0 || kv.len() != per * fractions.len() {
         return None;
     }
-    let keys = kv
-        .chunks_exact(per)
+    Some((interp.clone(), point_sets(kv, per)))
+}
+
+/// An interpolator's keyValue as one point (or vector) set per key, `per`
+/// numbers each.
+fn point_sets(kv: &[f64], per: usize) -> Vec<Vec<Vec3>> {
+    kv.chunks_exact(per)
         .map(|k| {
             k.chunks_exact(3)
                 .map(|p| Vec3::new(p[0] as f32, p[1] as f32, p[2] as f32))
                 .collect()
         })
-        .collect();
-    Some((interp.clone(), keys))
+        .collect()
 }
 
 /// A CoordinateInterpolator as morph targets plus a weights track.
@@ -503,14 +507,7 @@ fn import_coordinates(
         return;
     }
     let per = kv.len() / n;
-    let keys: Vec<Vec<Vec3>> = kv
-        .chunks_exact(per)
-        .map(|k| {
-            k.chunks_exact(3)
-                .map(|p| Vec3::new(p[0] as f32, p[1] as f32, p[2] as f32))
-                .collect()
-        })
-        .collect();
+    let keys = point_sets(kv, per);
     let onehot: Vec<Weights> = (0..n)
         .map(|i| {
             let mut w = Weights::zeros(n);

@@ -1,0 +1,164 @@
+//! The parser's side of the ROUTE and IS checks (`syntax::events`): which
+//! interface a node has — a built-in VRML97 node's (`node_table`), a PROTO
+//! or EXTERNPROTO's as declared, a Script's own fields plus what it
+//! declares — and the warnings, at the ROUTE statement or the IS field.
+//! VRML97 only: X3D nodes have other interfaces (not in the table), so an
+//! X3D file keeps the coarser node/non-node IS check of `checks`.
+
+use super::super::checks;
+use super::super::events::{self, Decl, End};
+use super::super::node_table::{self, Access};
+use super::super::NodeRef;
+use super::Parser;
+use crate::format::lexer::Pos;
+use std::rc::Rc;
+
+/// One declaration of a file's interface: access, type, name.
+pub type Typed = (Access, String, String);
+
+/// Borrowed view of typed declarations for `events`.
+fn view(t: &[Typed]) -> Vec<Decl<'_>> {
+    t.iter()
+        .map(|(a, ty, n)| (*a, ty.as_str(), n.as_str()))
+        .collect()
+}
+
+fn owned(t: &[node_table::Entry]) -> Vec<Typed> {
+    t.iter()
+        .map(|(a, ty, n)| (*a, ty.to_string(), n.to_string()))
+        .collect()
+}
+
+impl Parser<'_> {
+    /// Whether the field-level rules of this module apply.
+    fn checks_interfaces(&self) -> bool {
+        self.opts.vrml97 && !self.opts.x3d
+    }
+
+    /// Keeps a PROTO or EXTERNPROTO interface (keyword, type, name) for the
+    /// checks; declarations with an unknown keyword are left out.
+    pub(super) fn record_interface(&mut self, name: &str, decls: &[(String, String, String)]) {
+        let typed: Vec<Typed> = decls
+            .iter()
+            .filter_map(|(kw, ty, n)| Some((Access::from_keyword(kw)?, ty.clone(), n.clone())))
+            .collect();
+        self.scope()
+            .interfaces
+            .insert(name.to_string(), Rc::new(typed));
+    }
+
+    /// Records a Script's interface declaration `kw ty name` and returns
+    /// its access and type (for an IS on it); `None` outside a Script.
+    pub(super) fn declare(
+        &mut self,
+        kind: &str,
+        kw: &str,
+        ty: &str,
+        name: &str,
+    ) -> Option<(Access, String)> {
+        let access = Access::from_keyword(kw)?;
+        if kind != "Script" {
+            return None;
+        }
+        let decls = self.script_decls.last_mut()?;
+        decls.push((access, ty.to_string(), name.to_string()));
+        Some((access, ty.to_string()))
+    }
+
+    /// Files the interface the Script just read declared (popped from
+    /// `script_decls`) under the node. Never inlined: `node_body`
+    /// recurses once per nesting level.
+    #[inline(never)]
+    pub(super) fn keep_script_interface(&mut self, node: &NodeRef) {
+        if let Some(d) = self.script_decls.pop().filter(|d| !d.is_empty()) {
+            self.node_ifaces
+                .insert(Rc::as_ptr(node), (node.clone(), Rc::new(d)));
+        }
+    }
+
+    /// The interface of nodes of type `kind`: a PROTO or EXTERNPROTO in
+    /// scope (nearest first), else a built-in node's.
+    fn interface_of_kind(&self, kind: &str) -> Option<Vec<Typed>> {
+        let declared = self
+            .scopes
+            .iter()
+            .rev()
+            .find_map(|s| s.interfaces.get(kind).cloned());
+        match declared {
+            Some(d) => Some(d.as_ref().clone()),
+            None => node_table::builtin(kind).map(owned),
+        }
+    }
+
+    /// The interface of one node: its type's, plus what a Script declares.
+    fn interface_of(&self, node: &NodeRef) -> Option<Vec<Typed>> {
+        let mut iface = self.interface_of_kind(&node.kind)?;
+        if let Some((_, d)) = self.node_ifaces.get(&Rc::as_ptr(node)) {
+            iface.extend(d.iter().cloned());
+        }
+        Some(iface)
+    }
+
+    /// Warns about `ROUTE a.f TO b.g` (see `events::route_problems`) at
+    /// the ROUTE statement.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
+    pub(super) fn check_route(
+        &mut self,
+        a: &str,
+        from: &NodeRef,
+        f: &str,
+        b: &str,
+        to: &NodeRef,
+        g: &str,
+        pos: Pos,
+    ) {
+        if !self.checks_interfaces() {
+            return;
+        }
+        let (fi, ti) = (self.interface_of(from), self.interface_of(to));
+        let (fv, tv) = (fi.as_deref().map(view), ti.as_deref().map(view));
+        let problems = events::route_problems(
+            &End {
+                node: a,
+                kind: &from.kind,
+                field: f,
+                iface: fv.as_deref(),
+            },
+            &End {
+                node: b,
+                kind: &to.kind,
+                field: g,
+                iface: tv.as_deref(),
+            },
+        );
+        for m in problems {
+            self.warn(pos, m);
+        }
+    }
+
+    /// The message for `field IS iface` in a node of type `kind`, where the
+    /// PROTO declares `iface` as `kw ty`; `own` is the field's declared
+    /// access and type when a Script declares it.
+    #[inline(never)]
+    pub(super) fn is_mismatch(
+        &self,
+        kind: &str,
+        field: &str,
+        own: Option<(Access, String)>,
+        kw: &str,
+        ty: &str,
+        iface: &str,
+    ) -> Option<String> {
+        let node: Option<Vec<Typed>> = match own {
+            Some((a, t)) => Some(vec![(a, t, field.to_string())]),
+            None => self.interface_of_kind(kind),
+        };
+        match (node, Access::from_keyword(kw)) {
+            (Some(n), Some(access)) if self.checks_interfaces() => {
+                events::is_problem(kind, &view(&n), field, (access, ty, iface))
+            }
+            _ => checks::is_type_mismatch(field, iface, ty),
+        }
+    }
+}
