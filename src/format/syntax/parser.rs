@@ -95,6 +95,10 @@ pub(super) struct Parser<'a> {
     ifaces: Vec<Vec<(String, String, String)>>,
     warnings: Vec<(Pos, String)>,
     head: X3dHead,
+    /// The engine output the last field value was connected from
+    /// (Inventor's `field value = Engine { … } . output`), for the node
+    /// body to keep beside the field.
+    connection: Option<(NodeRef, String)>,
 }
 
 /// Parses a whole file body (the header line is a comment to the lexer).
@@ -108,6 +112,7 @@ pub fn parse(src: &[u8], opts: Options) -> Parsed {
         ifaces: Vec::new(),
         warnings: Vec::new(),
         head: X3dHead::default(),
+        connection: None,
     };
     let mut roots = Vec::new();
     let error = p.statements(&mut roots, true).err();
@@ -564,6 +569,15 @@ impl Parser<'_> {
                     self.warn(vpos, m);
                 }
             }
+            let connection = self.connection.take();
+            if let Some((engine, output)) = connection {
+                // Kept as a field of its own (see `AstNode::connection`).
+                fields.push(Field {
+                    name: format!("{name}={output}"),
+                    value: Value::Nodes(vec![engine]),
+                    pos: vpos,
+                });
+            }
             fields.push(Field {
                 name,
                 value,
@@ -608,11 +622,13 @@ impl Parser<'_> {
     }
 
     /// One untyped field value, plus Inventor's trailing `~` (ignore flag)
-    /// and `= Engine.output` connections (read and dropped).
+    /// and `= Engine.output` connections (not evaluated; the engine and its
+    /// output are left in `self.connection` for the node body to keep).
     fn value(&mut self) -> PResult<Value> {
         // A field costs about 100 bytes before its value's numbers.
         let pos = self.lx.pos();
         limits::charge_numbers(12).map_err(|e| (pos, e.to_string()))?;
+        self.connection = None;
         let v = self.raw_value()?;
         loop {
             match self.peek()? {
@@ -625,18 +641,24 @@ impl Parser<'_> {
                     if let Tok::Ident(_) = self.peek()? {
                         let is_node = self.is_node_start()?;
                         if is_node {
-                            self.node_statement()?;
+                            let engine = self.node_statement()?;
                             // `.output` follows the node's closing brace.
+                            let mut output = String::new();
                             if let Tok::Ident(s) = self.peek()? {
                                 if s == "." {
                                     // `USE X . output` written with spaces.
                                     self.next()?;
-                                    if let Tok::Ident(_) = self.peek()? {
+                                    if let Tok::Ident(o) = self.peek()? {
                                         self.next()?;
+                                        output = o;
                                     }
-                                } else if s.starts_with('.') {
+                                } else if let Some(o) = s.strip_prefix('.') {
+                                    output = o.to_string();
                                     self.next()?;
                                 }
+                            }
+                            if !self.opts.vrml97 {
+                                self.connection = engine.map(|e| (e, output));
                             }
                         } else {
                             self.next()?;
