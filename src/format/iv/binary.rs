@@ -21,7 +21,7 @@
 
 use super::binary_fields::{self, FieldType, Single};
 use crate::format::lexer::Pos;
-use crate::format::limits;
+use crate::format::limits::{self, Limit, LimitError};
 use crate::format::syntax::{AstNode, Field, NodeRef, Parsed, Value};
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -188,10 +188,11 @@ impl Reader<'_> {
         }
         limits::charge_nodes(1).map_err(|e| (at, e.to_string()))?;
         if self.depth >= self.max_depth {
-            return self.err(
-                at,
-                format!("nodes nest deeper than {} levels", self.max_depth),
-            );
+            let e = limits::trip(LimitError {
+                limit: Limit::Depth,
+                max: limits::current().max_depth,
+            });
+            return self.err(at, e.to_string());
         }
         self.depth += 1;
         let r = self.node_body(kind, def, at);

@@ -33,7 +33,6 @@ const MAX_BUILD_DEPTH: usize = limits::DEPTH_CEILING as usize;
 /// Nodes read and deliberately ignored (no effect on geometry here).
 const IGNORED: &[&str] = &[
     "Complexity",
-    "Environment",
     "Font",
     "FontStyle",
     "PickStyle",
@@ -118,7 +117,13 @@ impl Builder {
             log: BuildLog::new(path),
             depth,
             vrml1,
-            scene: Scene::new(),
+            scene: {
+                // OpenGL's light-model ambient, which Inventor viewers (and
+                // VRML 1.0 browsers) light with unless an Environment says.
+                let mut s = Scene::new();
+                s.settings.ambient = Vec3::splat(0.2);
+                s
+            },
             materials: HashMap::new(),
             meshes: HashMap::new(),
             coords: HashMap::new(),
@@ -283,6 +288,16 @@ impl Builder {
                     if let Err(e) = r {
                         self.stop(n.pos, e);
                     }
+                }
+            }
+            "Environment" => {
+                // The global ambient for the whole scene (the renderer has
+                // one); fog and light attenuation are not drawn.
+                let ambient = n.f32("ambientIntensity", 0.2).clamp(0.0, 1.0)
+                    * n.vec3("ambientColor", Vec3::ONE)
+                        .clamp(Vec3::ZERO, Vec3::ONE);
+                if ambient.is_finite() {
+                    self.scene.settings.ambient = ambient;
                 }
             }
             "DirectionalLight" | "PointLight" | "SpotLight" => {

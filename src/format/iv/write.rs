@@ -126,6 +126,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
     }
     let note = keynote::write(scene, &w.plan);
     w.out.line(&format!("Info {{ string {} }}", quoted(&note)));
+    environment(&mut w.out, scene.settings.ambient, v1);
     // Cameras first: an Inventor camera sets the view only of what follows
     // it (Coin drew warbird's shapes before its camera, through no view at
     // all). Then lights (and groups that start with one), as inside groups.
@@ -247,6 +248,26 @@ fn morphs_animated(scene: &Scene) -> bool {
             .tracks
             .iter()
             .any(|t| t.target.property == Property::MorphWeights)
+}
+
+/// Inventor's global ambient when it is not the 0.2 grey every reader
+/// (ours, Coin) assumes: an `Environment` (2.1 only) before the scene, so
+/// a scene from a VRML97 file (no global ambient) stays as dark in Coin.
+fn environment(out: &mut Out, ambient: Vec3, v1: bool) {
+    if v1 || ambient == Vec3::splat(0.2) {
+        return;
+    }
+    let grey = ambient.x == ambient.y && ambient.y == ambient.z;
+    let (intensity, color) = if grey {
+        (ambient.x, Vec3::ONE)
+    } else {
+        (1.0, ambient)
+    };
+    out.line(&format!(
+        "Environment {{ ambientIntensity {} ambientColor {} }}",
+        num(intensity),
+        vec3(color)
+    ));
 }
 
 fn def(name: &Option<String>) -> String {

@@ -569,14 +569,8 @@ impl Parser<'_> {
                     self.warn(vpos, m);
                 }
             }
-            let connection = self.connection.take();
-            if let Some((engine, output)) = connection {
-                // Kept as a field of its own (see `AstNode::connection`).
-                fields.push(Field {
-                    name: format!("{name}={output}"),
-                    value: Value::Nodes(vec![engine]),
-                    pos: vpos,
-                });
+            if self.connection.is_some() {
+                self.keep_connection(&mut fields, &name, vpos);
             }
             fields.push(Field {
                 name,
@@ -635,38 +629,59 @@ impl Parser<'_> {
                 Tok::Punct(b'~') => {
                     self.next()?;
                 }
-                Tok::Punct(b'=') => {
-                    let (_, pos) = self.next()?;
-                    self.warn(pos, "field connections (engines) are not evaluated");
-                    if let Tok::Ident(_) = self.peek()? {
-                        let is_node = self.is_node_start()?;
-                        if is_node {
-                            let engine = self.node_statement()?;
-                            // `.output` follows the node's closing brace.
-                            let mut output = String::new();
-                            if let Tok::Ident(s) = self.peek()? {
-                                if s == "." {
-                                    // `USE X . output` written with spaces.
-                                    self.next()?;
-                                    if let Tok::Ident(o) = self.peek()? {
-                                        self.next()?;
-                                        output = o;
-                                    }
-                                } else if let Some(o) = s.strip_prefix('.') {
-                                    output = o.to_string();
-                                    self.next()?;
-                                }
-                            }
-                            if !self.opts.vrml97 {
-                                self.connection = engine.map(|e| (e, output));
-                            }
-                        } else {
-                            self.next()?;
-                        }
-                    }
-                }
+                Tok::Punct(b'=') => self.connection_after_equals()?,
                 _ => return Ok(v),
             }
+        }
+    }
+
+    /// `= Engine { … } . output` after a field value. Never inlined: its
+    /// locals would otherwise sit in every frame of the node recursion
+    /// (`value` → `node_statement` → … once per nesting level).
+    #[inline(never)]
+    fn connection_after_equals(&mut self) -> PResult<()> {
+        let (_, pos) = self.next()?;
+        self.warn(pos, "field connections (engines) are not evaluated");
+        let Tok::Ident(_) = self.peek()? else {
+            return Ok(());
+        };
+        if !self.is_node_start()? {
+            self.next()?;
+            return Ok(());
+        }
+        let engine = self.node_statement()?;
+        // `.output` follows the node's closing brace.
+        let mut output = String::new();
+        if let Tok::Ident(s) = self.peek()? {
+            if s == "." {
+                // `USE X . output` written with spaces.
+                self.next()?;
+                if let Tok::Ident(o) = self.peek()? {
+                    self.next()?;
+                    output = o;
+                }
+            } else if let Some(o) = s.strip_prefix('.') {
+                output = o.to_string();
+                self.next()?;
+            }
+        }
+        if !self.opts.vrml97 {
+            self.connection = engine.map(|e| (e, output));
+        }
+        Ok(())
+    }
+
+    /// Inventor: keeps the connection the last value had as a field
+    /// `name=output` holding the engine (see `AstNode::connection`). Never
+    /// inlined, for the same reason as `connection_after_equals`.
+    #[inline(never)]
+    fn keep_connection(&mut self, fields: &mut Vec<Field>, name: &str, pos: Pos) {
+        if let Some((engine, output)) = self.connection.take() {
+            fields.push(Field {
+                name: format!("{name}={output}"),
+                value: Value::Nodes(vec![engine]),
+                pos,
+            });
         }
     }
 
