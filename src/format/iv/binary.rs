@@ -354,58 +354,28 @@ impl Reader<'_> {
         };
         limits::charge_numbers(numbers as u64).map_err(|e| (at, e.to_string()))?;
         Ok(match one {
-            Single::Floats(_) => {
-                let mut v = Vec::with_capacity(numbers);
-                for _ in 0..numbers {
-                    v.push(self.f32()? as f64);
-                }
-                Value::Nums(v)
-            }
+            Single::Floats(_) => Value::Nums(self.many(numbers, |r| r.f32().map(f64::from))?),
             Single::Ints(_) => {
-                let mut v = Vec::with_capacity(numbers);
-                for _ in 0..numbers {
-                    v.push(self.u32()? as i32 as f64);
-                }
-                Value::Nums(v)
+                Value::Nums(self.many(numbers, |r| r.u32().map(|v| v as i32 as f64))?)
             }
-            Single::Double => {
-                let mut v = Vec::with_capacity(numbers);
-                for _ in 0..numbers {
-                    v.push(self.f64()?);
-                }
-                Value::Nums(v)
-            }
-            Single::Bool => {
-                let mut v = Vec::with_capacity(n);
-                for _ in 0..n {
-                    v.push(if self.u32()? != 0 { "TRUE" } else { "FALSE" }.to_string());
-                }
-                Value::Words(v)
-            }
-            Single::Name => {
-                let mut v = Vec::with_capacity(n);
-                for _ in 0..n {
-                    v.push(self.string()?);
-                }
-                Value::Words(v)
-            }
-            Single::String => {
-                let mut v = Vec::with_capacity(n);
-                for _ in 0..n {
-                    v.push(self.string()?);
-                }
-                Value::Strs(v)
-            }
-            Single::Node => {
-                let mut v = Vec::with_capacity(n);
-                for _ in 0..n {
-                    if let Some(node) = self.node()? {
-                        v.push(node);
-                    }
-                }
-                Value::Nodes(v)
-            }
+            Single::Double => Value::Nums(self.many(numbers, Self::f64)?),
+            Single::Bool => Value::Words(self.many(n, |r| {
+                r.u32()
+                    .map(|v| if v != 0 { "TRUE" } else { "FALSE" }.to_string())
+            })?),
+            Single::Name => Value::Words(self.many(n, Self::string)?),
+            Single::String => Value::Strs(self.many(n, Self::string)?),
+            Single::Node => Value::Nodes(self.many(n, Self::node)?.into_iter().flatten().collect()),
         })
+    }
+
+    /// `n` items read by `one` (`n` was checked against the bytes left).
+    fn many<T>(&mut self, n: usize, mut one: impl FnMut(&mut Self) -> R<T>) -> R<Vec<T>> {
+        let mut v = Vec::with_capacity(n);
+        for _ in 0..n {
+            v.push(one(self)?);
+        }
+        Ok(v)
     }
 
     /// SFImage: width, height, components, then the pixels — one word per

@@ -153,13 +153,11 @@ pub fn field_type(kind: &str, field: &str) -> Option<FieldType> {
         .map(|&(_, t)| t)
 }
 
+/// A node type's fields: (name, type) pairs.
+type Fields = &'static [(&'static str, FieldType)];
+
 /// A built-in node's own fields and those it inherits.
-fn fields(
-    kind: &str,
-) -> Option<(
-    &'static [(&'static str, FieldType)],
-    &'static [(&'static str, FieldType)],
-)> {
+fn fields(kind: &str) -> Option<(Fields, Fields)> {
     Some(match kind {
         "Group"
         | "TransformSeparator"

@@ -13,8 +13,11 @@ fn binary(bytes: &[u8]) -> Result<Loaded, String> {
     read_binary_nested(bytes, Path::new("b.iv"), 0).map_err(|e| e.to_string())
 }
 
-/// Every shape's mesh: positions, normals, triangles.
-fn meshes(s: &Scene) -> Vec<(Vec<glam::Vec3>, Vec<glam::Vec3>, Vec<[u32; 3]>)> {
+/// A mesh's positions, normals and triangles.
+type Geometry = (Vec<glam::Vec3>, Vec<glam::Vec3>, Vec<[u32; 3]>);
+
+/// Every shape's mesh.
+fn meshes(s: &Scene) -> Vec<Geometry> {
     s.nodes
         .iter()
         .filter_map(|n| match &n.kind {
