@@ -127,10 +127,14 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
     let note = keynote::write(scene, &w.plan);
     w.out.line(&format!("Info {{ string {} }}", quoted(&note)));
     environment(&mut w.out, scene.settings.ambient, v1);
-    // Cameras first: an Inventor camera sets the view only of what follows
-    // it (Coin drew warbird's shapes before its camera, through no view at
-    // all). Then lights (and groups that start with one), as inside groups.
-    let camera = |r: &NodeId| matches!(scene.node(*r).kind, NodeKind::Camera(_));
+    // Bare cameras first: an Inventor camera sets the view only of what
+    // follows it (Coin drew warbird's shapes before its camera, through no
+    // view at all); one inside a Separator (with a transform) sets nobody's,
+    // and stays in place so the file reads back in the same order. Then
+    // lights (and groups that start with one), as inside groups.
+    let camera = |r: &NodeId| {
+        matches!(scene.node(*r).kind, NodeKind::Camera(_)) && !w.plan.wrapped[r.0 as usize]
+    };
     let mut roots: Vec<NodeId> = scene.roots.iter().copied().filter(camera).collect();
     roots.extend(
         scene
