@@ -153,3 +153,122 @@ fn v1_binds_texture_coordinates_by_index_not_by_a_binding_node() {
     assert!(!a.is_empty(), "no texture coordinates read back from\n{v1}");
     assert_eq!(a, b);
 }
+
+/// A morphed cube (two targets, a TCB-free linear weights track): the .iv
+/// carries the targets as Calculator engines, reads back with the same
+/// targets and default weights, and the key note's keys fit them again.
+#[test]
+fn morph_targets_go_through_calculators_and_come_back() {
+    use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
+    use animed::internals::anim::Weights;
+    use animed::internals::format::load_bytes;
+    use animed::internals::scene::{MorphTarget, Morphs, Node, NodeKind, Shape};
+    use glam::Vec3;
+    let mut s = Scene::new();
+    let mut mesh = writers_common::cube("Box");
+    let n = mesh.positions.len();
+    // Ten targets: two Calculators chained.
+    let targets: Vec<MorphTarget> = (0..10)
+        .map(|i| {
+            MorphTarget::new(
+                format!("t{i}"),
+                vec![Vec3::Y * (i + 1) as f32; n],
+                Vec::new(),
+            )
+        })
+        .collect();
+    let defaults: Vec<f32> = (0..10).map(|i| i as f32 / 20.0).collect();
+    mesh.morph = Some(Box::new(Morphs::new(n, targets, defaults.clone()).unwrap()));
+    let mesh = s.add_mesh(mesh);
+    let material = s.add_material(Default::default());
+    let id = s.add_node(
+        None,
+        Node::new("Box", NodeKind::Shape(Shape { mesh, material })),
+    );
+    let w = |v: &[f32]| Weights::from_slice(v).unwrap();
+    let mut one = vec![0.0; 10];
+    one[9] = 1.0;
+    s.animation.tracks.push(Track {
+        target: Target {
+            of: TargetRef::Node(id),
+            property: Property::MorphWeights,
+        },
+        repeat: Repeat::Constant,
+        keys: Keys::Weights(vec![
+            Key::new(0.0, w(&defaults)).with_interp(Interp::Linear),
+            Key::new(24.0, w(&one)).with_interp(Interp::Linear),
+        ]),
+    });
+    s.settings.duration = 24.0;
+    let (text, _) = iv(&s, InventorVersion::V2_1);
+    assert!(
+        text.contains("point [") && text.contains("] = Calculator {"),
+        "{text}"
+    );
+    assert!(
+        text.contains("A [ ] = Calculator {"),
+        "two Calculators chained"
+    );
+    assert!(
+        text.contains("expression \"oA = A + a * B + b * C + c * D"),
+        "{text}"
+    );
+    assert!(text.contains("= DEF _animed_weight SelectOne {"), "{text}");
+    let back = load_bytes(text.as_bytes(), std::path::Path::new("m.iv")).unwrap();
+    let m = back
+        .scene
+        .meshes
+        .iter()
+        .find_map(|m| m.morph.as_ref())
+        .expect("a morph");
+    assert_eq!(m.len(), 10);
+    assert_eq!(m.default_weights(), &defaults[..]);
+    // Each target moves every vertex by its own offset (ids follow the file).
+    for (i, t) in m.targets().iter().enumerate() {
+        assert!(
+            t.positions().iter().all(|d| *d == Vec3::Y * (i + 1) as f32),
+            "target {i}"
+        );
+    }
+    let t = &back.scene.animation.tracks;
+    assert_eq!(t.len(), 1);
+    assert_eq!(
+        t[0].keys.len(),
+        2,
+        "the note's keys fit the targets read back"
+    );
+}
+
+/// Inventor's global ambient: 0.2 grey by default (not written), another
+/// value as an Environment, a scene without one (VRML97's) as
+/// `ambientIntensity 0`; every case reads back as it was, and a .wrl keeps
+/// it in the key note.
+#[test]
+fn the_global_ambient_goes_through_environment_and_the_key_note() {
+    use animed::internals::format::load_bytes;
+    use glam::Vec3;
+    for (ambient, line) in [
+        (Vec3::splat(0.2), None),
+        (
+            Vec3::ZERO,
+            Some("Environment { ambientIntensity 0 ambientColor 1 1 1 }"),
+        ),
+        (
+            Vec3::new(0.5, 0.0, 0.25),
+            Some("Environment { ambientIntensity 1 ambientColor 0.5 0 0.25 }"),
+        ),
+    ] {
+        let mut s = writers_common::demo_scene();
+        s.settings.ambient = ambient;
+        let (text, _) = iv(&s, InventorVersion::V2_1);
+        match line {
+            Some(l) => assert!(text.contains(l), "{ambient}: {l}"),
+            None => assert!(!text.contains("Environment"), "{ambient}"),
+        }
+        let back = load_bytes(text.as_bytes(), std::path::Path::new("a.iv")).unwrap();
+        assert_eq!(back.scene.settings.ambient, ambient);
+        let (wrl, _) = to_bytes(&s, OutputFormat::Vrml97, &WriteOptions::default());
+        let back = load_bytes(&wrl, std::path::Path::new("a.wrl")).unwrap();
+        assert_eq!(back.scene.settings.ambient, ambient);
+    }
+}

@@ -18,6 +18,10 @@ const MAX_WARNINGS: usize = 10_000;
 
 /// `path:line:column: message`.
 pub(crate) fn fmt_warning(path: &Path, pos: Pos, msg: &str) -> String {
+    if pos.line == 0 {
+        // A binary file's place: line 0, the byte offset in `column`.
+        return format!("{}: byte {}: {}", path.display(), pos.column, msg);
+    }
     format!("{}:{}:{}: {}", path.display(), pos.line, pos.column, msg)
 }
 

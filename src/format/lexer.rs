@@ -63,6 +63,8 @@ pub enum Header {
     Inventor2,
     /// `#Inventor V1.0 ascii`: read like VRML 1.0's Inventor subset.
     Inventor1,
+    /// `#Inventor V… binary`: read by `iv::binary` (not by this lexer).
+    InventorBinary,
     /// `#VRML V1.0 ascii`.
     Vrml1,
     /// `#VRML V2.0 utf8`.
@@ -89,9 +91,7 @@ pub fn read_header(bytes: &[u8]) -> Result<Header, LexError> {
     match words.as_slice() {
         ["#Inventor", v, kind, ..] => {
             if kind.eq_ignore_ascii_case("binary") {
-                return Err(err(
-                    "binary Inventor is not supported, convert with ivcat (ivcat in.iv > out.iv)",
-                ));
+                return Ok(Header::InventorBinary);
             }
             match *v {
                 "V2.1" | "V2.0" => Ok(Header::Inventor2),
@@ -480,10 +480,10 @@ mod tests {
             read_header(b"#Inventor V1.0 ascii\n").unwrap(),
             Header::Inventor1
         );
-        let e = read_header(b"#Inventor V2.1 binary\n").unwrap_err();
-        assert!(e
-            .message
-            .contains("binary Inventor is not supported, convert with ivcat"));
+        assert_eq!(
+            read_header(b"#Inventor V2.1 binary\n").unwrap(),
+            Header::InventorBinary
+        );
         assert!(read_header(b"hello").is_err());
     }
 }

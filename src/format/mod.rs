@@ -11,6 +11,7 @@
 //! sampling, key note, options, atomic save) beside them.
 
 mod build_log;
+mod corner_morph;
 mod error;
 pub mod export;
 pub mod gltf;
@@ -110,6 +111,7 @@ fn load_bytes_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, 
         lexer::Header::Inventor2 | lexer::Header::Inventor1 => {
             iv::read_nested(bytes, path, depth, false)
         }
+        lexer::Header::InventorBinary => iv::read_binary_nested(bytes, path, depth),
     }
 }
 

@@ -173,6 +173,15 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
     let headlight = opts
         .headlight
         .then(|| WorldLight::headlight(view.forward()));
+    // Inventor's global ambient (`Settings::ambient`): a light that only
+    // has its ambient term (I_ia = 1, colour = the ambient).
+    let global_ambient = (scene.settings.ambient != Vec3::ZERO)
+        .then(|| {
+            let mut l = crate::scene::Light::new(crate::scene::LightKind::Directional);
+            (l.intensity, l.ambient_intensity, l.color) = (0.0, 1.0, scene.settings.ambient);
+            WorldLight::new(&l, Mat4::IDENTITY)
+        })
+        .flatten();
 
     out.items.clear();
     out.opaque.clear();
@@ -218,6 +227,7 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             .map(|(_, l)| l.clone())
             .collect();
         item_lights.extend(headlight.clone());
+        item_lights.extend(global_ambient.clone());
         let has_normals = mesh.normals.len() == mesh.positions.len();
         let mut smat = ShadeMaterial::new(material);
         let item = out.items.len() as u32;

@@ -83,6 +83,11 @@ pub struct Settings {
     /// `None` = the format's default (VRML97: NavigationInfo.headlight, default on;
     /// Inventor/VRML1/OBJ: on, as examiner viewers do).
     pub headlight: Option<bool>,
+    /// Global ambient light (linear RGB): OpenGL's light-model ambient,
+    /// which Inventor and VRML 1.0 files get (0.2 grey by default, an
+    /// Inventor `Environment` sets it); VRML97, X3D and glTF have none (0).
+    /// The renderer lights every lit surface with it as an ambient-only light.
+    pub ambient: Vec3,
 }
 
 impl Default for Settings {
@@ -93,6 +98,7 @@ impl Default for Settings {
             background: Vec3::ZERO,
             sky: None,
             headlight: None,
+            ambient: Vec3::ZERO,
         }
     }
 }

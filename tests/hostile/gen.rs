@@ -28,6 +28,25 @@ pub fn nested_groups(n: usize) -> Vec<u8> {
     s.into_bytes()
 }
 
+/// Binary Inventor 2.0: `n` Separators one inside the other, a Cube in
+/// the innermost (big-endian words; strings padded to a word).
+pub fn binary_nested_separators(n: usize) -> Vec<u8> {
+    let mut b = b"#Inventor V2.0 binary  \n".to_vec();
+    let string = |b: &mut Vec<u8>, s: &str| {
+        b.extend((s.len() as u32).to_be_bytes());
+        b.extend(s.as_bytes());
+        b.resize(b.len() + s.len().next_multiple_of(4) - s.len(), 0);
+    };
+    for _ in 0..n {
+        string(&mut b, "Separator");
+        b.extend(0u32.to_be_bytes()); // no fields
+        b.extend(1u32.to_be_bytes()); // one child
+    }
+    string(&mut b, "Cube");
+    b.extend(0u32.to_be_bytes());
+    b
+}
+
 /// An Extrusion of `n` cross-section points along `n` spine points
 /// (n² vertices from 5n numbers).
 pub fn extrusion(n: usize) -> Vec<u8> {

@@ -71,6 +71,28 @@ fn nesting_at_the_largest_depth_allowed_fits_a_2_mib_stack() {
         )
     });
     assert!(r.is_ok(), "{r:?}");
+    // Binary Inventor: the same ceiling, the same message.
+    let l2 = Limits {
+        max_depth: deepest,
+        ..Limits::default()
+    };
+    let l3 = l2.clone();
+    let n = on_small_stack(move || {
+        load_small(
+            &gen::binary_nested_separators(deepest as usize - 2),
+            "deep.iv",
+            l2,
+        )
+    });
+    assert!(n.unwrap() as u64 >= deepest - 2);
+    let r = on_small_stack(move || {
+        load_small(
+            &gen::binary_nested_separators(deepest as usize + 5),
+            "deep.iv",
+            l3,
+        )
+    });
+    assert_limit(r, "--max-depth", 0);
 }
 
 #[test]

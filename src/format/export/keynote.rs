@@ -11,6 +11,7 @@
 //! duration 96
 //! background R G B                  (the background colour)
 //! headlight on|off                  (only when the scene says)
+//! ambient R G B                     (Inventor's global ambient, when not 0)
 //! hidden NAME                       (a node whose own visibility is off)
 //! style NAME lines|points|hidden    (a node's render style, when not filled)
 //! track node|material NAME PROPERTY constant|loop
@@ -65,6 +66,8 @@ pub struct Note {
     pub duration: f32,
     pub background: Option<Vec3>,
     pub headlight: Option<bool>,
+    /// Inventor's global ambient (`Settings::ambient`), when not zero.
+    pub ambient: Option<Vec3>,
     pub hidden: Vec<String>,
     pub styles: Vec<(String, RenderStyle)>,
     pub tracks: Vec<NoteTrack>,
@@ -107,6 +110,10 @@ pub fn write(scene: &Scene, plan: &WritePlan) -> String {
     let _ = writeln!(s, "background {} {} {}", b.x, b.y, b.z);
     if let Some(h) = scene.settings.headlight {
         let _ = writeln!(s, "headlight {}", if h { "on" } else { "off" });
+    }
+    let a = scene.settings.ambient;
+    if a != Vec3::ZERO {
+        let _ = writeln!(s, "ambient {} {} {}", a.x, a.y, a.z);
     }
     // Sorted by name: the order must not depend on how a reader orders nodes.
     let mut flags: Vec<(String, String)> = Vec::new();
@@ -202,6 +209,7 @@ pub fn parse(text: &str) -> Result<Note, NoteError> {
         duration: 96.0,
         background: None,
         headlight: None,
+        ambient: None,
         hidden: Vec::new(),
         styles: Vec::new(),
         tracks: Vec::new(),
@@ -226,16 +234,21 @@ pub fn parse(text: &str) -> Result<Note, NoteError> {
                     note.duration = v;
                 }
             }
-            "background" => {
-                let [_, r, g, b] = words[..] else {
-                    return Err(err(n, "`background` takes three numbers".into()));
+            "background" | "ambient" => {
+                let [what, r, g, b] = words[..] else {
+                    return Err(err(n, format!("`{}` takes three numbers", words[0])));
                 };
                 let c = [r, g, b]
                     .iter()
                     .map(|w| number(w))
                     .collect::<Result<Vec<f32>, _>>()
                     .map_err(|m| err(n, m))?;
-                note.background = Some(Vec3::new(c[0], c[1], c[2]));
+                let c = Some(Vec3::new(c[0], c[1], c[2]));
+                if what == "ambient" {
+                    note.ambient = c;
+                } else {
+                    note.background = c;
+                }
             }
             "headlight" => {
                 note.headlight = match words[..] {
@@ -513,6 +526,9 @@ pub fn apply(note: &Note, scene: &mut Scene) -> Result<(), String> {
     scene.settings.duration = note.duration;
     if let Some(b) = note.background {
         scene.settings.background = b;
+    }
+    if let Some(a) = note.ambient {
+        scene.settings.ambient = a;
     }
     if note.headlight.is_some() {
         scene.settings.headlight = note.headlight;

@@ -18,8 +18,8 @@ use crate::format::textures;
 use crate::format::LoadError;
 use crate::format::Loaded;
 use crate::scene::{
-    Camera, CameraKind, ImageId, Light, LightKind, Material, MaterialId, MeshId, Node, NodeId,
-    NodeKind, Scene, Shape, Texture, Transform,
+    Camera, CameraKind, ImageId, Light, LightKind, Material, MaterialId, Mesh, MeshId, Node,
+    NodeId, NodeKind, Scene, Shape, Texture, Transform,
 };
 use glam::{Mat4, Quat, Vec3};
 use std::collections::HashMap;
@@ -33,7 +33,6 @@ const MAX_BUILD_DEPTH: usize = limits::DEPTH_CEILING as usize;
 /// Nodes read and deliberately ignored (no effect on geometry here).
 const IGNORED: &[&str] = &[
     "Complexity",
-    "Environment",
     "Font",
     "FontStyle",
     "PickStyle",
@@ -64,6 +63,20 @@ struct Cursor {
 /// their matrices are merged into what follows, so the scene stays shallow
 /// enough to write back and to walk on a small stack.
 const MAX_CHAIN_DEPTH: u32 = 128;
+
+impl Cursor {
+    /// Where the children of group `id` (just added here) go: the pending
+    /// transforms are folded into the world matrix.
+    fn inside(&self, id: NodeId, separated: bool) -> Cursor {
+        Cursor {
+            parent: Some(id),
+            pending: Mat4::IDENTITY,
+            world: self.world * self.pending,
+            separated,
+            depth: self.depth + 1,
+        }
+    }
+}
 
 #[derive(Hash, PartialEq, Eq)]
 struct MeshKey {
@@ -104,7 +117,13 @@ impl Builder {
             log: BuildLog::new(path),
             depth,
             vrml1,
-            scene: Scene::new(),
+            scene: {
+                // OpenGL's light-model ambient, which Inventor viewers (and
+                // VRML 1.0 browsers) light with unless an Environment says.
+                let mut s = Scene::new();
+                s.settings.ambient = Vec3::splat(0.2);
+                s
+            },
             materials: HashMap::new(),
             meshes: HashMap::new(),
             coords: HashMap::new(),
@@ -203,13 +222,7 @@ impl Builder {
         match kind {
             "Separator" | "Selection" | "Annotation" | "WWWAnchor" | "SoSeparator" => {
                 if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
-                    let mut inner = Cursor {
-                        parent: Some(id),
-                        pending: Mat4::IDENTITY,
-                        world: cur.world * cur.pending,
-                        separated: true,
-                        depth: cur.depth + 1,
-                    };
+                    let mut inner = cur.inside(id, true);
                     let mut saved = st.clone();
                     self.children(n, &mut saved, &mut inner);
                 }
@@ -224,13 +237,7 @@ impl Builder {
                 if name.is_empty() {
                     self.children(n, st, cur);
                 } else if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
-                    let mut inner = Cursor {
-                        parent: Some(id),
-                        pending: Mat4::IDENTITY,
-                        world: cur.world * cur.pending,
-                        separated: cur.separated,
-                        depth: cur.depth + 1,
-                    };
+                    let mut inner = cur.inside(id, cur.separated);
                     self.children(n, st, &mut inner);
                     if inner.parent == Some(id) {
                         // Only static transforms inside (or none): later
@@ -281,6 +288,16 @@ impl Builder {
                     if let Err(e) = r {
                         self.stop(n.pos, e);
                     }
+                }
+            }
+            "Environment" => {
+                // The global ambient for the whole scene (the renderer has
+                // one); fog and light attenuation are not drawn.
+                let ambient = n.f32("ambientIntensity", 0.2).clamp(0.0, 1.0)
+                    * n.vec3("ambientColor", Vec3::ONE)
+                        .clamp(Vec3::ZERO, Vec3::ONE);
+                if ambient.is_finite() {
+                    self.scene.settings.ambient = ambient;
                 }
             }
             "DirectionalLight" | "PointLight" | "SpotLight" => {
@@ -400,6 +417,7 @@ impl Builder {
                         // without normals is what the renderer draws unlit.
                         m.normals.clear();
                     }
+                    self.read_morph(n, st, &inp, &mut m);
                     self.scene.add_mesh(m)
                 });
                 for (pos, msg) in msgs {
@@ -427,6 +445,41 @@ impl Builder {
         self.add(n.pos, cur, node);
     }
 
+    /// Morph targets carried by engines connected to the state's
+    /// Coordinate3 (and Normal), see `iv::morph`, set on the shape's mesh.
+    fn read_morph(&mut self, n: &NodeRef, st: &State, inp: &shapes::Inputs, m: &mut Mesh) {
+        let Some(coords) = st
+            .coords
+            .as_ref()
+            .filter(|_| n.node("vertexProperty").is_none())
+        else {
+            return;
+        };
+        let targets = match super::morph::targets(coords, "point", inp.coords.len()) {
+            Ok(Some(t)) => t,
+            Ok(None) => return,
+            Err(e) => {
+                self.warn(coords.pos, &format!("morph targets not read: {e}"));
+                return;
+            }
+        };
+        let normals = match st.normals.as_ref().filter(|_| !m.normals.is_empty()) {
+            Some(nn) => match super::morph::targets(nn, "vector", inp.normals.len()) {
+                Ok(t) => t.filter(|t| t.offsets.len() == targets.offsets.len()),
+                Err(e) => {
+                    self.warn(nn.pos, &format!("morph normals not read: {e}"));
+                    None
+                }
+            },
+            None => None,
+        };
+        let lit = !m.normals.is_empty();
+        match shapes::morph(n, st, inp, &targets, normals.as_ref(), lit) {
+            Ok(morphs) => m.morph = Some(Box::new(morphs)),
+            Err(e) => self.warn(n.pos, &format!("morph targets not read: {e}")),
+        }
+    }
+
     /// `Array` / `MultipleCopy`: a group holding one group per copy, each
     /// placed by its matrix and traversed like a Separator.
     fn copies(&mut self, n: &NodeRef, st: &State, cur: &Cursor, name: String) {
@@ -444,30 +497,19 @@ impl Builder {
         let Some(id) = self.add(n.pos, cur, Node::group(name)) else {
             return;
         };
-        let world = cur.world * cur.pending;
+        let outer = cur.inside(id, true);
         for m in matrices {
             let mut copy = Node::group(String::new());
             copy.transform.extra = Some(m);
-            let Some(cid) = self.add(
-                n.pos,
-                &Cursor {
-                    parent: Some(id),
-                    pending: Mat4::IDENTITY,
-                    world,
-                    separated: true,
-                    depth: cur.depth + 1,
-                },
-                copy,
-            ) else {
+            let Some(cid) = self.add(n.pos, &outer, copy) else {
                 return;
             };
+            // The copy's matrix is pending for what goes inside it.
             let mut inner = Cursor {
-                parent: Some(cid),
-                pending: Mat4::IDENTITY,
-                world: world * m,
-                separated: true,
-                depth: cur.depth + 2,
-            };
+                pending: m,
+                ..outer
+            }
+            .inside(cid, true);
             let mut saved = st.clone();
             self.children(n, &mut saved, &mut inner);
         }
@@ -486,13 +528,7 @@ impl Builder {
         let Some(id) = self.add(n.pos, cur, Node::group(name)) else {
             return;
         };
-        let mut inner = Cursor {
-            parent: Some(id),
-            pending: Mat4::IDENTITY,
-            world: cur.world * cur.pending,
-            separated: true,
-            depth: cur.depth + 1,
-        };
+        let mut inner = cur.inside(id, true);
         let mut saved = st.clone();
         for p in &parts {
             self.node(p, &mut saved, &mut inner);

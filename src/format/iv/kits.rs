@@ -78,6 +78,7 @@ pub fn parts(n: &AstNode) -> Vec<NodeRef> {
         .fields
         .iter()
         .enumerate()
+        .filter(|(_, f)| !AstNode::is_connection(f))
         .filter_map(|(i, f)| match &f.value {
             Value::Nodes(v) if n.kind != "NodeKitListPart" || f.name == "childList" => {
                 Some((rank(&f.name), i, v))

@@ -3,14 +3,18 @@
 //! and restore) turned into the scene tree.
 
 mod animated;
+mod binary;
+mod binary_fields;
 mod build;
 mod copies;
 mod kits;
+mod morph;
 mod shapes;
 mod state;
 mod text;
 mod texture;
 pub mod write;
+mod write_morph;
 mod write_text;
 
 use super::build_log::fmt_warning;
@@ -42,8 +46,26 @@ pub fn read_nested(
     for (pos, msg) in &parsed.warnings {
         warnings.push(fmt_warning(path, *pos, msg));
     }
+    build(&parsed, path, depth, vrml1, warnings)
+}
+
+/// Reads a binary Inventor file (`binary`); errors name the byte offset.
+pub fn read_binary_nested(bytes: &[u8], path: &Path, depth: usize) -> Result<Loaded, LoadError> {
+    let parsed = binary::parse(bytes)
+        .map_err(|(at, msg)| LoadError::new(path, 0, 0, format!("byte {at}: {msg}")))?;
+    build(&parsed, path, depth, false, Vec::new())
+}
+
+/// Builds the scene of parsed nodes; `warnings` (the parser's) come first.
+fn build(
+    parsed: &syntax::Parsed,
+    path: &Path,
+    depth: usize,
+    vrml1: bool,
+    mut warnings: Vec<String>,
+) -> Result<Loaded, LoadError> {
     let mut b = build::Builder::new(path, depth, vrml1);
-    b.build(&parsed);
+    b.build(parsed);
     let mut loaded = b.finish()?;
     loaded.scene.format = if vrml1 {
         SourceFormat::Vrml1
@@ -55,6 +77,8 @@ pub fn read_nested(
     Ok(loaded)
 }
 
+#[cfg(test)]
+mod binary_tests;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]

@@ -1,14 +1,16 @@
 //! Inventor / VRML 1.0 shape nodes → meshes, using the coordinates,
 //! normals, material bindings and shape hints of the traversal state.
 
+use super::morph::Targets;
 use super::state::{colors, packed, points2, Bind, State, TexSource, TexXf};
+use crate::format::corner_morph::Corners;
 use crate::format::lexer::Pos;
 use crate::format::polygons::{self, split_index};
 use crate::format::syntax::{AstNode, NodeRef};
 use crate::scene::normals::{
     mesh_from_points, mesh_from_polylines, Binding, PolyOptions, TexCoords,
 };
-use crate::scene::{primitives, Mesh};
+use crate::scene::{primitives, Mesh, Morphs};
 use glam::{Vec2, Vec3};
 use std::rc::Rc;
 
@@ -52,6 +54,7 @@ pub struct Inputs {
 }
 
 /// Where a textured shape's texture coordinates come from.
+#[derive(Clone)]
 pub enum TexInput {
     /// The shape's default mapping (bounding box, or the primitive's own).
     Default,
@@ -306,50 +309,7 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             ))
         }
         "IndexedFaceSet" | "IndexedTriangleStripSet" => {
-            let strips = kind == "IndexedTriangleStripSet";
-            let raw = split_index(&ints(n, "coordIndex"));
-            let corner_ids = consecutive(&raw);
-            let tex_index = ints(n, "textureCoordIndex");
-            let tex_rows = given(&tex_index).then(|| split_index(&tex_index));
-            let (faces, parts, corner_ids, tex_rows) = if strips {
-                let tex_rows = tex_rows.map(|r| strip_triangles(&r, &r).2);
-                let (f, p, c) = strip_triangles(&raw, &corner_ids);
-                (f, p, c, tex_rows)
-            } else {
-                let p: Vec<u32> = (0..raw.len() as u32).collect();
-                (raw, p, corner_ids, tex_rows)
-            };
-            let texcoords = inp.textured.then(|| {
-                let per_vertex = inp.texcoord_binding == Bind::PerVertex;
-                let index = if per_vertex {
-                    Some(corner_ids.clone())
-                } else {
-                    tex_rows
-                };
-                texcoords(inp, &faces, index)
-            });
-            let mut o = options(st);
-            o.colors = binding(
-                inp.material_binding,
-                &inp.colors,
-                &ints(n, "materialIndex"),
-                &faces,
-                Some(&parts),
-                &corner_ids,
-            );
-            let nb = if inp.normal_binding == Bind::Default {
-                Bind::PerVertexIndexed
-            } else {
-                inp.normal_binding
-            };
-            o.normals = binding(
-                nb,
-                &inp.normals,
-                &ints(n, "normalIndex"),
-                &faces,
-                Some(&parts),
-                &corner_ids,
-            );
+            let (faces, o, texcoords) = indexed_faces(n, kind, st, inp);
             polygons::build_textured(&inp.coords, faces, o, texcoords, n.pos, msgs)
         }
         "FaceSet" | "TriangleStripSet" | "QuadMesh" => {
@@ -480,6 +440,107 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
 /// the default mapping — one per coordinate (the plane is applied later, to
 /// the built mesh; the default maps the bounding box of the coordinates the
 /// faces use, see [`polygons::bbox_texcoords_inventor`]).
+/// The faces, build options and texture coordinates of an
+/// IndexedFaceSet / IndexedTriangleStripSet under state `st`.
+fn indexed_faces(
+    n: &AstNode,
+    kind: &str,
+    st: &State,
+    inp: &Inputs,
+) -> (Vec<Vec<u32>>, PolyOptions, Option<TexCoords>) {
+    let strips = kind == "IndexedTriangleStripSet";
+    let raw = split_index(&ints(n, "coordIndex"));
+    let corner_ids = consecutive(&raw);
+    let tex_index = ints(n, "textureCoordIndex");
+    let tex_rows = given(&tex_index).then(|| split_index(&tex_index));
+    let (faces, parts, corner_ids, tex_rows) = if strips {
+        let tex_rows = tex_rows.map(|r| strip_triangles(&r, &r).2);
+        let (f, p, c) = strip_triangles(&raw, &corner_ids);
+        (f, p, c, tex_rows)
+    } else {
+        let p: Vec<u32> = (0..raw.len() as u32).collect();
+        (raw, p, corner_ids, tex_rows)
+    };
+    let texcoords = inp.textured.then(|| {
+        let per_vertex = inp.texcoord_binding == Bind::PerVertex;
+        let index = if per_vertex {
+            Some(corner_ids.clone())
+        } else {
+            tex_rows
+        };
+        texcoords(inp, &faces, index)
+    });
+    let mut o = options(st);
+    o.colors = binding(
+        inp.material_binding,
+        &inp.colors,
+        &ints(n, "materialIndex"),
+        &faces,
+        Some(&parts),
+        &corner_ids,
+    );
+    let nb = if inp.normal_binding == Bind::Default {
+        Bind::PerVertexIndexed
+    } else {
+        inp.normal_binding
+    };
+    o.normals = binding(
+        nb,
+        &inp.normals,
+        &ints(n, "normalIndex"),
+        &faces,
+        Some(&parts),
+        &corner_ids,
+    );
+    (faces, o, texcoords)
+}
+
+/// The morph targets of an IndexedFaceSet whose points (and normals) are
+/// moved by `targets` (`iv::morph`): each target's mesh is built from the
+/// moved inputs and followed corner by corner (`corner_morph`). `lit`:
+/// whether the shape's mesh keeps its normals.
+pub fn morph(
+    n: &AstNode,
+    st: &State,
+    inp: &Inputs,
+    targets: &Targets,
+    normals: Option<&Targets>,
+    lit: bool,
+) -> Result<Morphs, String> {
+    if n.kind != "IndexedFaceSet" {
+        return Err(format!("morph targets on {} are not read", n.kind));
+    }
+    let mut msgs = Vec::new();
+    let (faces, o, tex) = indexed_faces(n, &n.kind, st, inp);
+    let (mut base, corners) =
+        polygons::build_textured_corners(&inp.coords, faces, o, tex, n.pos, &mut msgs)
+            .ok_or("the IndexedFaceSet has no mesh")?;
+    if !lit {
+        base.normals.clear();
+    }
+    let first = Corners::new(base.positions.len(), &corners);
+    let mut out = Vec::with_capacity(targets.offsets.len());
+    for (i, offsets) in targets.offsets.iter().enumerate() {
+        let moved = |at: &[Vec3], by: &[Vec3]| at.iter().zip(by).map(|(a, b)| *a + *b).collect();
+        let key_inputs = Inputs {
+            coords: Rc::new(moved(&inp.coords, offsets)),
+            normals: match normals.and_then(|t| t.offsets.get(i)) {
+                Some(by) => moved(&inp.normals, by),
+                None => inp.normals.clone(),
+            },
+            colors: inp.colors.clone(),
+            tex: inp.tex.clone(),
+            ..*inp
+        };
+        let (faces, o, tex) = indexed_faces(n, &n.kind, st, &key_inputs);
+        let (key, kc) =
+            polygons::build_textured_corners(&key_inputs.coords, faces, o, tex, n.pos, &mut msgs)
+                .ok_or(format!("morph target {i} makes no mesh"))?;
+        out.push(first.target(format!("target_{i}"), &base, &key, &kc)?);
+    }
+    Morphs::new(base.positions.len(), out, targets.weights.clone()).map_err(|e| e.to_string())
+}
+
 fn texcoords(inp: &Inputs, faces: &[Vec<u32>], index: Option<Vec<Vec<u32>>>) -> TexCoords {
     match &inp.tex {
         TexInput::Points(values) => TexCoords {

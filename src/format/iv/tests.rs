@@ -320,3 +320,21 @@ fn node_kits_read_as_the_groups_they_expand_to() {
     assert_eq!(world(s, find("C")).transform_point3(Vec3::ZERO), Vec3::ZERO);
     assert!(s.node(find("K")).children.len() == 1);
 }
+
+#[test]
+fn inventor_and_vrml1_light_with_a_global_ambient_an_environment_sets() {
+    let plain = load("#Inventor V2.1 ascii\nSeparator { Cube {} }");
+    assert_eq!(plain.scene.settings.ambient, Vec3::splat(0.2));
+    let v1 = read_nested(
+        b"#VRML V1.0 ascii\nSeparator { Cube {} }",
+        Path::new("t.wrl"),
+        0,
+        true,
+    )
+    .unwrap();
+    assert_eq!(v1.scene.settings.ambient, Vec3::splat(0.2));
+    let env = load(
+        "#Inventor V2.1 ascii\nSeparator { Environment { ambientIntensity 0.5 ambientColor 1 0 0.5 } Cube {} }",
+    );
+    assert_eq!(env.scene.settings.ambient, Vec3::new(0.5, 0.0, 0.25));
+}

@@ -29,6 +29,7 @@
 //! and vertex colours need a per-vertex Material. The key note (an `Info`
 //! node) keeps every authored key, fps, duration, background and headlight.
 
+use super::write_morph;
 use crate::anim::{Property, TargetRef, Value};
 use crate::format::export::channels::{channels, scene_diagonal, Channel};
 use crate::format::export::keynote;
@@ -38,8 +39,8 @@ use crate::format::export::sampling::{per_frame_keys, slerp_shortest, Sample, To
 use crate::format::export::text::{num, pivot_fields, quoted, rotation, rows, vec3, Out};
 use crate::format::export::textures::image_field;
 use crate::scene::{
-    Camera, CameraKind, ImageSource, Light, LightKind, Material, Mesh, NodeId, NodeKind, Scene,
-    Shape, TextureModel, Transform, Wrap,
+    Camera, CameraKind, ImageSource, Light, LightKind, Material, Mesh, Morphs, NodeId, NodeKind,
+    Scene, Shape, TextureModel, Transform, Wrap,
 };
 use glam::{Quat, Vec3};
 use std::collections::HashMap;
@@ -50,8 +51,7 @@ struct Writer<'a> {
     out: Out,
     v1: bool,
     channels: Vec<Channel>,
-    clock: Option<String>,
-    clock_defined: bool,
+    clock: Option<FrameClock>,
     written_materials: Vec<bool>,
     /// Whether any material has a texture (then every shape states its own).
     textured_scene: bool,
@@ -80,15 +80,19 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
         v1,
         channels: chans,
         clock: None,
-        clock_defined: false,
         written_materials: vec![false; scene.materials.len()],
         textured_scene: scene.materials.iter().any(|m| m.texture.is_some()),
         coord_uses: coord_uses(scene),
         coord_names: HashMap::new(),
         report: WriteReport::default(),
     };
-    if !w.channels.is_empty() {
-        w.clock = Some(w.plan.internal("_animed_clock"));
+    if !w.channels.is_empty() || (animate && morphs_animated(scene)) {
+        w.clock = Some(FrameClock {
+            name: w.plan.internal("_animed_clock"),
+            defined: false,
+            fps: scene.settings.fps,
+            frames: duration.floor().max(1.0),
+        });
     }
     if v1 {
         w.out.line("#Inventor V1.0 ascii");
@@ -122,14 +126,30 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
     }
     let note = keynote::write(scene, &w.plan);
     w.out.line(&format!("Info {{ string {} }}", quoted(&note)));
-    // Lights (and groups that start with one) first, as inside groups.
-    let mut roots: Vec<NodeId> = scene
-        .roots
-        .iter()
-        .copied()
-        .filter(|&r| w.lightish(r))
-        .collect();
-    roots.extend(scene.roots.iter().copied().filter(|&r| !w.lightish(r)));
+    environment(&mut w.out, scene.settings.ambient, v1);
+    // Bare cameras first: an Inventor camera sets the view only of what
+    // follows it (Coin drew warbird's shapes before its camera, through no
+    // view at all); one inside a Separator (with a transform) sets nobody's,
+    // and stays in place so the file reads back in the same order. Then
+    // lights (and groups that start with one), as inside groups.
+    let camera = |r: &NodeId| {
+        matches!(scene.node(*r).kind, NodeKind::Camera(_)) && !w.plan.wrapped[r.0 as usize]
+    };
+    let mut roots: Vec<NodeId> = scene.roots.iter().copied().filter(camera).collect();
+    roots.extend(
+        scene
+            .roots
+            .iter()
+            .copied()
+            .filter(|r| !camera(r) && w.lightish(*r)),
+    );
+    roots.extend(
+        scene
+            .roots
+            .iter()
+            .copied()
+            .filter(|r| !camera(r) && !w.lightish(*r)),
+    );
     for id in roots {
         w.node(id);
     }
@@ -189,6 +209,69 @@ fn coord_uses(scene: &Scene) -> HashMap<Vec<u32>, usize> {
         }
     }
     uses
+}
+
+/// The frame index every animated field is selected by: an `ElapsedTime`
+/// engine through a Calculator, DEF'd where it is first used.
+struct FrameClock {
+    name: String,
+    defined: bool,
+    fps: f32,
+    /// Frames in one cycle (the index runs 0 ..= frames − 1).
+    frames: f32,
+}
+
+impl FrameClock {
+    /// The `index` line of a SelectOne playing one value per frame.
+    fn index(&mut self, out: &mut Out) {
+        let name = &self.name;
+        if self.defined {
+            out.line(&format!("index 0 = USE {name} .oa"));
+            return;
+        }
+        self.defined = true;
+        out.line(&format!("index 0 = DEF {name} Calculator {{"));
+        out.depth += 1;
+        out.line("a 0 = ElapsedTime { } .timeOut");
+        out.line(&format!(
+            "expression \"oa = floor(fmod(a * {} + 0.001, {}))\"",
+            num(self.fps),
+            num(self.frames)
+        ));
+        out.close("} .oa");
+    }
+}
+
+/// Whether a weights track drives some morphed mesh (then the morph's
+/// weights need the frame clock even when nothing else is animated).
+fn morphs_animated(scene: &Scene) -> bool {
+    let morphed = scene.meshes.iter().any(|m| m.morph.is_some());
+    morphed
+        && scene
+            .animation
+            .tracks
+            .iter()
+            .any(|t| t.target.property == Property::MorphWeights)
+}
+
+/// Inventor's global ambient when it is not the 0.2 grey every reader
+/// (ours, Coin) assumes: an `Environment` (2.1 only) before the scene, so
+/// a scene from a VRML97 file (no global ambient) stays as dark in Coin.
+fn environment(out: &mut Out, ambient: Vec3, v1: bool) {
+    if v1 || ambient == Vec3::splat(0.2) {
+        return;
+    }
+    let grey = ambient.x == ambient.y && ambient.y == ambient.z;
+    let (intensity, color) = if grey {
+        (ambient.x, Vec3::ONE)
+    } else {
+        (1.0, ambient)
+    };
+    out.line(&format!(
+        "Environment {{ ambientIntensity {} ambientColor {} }}",
+        num(intensity),
+        vec3(color)
+    ));
 }
 
 fn def(name: &Option<String>) -> String {
@@ -296,27 +379,12 @@ impl Writer<'_> {
                 ),
             }
         };
-        let clock = self.clock.clone().unwrap_or_default();
         self.out.line(&format!("{name} {value} = SelectOne {{"));
         self.out.depth += 1;
         self.out.line(&format!("type {ty}"));
         self.out.list("input", rows(&items, 4, |v| v.clone(), ","));
-        if self.clock_defined {
-            self.out.line(&format!("index 0 = USE {clock} .oa"));
-        } else {
-            self.clock_defined = true;
-            let fps = self.scene.settings.fps;
-            let d = self.scene.settings.duration.floor().max(1.0);
-            self.out
-                .line(&format!("index 0 = DEF {clock} Calculator {{"));
-            self.out.depth += 1;
-            self.out.line("a 0 = ElapsedTime { } .timeOut");
-            self.out.line(&format!(
-                "expression \"oa = floor(fmod(a * {} + 0.001, {}))\"",
-                num(fps),
-                num(d)
-            ));
-            self.out.close("} .oa");
+        if let Some(clock) = &mut self.clock {
+            clock.index(&mut self.out);
         }
         self.out.close("} .output");
     }
@@ -340,7 +408,7 @@ impl Writer<'_> {
                 NodeKind::Shape(s) => {
                     self.out.open("Separator");
                     let name = self.plan.content[i].clone();
-                    self.shape(s, &name);
+                    self.shape(id, s, &name);
                     self.out.close("}");
                 }
                 _ => self.content(id),
@@ -395,10 +463,10 @@ impl Writer<'_> {
             for item in sorted {
                 match item {
                     None => match &node.kind {
-                        NodeKind::Shape(s) if alone => self.shape(s, &None),
+                        NodeKind::Shape(s) if alone => self.shape(id, s, &None),
                         NodeKind::Shape(s) => {
                             self.out.open("Separator");
-                            self.shape(s, &None);
+                            self.shape(id, s, &None);
                             self.out.close("}");
                         }
                         _ => self.content(id),
@@ -406,7 +474,7 @@ impl Writer<'_> {
                     Some(c) => match &self.scene.node(c).kind {
                         NodeKind::Shape(s) if alone && self.is_plain_shape(c) => {
                             let name = self.plan.content[c.0 as usize].clone();
-                            self.shape(s, &name)
+                            self.shape(c, s, &name)
                         }
                         _ => self.node(c),
                     },
@@ -497,7 +565,7 @@ impl Writer<'_> {
         let of = TargetRef::Node(id);
         match &node.kind {
             NodeKind::Group => {}
-            NodeKind::Shape(s) => self.shape(s, &None),
+            NodeKind::Shape(s) => self.shape(id, s, &None),
             NodeKind::Light(l) => {
                 let force_on = self
                     .scene
@@ -511,7 +579,7 @@ impl Writer<'_> {
         }
     }
 
-    fn shape(&mut self, s: &Shape, faces_name: &Option<String>) {
+    fn shape(&mut self, id: NodeId, s: &Shape, faces_name: &Option<String>) {
         let Some(mesh) = self.scene.meshes.get(s.mesh.0 as usize) else {
             self.report
                 .warnings
@@ -548,7 +616,11 @@ impl Writer<'_> {
         } else {
             "ShapeHints { vertexOrdering COUNTERCLOCKWISE }"
         };
-        if let Some((coords, normals)) = self.coord_names.get(&key).cloned() {
+        let morphs = mesh.morph.as_deref().filter(|_| !self.v1);
+        if let Some(morphs) = morphs {
+            // Its own points, whatever else shares them: the engines move them.
+            self.morph_coords(id, mesh, morphs, has_normals);
+        } else if let Some((coords, normals)) = self.coord_names.get(&key).cloned() {
             // The same points (and normals) written before: share them.
             self.out.line(&format!("USE {coords}"));
             if let Some(n) = normals {
@@ -638,6 +710,66 @@ impl Writer<'_> {
         if unlit {
             self.out.line("LightModel { model PHONG }");
         }
+    }
+
+    /// A morphed mesh's Coordinate3 (and Normal), connected from the
+    /// Calculators that add its targets (`write_morph`).
+    fn morph_coords(&mut self, id: NodeId, mesh: &Mesh, morphs: &Morphs, has_normals: bool) {
+        let frames = if self.clock.is_some() {
+            self.frames()
+        } else {
+            1
+        };
+        let plan = &mut self.plan;
+        let mut name = || plan.internal("_animed_weight");
+        let mut weights = write_morph::weights(self.scene, id, morphs, frames, &mut name);
+        let offsets: Vec<&[Vec3]> = morphs.targets().iter().map(|t| t.positions()).collect();
+        let (out, clock) = (&mut self.out, &mut self.clock);
+        let mut index = |o: &mut Out| {
+            if let Some(c) = clock.as_mut() {
+                c.index(o);
+            }
+        };
+        out.open("Coordinate3");
+        write_morph::connected_field(
+            out,
+            "point",
+            &mesh.positions,
+            &offsets,
+            &mut weights,
+            &mut index,
+        );
+        out.close("}");
+        if !has_normals {
+            return;
+        }
+        out.open("Normal");
+        if morphs.has_normal_deltas() {
+            let zeros = vec![Vec3::ZERO; mesh.normals.len()];
+            let offsets: Vec<&[Vec3]> = morphs
+                .targets()
+                .iter()
+                .map(|t| {
+                    if t.normals().is_empty() {
+                        &zeros[..]
+                    } else {
+                        t.normals()
+                    }
+                })
+                .collect();
+            write_morph::connected_field(
+                out,
+                "vector",
+                &mesh.normals,
+                &offsets,
+                &mut weights,
+                &mut index,
+            );
+        } else {
+            out.list("vector", rows(&mesh.normals, 4, |v| vec3(*v), ","));
+        }
+        out.close("}");
+        out.line("NormalBinding { value PER_VERTEX_INDEXED }");
     }
 
     /// Texture state for one shape. Inventor's Texture2 is inherited by

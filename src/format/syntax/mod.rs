@@ -140,6 +140,25 @@ impl AstNode {
         self.fields.iter().rev().find(|f| f.name == name)
     }
 
+    /// Inventor: the engine (and its output's name) that field `name` is
+    /// connected from (`name value = Engine { … } . output`). The parser
+    /// keeps it as a field named `name=output` holding the engine node, a
+    /// name no real field has.
+    pub fn connection(&self, name: &str) -> Option<(&NodeRef, &str)> {
+        self.fields.iter().rev().find_map(|f| {
+            let output = f.name.strip_prefix(name)?.strip_prefix('=')?;
+            match &f.value {
+                Value::Nodes(n) => Some((n.first()?, output)),
+                _ => None,
+            }
+        })
+    }
+
+    /// Whether field `f` is a kept connection (see [`AstNode::connection`]).
+    pub fn is_connection(f: &Field) -> bool {
+        f.name.contains('=')
+    }
+
     pub fn value(&self, name: &str) -> Option<&Value> {
         self.field(name).map(|f| &f.value)
     }

@@ -106,6 +106,10 @@ pub(super) struct Parser<'a> {
     node_ifaces: HashMap<*const AstNode, (NodeRef, Rc<Vec<Typed>>)>,
     warnings: Vec<(Pos, String)>,
     head: X3dHead,
+    /// The engine output the last field value was connected from
+    /// (Inventor's `field value = Engine { … } . output`), for the node
+    /// body to keep beside the field.
+    connection: Option<(NodeRef, String)>,
 }
 
 /// Parses a whole file body (the header line is a comment to the lexer).
@@ -121,6 +125,7 @@ pub fn parse(src: &[u8], opts: Options) -> Parsed {
         node_ifaces: HashMap::new(),
         warnings: Vec::new(),
         head: X3dHead::default(),
+        connection: None,
     };
     let mut roots = Vec::new();
     let error = p.statements(&mut roots, true).err();
@@ -556,6 +561,9 @@ impl Parser<'_> {
                     self.warn(vpos, m);
                 }
             }
+            if self.connection.is_some() {
+                self.keep_connection(&mut fields, &name, vpos);
+            }
             fields.push(Field {
                 name,
                 value,
@@ -650,43 +658,72 @@ impl Parser<'_> {
     }
 
     /// One untyped field value, plus Inventor's trailing `~` (ignore flag)
-    /// and `= Engine.output` connections (read and dropped).
+    /// and `= Engine.output` connections (not evaluated; the engine and its
+    /// output are left in `self.connection` for the node body to keep).
     fn value(&mut self) -> PResult<Value> {
         // A field costs about 100 bytes before its value's numbers.
         let pos = self.lx.pos();
         limits::charge_numbers(12).map_err(|e| (pos, e.to_string()))?;
+        self.connection = None;
         let v = self.raw_value()?;
         loop {
             match self.peek()? {
                 Tok::Punct(b'~') => {
                     self.next()?;
                 }
-                Tok::Punct(b'=') => {
-                    let (_, pos) = self.next()?;
-                    self.warn(pos, "field connections (engines) are not evaluated");
-                    if let Tok::Ident(_) = self.peek()? {
-                        let is_node = self.is_node_start()?;
-                        if is_node {
-                            self.node_statement()?;
-                            // `.output` follows the node's closing brace.
-                            if let Tok::Ident(s) = self.peek()? {
-                                if s == "." {
-                                    // `USE X . output` written with spaces.
-                                    self.next()?;
-                                    if let Tok::Ident(_) = self.peek()? {
-                                        self.next()?;
-                                    }
-                                } else if s.starts_with('.') {
-                                    self.next()?;
-                                }
-                            }
-                        } else {
-                            self.next()?;
-                        }
-                    }
-                }
+                Tok::Punct(b'=') => self.connection_after_equals()?,
                 _ => return Ok(v),
             }
+        }
+    }
+
+    /// `= Engine { … } . output` after a field value. Never inlined: its
+    /// locals would otherwise sit in every frame of the node recursion
+    /// (`value` → `node_statement` → … once per nesting level).
+    #[inline(never)]
+    fn connection_after_equals(&mut self) -> PResult<()> {
+        let (_, pos) = self.next()?;
+        self.warn(pos, "field connections (engines) are not evaluated");
+        let Tok::Ident(_) = self.peek()? else {
+            return Ok(());
+        };
+        if !self.is_node_start()? {
+            self.next()?;
+            return Ok(());
+        }
+        let engine = self.node_statement()?;
+        // `.output` follows the node's closing brace.
+        let mut output = String::new();
+        if let Tok::Ident(s) = self.peek()? {
+            if s == "." {
+                // `USE X . output` written with spaces.
+                self.next()?;
+                if let Tok::Ident(o) = self.peek()? {
+                    self.next()?;
+                    output = o;
+                }
+            } else if let Some(o) = s.strip_prefix('.') {
+                output = o.to_string();
+                self.next()?;
+            }
+        }
+        if !self.opts.vrml97 {
+            self.connection = engine.map(|e| (e, output));
+        }
+        Ok(())
+    }
+
+    /// Inventor: keeps the connection the last value had as a field
+    /// `name=output` holding the engine (see `AstNode::connection`). Never
+    /// inlined, for the same reason as `connection_after_equals`.
+    #[inline(never)]
+    fn keep_connection(&mut self, fields: &mut Vec<Field>, name: &str, pos: Pos) {
+        if let Some((engine, output)) = self.connection.take() {
+            fields.push(Field {
+                name: format!("{name}={output}"),
+                value: Value::Nodes(vec![engine]),
+                pos,
+            });
         }
     }
 

@@ -8,6 +8,7 @@
 //! the grid, §6.17; Extrusion: cross-section × spine, §6.18; primitives:
 //! `scene::primitives`' textured builders).
 
+use crate::format::corner_morph::Corners;
 use crate::format::lexer::Pos;
 use crate::format::limits;
 use crate::format::polygons::{self, bbox_texcoords, split_index};
@@ -15,7 +16,7 @@ use crate::format::syntax::AstNode;
 use crate::scene::normals::{
     mesh_from_points, mesh_from_polylines, Binding, PolyOptions, TexCoords,
 };
-use crate::scene::{Mesh, MorphTarget, Morphs};
+use crate::scene::{Mesh, Morphs};
 use glam::{Quat, Vec2, Vec3};
 
 type Msgs = Vec<(Pos, String)>;
@@ -181,15 +182,7 @@ pub fn ifs_morph(
         &mut msgs,
     )
     .ok_or("the IndexedFaceSet has no mesh")?;
-    // The first corner of each output vertex.
-    let mut first = vec![usize::MAX; base.positions.len()];
-    for (c, &v) in corners.iter().enumerate() {
-        if let Some(f) = first.get_mut(v as usize) {
-            if *f == usize::MAX {
-                *f = c;
-            }
-        }
-    }
+    let first = Corners::new(base.positions.len(), &corners);
     let mut targets = Vec::with_capacity(keys.len());
     for (i, points) in keys.iter().enumerate() {
         if points.len() != base_points.len() {
@@ -216,22 +209,7 @@ pub fn ifs_morph(
             &mut msgs,
         )
         .ok_or(format!("key {i} makes no mesh"))?;
-        if kc.len() != corners.len() {
-            return Err(format!("key {i} makes a different mesh"));
-        }
-        let at = |v: usize| first[v].min(kc.len().saturating_sub(1));
-        let dp = (0..base.positions.len())
-            .map(|v| m.positions[kc[at(v)] as usize] - base.positions[v])
-            .collect();
-        let dn =
-            if base.normals.len() == base.positions.len() && m.normals.len() == m.positions.len() {
-                (0..base.normals.len())
-                    .map(|v| m.normals[kc[at(v)] as usize] - base.normals[v])
-                    .collect()
-            } else {
-                Vec::new()
-            };
-        targets.push(MorphTarget::new(format!("key_{i}"), dp, dn));
+        targets.push(first.target(format!("key_{i}"), &base, &m, &kc)?);
     }
     Morphs::new(base.positions.len(), targets, Vec::new()).map_err(|e| e.to_string())
 }

@@ -793,18 +793,10 @@ impl Writer<'_> {
                 None => (duration, clock.clone()),
             };
             let interp = self.plan.internal(&format!("{target}_{field}"));
-            self.out.open(&format!("DEF {interp} {kind}"));
             let keys: Vec<f32> = ch.samples.iter().map(|s| s.0 / span).collect();
-            self.out.list("key", rows(&keys, 8, |k| num(*k), ","));
-            self.out
-                .list("keyValue", rows(&values, 4, |v| v.clone(), ","));
-            self.out.close("}");
-            routes.push(format!(
-                "ROUTE {clock}.fraction_changed TO {interp}.set_fraction"
-            ));
-            routes.push(format!(
-                "ROUTE {interp}.value_changed TO {target}.set_{field}"
-            ));
+            let values = rows(&values, 4, |v| v.clone(), ",");
+            let ends = (clock.as_str(), target.as_str(), field);
+            self.interpolator(kind, &interp, &keys, values, ends, &mut routes);
             self.report.channels.push(ChannelReport {
                 name: format!("{target}.{field}"),
                 authored_keys: ch.authored_keys,
@@ -829,17 +821,10 @@ impl Writer<'_> {
                     continue;
                 }
                 let interp = self.plan.internal(&format!("{base}_{field}_morph"));
-                self.out.open(&format!("DEF {interp} {kind}"));
-                self.out.list("key", rows(&keys, 8, |k| num(*k), ","));
                 let flat: Vec<Vec3> = values.iter().flatten().copied().collect();
-                self.out.list("keyValue", rows(&flat, 4, |v| vec3(*v), ","));
-                self.out.close("}");
-                routes.push(format!(
-                    "ROUTE {clock}.fraction_changed TO {interp}.set_fraction"
-                ));
-                routes.push(format!(
-                    "ROUTE {interp}.value_changed TO {target}.set_{field}"
-                ));
+                let values = rows(&flat, 4, |v| vec3(*v), ",");
+                let ends = (clock.as_str(), target.as_str(), field);
+                self.interpolator(kind, &interp, &keys, values, ends, &mut routes);
             }
             self.report.channels.push(ChannelReport {
                 name: format!("{coord}.point"),
@@ -851,6 +836,29 @@ impl Writer<'_> {
         for r in routes {
             self.out.line(&r);
         }
+    }
+
+    /// `DEF interp kind { key … keyValue … }` and the two routes that play
+    /// it: `ends` = (the clock, the target node, the target's field).
+    fn interpolator(
+        &mut self,
+        kind: &str,
+        interp: &str,
+        keys: &[f32],
+        values: Vec<String>,
+        (clock, target, field): (&str, &str, &str),
+        routes: &mut Vec<String>,
+    ) {
+        self.out.open(&format!("DEF {interp} {kind}"));
+        self.out.list("key", rows(keys, 8, |k| num(*k), ","));
+        self.out.list("keyValue", values);
+        self.out.close("}");
+        routes.push(format!(
+            "ROUTE {clock}.fraction_changed TO {interp}.set_fraction"
+        ));
+        routes.push(format!(
+            "ROUTE {interp}.value_changed TO {target}.set_{field}"
+        ));
     }
 
     /// The VRML97 field a channel drives, or `None` (with a warning) when
@@ -897,18 +905,9 @@ impl Writer<'_> {
             _ => return false,
         };
         let interp = self.plan.internal(&format!("{target}_{field}"));
-        self.out.open(&format!("DEF {interp} {kind}"));
         let keys: Vec<f32> = frames.iter().map(|f| f / duration).collect();
-        self.out.list("key", rows(&keys, 8, |k| num(*k), ","));
-        self.out
-            .list("keyValue", rows(&values, 4, |v| v.clone(), ","));
-        self.out.close("}");
-        routes.push(format!(
-            "ROUTE {clock}.fraction_changed TO {interp}.set_fraction"
-        ));
-        routes.push(format!(
-            "ROUTE {interp}.value_changed TO {target}.set_{field}"
-        ));
+        let values = rows(&values, 4, |v| v.clone(), ",");
+        self.interpolator(kind, &interp, &keys, values, (clock, target, field), routes);
         self.report.channels.push(ChannelReport {
             name: format!("{target}.{field} ({kind}, exact)"),
             authored_keys: ch.authored_keys,
