@@ -159,8 +159,8 @@ fn v1_binds_texture_coordinates_by_index_not_by_a_binding_node() {
 /// targets and default weights, and the key note's keys fit them again.
 #[test]
 fn morph_targets_go_through_calculators_and_come_back() {
-    use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
     use animed::internals::anim::Weights;
+    use animed::internals::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
     use animed::internals::format::load_bytes;
     use animed::internals::scene::{MorphTarget, Morphs, Node, NodeKind, Shape};
     use glam::Vec3;
