@@ -114,6 +114,7 @@ impl Editor {
                 start_frame: self.frame,
             }),
         };
+        self.say_playback();
     }
 
     pub(in crate::internals::editor) fn stop_playback(&mut self) {

@@ -99,7 +99,7 @@ impl Editor {
             ("Open", Action::Open, false),
             ("Imp", Action::Import, false),
             ("Save", Action::Save, false),
-            ("Add", Action::AddMenu, self.menu.is_some()),
+            ("Add", Action::AddMenu, self.add_menu_open()),
             (
                 "Mov",
                 Action::Tool(Tool::Translate),

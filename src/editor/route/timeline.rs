@@ -48,6 +48,20 @@ impl Editor {
         }
     }
 
+    /// Play or stop: the status line says which (and over which frames),
+    /// so an older message such as the preview range's hint does not
+    /// stay after playback stops.
+    pub(in crate::internals::editor) fn say_playback(&mut self) {
+        let msg = match (self.playback.is_some(), self.timeline.preview) {
+            (true, Some((a, b))) => {
+                format!("Playing frames {a} to {b} (preview range; Space stops)")
+            }
+            (true, None) => "Playing (Space stops)".to_string(),
+            (false, _) => format!("Stopped at frame {}", self.frame.round()),
+        };
+        self.set_status(&msg, false);
+    }
+
     /// `[` / `]`: the preview range starts / ends at the current frame
     /// (the other end is kept, or is the scene's end / start).
     pub(in crate::internals::editor) fn preview_end_here(&mut self, start: bool) {
