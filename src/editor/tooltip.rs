@@ -116,6 +116,10 @@ fn field_text(id: FieldId) -> String {
         FieldId::Duration => "Scene length in frames (2*24 works)".into(),
         FieldId::Frame => "Current frame: type one (Left/Right step)".into(),
         FieldId::Name => "Object name: click to type".into(),
+        FieldId::Preview(_) => format!(
+            "{}: type a frame; playback loops over the range",
+            id.label()
+        ),
         FieldId::Material(m) => format!("{}: 0..1, drag or type; K keys it", m.label()),
         other => format!("{}: drag to change, click to type", other.label()),
     }

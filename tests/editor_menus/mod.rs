@@ -193,3 +193,40 @@ fn stopping_playback_replaces_the_preview_hint() {
     assert_eq!(t, &format!("Stopped at frame {shown}"));
     assert!(!t.contains("Preview"));
 }
+
+#[test]
+fn the_preview_range_is_typed_into_its_fields() {
+    let mut ed = big_stage();
+    assert!(
+        !format!("{:?}", ed.widgets()).contains("Preview(0)"),
+        "no range, no fields"
+    );
+    // F3 → "Preview range": a range over the scene, typing its start.
+    key(&mut ed, Key::F(3), Mods::NONE);
+    ed.handle(Event::Text("preview".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert_eq!(ed.preview_range(), Some((0.0, 96.0)));
+    assert!(ed.text_edit().is_some(), "typing the start");
+    ed.handle(Event::Text("10+10".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert_eq!(ed.preview_range(), Some((20.0, 96.0)));
+    type_into(&mut ed, "Field(Preview(1))", "40");
+    assert_eq!(ed.preview_range(), Some((20.0, 40.0)));
+    // A start after the end is refused and said.
+    type_into(&mut ed, "Field(Preview(0))", "50");
+    assert_eq!(ed.preview_range(), Some((20.0, 40.0)));
+    assert!(ed.status().error, "{:?}", ed.status());
+    assert!(
+        ed.status().text.contains("must be before"),
+        "{:?}",
+        ed.status()
+    );
+    // Past the scene's end: clamped, and the line says so.
+    type_into(&mut ed, "Field(Preview(1))", "500");
+    assert_eq!(ed.preview_range(), Some((20.0, 96.0)));
+    let t = &ed.status().text;
+    assert!(
+        t.contains("Preview end: 500") && t.contains("set to 96"),
+        "{t}"
+    );
+}
