@@ -45,6 +45,7 @@ mod route;
 mod screen;
 pub mod script;
 pub mod search;
+mod strip_tips;
 pub mod timeline;
 pub mod tooltip;
 mod viewport;

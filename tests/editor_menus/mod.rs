@@ -230,3 +230,33 @@ fn the_preview_range_is_typed_into_its_fields() {
         "{t}"
     );
 }
+
+#[test]
+fn list_rows_and_the_key_strip_have_tooltips() {
+    use animed::internals::editor::keystrip::Row;
+    let mut ed = big_stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    let rest = |ed: &mut Editor, at: (f32, f32)| {
+        hover(ed, at);
+        for i in 0..8 {
+            ed.handle(Event::Tick {
+                time: 10.0 + i as f64 * 0.1,
+            });
+        }
+        ed.tooltip().unwrap_or_default()
+    };
+    let at = ed
+        .key_marker_at(Row::Track(Property::Translation), 24.0)
+        .unwrap();
+    let t = rest(&mut ed, at);
+    assert_eq!(
+        t,
+        "Translation key, frame 24: drag moves; right-click: menu"
+    );
+    let strip = ed.layout().key_rows;
+    let empty = ((strip.right() - 6) as f32, (strip.bottom() - 4) as f32);
+    assert!(rest(&mut ed, empty).starts_with("Drag: box select"));
+    let row = find(&ed, &format!("node: NodeId({})", ball.0));
+    assert!(rest(&mut ed, row).contains("drag onto a row parents it"));
+}

@@ -85,7 +85,10 @@ impl Editor {
     /// drags, menus and dialogs); `true` when a shown tooltip went away.
     fn hover_move(&mut self, x: f32, y: f32) -> bool {
         let over = match (&self.drag, &self.menu, &self.dialog, &self.browser) {
-            (Drag::None, None, None, None) => self.widget_at(x, y).map(|w| w.kind),
+            (Drag::None, None, None, None) => self
+                .widget_at(x, y)
+                .map(|w| w.kind)
+                .or_else(|| self.strip_tip(x, y)),
             _ => None,
         };
         self.hover.moved(over)
