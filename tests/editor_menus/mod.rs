@@ -77,7 +77,7 @@ fn the_graph_editors_context_menu_edits_keys_and_selects_a_channel() {
     pick(&mut ed, "Interpolation: step");
     assert_eq!(ed.history().labels().count(), steps + 1, "one undo step");
     // A right drag pans and opens no menu.
-    let before = ed.graph().unwrap().view.clone();
+    let before = ed.graph().unwrap().view;
     let plot = ed.layout().key_rows;
     let c = (
         (plot.x + plot.w * 2 / 3) as f32,

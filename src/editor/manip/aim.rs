@@ -59,11 +59,7 @@ impl Editor {
                 .filter_map(|k| self.ring_pixel(h, k as f32 * 0.1))
                 .collect(),
             Handle::ScaleAxis(i) => vec![self.scale_points()?[i as usize + 1]],
-            Handle::Uniform => {
-                let pts = self.scale_points()?;
-                let gap = self.handle_projector().gap_px();
-                vec![super::scale::centre_box(&pts, gap)]
-            }
+            Handle::Uniform => vec![self.scale_points()?[0]],
             Handle::Body => return self.body_pixel(),
             Handle::Trackball => return None,
         };

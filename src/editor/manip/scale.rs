@@ -37,41 +37,11 @@ pub fn points(proj: &Projector, pivot: Vec3, frame: &[Vec3; 3]) -> Option<[(f32,
     ])
 }
 
-/// Where the uniform-scale box sits: on the pivot, or — over a small
-/// object whose disc of `gap` pixels the handles keep clear — just outside
-/// that disc, on the side away from the three axes, so a press on the
-/// object moves it instead of scaling it.
-pub fn centre_box(pts: &[(f32, f32); 4], gap: f32) -> (f32, f32) {
-    let c = pts[0];
-    if gap <= 0.0 {
-        return c;
-    }
-    let (mut sx, mut sy) = (0.0f32, 0.0f32);
-    for e in &pts[1..] {
-        let (dx, dy) = (e.0 - c.0, e.1 - c.1);
-        let l = (dx * dx + dy * dy).sqrt();
-        if l > 1e-3 {
-            sx += dx / l;
-            sy += dy / l;
-        }
-    }
-    let l = (sx * sx + sy * sy).sqrt();
-    let (ux, uy) = match l > 1e-3 {
-        true => (-sx / l, -sy / l),
-        false => (
-            std::f32::consts::FRAC_1_SQRT_2,
-            std::f32::consts::FRAC_1_SQRT_2,
-        ),
-    };
-    let d = gap + CENTRE_BOX + 3.0;
-    (c.0 + ux * d, c.1 + uy * d)
-}
-
 /// The box or axis line under pixel (x, y): the centre box first, then
 /// the closest axis.
 pub fn hit(proj: &Projector, pivot: Vec3, frame: &[Vec3; 3], x: f32, y: f32) -> Option<Handle> {
     let pts = points(proj, pivot, frame)?;
-    if in_box((x, y), centre_box(&pts, proj.gap_px()), CENTRE_BOX + 1.0) {
+    if in_box((x, y), pts[0], CENTRE_BOX + 1.0) {
         return Some(Handle::Uniform);
     }
     let mut best: Option<(f32, Handle)> = None;
@@ -165,7 +135,7 @@ pub fn draw(
     } else {
         0xe0e0e0
     };
-    let q = square(centre_box(&pts, proj.gap_px()), CENTRE_BOX);
+    let q = square(pts[0], CENTRE_BOX);
     // Over a small object (handles kept off its disc) only the outline,
     // so the object shows through.
     if proj.gap_px() <= 0.0 {
@@ -178,19 +148,6 @@ pub fn draw(
 mod tests {
     use super::super::geom::tests::projector;
     use super::*;
-
-    #[test]
-    fn the_uniform_box_leaves_a_small_objects_disc() {
-        let pts = [(100.0, 100.0), (140.0, 100.0), (100.0, 60.0), (80.0, 120.0)];
-        assert_eq!(centre_box(&pts, 0.0), (100.0, 100.0));
-        let b = centre_box(&pts, 10.0);
-        let d = ((b.0 - 100.0).powi(2) + (b.1 - 100.0).powi(2)).sqrt();
-        assert!((d - 19.0).abs() < 1e-3, "outside the disc and the box: {d}");
-        // Away from the axes: x points right, y up, z down-left → the box
-        // goes down-right... of their mean's opposite.
-        let dot = |e: (f32, f32)| (e.0 - 100.0) * (b.0 - 100.0) + (e.1 - 100.0) * (b.1 - 100.0);
-        assert!(pts[1..].iter().map(|&e| dot(e)).sum::<f32>() < 0.0);
-    }
 
     #[test]
     fn axis_ratio_keeps_the_grabbed_point_under_the_mouse() {
