@@ -2,10 +2,10 @@
 //! 1280×720 with all cores, and per-stage figures (setup, raster, shade,
 //! resolve) on one thread.
 
-use animed::internals::anim::evaluate;
+use animed::internals::anim::{evaluate, Pose};
 use animed::internals::render::job::{find_camera, view_for};
 use animed::internals::render::stages::Stages;
-use animed::internals::render::{bench_scenes, render_into, Frame, RenderOptions};
+use animed::internals::render::{bench_scenes, render_into, Frame, RenderOptions, View};
 use animed::internals::scene::Scene;
 use criterion::{criterion_group, criterion_main, Criterion};
 
@@ -16,9 +16,9 @@ fn frame(c: &mut Criterion, name: &str, scene: &Scene) {
     frame_aa(c, name, scene, 1);
 }
 
-/// One whole frame with `aa` samples per pixel (the frame reused, as the
-/// editor and `animed bench` do).
-fn frame_aa(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
+/// The pose at time 0, the scene's camera and the options of a 1280×720
+/// frame with `aa` samples per pixel on `threads` threads (0 = all).
+fn setup(scene: &Scene, aa: u32, threads: usize) -> (Pose, View, RenderOptions) {
     let pose = evaluate(scene, 0.0);
     let camera = find_camera(scene, None).ok().flatten();
     let view = view_for(scene, &pose, camera, W as f32 / H as f32);
@@ -26,9 +26,17 @@ fn frame_aa(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
         width: W,
         height: H,
         headlight: false,
+        threads,
         aa,
         ..RenderOptions::default()
     };
+    (pose, view, opts)
+}
+
+/// One whole frame with `aa` samples per pixel (the frame reused, as the
+/// editor and `animed bench` do).
+fn frame_aa(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
+    let (pose, view, opts) = setup(scene, aa, 0);
     let mut out = Frame::new(W, H, opts.background);
     c.bench_function(name, |b| {
         b.iter(|| render_into(scene, &pose, &view, &opts, &mut out))
@@ -40,17 +48,7 @@ fn frame_aa(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
 /// raster+shade (the shading pass needs its tile's depth pass; subtract
 /// raster for the shading alone), resolve.
 fn stages(c: &mut Criterion, name: &str, scene: &Scene, aa: u32) {
-    let pose = evaluate(scene, 0.0);
-    let camera = find_camera(scene, None).ok().flatten();
-    let view = view_for(scene, &pose, camera, W as f32 / H as f32);
-    let opts = RenderOptions {
-        width: W,
-        height: H,
-        headlight: false,
-        threads: 1,
-        aa,
-        ..RenderOptions::default()
-    };
+    let (pose, view, opts) = setup(scene, aa, 1);
     let mut s = Stages::new(scene, &pose, &view, &opts);
     c.bench_function(&format!("{name}/setup"), |b| {
         b.iter(|| s.setup(scene, &pose))

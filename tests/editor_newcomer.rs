@@ -604,6 +604,9 @@ fn the_view_is_remembered_per_file_not_in_the_scene() {
         "framed, not remembered, without memory"
     );
     again.set_view_memory(Some(mem.clone()));
+    // The editor only asks for the memory; the shell reads it.
+    assert_ne!(*again.camera(), saved, "not read by the editor itself");
+    animed::internals::editor::shell::perform(&mut again);
     assert_eq!(*again.camera(), saved);
     // Opening the file in another editor recalls it too.
     let mut other = Editor::new(Scene::new(), None, 480, 320);

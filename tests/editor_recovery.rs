@@ -6,7 +6,7 @@
 use animed::internals::anim::{Property, Target, TargetRef, Value};
 use animed::internals::editor::panel::WidgetKind;
 use animed::internals::editor::recovery::recovery_path;
-use animed::internals::editor::{After, Editor, Event, Key, Mods};
+use animed::internals::editor::{shell, After, Editor, Event, Key, Mods};
 use animed::internals::scene::{NodeId, Scene};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -163,14 +163,20 @@ fn a_killed_session_is_recovered_and_saved() {
 }
 
 fn key(ed: &mut Editor, k: Key) {
-    ed.handle(Event::KeyDown {
-        key: k,
-        mods: Mods::NONE,
-    });
-    ed.handle(Event::KeyUp {
-        key: k,
-        mods: Mods::NONE,
-    });
+    shell::handle(
+        ed,
+        Event::KeyDown {
+            key: k,
+            mods: Mods::NONE,
+        },
+    );
+    shell::handle(
+        ed,
+        Event::KeyUp {
+            key: k,
+            mods: Mods::NONE,
+        },
+    );
 }
 
 /// `dir/scene.wrl` plus a newer recovery copy in which the first node
@@ -255,29 +261,38 @@ fn discarding_unsaved_changes_deletes_this_sessions_copy() {
     let mut ed = Editor::new(loaded.scene, Some(scene.clone()), SIZE.0, SIZE.1);
     ed.set_autosave_interval(Some(1.0));
     let x = centre(&ed, |k| matches!(k, WidgetKind::Row { .. }));
-    ed.handle(Event::MouseDown {
-        button: animed::internals::editor::MouseButton::Left,
-        x: x.0 as f32,
-        y: x.1 as f32,
-        mods: Mods::NONE,
-    });
-    ed.handle(Event::MouseUp {
-        button: animed::internals::editor::MouseButton::Left,
-        x: x.0 as f32,
-        y: x.1 as f32,
-        mods: Mods::NONE,
-    });
+    shell::handle(
+        &mut ed,
+        Event::MouseDown {
+            button: animed::internals::editor::MouseButton::Left,
+            x: x.0 as f32,
+            y: x.1 as f32,
+            mods: Mods::NONE,
+        },
+    );
+    shell::handle(
+        &mut ed,
+        Event::MouseUp {
+            button: animed::internals::editor::MouseButton::Left,
+            x: x.0 as f32,
+            y: x.1 as f32,
+            mods: Mods::NONE,
+        },
+    );
     key(&mut ed, Key::Delete);
     assert!(ed.is_dirty());
-    ed.handle(Event::Tick { time: 10.0 });
-    ed.handle(Event::Tick { time: 11.5 });
+    shell::handle(&mut ed, Event::Tick { time: 10.0 });
+    shell::handle(&mut ed, Event::Tick { time: 11.5 });
     let copy = recovery_path(&scene);
     assert!(copy.exists(), "autosaved");
     assert!(ed.last_autosave_ms().is_some());
-    ed.handle(Event::KeyDown {
-        key: Key::Char('q'),
-        mods: Mods::ctrl(),
-    });
+    shell::handle(
+        &mut ed,
+        Event::KeyDown {
+            key: Key::Char('q'),
+            mods: Mods::ctrl(),
+        },
+    );
     assert!(ed.dialog().is_some(), "asks about the unsaved changes");
     key(&mut ed, Key::Char('d'));
     assert!(ed.wants_quit());
@@ -477,8 +492,11 @@ fn the_status_line_shows_autosaves() {
     ed.set_autosave_interval(Some(1.0));
     ed.select(Some(NodeId(0)));
     key(&mut ed, Key::Char('k'));
-    ed.handle(Event::Tick { time: 1.0 });
-    assert!(ed.handle(Event::Tick { time: 2.5 }), "redraws the status");
+    shell::handle(&mut ed, Event::Tick { time: 1.0 });
+    assert!(
+        shell::handle(&mut ed, Event::Tick { time: 2.5 }),
+        "redraws the status"
+    );
     let t = &ed.status().text;
     assert!(t.starts_with("Autosaved unsaved changes at "), "{t}");
     assert!(

@@ -3,7 +3,7 @@
 
 #[path = "common/ui_input.rs"]
 mod ui_input;
-use animed::internals::editor::{script, Editor, Event, Key, Mode, Mods, MouseButton};
+use animed::internals::editor::{script, shell, Editor, Event, Key, Mode, Mods, MouseButton};
 use animed::internals::scene::{
     Light, LightKind, Material, Mesh, Node, NodeId, NodeKind, Scene, Shape,
 };
@@ -55,18 +55,24 @@ fn editor() -> Editor {
 }
 
 fn click(ed: &mut Editor, x: f32, y: f32) {
-    ed.handle(Event::MouseMove {
-        x,
-        y,
-        mods: Mods::NONE,
-    });
+    shell::handle(
+        ed,
+        Event::MouseMove {
+            x,
+            y,
+            mods: Mods::NONE,
+        },
+    );
     for down in [true, false] {
         let (button, mods) = (MouseButton::Left, Mods::NONE);
-        ed.handle(if down {
-            Event::MouseDown { button, x, y, mods }
-        } else {
-            Event::MouseUp { button, x, y, mods }
-        });
+        shell::handle(
+            ed,
+            if down {
+                Event::MouseDown { button, x, y, mods }
+            } else {
+                Event::MouseUp { button, x, y, mods }
+            },
+        );
     }
 }
 
@@ -475,6 +481,67 @@ fn ctrl_s_saves_in_place_and_quit_can_save_first() {
         "{}",
         &text[..40.min(text.len())]
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The editor itself never touches the disk: Ctrl+S and the autosave clock
+/// only queue requests; the shell (here `shell::perform`, in the window
+/// `app`) writes, and a failed write marks nothing saved.
+#[test]
+fn the_editor_asks_for_file_work_and_the_shell_does_it() {
+    use animed::internals::editor::request::{AutosaveWhy, Request};
+    let dir = temp_dir("requests");
+    let path = dir.join("scene.wrl");
+    let mut ed = Editor::new(scene(), Some(path.clone()), 480, 320);
+    ed.set_autosave_interval(Some(1.0));
+    ed.select(Some(NodeId(2)));
+    ed.handle(Event::KeyDown {
+        key: Key::Delete,
+        mods: Mods::NONE,
+    });
+    assert!(ed.is_dirty());
+    ed.handle(Event::KeyDown {
+        key: Key::Char('s'),
+        mods: Mods::ctrl(),
+    });
+    let asked = ed.requests().to_vec();
+    assert_eq!(
+        asked,
+        [Request::Save {
+            path: path.clone(),
+            expect: None,
+            then: None
+        }]
+    );
+    assert!(!path.exists(), "the state machine wrote nothing");
+    assert!(ed.is_dirty(), "not saved before the write");
+    assert!(shell::perform(&mut ed));
+    assert!(path.is_file() && !ed.is_dirty(), "{:?}", ed.status());
+    assert!(ed.requests().is_empty());
+    // Unsaved again; the clock asks for a recovery copy, the shell writes it.
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert!(ed.is_dirty());
+    ed.handle(Event::Tick { time: 10.0 });
+    ed.handle(Event::Tick { time: 11.5 });
+    let copy = ed.recovery_file();
+    assert!(ed.requests().contains(&Request::Autosave {
+        path: copy.clone(),
+        why: AutosaveWhy::Clock
+    }));
+    assert!(!copy.exists());
+    shell::perform(&mut ed);
+    assert!(copy.is_file(), "{:?}", ed.status());
+    assert!(
+        ed.status().text.starts_with("Autosaved"),
+        "{:?}",
+        ed.status()
+    );
+    // A save that cannot be written leaves the work unsaved, and says why.
+    let blocked = dir.join("scene.wrl").join("inside-a-file.wrl");
+    assert!(ed.save_to(&blocked).is_err());
+    assert!(ed.is_dirty(), "a failed save marks nothing saved");
+    assert!(ed.status().error, "{:?}", ed.status());
+    assert_eq!(ed.path(), Some(path.as_path()), "still the old file");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -4,6 +4,7 @@
 //! (the Khronos validator and three.js under node; see `gltf_node.rs`).
 
 mod gltf_corpus;
+mod gltf_emissive;
 mod gltf_node;
 
 use animed::internals::anim::{

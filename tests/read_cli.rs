@@ -174,3 +174,38 @@ fn openvrml_bad_files_are_flagged_with_locations() {
     let (code, out, err) = animed(&["info", "--strict", "assets/demo.wrl"]);
     assert_eq!(code, 0, "{out}{err}");
 }
+
+/// `animed info FILE | head` once panicked with "failed printing to stdout:
+/// Broken pipe". With the reader gone before the first line, the command
+/// must end without a panic message (killed by SIGPIPE, as text tools are).
+#[cfg(unix)]
+#[test]
+fn printing_into_a_closed_pipe_ends_quietly() {
+    use std::os::unix::process::ExitStatusExt;
+    let (reader, writer) = std::io::pipe().expect("pipe");
+    drop(reader);
+    for args in [
+        &["info", "assets/demo.wrl"][..],
+        &["info", "assets/demo.wrl", "--json"][..],
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_animed"))
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .stdout(writer.try_clone().expect("clone pipe"))
+            .output()
+            .expect("run animed");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert!(!err.contains("Broken pipe"), "{args:?}: {err}");
+        assert_eq!(
+            out.status.signal(),
+            Some(SIGPIPE),
+            "{args:?}: {:?}",
+            out.status
+        );
+    }
+}
+
+/// SIGPIPE's number on Linux and the BSDs.
+#[cfg(unix)]
+const SIGPIPE: i32 = 13;

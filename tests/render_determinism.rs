@@ -155,7 +155,7 @@ fn demo_scene() {
 /// without AVX-512's registers) write the same bytes: the demo has all
 /// three light kinds, a spot ramp, specular and transparency (also with 4x
 /// AA); inventor.iv has textures of every kind (the eight-lane sampler and
-/// its per-lane fallbacks).
+/// its per-lane fallbacks); emissive.gltf has glTF emissive maps.
 #[test]
 fn simd_path_never_changes_the_picture() {
     #[cfg(target_arch = "x86_64")]
@@ -183,6 +183,8 @@ fn simd_path_never_changes_the_picture() {
         ("assets/demo.wrl", "1"),
         ("assets/demo.wrl", "4"),
         ("tests/data/textures/inventor.iv", "1"),
+        // Emissive maps: a second sampler added after the lighting.
+        ("tests/data/gltf/emissive.gltf", "4"),
     ] {
         let sse2 = render(file, aa, Some("sse2"), "simd_sse2.png");
         let avx = render(file, aa, Some("avx"), "simd_avx.png");

@@ -458,6 +458,93 @@ fn textures_survive_read_write_read() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// glTF emissive maps in a dim scene (tests/data/gltf/emissive.gltf, one
+/// directional light of 1 lux = intensity 1/π, no headlight): left, a
+/// glowing checker as emissiveTexture on a near-black lit material;
+/// middle, a grey checker base colour texture lit dimly plus the glowing
+/// checker repeated twice (KHR_texture_transform) and tinted blue; right,
+/// KHR_materials_unlit with the glowing checker as base colour texture,
+/// tinted by baseColorFactor [1, 0.5, 0.5]. Emission is added to the lit
+/// colour before the clamp (glTF 2.0 §3.9.3, Appendix B), checked on
+/// pixels: with the light off a glowing texel is exactly the texel and a
+/// dark one black; with it on the glowing texel is the dark texel's lit
+/// colour plus the texel. view3dscene 4.2 draws the left and right quads
+/// alike (it ignores KHR_texture_transform on the emissive texture).
+#[test]
+fn gltf_emissive_maps() {
+    use animed::internals::format::gltf::srgb_from_linear;
+    use animed::internals::render::job::Headlight;
+    use animed::internals::scene::NodeKind;
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/gltf/emissive.gltf");
+    let mut scene = animed::internals::format::load(&path).unwrap().scene;
+    let spec = FrameSpec {
+        width: W,
+        height: H,
+        headlight: Headlight::Off,
+        ..FrameSpec::default()
+    };
+    let on = render_at(&scene, &spec, 0.0).unwrap();
+    golden::check("gltf_emissive", &on);
+    let sun = scene.find_node("Sun").unwrap();
+    if let NodeKind::Light(l) = &mut scene.nodes[sun.0 as usize].kind {
+        l.on = false;
+    }
+    let off = render_at(&scene, &spec, 0.0).unwrap();
+    // The pixel at the centre of texel (i, j) of the 4x4 checker on `name`.
+    let at = |f: &Frame, name: &str, i: usize, j: usize| -> [i32; 3] {
+        let id = scene.find_node(name).unwrap().0 + 1;
+        let w = f.width as usize;
+        let px: Vec<(usize, usize)> = (0..f.ids.len())
+            .filter(|&k| f.ids[k] == id)
+            .map(|k| (k % w, k / w))
+            .collect();
+        let (x0, x1) = (
+            px.iter().map(|p| p.0).min().unwrap(),
+            px.iter().map(|p| p.0).max().unwrap(),
+        );
+        let (y0, y1) = (
+            px.iter().map(|p| p.1).min().unwrap(),
+            px.iter().map(|p| p.1).max().unwrap(),
+        );
+        let x = x0 + (x1 - x0) * (2 * i + 1) / 8;
+        let y = y0 + (y1 - y0) * (2 * j + 1) / 8;
+        let c = f.color[y * w + x];
+        [
+            (c >> 16) as i32 & 255,
+            (c >> 8) as i32 & 255,
+            c as i32 & 255,
+        ]
+    };
+    // Light off: emission only. Texel (0, 0) glows (255, 200, 40) × 1.
+    assert_eq!(at(&off, "Glow", 0, 0), [255, 200, 40]);
+    assert_eq!(at(&off, "Glow", 1, 0), [0, 0, 0]);
+    // Texel (3, 3) is (255, 80, 220).
+    assert_eq!(at(&off, "Glow", 3, 3), [255, 80, 220]);
+    // Light on: the dark texel shows the lit base colour, the glowing one
+    // that plus the texel (then clamped).
+    let dark = at(&on, "Glow", 1, 0);
+    assert!(dark[0] > 0 && dark == [dark[0]; 3], "{dark:?}");
+    let glow = at(&on, "Glow", 0, 0);
+    for (c, t) in [(1, 200), (2, 40)] {
+        assert!(
+            (glow[c] - (dark[c] + t)).abs() <= 1,
+            "{glow:?} = {dark:?} + texel"
+        );
+    }
+    assert_eq!(glow[0], 255);
+    // Unlit: sRGB(baseColorFactor) × texel, with or without the light.
+    let f = srgb_from_linear(Vec3::new(1.0, 0.5, 0.5));
+    let want = [255.0 * f.x, 200.0 * f.y, 40.0 * f.z].map(|x| x.round() as i32);
+    for frame in [&on, &off] {
+        let got = at(frame, "Unlit", 0, 0);
+        assert!(
+            got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1),
+            "{got:?} vs {want:?}"
+        );
+        assert_eq!(at(frame, "Unlit", 1, 0), [0, 0, 0]);
+    }
+}
+
 /// Broken or missing texture images are warnings at the statement that
 /// names them (the MTL line, or the glTF image's JSON pointer), the model
 /// still loads, draws untextured, and nothing panics.
@@ -531,4 +618,40 @@ fn broken_texture_images_are_placed_warnings() {
         loaded.warnings
     );
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A mesh without normals is drawn unlit, and keeps its texture: without
+/// a Material (VRML97's unlit REPLACE) the picture is the same whether the
+/// quads carry normals or not, for the opaque lane pass (RGB checker) and
+/// the transparent pass (RGBA disc) alike. The renderer used to drop the
+/// texture coordinates of meshes without normals (flat white quads).
+#[test]
+fn unlit_meshes_without_normals_keep_their_texture() {
+    let src = [
+        quad(-1.0, "texture ImageTexture { url \"checker.png\" }"),
+        quad(1.0, "texture ImageTexture { url \"rgba.png\" }"),
+    ]
+    .concat();
+    let mut s = load(&format!("{HEAD}{src}"));
+    let with_normals = draw(&s);
+    assert!(s.meshes.iter().all(|m| !m.normals.is_empty()));
+    for m in &mut s.meshes {
+        m.normals.clear();
+    }
+    let without = draw(&s);
+    let count = |f: &Frame, want: fn([u32; 3]) -> bool| {
+        f.color
+            .iter()
+            .filter(|&&c| want([c >> 16 & 0xFF, c >> 8 & 0xFF, c & 0xFF]))
+            .count()
+    };
+    // The checker's red and white texels and the disc's green, unlit (the
+    // magnified checker is bilinear, so no texel colour is exact).
+    let red: fn([u32; 3]) -> bool = |[r, g, b]| r > 180 && g < 110 && b < 110;
+    let white: fn([u32; 3]) -> bool = |[r, g, b]| r > 200 && g > 200 && b > 200;
+    let green: fn([u32; 3]) -> bool = |[r, g, b]| g > 180 && r < 60 && b < 90;
+    for (name, want) in [("red", red), ("white", white), ("green", green)] {
+        assert!(count(&without, want) > 50, "{name}: texture missing");
+    }
+    assert!(with_normals.color == without.color, "unlit texture differs");
 }

@@ -1,25 +1,11 @@
 //! The VRML97 reader on arbitrary bodies: loads or fails with a message.
 #![no_main]
+mod harness;
 use libfuzzer_sys::fuzz_target;
-use std::path::Path;
-
-/// The input budget, smaller than the defaults so that every run is quick
-/// (the defaults' memory bound is checked by `tests/hostile.rs`); libFuzzer
-/// itself caps memory too (`fuzz/run.sh`: -rss_limit_mb / -malloc_limit_mb).
-fn limits() -> animed::internals::format::limits::Limits {
-    animed::internals::format::limits::Limits {
-        max_bytes: 4 << 20,
-        max_nodes: 100_000,
-        max_depth: 256,
-        max_geometry: 1_000_000,
-        max_numbers: 1_000_000,
-    }
-}
 
 fuzz_target!(|data: &[u8]| {
-    let mut src = b"#VRML V2.0 utf8\n".to_vec();
-    src.extend_from_slice(data);
-    if let Err(e) = animed::internals::format::load_bytes_with(&src, Path::new("fuzz.wrl"), limits()) {
-        assert!(e.to_string().starts_with("fuzz.wrl:"));
-    }
+    harness::load_or_named_error(
+        &harness::wrapped(b"#VRML V2.0 utf8\n", data, b""),
+        "fuzz.wrl",
+    );
 });

@@ -1,25 +1,14 @@
 //! The X3D XML-encoding reader on arbitrary documents under an `<X3D>`
 //! root: loads or fails with a message.
 #![no_main]
+mod harness;
 use libfuzzer_sys::fuzz_target;
-use std::path::Path;
-
-/// The input budget, smaller than the defaults so that every run is quick.
-fn limits() -> animed::internals::format::limits::Limits {
-    animed::internals::format::limits::Limits {
-        max_bytes: 4 << 20,
-        max_nodes: 100_000,
-        max_depth: 256,
-        max_geometry: 1_000_000,
-        max_numbers: 1_000_000,
-    }
-}
 
 fuzz_target!(|data: &[u8]| {
-    let mut src = b"<?xml version='1.0'?>\n<X3D><Scene>".to_vec();
-    src.extend_from_slice(data);
-    src.extend_from_slice(b"</Scene></X3D>");
-    if let Err(e) = animed::internals::format::load_bytes_with(&src, Path::new("fuzz.x3d"), limits()) {
-        assert!(e.to_string().starts_with("fuzz.x3d:"));
-    }
+    let src = harness::wrapped(
+        b"<?xml version='1.0'?>\n<X3D><Scene>",
+        data,
+        b"</Scene></X3D>",
+    );
+    harness::load_or_named_error(&src, "fuzz.x3d");
 });

@@ -169,7 +169,9 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
             last_input = Instant::now();
         }
         for ev in events {
+            // Each event's file work before the next event sees the state.
             dirty |= ed.handle(ev);
+            dirty |= ed.perform();
         }
         // Playback ticks every pass; the autosave clock at least once a second.
         if ed.wants_ticks() || (ed.wants_clock() && last_tick.elapsed() >= CLOCK_EVERY) {
@@ -178,6 +180,9 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
                 time: start.elapsed().as_secs_f64(),
             });
         }
+        // The file work the events asked for (the screen only asks), then
+        // whatever was asked before the first event (the view memory).
+        dirty |= ed.perform();
         let t = ed.window_title();
         if t != title {
             window.set_title(&t);

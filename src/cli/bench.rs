@@ -62,6 +62,11 @@ pub fn sections() -> Vec<Section> {
             run: bench_aa,
         },
         Section {
+            name: "stages",
+            about: "one thread, stage by stage: setup, depth pass, shading pass, resolve",
+            run: bench_stages,
+        },
+        Section {
             name: "animation",
             about: "track sampling and whole-scene evaluation (1000 tracks of each kind)",
             run: bench_animation,
@@ -382,6 +387,55 @@ fn bench_aa(args: &Args) -> Result<Vec<String>, String> {
         t.describe(),
         1.0 / t.wall.as_secs_f64()
     ));
+    Ok(out)
+}
+
+/// Each stage of the pipeline alone on one thread (`render::stages`), in
+/// CPU ms per frame, for the scenes the other sections draw: where a
+/// frame's time goes, without a profiler. The shading pass needs its
+/// tile's depth pass, so it is measured with it and the depth pass
+/// subtracted.
+fn bench_stages(args: &Args) -> Result<Vec<String>, String> {
+    use crate::render::stages::Stages;
+    let (w, h) = args.size;
+    let aspect = w as f32 / h as f32;
+    let demo = crate::format::demo().map_err(|e| e.to_string())?.scene;
+    let scenes = [
+        ("1 layer", bench_scenes::layers(1, aspect), 1),
+        ("textured", bench_scenes::layers_textured(1, aspect), 1),
+        (
+            "100k triangles",
+            bench_scenes::small_triangles(100_000, aspect),
+            1,
+        ),
+        ("demo", demo.clone(), 1),
+        ("demo 4x AA", demo, 4),
+    ];
+    let mut out = Vec::new();
+    for (name, scene, aa) in scenes {
+        let pose = crate::anim::evaluate(&scene, 0.0);
+        let camera = crate::render::job::find_camera(&scene, None).ok().flatten();
+        let view = crate::render::job::view_for(&scene, &pose, camera, aspect);
+        let spec = FrameSpec {
+            width: w,
+            height: h,
+            threads: 1,
+            aa,
+            ..FrameSpec::default()
+        };
+        let opts = crate::render::job::options_for(&scene, &spec);
+        let mut s = Stages::new(&scene, &pose, &view, &opts);
+        let share = args.seconds / 4.0;
+        let ms = |t: Timing| t.cpu.unwrap_or(t.wall).as_secs_f64() * 1e3;
+        let setup = ms(time_it(share, || s.setup(&scene, &pose)));
+        let raster = ms(time_it(share, || s.raster()));
+        let both = ms(time_it(share, || s.raster_and_shade()));
+        let resolve = ms(time_it(share, || s.resolve()));
+        out.push(format!(
+            "{name}: setup {setup:.2} ms, depth pass {raster:.2} ms, shading pass {:.2} ms, resolve {resolve:.2} ms (CPU ms per frame)",
+            both - raster
+        ));
+    }
     Ok(out)
 }
 

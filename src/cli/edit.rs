@@ -65,11 +65,14 @@ fn make_editor(file: Option<&PathBuf>, (w, h): (u32, u32)) -> Result<Editor, Str
     match file {
         None => Ok(Editor::with_demo(w, h)),
         Some(path) => {
+            let stamp = crate::format::export::atomic::Stamp::of(path);
             let loaded = crate::format::load(path).map_err(|e| e.to_string())?;
             for warning in &loaded.warnings {
                 eprintln!("warning: {warning}");
             }
             let mut ed = Editor::new(loaded.scene, Some(path.clone()), w, h);
+            // A save onto the file checks nobody changed it since.
+            ed.set_disk_stamp(stamp);
             // A crash left newer work beside the file: ask.
             ed.check_recovery();
             Ok(ed)

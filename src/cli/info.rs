@@ -71,9 +71,7 @@ fn describe_textures(s: &Scene) -> Vec<Json> {
         .iter()
         .enumerate()
         .map(|(i, image)| {
-            let uses = |m: &crate::scene::Material| {
-                m.texture.as_ref().is_some_and(|t| t.image.0 as usize == i)
-            };
+            let uses = |m: &crate::scene::Material| m.textures().any(|t| t.image.0 as usize == i);
             let materials: Vec<usize> = (0..s.materials.len())
                 .filter(|&m| uses(&s.materials[m]))
                 .collect();

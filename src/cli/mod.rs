@@ -8,6 +8,7 @@ pub mod edit;
 pub mod info;
 mod info_deform;
 pub mod key;
+mod pipe;
 pub mod recover;
 pub mod render;
 pub mod sample;
@@ -104,6 +105,12 @@ pub fn run() -> i32 {
             eprintln!("animed: {e}");
             return 2;
         }
+    }
+    if !matches!(
+        cli.command,
+        None | Some(Command::Edit(_)) | Some(Command::View(_))
+    ) {
+        pipe::die_quietly_on_closed_pipe();
     }
     match cli.command {
         None => edit::run_default(),

@@ -108,6 +108,22 @@ impl Browser {
         }
     }
 
+    /// Enter / the accept button: a folder is entered (`None`), a file
+    /// that is not there for reading is refused with a message (`None`);
+    /// otherwise the path to use.
+    pub fn accept(&mut self) -> Option<PathBuf> {
+        let path = self.resolved();
+        if path.is_dir() {
+            self.enter(&path);
+            return None;
+        }
+        if self.purpose != Purpose::SaveAs && !path.is_file() {
+            self.message = Some(format!("no file {}", path.display()));
+            return None;
+        }
+        Some(path)
+    }
+
     /// Typed text: a `/` or `~/` typed right after a folder's `/` starts
     /// a new path (as in GTK's location bar), so typing an absolute path
     /// over the shown folder never gives `DIR//typed/path`.

@@ -40,11 +40,13 @@ pub mod ops;
 pub mod panel;
 pub mod record;
 pub mod recovery;
+pub mod request;
 pub mod rig;
 mod route;
 mod screen;
 pub mod script;
 pub mod search;
+pub mod shell;
 mod strip_tips;
 pub mod timeline;
 pub mod tooltip;
@@ -52,6 +54,7 @@ mod viewport;
 pub mod views;
 
 pub use crate::input::{Event, Key, Mods, MouseButton};
+pub use request::After;
 
 use crate::anim::Pose;
 use crate::format::export::atomic::Stamp;
@@ -69,19 +72,6 @@ use std::path::{Path, PathBuf};
 pub enum Mode {
     Select,
     View,
-}
-
-/// What to do once unsaved changes are dealt with.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum After {
-    Quit,
-    New,
-    Open,
-    /// The recovery question when opening a scene (see `recovery`).
-    Recover,
-    /// Delete the selected object (asked when Delete is pressed over the
-    /// key strip with no key selected: the object is not what has focus).
-    DeleteObject,
 }
 
 /// A modal question.
@@ -217,16 +207,18 @@ pub struct Editor {
     rig: rig::state::RigState,
     /// The material panel's state (`material/`).
     material: material::MatState,
+    /// File work asked for and not yet performed (`request.rs`; the shell
+    /// takes it with `take_requests`).
+    requests: Vec<request::Request>,
 }
 
 impl Editor {
     /// An editor on `scene` (loaded from `path`, if any) for a `width`×`height` window.
     pub fn new(scene: Scene, path: Option<PathBuf>, width: u32, height: u32) -> Editor {
-        let disk_stamp = path.as_deref().and_then(Stamp::of);
         let mut e = Editor {
             scene,
             path,
-            disk_stamp,
+            disk_stamp: None,
             history: History::default(),
             saved_revision: 0,
             scene_rev: 1,
@@ -277,6 +269,7 @@ impl Editor {
             painter: Painter::new(),
             rig: rig::state::RigState::default(),
             material: material::MatState::default(),
+            requests: Vec::new(),
         };
         e.frame_all();
         e
@@ -493,61 +486,22 @@ impl Editor {
         self.set_status("New scene", false);
     }
 
-    /// Opens a scene file, replacing the current scene.
-    pub fn open_file(&mut self, path: &Path) -> Result<(), String> {
-        let stamp = Stamp::of(path);
-        let loaded = crate::format::load(path).map_err(|e| e.to_string())?;
-        let n = loaded.warnings.len();
-        self.replace_scene(loaded.scene, Some(path.to_path_buf()));
+    /// The file work asked for since the last call, oldest first (the
+    /// shell performs it and answers through the `*_done` methods).
+    pub fn take_requests(&mut self) -> Vec<request::Request> {
+        std::mem::take(&mut self.requests)
+    }
+
+    /// The file work asked for and not yet taken.
+    pub fn requests(&self) -> &[request::Request] {
+        &self.requests
+    }
+
+    /// What the open scene's file looked like when it was read (set by
+    /// whoever read it: the shell, or `animed edit FILE`), so a save onto
+    /// it first checks nobody changed it meanwhile.
+    pub fn set_disk_stamp(&mut self, stamp: Option<Stamp>) {
         self.disk_stamp = stamp;
-        self.through = None;
-        self.recall_view();
-        let msg = match n {
-            0 => format!("Opened {}", path.display()),
-            _ => format!("Opened {} ({n} warnings)", path.display()),
-        };
-        self.set_status(&msg, false);
-        self.check_recovery();
-        Ok(())
-    }
-
-    /// Adds a model file's content as a new object (undoable).
-    pub fn import_file(&mut self, path: &Path) -> Result<(), String> {
-        let loaded = crate::format::load(path).map_err(|e| e.to_string())?;
-        let before = Box::new(self.scene.clone());
-        let mut after = self.scene.clone();
-        let stem = path
-            .file_name()
-            .map(|s| s.to_string_lossy().to_string())
-            .unwrap_or_default();
-        let stem = fields::sanitize_name(stem.split('.').next().unwrap_or("Import"));
-        let g = ops::graft(&mut after, &loaded.scene, &stem);
-        let name = after.node(g).name.clone();
-        self.execute(
-            &format!("Import {name}"),
-            Command::ReplaceScene {
-                before,
-                after: Box::new(after),
-            },
-        );
-        self.selection = Some(g);
-        self.set_status(&format!("Imported {} as {name}", path.display()), false);
-        Ok(())
-    }
-
-    /// Saves to `path` through the writers (format from the extension).
-    pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
-        let expect = match self.path.as_deref() {
-            Some(p) if p == path => self.disk_stamp.clone(),
-            _ => None,
-        };
-        self.disk_stamp = ops::save_scene_checked(&self.scene, path, expect.as_ref())?;
-        let old = self.path.replace(path.to_path_buf());
-        self.saved_revision = self.history.revision();
-        self.saved_recovery(old.as_deref());
-        self.remember_view();
-        self.set_status(&format!("Saved {}", path.display()), false);
-        Ok(())
     }
 
     /// Looks at everything drawn (lights too when there is nothing else).

@@ -295,33 +295,6 @@ fn unique_or(scene: &Scene, name: &str) -> String {
     }
 }
 
-/// Writes the scene to `path` (format from the extension: .wrl, .wrl.gz,
-/// .iv) through the writers, which save atomically.
-pub fn save_scene(scene: &Scene, path: &std::path::Path) -> Result<(), String> {
-    crate::format::save(scene, path, &crate::format::WriteOptions::default())
-        .map(|_| ())
-        .map_err(|e| e.to_string())
-}
-
-/// [`save_scene`] under the folder's edit lock, after checking that `path`
-/// is still what `expect` saw when it was read or last saved (so another
-/// program's or animed command's save is never silently overwritten);
-/// returns the stamp of the file written.
-pub fn save_scene_checked(
-    scene: &Scene,
-    path: &std::path::Path,
-    expect: Option<&crate::format::export::atomic::Stamp>,
-) -> Result<Option<crate::format::export::atomic::Stamp>, String> {
-    use crate::format::export::atomic::{EditLock, Stamp};
-    let _lock = EditLock::acquire(path)
-        .map_err(|e| format!("{}: cannot lock for editing: {e}", path.display()))?;
-    if let Some(s) = expect {
-        s.check(path).map_err(|e| e.to_string())?;
-    }
-    save_scene(scene, path)?;
-    Ok(Stamp::of(path))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

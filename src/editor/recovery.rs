@@ -15,6 +15,10 @@
 //!   is only deleted by "Discard copy" or by saving over its scene.
 //! * Time comes from `Event::Tick`s: the window loop sends one at least
 //!   every second, scripts with `wait-frames` / `sleep-ms`.
+//! * Who touches the disk: only the shell (`shell.rs`) and `animed
+//!   recover` call the reading and writing helpers here (`newer_copy`,
+//!   `untitled_sessions`, `write`); the editor asks for them with
+//!   `request::Request`s.
 
 use crate::input::{Event, MouseButton};
 use std::path::{Path, PathBuf};
@@ -289,11 +293,6 @@ impl Autosave {
         }
         now - *self.held_since.get_or_insert(now) < interval
     }
-}
-
-pub(super) fn remove(path: &Path) {
-    // Already gone is fine; anything else only leaves a stale copy behind.
-    let _ = std::fs::remove_file(path);
 }
 
 #[cfg(test)]

@@ -11,6 +11,9 @@ impl Screen for Editor {
     fn handle(&mut self, ev: Event) -> bool {
         Editor::handle(self, ev)
     }
+    fn perform(&mut self) -> bool {
+        super::shell::perform(self)
+    }
     fn draw(&mut self, frame: &mut Frame) {
         Editor::draw(self, frame)
     }

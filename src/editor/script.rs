@@ -397,70 +397,91 @@ impl Runner {
     pub fn step(&mut self, ed: &mut Editor, s: &Step) -> Result<(), String> {
         match s {
             Step::Key(key, mods) => {
-                ed.handle(Event::KeyDown {
-                    key: *key,
-                    mods: *mods,
-                });
-                ed.handle(Event::KeyUp {
-                    key: *key,
-                    mods: *mods,
-                });
+                feed(
+                    ed,
+                    Event::KeyDown {
+                        key: *key,
+                        mods: *mods,
+                    },
+                );
+                feed(
+                    ed,
+                    Event::KeyUp {
+                        key: *key,
+                        mods: *mods,
+                    },
+                );
             }
             Step::Type(t) => {
-                ed.handle(Event::Text(t.clone()));
+                feed(ed, Event::Text(t.clone()));
             }
             Step::Move(x, y) => self.move_to(ed, *x, *y, Mods::NONE),
             Step::Click(x, y, button, mods) => {
                 self.move_to(ed, *x, *y, *mods);
-                ed.handle(Event::MouseDown {
-                    button: *button,
-                    x: *x,
-                    y: *y,
-                    mods: *mods,
-                });
-                ed.handle(Event::MouseUp {
-                    button: *button,
-                    x: *x,
-                    y: *y,
-                    mods: *mods,
-                });
+                feed(
+                    ed,
+                    Event::MouseDown {
+                        button: *button,
+                        x: *x,
+                        y: *y,
+                        mods: *mods,
+                    },
+                );
+                feed(
+                    ed,
+                    Event::MouseUp {
+                        button: *button,
+                        x: *x,
+                        y: *y,
+                        mods: *mods,
+                    },
+                );
             }
             Step::Drag(x1, y1, x2, y2, button, mods) => {
                 self.move_to(ed, *x1, *y1, *mods);
-                ed.handle(Event::MouseDown {
-                    button: *button,
-                    x: *x1,
-                    y: *y1,
-                    mods: *mods,
-                });
+                feed(
+                    ed,
+                    Event::MouseDown {
+                        button: *button,
+                        x: *x1,
+                        y: *y1,
+                        mods: *mods,
+                    },
+                );
                 for k in 1..=DRAG_STEPS {
                     let t = k as f32 / DRAG_STEPS as f32;
                     self.move_to(ed, x1 + (x2 - x1) * t, y1 + (y2 - y1) * t, *mods);
                 }
-                ed.handle(Event::MouseUp {
-                    button: *button,
-                    x: *x2,
-                    y: *y2,
-                    mods: *mods,
-                });
+                feed(
+                    ed,
+                    Event::MouseUp {
+                        button: *button,
+                        x: *x2,
+                        y: *y2,
+                        mods: *mods,
+                    },
+                );
             }
             Step::Wheel(n, at) => {
                 let (x, y) = at.unwrap_or(self.mouse);
                 if at.is_some() {
                     self.move_to(ed, x, y, Mods::NONE);
                 }
-                ed.handle(Event::Wheel {
-                    delta: *n,
-                    x,
-                    y,
-                    mods: Mods::NONE,
-                });
+                feed(
+                    ed,
+                    Event::Wheel {
+                        delta: *n,
+                        x,
+                        y,
+                        mods: Mods::NONE,
+                    },
+                );
             }
             Step::WaitFrames(n) => {
                 let dt = 1.0 / ed.scene().settings.fps.max(1.0) as f64;
                 for _ in 0..*n {
                     self.clock += dt;
-                    ed.handle(Event::Tick { time: self.clock });
+                    feed(ed, Event::Tick { time: self.clock });
                 }
             }
             Step::SleepMs(ms) => {
@@ -471,17 +492,20 @@ impl Runner {
                     let left = end.saturating_duration_since(now);
                     std::thread::sleep(left.min(SLEEP_SLICE));
                     self.clock += now.elapsed().as_secs_f64();
-                    ed.handle(Event::Tick { time: self.clock });
+                    feed(ed, Event::Tick { time: self.clock });
                     if left <= SLEEP_SLICE {
                         break;
                     }
                 }
             }
             Step::Resize(w, h) => {
-                ed.handle(Event::Resize {
-                    width: *w,
-                    height: *h,
-                });
+                feed(
+                    ed,
+                    Event::Resize {
+                        width: *w,
+                        height: *h,
+                    },
+                );
             }
             Step::Screenshot(out) => {
                 let frame = ed.render_frame();
@@ -580,8 +604,13 @@ impl Runner {
 
     fn move_to(&mut self, ed: &mut Editor, x: f32, y: f32, mods: Mods) {
         self.mouse = (x, y);
-        ed.handle(Event::MouseMove { x, y, mods });
+        feed(ed, Event::MouseMove { x, y, mods });
     }
+}
+
+/// One event, then the file work it asked for (the runner is a shell).
+fn feed(ed: &mut Editor, ev: Event) {
+    super::shell::handle(ed, ev);
 }
 
 /// Parses and runs a script on `ed`.

@@ -117,10 +117,13 @@ pub fn graft(dst: &mut Scene, src: &Scene, parent: NodeId) -> Result<(), LimitEr
         .collect();
     dst.materials
         .extend(src.materials.iter().cloned().map(|mut m| {
-            if let Some(t) = &mut m.texture {
-                match images.get(t.image.0 as usize).copied().flatten() {
-                    Some(id) => t.image = id,
-                    None => m.texture = None,
+            for slot in m.texture_slots_mut() {
+                let id = slot
+                    .as_ref()
+                    .and_then(|t| images.get(t.image.0 as usize).copied().flatten());
+                match (slot.as_mut(), id) {
+                    (Some(t), Some(id)) => t.image = id,
+                    _ => *slot = None,
                 }
             }
             m

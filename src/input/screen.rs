@@ -10,6 +10,13 @@ pub trait Screen {
     fn size(&self) -> (u32, u32);
     /// Feeds one event; returns true when the picture needs redrawing.
     fn handle(&mut self, ev: Event) -> bool;
+    /// Performs the side effects the handled events asked for (the
+    /// editor's file work: open, save, autosave, recover); the loop calls
+    /// it after every batch of events. Returns true when the picture
+    /// changed.
+    fn perform(&mut self) -> bool {
+        false
+    }
     /// Draws into `frame` (resizing it to [`Screen::size`]).
     fn draw(&mut self, frame: &mut Frame);
     fn wants_quit(&self) -> bool;

@@ -108,26 +108,18 @@ fn checker_image(s: &mut Scene) -> Option<crate::scene::ImageId> {
 /// over the screen height: about 1.4 texels per pixel at 1280×720, so
 /// sampling blends two mip levels (trilinear) everywhere.
 pub fn layers_textured(layers_count: usize, aspect: f32) -> Scene {
-    let mut s = layers(layers_count, aspect);
-    if let Some(image) = checker_image(&mut s) {
-        for m in &mut s.materials {
-            m.texture = Some(crate::scene::Texture::new(image));
-        }
-        for mesh in &mut s.meshes {
-            mesh.texcoords = mesh
-                .positions
-                .iter()
-                .map(|p| glam::Vec2::new(p.x * 2.0, p.y * 2.0))
-                .collect();
-        }
-    }
-    s
+    checkered(layers(layers_count, aspect), 2.0)
 }
 
 /// [`small_triangles`] with texture coordinates across the grid and a
 /// 256×256 checker texture on the material (trilinear-sampled).
 pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
-    let mut s = small_triangles(count, aspect);
+    checkered(small_triangles(count, aspect), 4.0)
+}
+
+/// `s` with the checker texture on every material and texture
+/// coordinates `scale`·(x, y) on every mesh.
+fn checkered(mut s: Scene, scale: f32) -> Scene {
     if let Some(image) = checker_image(&mut s) {
         for m in &mut s.materials {
             m.texture = Some(crate::scene::Texture::new(image));
@@ -136,7 +128,7 @@ pub fn small_triangles_textured(count: usize, aspect: f32) -> Scene {
             mesh.texcoords = mesh
                 .positions
                 .iter()
-                .map(|p| glam::Vec2::new(p.x * 4.0, p.y * 4.0))
+                .map(|p| glam::Vec2::new(p.x * scale, p.y * scale))
                 .collect();
         }
     }

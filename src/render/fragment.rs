@@ -16,7 +16,7 @@
 
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
 use super::lanes::Pair;
-use super::prepare::{Item, Prepared, Tri, INV_W, SUBPIXEL};
+use super::prepare::{EmissiveMap, Item, Prepared, Tri, INV_W, SUBPIXEL};
 use super::shade::shade8;
 use super::simd::{self, Sse8, V8};
 use super::texture::Sampler;
@@ -73,32 +73,33 @@ pub fn shade_visible(
     shade_visible_in::<Sse8>(p, eye, background, size, vis, out);
 }
 
-/// The AVX path compiled with AVX-512's 32 registers (see `simd::avx512`).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx,avx2,avx512f,avx512vl")]
-unsafe fn shade_visible_avx512(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    size: (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
-    shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
+/// `shade_visible_in` on AVX lanes compiled with the target features
+/// `$features`: the same generic code, so the same bits; only the
+/// registers and encodings the compiler may use differ.
+macro_rules! avx_entry {
+    ($(#[$doc:meta])* $name:ident, $features:literal) => {
+        $(#[$doc])*
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = $features)]
+        unsafe fn $name(
+            p: &Prepared,
+            eye: Vec3,
+            background: Vec3,
+            size: (usize, usize, usize),
+            vis: &Visible,
+            out: &mut Shaded,
+        ) {
+            shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
+        }
+    };
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn shade_visible_avx(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    size: (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
-    shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
-}
+avx_entry!(
+    /// The AVX path compiled with AVX-512's 32 registers (see `simd::avx512`).
+    shade_visible_avx512,
+    "avx,avx2,avx512f,avx512vl"
+);
+avx_entry!(shade_visible_avx, "avx");
 
 #[inline(always)]
 fn lanes8<T>(s: &[T], i: usize) -> &[T; 8] {
@@ -154,12 +155,19 @@ fn shade_visible_in<V: V8>(
                 continue;
             }
             let i0 = row * TILE as usize + bx;
-            // Two blocks of one lit item: lit together.
-            if ns == 1 && bx + 8 < w {
+            // Two blocks of one lit item: lit together. Under multisampling
+            // only where every sample of their pixels shows the triangle of
+            // the first sample (inside a surface, away from its edges): the
+            // rounds below would shade each pixel once at its first sample
+            // and give every sample that colour, which is what this does.
+            if bx + 8 < w {
                 if let Some(item) = pair_item(p, vis.winner, i0) {
-                    shade_pair::<V>(p, item, eye, vis, out, i0);
-                    next = bx + 16;
-                    continue;
+                    if ns == 1 || samples_agree(vis.winner, i0, ns) {
+                        shade_pair::<V>(p, item, eye, vis, out, i0);
+                        copy_to_samples(out, i0, ns);
+                        next = bx + 16;
+                        continue;
+                    }
                 }
             }
             // Per sample, the lanes still to colour.
@@ -311,16 +319,23 @@ fn shade_group<V: V8>(
     }
     let mut diffuse = [v[6], v[7], v[8]];
     let mut texels = None;
+    let mut uvs = None;
     if item.textured {
         let uv = UvLanes::new(p, win, group, b1, b2, s);
         let (d, t) = apply_texture(item, &uv, diffuse);
         diffuse = d;
         texels = Some(t);
+        uvs = Some(uv);
     }
     if item.unlit {
-        return diffuse;
+        // Unlit (no normals): the unlit colour is the lit colour, so the
+        // texture models that act after lighting still apply.
+        return match (&item.texture, texels) {
+            (Some(s), Some(t)) => after_lighting(s, &t, diffuse),
+            _ => diffuse,
+        };
     }
-    let lit = shade8(
+    let mut lit = shade8(
         &item.material,
         &item.lights,
         eye,
@@ -328,6 +343,9 @@ fn shade_group<V: V8>(
         [v[3], v[4], v[5]],
         diffuse,
     );
+    if let (Some(e), Some(uv)) = (&item.emissive, &uvs) {
+        lit = add_emissive(e, uv, lit);
+    }
     match (&item.texture, texels) {
         (Some(s), Some(t)) => after_lighting(s, &t, lit),
         _ => lit,
@@ -394,6 +412,29 @@ fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
     (!p.items[item as usize].unlit).then_some(item)
 }
 
+/// Whether every sample plane shows, in the sixteen pixels at `i0`, the
+/// triangles of the first plane.
+#[inline(always)]
+fn samples_agree(winner: &[u32], i0: usize, ns: usize) -> bool {
+    const PLANE: usize = (TILE * TILE) as usize;
+    let first = &winner[i0..i0 + 16];
+    (1..ns).all(|s| &winner[s * PLANE + i0..s * PLANE + i0 + 16] == first)
+}
+
+/// Copies the colours and ids of the sixteen pixels at `i0` from the first
+/// sample plane to the other `ns − 1`.
+#[inline(always)]
+fn copy_to_samples(out: &mut Shaded, i0: usize, ns: usize) {
+    const PLANE: usize = (TILE * TILE) as usize;
+    for s in 1..ns {
+        let j0 = s * PLANE + i0;
+        for c in [&mut *out.r, &mut *out.g, &mut *out.b] {
+            c.copy_within(i0..i0 + 16, j0);
+        }
+        out.ids.copy_within(i0..i0 + 16, j0);
+    }
+}
+
 /// Shades the sixteen pixels at `i0` (one row, two blocks) that all show
 /// the lit `item` (see [`pair_item`]): attributes and texture per block,
 /// lighting once over both as a [`Pair`] — the same per-lane arithmetic
@@ -423,6 +464,7 @@ fn shade_pair<V: V8>(
     let mut diffuse = [v[6], v[7], v[8]];
     // Textured: sampled per block, lit as a pair, combined per block.
     let mut texels = None;
+    let mut uvs = None;
     if it.textured {
         let uva = UvLanes::new(p, &wa, 0xFF, b1a, b2a, sa);
         let uvb = UvLanes::new(p, &wb, 0xFF, b1b, b2b, sb);
@@ -430,6 +472,7 @@ fn shade_pair<V: V8>(
         let (db, tb) = apply_texture(it, &uvb, [v[6].1, v[7].1, v[8].1]);
         diffuse = [Pair(da[0], db[0]), Pair(da[1], db[1]), Pair(da[2], db[2])];
         texels = Some((ta, tb));
+        uvs = Some((uva, uvb));
     }
     let mut lit = shade8(
         &it.material,
@@ -439,6 +482,11 @@ fn shade_pair<V: V8>(
         [v[3], v[4], v[5]],
         diffuse,
     );
+    if let (Some(e), Some((uva, uvb))) = (&it.emissive, &uvs) {
+        let la = add_emissive(e, uva, [lit[0].0, lit[1].0, lit[2].0]);
+        let lb = add_emissive(e, uvb, [lit[0].1, lit[1].1, lit[2].1]);
+        lit = [Pair(la[0], lb[0]), Pair(la[1], lb[1]), Pair(la[2], lb[2])];
+    }
     if let (Some(s), Some((ta, tb))) = (&it.texture, texels) {
         let la = after_lighting(s, &ta, [lit[0].0, lit[1].0, lit[2].0]);
         let lb = after_lighting(s, &tb, [lit[0].1, lit[1].1, lit[2].1]);
@@ -508,6 +556,19 @@ impl<V: V8> UvLanes<V> {
             dv_dy: (m[6] - v * m[7]) * s,
         }
     }
+
+    /// The coordinates as the lane sampler takes them.
+    #[inline(always)]
+    fn input(&self) -> UvIn<V> {
+        UvIn {
+            u: self.u,
+            v: self.v,
+            du_dx: self.du_dx,
+            dv_dx: self.dv_dx,
+            du_dy: self.du_dy,
+            dv_dy: self.dv_dy,
+        }
+    }
 }
 
 /// The texture of a textured item applied to eight lanes before lighting:
@@ -520,15 +581,22 @@ pub fn apply_texture<V: V8>(item: &Item, uv: &UvLanes<V>, diffuse: [V; 3]) -> ([
     let Some(s) = &item.texture else {
         return (diffuse, [V::splat(1.0); 4]);
     };
-    let t = s.texel8(&UvIn {
-        u: uv.u,
-        v: uv.v,
-        du_dx: uv.du_dx,
-        dv_dx: uv.dv_dx,
-        du_dy: uv.du_dy,
-        dv_dy: uv.dv_dy,
-    });
+    let t = s.texel8(&uv.input());
     (s.before_lighting8(&t, diffuse), t)
+}
+
+/// The emissive map's `factor × texel` added to eight lit lanes (before
+/// anything clamps them), with the one-pixel path's exact operations:
+/// see [`shade_textured`].
+#[inline(always)]
+pub fn add_emissive<V: V8>(e: &EmissiveMap, uv: &UvLanes<V>, lit: [V; 3]) -> [V; 3] {
+    let t = e.map.texel8(&uv.input());
+    let f = e.factor;
+    [
+        lit[0] + V::splat(f.x) * t[0],
+        lit[1] + V::splat(f.y) * t[1],
+        lit[2] + V::splat(f.z) * t[2],
+    ]
 }
 
 /// The texture models that act on the lit colour (Replace, MODULATE, DECAL,
@@ -540,15 +608,9 @@ pub fn after_lighting<V: V8>(s: &Sampler, texels: &[V; 4], lit: [V; 3]) -> [V; 3
 
 /// One pixel of a textured triangle drawn outside the 8-lane pass (the
 /// transparent pass): colour and alpha at screen weights `b1`, `b2`, with
-/// the same texture arithmetic as the lanes.
-pub fn shade_textured(
-    item: &Item,
-    s: &Sampler,
-    t: &Tri,
-    b1: f32,
-    b2: f32,
-    eye: Vec3,
-) -> (Vec3, f32) {
+/// the same texture arithmetic as the lanes (texture, then lighting, then
+/// the emissive map, then the models acting after lighting).
+pub fn shade_textured(item: &Item, t: &Tri, b1: f32, b2: f32, eye: Vec3) -> (Vec3, f32) {
     let a = t.attrs_at(b1, b2);
     let plane = |j: usize| t.base[j] + b1 * t.d1[j] + b2 * t.d2[j];
     let inv_q = 1.0 / plane(INV_W);
@@ -562,14 +624,33 @@ pub fn shade_textured(
         (g.uv[0][1] - u * g.q[1]) * inv_q,
         (g.uv[1][1] - v * g.q[1]) * inv_q,
     );
-    let texel = s.texel(Vec2::new(u, v), ddx, ddy);
+    let uv = Vec2::new(u, v);
     let color = Vec3::new(a[A_COLOR], a[A_COLOR + 1], a[A_COLOR + 2]);
-    let (diffuse, alpha) = s.before_lighting(texel, color, item.material.alpha);
+    let mut diffuse = color;
+    let mut alpha = item.material.alpha;
+    let texel = item.texture.as_ref().map(|s| s.texel(uv, ddx, ddy));
+    if let (Some(s), Some(texel)) = (&item.texture, texel) {
+        (diffuse, alpha) = s.before_lighting(texel, color, alpha);
+    }
     let p = Vec3::new(a[A_POS], a[A_POS + 1], a[A_POS + 2]);
     let n = Vec3::new(a[A_NORMAL], a[A_NORMAL + 1], a[A_NORMAL + 2]);
-    let lit = super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye);
-    let (c, alpha) = s.after_lighting(texel, lit, alpha);
-    (c, s.masked(alpha))
+    // Unlit (no normals): the unlit colour is the lit colour, as in
+    // `shade_group` (its emission is already that colour).
+    let mut lit = if item.unlit {
+        diffuse
+    } else {
+        super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye)
+    };
+    if let (Some(e), false) = (&item.emissive, item.unlit) {
+        lit += e.factor * e.map.texel(uv, ddx, ddy).truncate();
+    }
+    match (&item.texture, texel) {
+        (Some(s), Some(texel)) => {
+            let (c, alpha) = s.after_lighting(texel, lit, alpha);
+            (c, s.masked(alpha))
+        }
+        _ => (lit, alpha),
+    }
 }
 
 /// Screen-space gradients of a triangle's planes, per pixel step.
@@ -613,6 +694,7 @@ mod tests {
     use super::*;
     use crate::render::clip::ATTRS;
     use crate::render::prepare::planes;
+    use crate::render::simd::Lanes;
 
     /// Screen positions, 1/w and texture coordinates of three vertices.
     type Corners = ([(f32, f32); 3], [f32; 3], [[f32; 2]; 3]);

@@ -38,6 +38,20 @@ pub struct Item {
     pub textured: bool,
     /// The texture of a textured item.
     pub texture: Option<Sampler>,
+    /// The emissive map of a textured item (glTF emissiveTexture), sampled
+    /// at the same texture coordinates; its material's emissive colour is
+    /// then zero and comes from here, per pixel.
+    pub emissive: Option<EmissiveMap>,
+}
+
+/// An emissive map: `factor × texel` is the emitted colour, added to the
+/// lit colour before anything clamps it (glTF 2.0 §3.9.3 and Appendix B:
+/// the emission is a term of the sum, like VRML97's O_E).
+#[derive(Clone, Debug)]
+pub struct EmissiveMap {
+    pub map: Sampler,
+    /// The material's emissive colour (animated ones too).
+    pub factor: Vec3,
 }
 
 /// Index of the 1/w plane in [`Tri::base`] (after the attributes).
@@ -205,14 +219,24 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             .collect();
         item_lights.extend(headlight.clone());
         let has_normals = mesh.normals.len() == mesh.positions.len();
-        let smat = ShadeMaterial::new(material);
+        let mut smat = ShadeMaterial::new(material);
         let item = out.items.len() as u32;
         // Textured: the material's texture, when its image exists and the
-        // mesh has coordinates for it.
-        let texture = material.texture.as_ref().and_then(|t| {
+        // mesh has coordinates for it (lit or not: an unlit mesh's colour
+        // stands in for the lit one, see `fragment::shade_group`).
+        let has_uv = has_texcoords(mesh);
+        let sampler = |t: &crate::scene::Texture| {
             let image = scene.image(t.image)?;
-            let has_uv = mesh.texcoords.len() == mesh.positions.len() && has_normals;
             has_uv.then(|| Sampler::new(t, image))
+        };
+        let texture = material.texture.as_ref().and_then(sampler);
+        let emissive = material.emissive_texture.as_ref().and_then(sampler);
+        let emissive = emissive.map(|map| {
+            smat.emissive = Vec3::ZERO;
+            EmissiveMap {
+                map,
+                factor: material.emissive,
+            }
         });
         let translucent = texture.as_ref().is_some_and(Sampler::translucent);
 
@@ -247,8 +271,9 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             material: smat,
             lights: item_lights,
             unlit: !has_normals,
-            textured: texture.is_some(),
+            textured: texture.is_some() || emissive.is_some(),
             texture,
+            emissive,
         });
     }
     out.verts = verts;

@@ -9,7 +9,7 @@ use super::clip::ATTRS;
 use super::fragment::{self, store_masked, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, POINT_SIZE, SUBPIXEL};
 use super::shade::shade;
-use super::simd::{self, Sse8, V8};
+use super::simd::{self, Lanes, Sse8, V8};
 use glam::Vec3;
 
 pub use super::fragment::TILE;
@@ -582,12 +582,15 @@ pub fn draw_tile(
             ids[j] = item.id;
         };
         // Colour and alpha of a fragment (textures may vary the alpha).
-        let color_at = |w1: f32, w2: f32| match &item.texture {
-            Some(s) => fragment::shade_textured(item, s, t, w1, w2, eye),
-            None => (
-                shade_attrs(item, &t.attrs_at(w1, w2), eye),
-                item.material.alpha,
-            ),
+        let color_at = |w1: f32, w2: f32| {
+            if item.textured {
+                fragment::shade_textured(item, t, w1, w2, eye)
+            } else {
+                (
+                    shade_attrs(item, &t.attrs_at(w1, w2), eye),
+                    item.material.alpha,
+                )
+            }
         };
         if ns == 1 {
             for_each_pixel(t, rect, |x, y, w1, w2| {

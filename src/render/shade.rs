@@ -12,8 +12,7 @@
 //! the cut-off (the OpenGL spot exponent Inventor maps dropOffRate to).
 //! Lights are prepared once per frame in world space.
 
-use super::lanes::Lanes;
-use super::simd::{Sse8, V8};
+use super::simd::{Lanes, Sse8, V8};
 use crate::scene::{Light, LightKind, Material};
 use glam::{Mat4, Vec3};
 
@@ -144,9 +143,9 @@ pub fn shade(
 ) -> Vec3 {
     let s = |v: Vec3| {
         [
-            <Sse8 as V8>::splat(v.x),
-            <Sse8 as V8>::splat(v.y),
-            <Sse8 as V8>::splat(v.z),
+            <Sse8 as Lanes>::splat(v.x),
+            <Sse8 as Lanes>::splat(v.y),
+            <Sse8 as Lanes>::splat(v.z),
         ]
     };
     let c = shade8(m, lights, eye, s(p), s(n), s(diffuse));
@@ -443,7 +442,7 @@ mod tests {
         let c = shade(&m, Vec3::ZERO, &[l], Vec3::ZERO, tilted, Vec3::Z * 3.0);
         assert!((c.x - tilted.z.powi(64)).abs() < 1e-6);
         let mut out = [0.0; 8];
-        powi(<Sse8 as V8>::splat(0.5), 10).store(&mut out);
+        powi(<Sse8 as Lanes>::splat(0.5), 10).store(&mut out);
         assert_eq!(out, [1.0 / 1024.0; 8]);
     }
 
@@ -452,7 +451,7 @@ mod tests {
         for k in 0..=2000 {
             let x = -1.0 + k as f32 / 1000.0;
             let mut out = [0.0; 8];
-            acos(<Sse8 as V8>::splat(x)).store(&mut out);
+            acos(<Sse8 as Lanes>::splat(x)).store(&mut out);
             assert!((out[0] - libm::acosf(x)).abs() < 1e-6, "{x}: {}", out[0]);
         }
     }

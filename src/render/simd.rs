@@ -271,29 +271,24 @@ impl Mul for F4 {
     }
 }
 
-/// Eight f32 lanes. A mask is a value whose lanes are all-ones or all-zero
-/// bits (what the comparisons return), as in SSE/AVX.
-pub trait V8:
+/// The lane arithmetic the lighting is written against, over any lane
+/// count: what [`V8`] offers minus loads and stores, so that
+/// `lanes::Pair` (sixteen lanes as two independent eight-lane values) can
+/// run it too. A mask is a value whose lanes are all-ones or all-zero bits
+/// (what the comparisons return), as in SSE/AVX.
+pub trait Lanes:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
 {
     fn splat(v: f32) -> Self;
-    fn load(a: &[f32; 8]) -> Self;
-    fn store(self, a: &mut [f32; 8]);
     fn sqrt(self) -> Self;
     fn gt(self, o: Self) -> Self;
     fn le(self, o: Self) -> Self;
     /// Lane-wise `mask ? a : b`.
     fn select(mask: Self, a: Self, b: Self) -> Self;
     fn and(self, o: Self) -> Self;
-    /// One bit per lane: the lane's sign bit (set for true mask lanes).
+    /// One bit per lane: the lane's sign bit (set for true mask lanes; at
+    /// most 32 lanes).
     fn bits(self) -> u32;
-
-    /// A mask with lane k true where bit k of `bits` is set.
-    #[inline(always)]
-    fn from_bits(bits: u32) -> Self {
-        let a = std::array::from_fn(|k| f32::from_bits(if bits >> k & 1 == 1 { !0 } else { 0 }));
-        Self::load(&a)
-    }
     /// Lane-wise `self > o ? self : o` (so a NaN in either gives `o`):
     /// exactly MAXPS.
     fn max(self, o: Self) -> Self;
@@ -301,6 +296,22 @@ pub trait V8:
     fn min(self, o: Self) -> Self;
     /// Lane-wise `mask ? self : 0` — one AND, cheaper than a select.
     fn keep(self, mask: Self) -> Self;
+    /// `f(self, o)` lane by lane in scalar code (for the rare steps with no
+    /// lane form, e.g. `powf`).
+    fn map2(self, o: Self, f: impl Fn(f32, f32) -> f32) -> Self;
+}
+
+/// Eight f32 lanes: [`Lanes`] plus loads, stores and conversions.
+pub trait V8: Lanes {
+    fn load(a: &[f32; 8]) -> Self;
+    fn store(self, a: &mut [f32; 8]);
+
+    /// A mask with lane k true where bit k of `bits` is set.
+    #[inline(always)]
+    fn from_bits(bits: u32) -> Self {
+        let a = std::array::from_fn(|k| f32::from_bits(if bits >> k & 1 == 1 { !0 } else { 0 }));
+        Self::load(&a)
+    }
     /// Each lane truncated towards zero to an i32 (lanes must lie within
     /// i32; exactly what `as i32` gives there).
     fn trunc_i32(self) -> [i32; 8];
@@ -313,7 +324,7 @@ pub trait V8:
     /// SSE4.1 `ROUNDPS` and no `floorf` call.
     #[inline(always)]
     fn floor(self) -> Self {
-        let whole = V8::le(Self::splat(8_388_608.0), self)
+        let whole = Lanes::le(Self::splat(8_388_608.0), self)
             .or(self.le(Self::splat(-8_388_608.0)))
             .or(self.eq(Self::splat(0.0)));
         let t = Self::from_i32(self.trunc_i32().map(|i| i as f32));
@@ -339,23 +350,23 @@ pub trait V8:
     }
 }
 
+/// [`Lanes::map2`] for eight lanes: through arrays, lane by lane.
+#[inline(always)]
+fn map2_8<V: V8>(a: V, b: V, f: impl Fn(f32, f32) -> f32) -> V {
+    let (mut x, mut y) = ([0.0; 8], [0.0; 8]);
+    a.store(&mut x);
+    b.store(&mut y);
+    V::load(&std::array::from_fn(|k| f(x[k], y[k])))
+}
+
 /// Eight lanes as two SSE2 registers (or arrays off x86-64): the baseline.
 #[derive(Clone, Copy, Debug)]
 pub struct Sse8(F4, F4);
 
-impl V8 for Sse8 {
+impl Lanes for Sse8 {
     #[inline(always)]
     fn splat(v: f32) -> Self {
         Sse8(F4::splat(v), F4::splat(v))
-    }
-    #[inline(always)]
-    fn load(a: &[f32; 8]) -> Self {
-        Sse8(F4::load(&a[..4]), F4::load(&a[4..]))
-    }
-    #[inline(always)]
-    fn store(self, a: &mut [f32; 8]) {
-        a[..4].copy_from_slice(&self.0.to_array());
-        a[4..].copy_from_slice(&self.1.to_array());
     }
     #[inline(always)]
     fn sqrt(self) -> Self {
@@ -398,6 +409,22 @@ impl V8 for Sse8 {
     #[inline(always)]
     fn keep(self, mask: Self) -> Self {
         Sse8::and(mask, self)
+    }
+    #[inline(always)]
+    fn map2(self, o: Self, f: impl Fn(f32, f32) -> f32) -> Self {
+        map2_8(self, o, f)
+    }
+}
+
+impl V8 for Sse8 {
+    #[inline(always)]
+    fn load(a: &[f32; 8]) -> Self {
+        Sse8(F4::load(&a[..4]), F4::load(&a[4..]))
+    }
+    #[inline(always)]
+    fn store(self, a: &mut [f32; 8]) {
+        a[..4].copy_from_slice(&self.0.to_array());
+        a[4..].copy_from_slice(&self.1.to_array());
     }
     #[inline(always)]
     fn trunc_i32(self) -> [i32; 8] {
@@ -476,18 +503,10 @@ mod avx_lanes {
 
     // SAFETY (every `unsafe` block below): these run only inside functions
     // compiled for AVX and called after run-time detection (see `avx`).
-    impl V8 for Avx8 {
+    impl Lanes for Avx8 {
         #[inline(always)]
         fn splat(v: f32) -> Self {
             unsafe { Avx8(_mm256_set1_ps(v)) }
-        }
-        #[inline(always)]
-        fn load(a: &[f32; 8]) -> Self {
-            unsafe { Avx8(_mm256_loadu_ps(a.as_ptr())) }
-        }
-        #[inline(always)]
-        fn store(self, a: &mut [f32; 8]) {
-            unsafe { _mm256_storeu_ps(a.as_mut_ptr(), self.0) }
         }
         #[inline(always)]
         fn sqrt(self) -> Self {
@@ -526,6 +545,29 @@ mod avx_lanes {
             unsafe { Avx8(_mm256_and_ps(mask.0, self.0)) }
         }
         #[inline(always)]
+        fn and(self, o: Self) -> Self {
+            unsafe { Avx8(_mm256_and_ps(self.0, o.0)) }
+        }
+        #[inline(always)]
+        fn bits(self) -> u32 {
+            unsafe { _mm256_movemask_ps(self.0) as u32 }
+        }
+        #[inline(always)]
+        fn map2(self, o: Self, f: impl Fn(f32, f32) -> f32) -> Self {
+            map2_8(self, o, f)
+        }
+    }
+
+    impl V8 for Avx8 {
+        #[inline(always)]
+        fn load(a: &[f32; 8]) -> Self {
+            unsafe { Avx8(_mm256_loadu_ps(a.as_ptr())) }
+        }
+        #[inline(always)]
+        fn store(self, a: &mut [f32; 8]) {
+            unsafe { _mm256_storeu_ps(a.as_mut_ptr(), self.0) }
+        }
+        #[inline(always)]
         fn trunc_i32(self) -> [i32; 8] {
             let mut out = [0i32; 8];
             unsafe { _mm256_storeu_si256(out.as_mut_ptr().cast(), _mm256_cvttps_epi32(self.0)) };
@@ -559,14 +601,6 @@ mod avx_lanes {
                     Avx8(_mm256_set_m128(hi[3].0, lo[3].0)),
                 ]
             }
-        }
-        #[inline(always)]
-        fn and(self, o: Self) -> Self {
-            unsafe { Avx8(_mm256_and_ps(self.0, o.0)) }
-        }
-        #[inline(always)]
-        fn bits(self) -> u32 {
-            unsafe { _mm256_movemask_ps(self.0) as u32 }
         }
     }
 
@@ -699,11 +733,11 @@ mod tests {
             assert_eq!(o, words.map(|w| (w >> (8 * c) & 0xFF) as f32));
         }
         // MAXPS/MINPS semantics: the second operand on NaN.
-        let nan = V8::max(Sse8::splat(f32::NAN), Sse8::splat(2.0));
+        let nan = Lanes::max(Sse8::splat(f32::NAN), Sse8::splat(2.0));
         let mut o = [0.0; 8];
         nan.store(&mut o);
         assert_eq!(o, [2.0; 8]);
-        V8::min(Sse8::splat(f32::NAN), Sse8::splat(-1.0)).store(&mut o);
+        Lanes::min(Sse8::splat(f32::NAN), Sse8::splat(-1.0)).store(&mut o);
         assert_eq!(o, [-1.0; 8]);
         assert_eq!(
             sse[7],

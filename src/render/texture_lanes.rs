@@ -16,7 +16,7 @@
 //! NEAREST/non-trilinear filters, and NaN footprints (where `f32::max` and
 //! `MAXPS` disagree).
 
-use super::simd::V8;
+use super::simd::{Lanes, V8};
 use super::texture::Sampler;
 use crate::scene::{MipLevel, TextureModel, Wrap};
 use glam::{Vec2, Vec4};
@@ -242,7 +242,7 @@ fn to_arr<V: V8>(v: V) -> [f32; 8] {
 /// A mask of the finite lanes.
 #[inline(always)]
 fn finite<V: V8>(x: V) -> V {
-    V8::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
+    Lanes::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
 }
 
 /// `texture::wrap` of the texel indices `i` and `i + 1` for lanes of whole

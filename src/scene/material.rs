@@ -15,6 +15,12 @@ pub struct Material {
     /// An image texture (VRML97 Appearance.texture, Inventor Texture2, OBJ
     /// map_Kd, glTF baseColorTexture); drawn only on meshes with texcoords.
     pub texture: Option<Texture>,
+    /// An emissive map (glTF emissiveTexture, X3D Material.emissiveTexture):
+    /// the emitted colour is `emissive × texel`, added to the lit colour
+    /// before it is clamped. It reads the mesh's one texture coordinate set,
+    /// like [`Material::texture`], with its own wraps and transform; its
+    /// image lives in the scene's image store like every other.
+    pub emissive_texture: Option<Texture>,
 }
 
 impl Default for Material {
@@ -29,6 +35,20 @@ impl Default for Material {
             shininess: 0.2,
             transparency: 0.0,
             texture: None,
+            emissive_texture: None,
         }
+    }
+}
+
+impl Material {
+    /// Every texture this material draws (colour, then emissive map), for
+    /// code that treats all image references alike (listing, remapping).
+    pub fn textures(&self) -> impl Iterator<Item = &Texture> {
+        self.texture.iter().chain(self.emissive_texture.iter())
+    }
+
+    /// Both texture slots, to remap or drop their images.
+    pub fn texture_slots_mut(&mut self) -> [&mut Option<Texture>; 2] {
+        [&mut self.texture, &mut self.emissive_texture]
     }
 }

@@ -1,19 +1,21 @@
 //! Input the editor tests send, as a user would: key presses, clicks,
-//! drags in eight steps, widgets found by their debug name.
+//! drags in eight steps, widgets found by their debug name. Every event
+//! goes through `shell::handle`, as the window loop sends it: the editor,
+//! then the file work it asked for.
 #![allow(dead_code)] // each test file uses only some of these
 
-use animed::internals::editor::{Editor, Event, Key, Mods, MouseButton};
+use animed::internals::editor::{shell, Editor, Event, Key, Mods, MouseButton};
 
 pub fn key(ed: &mut Editor, k: Key, mods: Mods) {
-    ed.handle(Event::KeyDown { key: k, mods });
-    ed.handle(Event::KeyUp { key: k, mods });
+    shell::handle(ed, Event::KeyDown { key: k, mods });
+    shell::handle(ed, Event::KeyUp { key: k, mods });
 }
 
 pub fn click_with(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
     let button = MouseButton::Left;
-    ed.handle(Event::MouseMove { x, y, mods });
-    ed.handle(Event::MouseDown { button, x, y, mods });
-    ed.handle(Event::MouseUp { button, x, y, mods });
+    shell::handle(ed, Event::MouseMove { x, y, mods });
+    shell::handle(ed, Event::MouseDown { button, x, y, mods });
+    shell::handle(ed, Event::MouseUp { button, x, y, mods });
 }
 
 pub fn click(ed: &mut Editor, at: (f32, f32)) {
@@ -22,28 +24,34 @@ pub fn click(ed: &mut Editor, at: (f32, f32)) {
 
 /// Mouse to (x, y), left button down (a drag's start).
 pub fn down(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
-    ed.handle(Event::MouseMove { x, y, mods });
-    ed.handle(Event::MouseDown {
-        button: MouseButton::Left,
-        x,
-        y,
-        mods,
-    });
+    shell::handle(ed, Event::MouseMove { x, y, mods });
+    shell::handle(
+        ed,
+        Event::MouseDown {
+            button: MouseButton::Left,
+            x,
+            y,
+            mods,
+        },
+    );
 }
 
 /// Left button up at (x, y).
 pub fn up(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
-    ed.handle(Event::MouseUp {
-        button: MouseButton::Left,
-        x,
-        y,
-        mods,
-    });
+    shell::handle(
+        ed,
+        Event::MouseUp {
+            button: MouseButton::Left,
+            x,
+            y,
+            mods,
+        },
+    );
 }
 
 /// Mouse moved to (x, y) with the button state unchanged.
 pub fn move_to(ed: &mut Editor, (x, y): (f32, f32), mods: Mods) {
-    ed.handle(Event::MouseMove { x, y, mods });
+    shell::handle(ed, Event::MouseMove { x, y, mods });
 }
 
 /// Press at `path[0]`, move through the rest (8 steps between points),
@@ -86,7 +94,7 @@ pub fn type_into(ed: &mut Editor, field: &str, text: &str) {
     let at = find(ed, field);
     click(ed, at);
     assert!(ed.text_edit().is_some(), "{field} starts typing");
-    ed.handle(Event::Text(text.into()));
+    shell::handle(ed, Event::Text(text.into()));
     key(ed, Key::Enter, Mods::NONE);
 }
 

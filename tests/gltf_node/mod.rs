@@ -197,11 +197,13 @@ fn khronos_validator_reports_no_errors_on_written_files() {
     let mut files = written(&dir);
     // Textured files: inline Inventor images (embedded as PNG), a JPEG
     // file texture (referenced by the .gltf, embedded in the .glb) and
-    // glTF's own textures with KHR_texture_transform.
+    // glTF's own textures with KHR_texture_transform and emissive maps.
     for (src, stem) in [
         ("tests/data/textures/inventor.iv", "inventor_tex"),
         ("tests/data/oak_leafless.obj", "oak_tex"),
         ("tests/data/gltf/textured.gltf", "textured"),
+        // Emissive maps (emissiveTexture, unlit base colour texture).
+        ("tests/data/gltf/emissive.gltf", "emissive"),
     ] {
         for ext in ["gltf", "glb"] {
             let o = dir.join(format!("{stem}.{ext}"));

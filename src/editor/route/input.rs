@@ -7,6 +7,7 @@ use crate::editor::fields::{parse_number, FieldId, FieldValue};
 use crate::editor::gesture::*;
 use crate::editor::ops;
 use crate::editor::panel::{Action, List, WidgetKind};
+use crate::editor::request::Request;
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -937,11 +938,7 @@ impl Editor {
             Action::Open => self.ask_unsaved(After::Open),
             Action::Import => self.browse(Purpose::Import, None),
             Action::Save => match self.path.clone() {
-                Some(p) if is_writable_type(&p) => {
-                    if let Err(e) = self.save_to(&p) {
-                        self.set_status(&e, true);
-                    }
-                }
+                Some(p) if is_writable_type(&p) => self.request_save(p, None),
                 _ => self.browse(Purpose::SaveAs, None),
             },
             Action::SaveAs => self.browse(Purpose::SaveAs, None),
@@ -1098,10 +1095,7 @@ impl Editor {
             Action::DialogSave => {
                 if let Some(d) = self.dialog.take() {
                     match self.path.clone() {
-                        Some(p) if is_writable_type(&p) => match self.save_to(&p) {
-                            Ok(()) => self.continue_with(d.then),
-                            Err(e) => self.set_status(&e, true),
-                        },
+                        Some(p) if is_writable_type(&p) => self.request_save(p, Some(d.then)),
                         _ => self.browse(Purpose::SaveAs, Some(d.then)),
                     }
                 }
@@ -1272,19 +1266,13 @@ impl Editor {
     /// Enter / the accept button: a folder is entered, a file is used.
     pub(in crate::internals::editor) fn browser_accept(&mut self) {
         let Some(b) = &mut self.browser else { return };
-        let path = b.resolved();
-        if path.is_dir() {
-            b.enter(&path);
-            return;
-        }
         let purpose = b.purpose;
-        if purpose != Purpose::SaveAs && !path.is_file() {
-            b.message = Some(format!("no file {}", path.display()));
-            return;
-        }
-        let result = match purpose {
-            Purpose::Open => self.open_file(&path),
-            Purpose::Import => self.import_file(&path),
+        let Some(path) = b.accept() else { return };
+        // The shell reads or writes; its answer (`route/files.rs`) closes
+        // the browser or shows why not.
+        match purpose {
+            Purpose::Open => self.requests.push(Request::Open(path)),
+            Purpose::Import => self.requests.push(Request::Import(path)),
             Purpose::SaveAs => {
                 let path = if is_writable_type(&path) {
                     path
@@ -1293,21 +1281,7 @@ impl Editor {
                     s.push(".wrl");
                     s.into()
                 };
-                self.save_to(&path)
-            }
-        };
-        match result {
-            Ok(()) => {
-                self.browser = None;
-                if let Some(then) = self.browser_then.take() {
-                    self.continue_with(then);
-                }
-            }
-            Err(e) => {
-                if let Some(b) = &mut self.browser {
-                    b.message = Some(e.clone());
-                }
-                self.set_status(&e, true);
+                self.request_save(path, None);
             }
         }
     }

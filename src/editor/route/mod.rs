@@ -3,6 +3,7 @@
 //! parts below never depend on the editor that holds them.
 
 mod create;
+mod files;
 mod graph;
 mod input;
 mod keyedit;

@@ -4,10 +4,11 @@ use crate::editor::command::Command;
 use crate::editor::panel::Action;
 #[allow(unused_imports)]
 use crate::editor::recovery::*;
+use crate::editor::request::{AutosaveWhy, Read, Request};
 use crate::editor::{After, Dialog, Editor};
 use crate::input::Key;
 use std::path::{Path, PathBuf};
-use std::time::{Instant, SystemTime};
+use std::time::SystemTime;
 
 impl Editor {
     /// Seconds between autosaves (`None` or 0: off).
@@ -30,7 +31,7 @@ impl Editor {
     }
 
     /// Where this session's untitled work is autosaved.
-    fn untitled_file(&self) -> PathBuf {
+    pub(in crate::internals::editor) fn untitled_file(&self) -> PathBuf {
         match &self.autosave.dir {
             Some(d) => untitled_in(d),
             None => untitled_path(),
@@ -55,7 +56,7 @@ impl Editor {
             self.autosave.since = None;
             if let Some(p) = self.autosave.written.take() {
                 // Back at the saved state (undo): the copy is stale.
-                remove(&p);
+                self.requests.push(Request::Remove(p));
             }
             return false;
         }
@@ -73,46 +74,64 @@ impl Editor {
         if now - since < interval || busy {
             return false;
         }
-        match self.autosave_now() {
-            Ok(p) => {
-                // Say so: the user should see their work is safe.
-                let name = p.file_name().map(|n| n.to_string_lossy().to_string());
-                let when = clock_utc(SystemTime::now());
-                let what = match &self.path {
-                    Some(_) => "unsaved changes",
-                    None => "untitled work",
-                };
-                self.set_status(
-                    &format!("Autosaved {what} at {when} ({})", name.unwrap_or_default()),
-                    false,
-                );
-                true
-            }
-            Err(e) => {
-                // Try again after another interval.
-                self.autosave.since = Some(now);
-                self.set_status(&format!("Autosave failed: {e}"), true);
-                true
-            }
+        if self
+            .requests
+            .iter()
+            .any(|r| matches!(r, Request::Autosave { .. }))
+        {
+            return false;
         }
+        // Waits another interval if the write fails (on success the wait
+        // starts at the next change).
+        self.autosave.since = Some(now);
+        let path = self.recovery_file();
+        self.requests.push(Request::Autosave {
+            path,
+            why: AutosaveWhy::Clock,
+        });
+        false
     }
 
-    /// Writes the recovery copy now; returns where.
-    pub fn autosave_now(&mut self) -> Result<PathBuf, String> {
-        let path = self.recovery_file();
-        let t0 = Instant::now();
-        write(&self.scene, &path)?;
-        self.autosave.last_ms = Some(t0.elapsed().as_secs_f64() * 1e3);
-        self.autosave.copied = Some(self.history.revision());
-        self.autosave.since = None;
-        self.autosave.written = Some(path.clone());
-        Ok(path)
+    /// The shell wrote (or failed to write) the recovery copy at `path`,
+    /// holding history revision `rev`, in `ms` milliseconds.
+    pub fn autosave_done(
+        &mut self,
+        path: PathBuf,
+        why: AutosaveWhy,
+        written: Result<f64, String>,
+        rev: u64,
+    ) {
+        match written {
+            Ok(ms) => {
+                self.autosave.last_ms = Some(ms);
+                self.autosave.copied = Some(rev);
+                self.autosave.since = None;
+                let name = path.file_name().map(|n| n.to_string_lossy().to_string());
+                self.autosave.written = Some(path);
+                if why == AutosaveWhy::Clock {
+                    // Say so: the user should see their work is safe.
+                    let when = clock_utc(SystemTime::now());
+                    let what = match &self.path {
+                        Some(_) => "unsaved changes",
+                        None => "untitled work",
+                    };
+                    self.set_status(
+                        &format!("Autosaved {what} at {when} ({})", name.unwrap_or_default()),
+                        false,
+                    );
+                }
+            }
+            Err(e) if why == AutosaveWhy::Clock => {
+                self.set_status(&format!("Autosave failed: {e}"), true)
+            }
+            Err(_) => {}
+        }
     }
 
     /// Deletes this session's recovery copy (changes saved or discarded).
     pub(in crate::internals::editor) fn forget_recovery(&mut self) {
         if let Some(p) = self.autosave.written.take() {
-            remove(&p);
+            self.requests.push(Request::Remove(p));
         }
         self.autosave.since = None;
         self.autosave.copied = None;
@@ -123,10 +142,11 @@ impl Editor {
     pub(in crate::internals::editor) fn saved_recovery(&mut self, old: Option<&Path>) {
         self.forget_recovery();
         if old.is_none() {
-            remove(&self.untitled_file());
+            let p = self.untitled_file();
+            self.requests.push(Request::Remove(p));
         }
         if let Some(p) = &self.path {
-            remove(&recovery_path(p));
+            self.requests.push(Request::Remove(recovery_path(p)));
         }
     }
 
@@ -137,21 +157,24 @@ impl Editor {
         self.autosave.offer = None;
     }
 
-    /// When the open scene has a newer recovery copy beside it, asks
-    /// whether to recover it (the dialog's Recover / Discard copy / Open
-    /// saved). Call after opening a file.
-    pub fn check_recovery(&mut self) {
-        let Some(scene) = self.path.clone() else {
+    /// The shell found a recovery copy newer than the open scene's file
+    /// (written `when`, seen at `now`): asks whether to recover it (the
+    /// dialog's Recover / Discard copy / Open saved).
+    pub fn recovery_found(
+        &mut self,
+        scene: &Path,
+        copy: PathBuf,
+        when: SystemTime,
+        now: SystemTime,
+    ) {
+        if self.path.as_deref() != Some(scene) {
             return;
-        };
-        let Some((copy, when)) = newer_copy(&scene) else {
-            return;
-        };
+        }
         let name = scene
             .file_name()
             .map(|n| n.to_string_lossy().to_string())
             .unwrap_or_default();
-        let when = describe_time(when, SystemTime::now());
+        let when = describe_time(when, now);
         self.autosave.offer = Some(copy);
         self.dialog = Some(Dialog {
             message: format!("Unsaved work on {name} was autosaved\n{when}. Recover it?"),
@@ -164,16 +187,15 @@ impl Editor {
         self.autosave.offer.as_deref()
     }
 
-    /// At start: when untitled sessions left recovery copies in `dir` (the
-    /// state folder, see `state_dir`), lists them newest first in the
-    /// recovery dialog (unless another question is open). Returns how
-    /// many were offered.
-    pub fn offer_untitled(&mut self, dir: &Path) -> usize {
+    /// The untitled sessions the shell found in `dir` (newest first):
+    /// lists them in the recovery dialog unless another question is open.
+    /// Returns how many were offered.
+    pub fn offer_sessions(&mut self, dir: &Path, list: Vec<Session>, _now: SystemTime) -> usize {
         if self.dialog.is_some() {
             return 0;
         }
         self.autosave.dir = Some(dir.to_path_buf());
-        self.autosave.untitled = untitled_sessions(dir);
+        self.autosave.untitled = list;
         self.autosave.chosen = 0;
         self.show_untitled_offer();
         self.autosave.untitled.len()
@@ -282,13 +304,13 @@ impl Editor {
             Action::DialogSave => {
                 self.dialog = None;
                 if let Some(copy) = copy {
-                    self.recover_from(&copy);
+                    self.requests.push(Request::Recover { copy });
                 }
             }
             Action::DialogDiscard => {
                 self.dialog = None;
                 if let Some(copy) = copy {
-                    remove(&copy);
+                    self.requests.push(Request::Remove(copy));
                     self.set_status("Recovery copy deleted", false);
                 }
             }
@@ -316,15 +338,17 @@ impl Editor {
                 self.autosave.untitled.clear();
                 self.autosave.offer = None;
                 self.dialog = None;
-                self.recover_untitled(&s.path);
+                let mine = self.untitled_file();
+                self.requests
+                    .push(Request::RecoverUntitled { copy: s.path, mine });
             }
             Action::DialogDiscard => {
                 let s = self.autosave.untitled.remove(i);
-                remove(&s.path);
                 self.set_status(
                     &format!("Deleted the recovery copy {}", s.path.display()),
                     false,
                 );
+                self.requests.push(Request::Remove(s.path));
                 self.show_untitled_offer();
             }
             Action::DialogCancel => {
@@ -345,13 +369,14 @@ impl Editor {
         true
     }
 
-    /// Opens an untitled session's copy as new untitled work: an empty
-    /// scene, then one undoable "Recover" step (so the work counts as
-    /// unsaved and keeps being autosaved). The copy becomes this session's
-    /// own, so a save or a clean quit deletes it.
-    pub fn recover_untitled(&mut self, copy: &Path) {
-        let loaded = match crate::format::load(copy) {
-            Ok(l) => l,
+    /// The shell read an untitled session's copy: it becomes new untitled
+    /// work — an empty scene, then one undoable "Recover" step (so the
+    /// work counts as unsaved and keeps being autosaved) — and the copy
+    /// this session's own (`TakeOver`), so a save or a clean quit deletes
+    /// it.
+    pub fn recover_untitled_done(&mut self, read: Read, copy: PathBuf, mine: PathBuf) {
+        let scene = match read {
+            Ok((scene, _, _)) => scene,
             Err(e) => {
                 self.set_status(&format!("cannot recover: {e}"), true);
                 return;
@@ -363,35 +388,35 @@ impl Editor {
             "Recover autosaved work",
             Command::ReplaceScene {
                 before,
-                after: Box::new(loaded.scene),
+                after: Box::new(scene),
             },
         );
         self.frame_all();
-        let mine = self.untitled_file();
-        let taken = if copy == mine || std::fs::rename(copy, &mine).is_ok() {
-            mine
-        } else {
-            copy.to_path_buf()
-        };
-        self.autosave.written = Some(taken);
+        // After `replace_scene`'s removal of this session's old copy.
+        self.requests.push(Request::TakeOver { copy, mine });
         self.set_status(
             "Recovered untitled work: Ctrl+S saves it under a name",
             false,
         );
     }
 
-    /// Loads the recovery copy into the editor as one undoable change (undo
-    /// shows the saved file again); the file name stays the scene's, so
-    /// Ctrl+S writes the original.
-    pub(in crate::internals::editor) fn recover_from(&mut self, copy: &Path) {
-        match crate::format::load(copy) {
-            Ok(l) => {
+    /// The shell moved the recovered copy to `path`: this session's copy.
+    pub fn took_over(&mut self, path: PathBuf) {
+        self.autosave.written = Some(path);
+    }
+
+    /// The shell read the recovery copy: it comes into the editor as one
+    /// undoable change (undo shows the saved file again); the file name
+    /// stays the scene's, so Ctrl+S writes the original.
+    pub fn recover_done(&mut self, copy: &Path, read: Read) {
+        match read {
+            Ok((scene, _, _)) => {
                 let before = Box::new(self.scene.clone());
                 self.execute(
                     "Recover autosaved work",
                     Command::ReplaceScene {
                         before,
-                        after: Box::new(l.scene),
+                        after: Box::new(scene),
                     },
                 );
                 self.frame = self.frame.min(self.scene.settings.duration);
@@ -416,31 +441,6 @@ impl Editor {
             then: After::Quit,
         });
         true
-    }
-
-    /// The window loop ended: after a clean quit this session's copy goes;
-    /// closed with unsaved changes (closed twice, or the window system
-    /// went away), they are written to the recovery copy right away.
-    /// Returns a line to print.
-    pub fn window_closed(&mut self) -> Option<String> {
-        self.remember_view();
-        if !self.is_dirty() || self.quit {
-            self.forget_recovery();
-            return None;
-        }
-        Some(match self.autosave_now() {
-            Ok(p) => {
-                let how = match &self.path {
-                    Some(_) => "open the scene again to recover them",
-                    None => "animed offers it at the next start; `animed recover --list` shows it",
-                };
-                format!(
-                    "window closed with unsaved changes; they are in the recovery copy {} ({how})",
-                    p.display()
-                )
-            }
-            Err(e) => format!("window closed with unsaved changes; autosave failed: {e}"),
-        })
     }
 }
 
@@ -526,6 +526,12 @@ mod tests {
         );
     }
 
+    /// The clock ticks the editor, then the shell writes what it asked.
+    fn tick(ed: &mut Editor, now: f64) {
+        ed.autosave_tick(now);
+        crate::editor::shell::perform(ed);
+    }
+
     #[test]
     fn autosave_waits_for_the_interval_and_a_save_deletes_the_copy() {
         let d = tmp_dir("save");
@@ -539,17 +545,17 @@ mod tests {
         after.transform.translation.x = 5.0;
         let before = Box::new(ed.scene().node(id).clone());
         ed.execute("move", Command::SetNode { id, before, after });
-        ed.autosave_tick(100.0);
-        ed.autosave_tick(129.0);
+        tick(&mut ed, 100.0);
+        tick(&mut ed, 129.0);
         assert!(!copy.exists(), "29 s after the first change: not yet");
-        ed.autosave_tick(130.5);
+        tick(&mut ed, 130.5);
         assert!(copy.exists(), "30 s after the first change");
         assert_eq!(ed.autosaved_to(), Some(copy.as_path()));
         let back = crate::format::load(&copy).unwrap().scene;
         assert_eq!(back.node(id).transform.translation.x, 5.0);
         // Nothing new: the copy is not rewritten.
         std::fs::remove_file(&copy).unwrap();
-        ed.autosave_tick(200.0);
+        tick(&mut ed, 200.0);
         assert!(!copy.exists());
         ed.autosave_now().unwrap();
         assert!(copy.exists());
@@ -572,18 +578,18 @@ mod tests {
         let before = Box::new(ed.scene().node(id).clone());
         ed.execute("move", Command::SetNode { id, before, after });
         let (x, y, mods) = (-5.0, -5.0, crate::editor::Mods::NONE);
-        ed.autosave_tick(0.0);
+        tick(&mut ed, 0.0);
         ed.handle(Event::MouseDown {
             button: MouseButton::Middle,
             x,
             y,
             mods,
         });
-        ed.autosave_tick(5.0);
-        ed.autosave_tick(12.0);
+        tick(&mut ed, 5.0);
+        tick(&mut ed, 12.0);
         assert!(!recovery_path(&scene).exists(), "held: wait");
         // Held for a whole interval: a lost release; save anyway.
-        ed.autosave_tick(15.5);
+        tick(&mut ed, 15.5);
         assert!(recovery_path(&scene).exists());
         std::fs::remove_file(recovery_path(&scene)).unwrap();
         ed.handle(Event::MouseUp {
@@ -596,8 +602,8 @@ mod tests {
         let mut after = before.clone();
         after.transform.translation.z = 4.0;
         ed.execute("move", Command::SetNode { id, before, after });
-        ed.autosave_tick(30.0);
-        ed.autosave_tick(40.0);
+        tick(&mut ed, 30.0);
+        tick(&mut ed, 40.0);
         assert!(recovery_path(&scene).exists(), "released: saved");
         std::fs::remove_dir_all(&d).unwrap();
     }
@@ -614,11 +620,11 @@ mod tests {
         after.transform.translation.y = 2.0;
         let before = Box::new(ed.scene().node(id).clone());
         ed.execute("move", Command::SetNode { id, before, after });
-        ed.autosave_tick(0.0);
-        ed.autosave_tick(1.0);
+        tick(&mut ed, 0.0);
+        tick(&mut ed, 1.0);
         assert!(recovery_path(&scene).exists());
         ed.undo();
-        ed.autosave_tick(1.5);
+        tick(&mut ed, 1.5);
         assert!(!recovery_path(&scene).exists());
         std::fs::remove_dir_all(&d).unwrap();
     }

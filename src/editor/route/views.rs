@@ -4,7 +4,8 @@
 
 use crate::editor::menu::{Menu, MenuItem};
 use crate::editor::panel::Action;
-use crate::editor::views::{self, ViewCmd};
+use crate::editor::request::Request;
+use crate::editor::views::ViewCmd;
 use crate::editor::Editor;
 use crate::input::OrbitCamera;
 use crate::scene::NodeKind;
@@ -96,24 +97,25 @@ impl Editor {
         std::path::absolute(p).ok()
     }
 
-    /// Takes the remembered view of the open file, if any.
+    /// Asks for the remembered view of the open file, if any (the shell
+    /// reads the memory and answers with `view_recalled`).
     pub(in crate::internals::editor) fn recall_view(&mut self) {
         let (Some(mem), Some(key)) = (self.view_memory.clone(), self.view_key()) else {
             return;
         };
-        if let Some(c) = views::recall(&mem, &key) {
-            self.camera = c;
-        }
+        self.requests.push(Request::RecallView { memory: mem, key });
     }
 
-    /// Remembers the view for the open file (after saves, at quit).
+    /// Asks to remember the view for the open file (after saves, at quit).
     pub fn remember_view(&mut self) {
         let (Some(mem), Some(key)) = (self.view_memory.clone(), self.view_key()) else {
             return;
         };
-        let cam = self.through.unwrap_or(self.camera);
-        if let Err(e) = views::remember(&mem, &key, &cam) {
-            self.set_status(&format!("cannot remember the view: {e}"), true);
-        }
+        let camera = self.through.unwrap_or(self.camera);
+        self.requests.push(Request::RememberView {
+            memory: mem,
+            key,
+            camera,
+        });
     }
 }

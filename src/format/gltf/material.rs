@@ -20,11 +20,21 @@
 //!   refraction through rough surfaces", EGSR 2007, §5.2); VRML shininess
 //!   = n / 128, clamped to [0, 1];
 //! * emissive = sRGB(emissive factor × KHR_materials_emissive_strength);
+//!   an emissiveTexture becomes the material's emissive map, drawn as
+//!   emissive × texel added to the lit colour before it is clamped (§3.9.3:
+//!   "the emissive texture and factor control the color and intensity of
+//!   the light being emitted"; Appendix B adds the emission to the BRDF's
+//!   result). The texel stays in its sRGB encoding and multiplies the
+//!   sRGB factor — the same approximation (sRGB(a·b) ≈ sRGB(a)·sRGB(b)) the
+//!   base colour texture makes, exact for a factor of 0 or 1;
 //! * transparency = 1 − alpha for alphaMode BLEND; MASK shows the material
 //!   opaque when alpha ≥ alphaCutoff and fully transparent below; OPAQUE
 //!   ignores alpha (§3.9.4);
 //! * KHR_materials_unlit: diffuse and specular black, emissive = the base
 //!   colour, which is exactly an unlit surface in the VRML lighting model;
+//!   its base colour texture is then the emissive map too (the reader),
+//!   and its emissive factor and texture are ignored, as the extension
+//!   says;
 //! * a primitive without a material gets animed's (VRML97) default
 //!   material rather than glTF's white rough metal, which renders black
 //!   without an environment.
@@ -191,6 +201,9 @@ pub fn phong_from_extras(m: &gltf::Material, read: &Pbr) -> Option<Material> {
             .collect();
         (c.len() == 3).then(|| Vec3::new(c[0], c[1], c[2]))
     };
+    // Stand-ins for the texture slots the glTF material fills (the reader
+    // sets the real ones): whether it is written unlit depends on them.
+    let slot = |used: bool| used.then(|| crate::scene::Texture::new(crate::scene::ImageId(0)));
     let phong = Material {
         name: read.name.clone(),
         diffuse: v3("diffuse")?,
@@ -199,7 +212,8 @@ pub fn phong_from_extras(m: &gltf::Material, read: &Pbr) -> Option<Material> {
         emissive: v3("emissive")?,
         shininess: f("shininess")?,
         transparency: f("transparency")?,
-        texture: None,
+        texture: slot(m.pbr_metallic_roughness().base_color_texture().is_some()),
+        emissive_texture: slot(m.emissive_texture().is_some()),
     };
     let mut want = pbr_from_phong(&phong);
     want.name = read.name.clone();
@@ -256,6 +270,7 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
             shininess: 0.0,
             transparency,
             texture: None,
+            emissive_texture: None,
         };
     }
     let metallic = p.metallic.clamp(0.0, 1.0);
@@ -270,6 +285,7 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
         shininess: shininess_from_roughness(roughness),
         transparency,
         texture: None,
+        emissive_texture: None,
     }
 }
 
@@ -277,7 +293,10 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
 /// (metallic 0) whose base colour is the diffuse colour and whose
 /// roughness gives the same Blinn-Phong exponent as the shininess; a
 /// material with black diffuse and specular and a non-black emissive
-/// colour is written unlit (KHR_materials_unlit) with that colour.
+/// colour is written unlit (KHR_materials_unlit) with that colour —
+/// unless its only texture is an emissive map, which unlit glTF cannot
+/// say without changing the texture's role (then it stays lit, with black
+/// base colour, and the map is its emissiveTexture).
 /// Transparency becomes alpha with alphaMode BLEND.
 pub fn pbr_from_phong(m: &Material) -> Pbr {
     use gltf::material::AlphaMode;
@@ -287,7 +306,12 @@ pub fn pbr_from_phong(m: &Material) -> Pbr {
     } else {
         AlphaMode::Opaque
     };
-    if m.diffuse == Vec3::ZERO && m.specular == Vec3::ZERO && m.emissive != Vec3::ZERO {
+    let only_emissive_map = m.texture.is_none() && m.emissive_texture.is_some();
+    if m.diffuse == Vec3::ZERO
+        && m.specular == Vec3::ZERO
+        && m.emissive != Vec3::ZERO
+        && !only_emissive_map
+    {
         let c = linear_exact(m.emissive);
         return Pbr {
             name: m.name.clone(),

@@ -90,6 +90,7 @@ fn read_inner(
         scene,
         warnings: Vec::new(),
         materials: HashMap::new(),
+        uv_sets: HashMap::new(),
         meshes: HashMap::new(),
         node_ids: vec![None; doc.nodes().len()],
         part_of: vec![None; doc.nodes().len()],
@@ -267,6 +268,8 @@ struct Builder<'a, 'b> {
     warnings: Vec<String>,
     /// glTF material index (None = the default material) → ours.
     materials: HashMap<Option<usize>, MaterialId>,
+    /// The TEXCOORD set each textured material's textures read.
+    uv_sets: HashMap<MaterialId, u32>,
     /// What a primitive reads (accessors, mode, sidedness, colour base) →
     /// ours (None: skipped primitive).
     meshes: HashMap<String, Option<MeshId>>,
@@ -331,11 +334,16 @@ impl<'a> Builder<'a, '_> {
         if let Some(&id) = self.materials.get(&index) {
             return id;
         }
+        let mut uv_set = None;
         let m = match index.and_then(|i| self.gltf_materials.get(i).cloned()) {
             Some(m) => {
                 let pbr = Pbr::from_gltf(&m);
                 let mut phong = phong_from_extras(&m, &pbr).unwrap_or_else(|| phong_from_pbr(&pbr));
-                phong.texture = self.texture(&m).map(|(t, _)| t);
+                let base = self.texture(&m);
+                let emissive = self.emissive_texture(&m, index.unwrap_or(0), &pbr, base.as_ref());
+                uv_set = base.as_ref().or(emissive.as_ref()).map(|(_, set)| *set);
+                phong.texture = base.map(|(t, _)| t);
+                phong.emissive_texture = emissive.map(|(t, _)| t);
                 phong
             }
             None => Material {
@@ -345,7 +353,41 @@ impl<'a> Builder<'a, '_> {
         };
         let id = self.scene.add_material(m);
         self.materials.insert(index, id);
+        if let Some(set) = uv_set {
+            self.uv_sets.insert(id, set);
+        }
         id
+    }
+
+    /// The emissive map of material `i` and its TEXCOORD set (§3.9.3):
+    /// its emissiveTexture, or for KHR_materials_unlit (whose base colour
+    /// is drawn as our emissive colour, see `material.rs`) the base colour
+    /// texture. Meshes keep one coordinate set, so an emissive texture
+    /// reading another set than the base colour texture is left out with
+    /// a warning at its JSON pointer.
+    fn emissive_texture(
+        &mut self,
+        m: &gltf::Material,
+        i: usize,
+        pbr: &Pbr,
+        base: Option<&(crate::scene::Texture, u32)>,
+    ) -> Option<(crate::scene::Texture, u32)> {
+        if pbr.unlit {
+            // The unlit colour is baseColorFactor × baseColorTexture; the
+            // base slot stays for the texture's alpha.
+            return base.cloned();
+        }
+        let (t, set) = texture::emissive_texture(m, &self.images)?;
+        match base {
+            Some((_, b)) if *b != set => {
+                self.warnings.push(format!(
+                    "{}: the emissive texture reads TEXCOORD_{set} but the base colour texture reads TEXCOORD_{b}; animed keeps one set per mesh, so the emissive texture is not drawn",
+                    pointer(&[&"materials", &i, &"emissiveTexture"])
+                ));
+                None
+            }
+            _ => Some((t, set)),
+        }
     }
 
     /// A material's base colour texture and its TEXCOORD set. OPAQUE
@@ -411,13 +453,8 @@ impl<'a> Builder<'a, '_> {
             .collect();
         attrs.sort();
         let colored = prim.get(&gltf::Semantic::Colors(0)).is_some();
-        // The TEXCOORD set of the material's texture, when one loaded.
-        let uv_set = match prim.material().index() {
-            Some(_) if self.scene.materials[material.0 as usize].texture.is_some() => {
-                texture::uv_set(&prim.material())
-            }
-            _ => None,
-        };
+        // The TEXCOORD set of the material's textures, when one loaded.
+        let uv_set = self.uv_sets.get(&material).copied();
         let key = format!(
             "{attrs:?} {:?} {:?} {} {:?} {:?} {:?} {uv_set:?}",
             prim.indices().map(|a| a.index()),

@@ -1,4 +1,5 @@
-//! glTF base colour textures (spec §3.8, §3.9.2) → scene textures: the
+//! glTF base colour and emissive textures (spec §3.8, §3.9.2, §3.9.3) →
+//! scene textures: the
 //! image (PNG or JPEG, from a buffer view, a `data:` URI or a file beside
 //! the .gltf), the sampler's wrap modes, the `texCoord` set and
 //! KHR_texture_transform.
@@ -26,8 +27,9 @@ use glam::{Affine2, Vec2};
 use gltf::texture::{MagFilter, MinFilter, WrappingMode};
 use std::path::Path;
 
-/// Decodes every image a material's base colour texture uses (once each),
-/// by image index; `None` where it is unused or failed (with a warning).
+/// Decodes every image a material's base colour or emissive texture uses
+/// (once each), by image index; `None` where it is unused or failed (with a
+/// warning).
 pub fn load_images(
     doc: &gltf::Document,
     buffers: &Buffers,
@@ -39,7 +41,8 @@ pub fn load_images(
     let json = doc.as_json();
     let mut used = vec![false; json.images.len()];
     for m in doc.materials() {
-        if let Some(info) = m.pbr_metallic_roughness().base_color_texture() {
+        let base = m.pbr_metallic_roughness().base_color_texture();
+        for info in [base, m.emissive_texture()].into_iter().flatten() {
             if let Some(u) = json
                 .textures
                 .get(info.texture().index())
@@ -113,18 +116,33 @@ fn image_bytes(
 /// The scene texture of a glTF material's base colour texture, if its image
 /// loaded: multiplies the base colour (MultiplyDiffuse), wraps and
 /// transform from the sampler and KHR_texture_transform. Also returns the
-/// TEXCOORD set it reads. `warn_once(key, text)` reports sampler features
-/// drawn differently.
+/// TEXCOORD set it reads.
 pub fn base_color_texture(
     m: &gltf::Material,
     images: &[Option<ImageId>],
 ) -> Option<(Texture, u32)> {
     let info = m.pbr_metallic_roughness().base_color_texture()?;
+    let mut t = from_info(&info, images)?;
+    t.model = TextureModel::MultiplyDiffuse;
+    Some((t, set_of(&info)))
+}
+
+/// The scene texture of a glTF material's emissive texture (§3.9.3), if its
+/// image loaded, and the TEXCOORD set it reads. It scales the emissive
+/// factor (see `scene::Material::emissive_texture`); the model field is
+/// unused for emissive maps.
+pub fn emissive_texture(m: &gltf::Material, images: &[Option<ImageId>]) -> Option<(Texture, u32)> {
+    let info = m.emissive_texture()?;
+    Some((from_info(&info, images)?, set_of(&info)))
+}
+
+/// A textureInfo's image, sampler and KHR_texture_transform as a scene
+/// texture (VRML97 model; the caller sets its own).
+fn from_info(info: &gltf::texture::Info, images: &[Option<ImageId>]) -> Option<Texture> {
     let tex = info.texture();
     let image = tex.source().index();
     let id = images.get(image).copied().flatten()?;
     let mut t = Texture::new(id);
-    t.model = TextureModel::MultiplyDiffuse;
     let s = tex.sampler();
     let wrap = |w: WrappingMode| match w {
         WrappingMode::ClampToEdge => Wrap::Clamp,
@@ -134,7 +152,6 @@ pub fn base_color_texture(
     t.wrap_s = wrap(s.wrap_s());
     t.wrap_t = wrap(s.wrap_t());
     t.filter = filter(s.mag_filter(), s.min_filter());
-    let set = uv_set(m)?;
     if let Some(x) = info.texture_transform() {
         t.transform = transform_from_khr(
             Vec2::from_array(x.offset()),
@@ -142,7 +159,7 @@ pub fn base_color_texture(
             Vec2::from_array(x.scale()),
         );
     }
-    Some((t, set))
+    Some(t)
 }
 
 /// glTF sampler filters (§3.8.4; absent = the implementation's choice:
@@ -164,15 +181,12 @@ pub fn filter(mag: Option<MagFilter>, min: Option<MinFilter>) -> Filter {
     }
 }
 
-/// The TEXCOORD set a material's base colour texture reads
-/// (KHR_texture_transform's `texCoord` overrides the textureInfo's).
-pub fn uv_set(m: &gltf::Material) -> Option<u32> {
-    let info = m.pbr_metallic_roughness().base_color_texture()?;
-    Some(
-        info.texture_transform()
-            .and_then(|x| x.tex_coord())
-            .unwrap_or(info.tex_coord()),
-    )
+/// The TEXCOORD set a textureInfo reads (KHR_texture_transform's
+/// `texCoord` overrides the textureInfo's).
+fn set_of(info: &gltf::texture::Info) -> u32 {
+    info.texture_transform()
+        .and_then(|x| x.tex_coord())
+        .unwrap_or(info.tex_coord())
 }
 
 /// KHR_texture_transform (uv' = T(offset)·R(rotation)·S(scale)·uv, with

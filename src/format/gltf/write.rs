@@ -193,6 +193,7 @@ fn material_json(
     double_sided: bool,
     white: bool,
     texture: Option<Json>,
+    emissive_texture: Option<Json>,
 ) -> Json {
     let mut p = pbr_from_phong(m);
     if white {
@@ -216,6 +217,9 @@ fn material_json(
     }
     if p.emissive != Vec3::ZERO {
         o["emissiveFactor"] = nums(&p.emissive.to_array());
+    }
+    if let Some(info) = emissive_texture.filter(|_| !p.unlit) {
+        o["emissiveTexture"] = info;
     }
     if p.alpha_mode == gltf::material::AlphaMode::Blend {
         o["alphaMode"] = json!("BLEND");
@@ -359,6 +363,14 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                 let info = src.texture.as_ref().and_then(|t| {
                                     textures.info(scene, t, &mut bin, binary, &mut report)
                                 });
+                                // An unlit material's map is its base colour texture.
+                                let emissive_info = src
+                                    .emissive_texture
+                                    .as_ref()
+                                    .filter(|_| !pbr_from_phong(&src).unlit)
+                                    .and_then(|t| {
+                                        textures.info(scene, t, &mut bin, binary, &mut report)
+                                    });
                                 let white = colored
                                     || (info.is_some()
                                         && src
@@ -374,7 +386,14 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                                 matches!(i.components(), 2 | 4) && i.has_alpha()
                                             })
                                     });
-                                let mut mj = material_json(&src, name, !mesh.solid, white, info);
+                                let mut mj = material_json(
+                                    &src,
+                                    name,
+                                    !mesh.solid,
+                                    white,
+                                    info,
+                                    emissive_info,
+                                );
                                 let cutoff = src.texture.as_ref().and_then(|t| t.alpha_cutoff);
                                 match (alpha, cutoff) {
                                     (true, Some(c)) => {
@@ -389,9 +408,10 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                 materials.len() - 1
                             }
                         };
-                        let textured = materials[mat]["pbrMetallicRoughness"]
+                        let textured = (materials[mat]["pbrMetallicRoughness"]
                             .get("baseColorTexture")
                             .is_some()
+                            || materials[mat].get("emissiveTexture").is_some())
                             && mesh.texcoords.len() == mesh.positions.len();
                         let attrs = attr_cache
                             .entry((sh.mesh.0, textured))

@@ -1,6 +1,7 @@
 //! The glTF writer's textures: a material's texture becomes its
-//! `baseColorTexture` (with KHR_texture_transform when it has a transform),
-//! reading `TEXCOORD_0` (written with v = 1 − t, see `texture`).
+//! `baseColorTexture` and its emissive map its `emissiveTexture` (each with
+//! KHR_texture_transform when it has a transform), reading `TEXCOORD_0`
+//! (written with v = 1 − t, see `texture`).
 //!
 //! Images: in a `.gltf`, a PNG or JPEG file texture is referenced by its
 //! url (relative to the output, as the other writers do); everything else —
@@ -32,8 +33,9 @@ pub struct TextureWriter {
 }
 
 impl TextureWriter {
-    /// The `baseColorTexture` of a material's texture, or None (with a
-    /// warning) when its image is missing.
+    /// The textureInfo (`baseColorTexture`, `emissiveTexture`) of a
+    /// material's texture, or None (with a warning) when its image is
+    /// missing.
     pub fn info(
         &mut self,
         scene: &Scene,

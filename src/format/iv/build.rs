@@ -580,6 +580,7 @@ impl Builder {
             shininess: scalar(m, "shininess", 0.2),
             transparency,
             texture,
+            emissive_texture: None,
         };
         if st.unlit {
             mat.emissive = mat.diffuse;

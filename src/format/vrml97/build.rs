@@ -422,6 +422,7 @@ fn unlit_fields() -> Material {
         shininess: 0.0,
         transparency: 0.0,
         texture: None,
+        emissive_texture: None,
     }
 }
 
@@ -437,6 +438,7 @@ fn material_fields(m: &NodeRef) -> Material {
         shininess: m.f32("shininess", d.shininess),
         transparency: m.f32("transparency", d.transparency),
         texture: None,
+        emissive_texture: None,
     }
 }
 

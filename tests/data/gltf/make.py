@@ -35,6 +35,17 @@ class Buf:
     def f32(self, values, typ, n, **kw):
         return self.add("f", values, 5126, typ, len(values) // n, **kw)
 
+    def images(self, imgs):
+        """Appends encoded images, each in a buffer view; their view indices."""
+        views = []
+        for img in imgs:
+            while len(self.data) % 4:
+                self.data.append(0)
+            self.views.append({"buffer": 0, "byteOffset": len(self.data), "byteLength": len(img)})
+            views.append(len(self.views) - 1)
+            self.data += img
+        return views
+
     def uri(self):
         return "data:application/octet-stream;base64," + base64.b64encode(bytes(self.data)).decode()
 
@@ -254,13 +265,7 @@ def sampler_modes():
     rgb = [[(60 * x + 20, 60 * y + 20, 200 - 50 * x) for x in range(4)] for y in range(4)]
     plus = [[(230, 200, 40, 255 if x in (1, 2) or y in (1, 2) else 0) for x in range(4)] for y in range(4)]
     imgs = [png(4, 4, rgb, False), png(4, 4, plus, True)]
-    views = []
-    for img in imgs:
-        while len(b.data) % 4:
-            b.data.append(0)
-        b.views.append({"buffer": 0, "byteOffset": len(b.data), "byteLength": len(img)})
-        views.append(len(b.views) - 1)
-        b.data += img
+    views = b.images(imgs)
     doc = {
         "asset": {"version": "2.0", "generator": "make.py"},
         "scene": 0,
@@ -288,7 +293,67 @@ def sampler_modes():
     write("sampler_modes.gltf", doc, b)
 
 
+def emissive():
+    """Three quads in a dim scene (one directional light of 1 lux, facing
+    the quads) for emissive maps (tests/render_textures.rs and
+    tests/format_gltf.rs):
+    left, a dark grey lit material (base 0.05) with emissiveTexture = a 4x4
+    RGB checker of glowing texels (255, 200 - 40y, 40 + 60x) and black
+    ones, NEAREST, emissiveFactor [1, 1, 1];
+    middle, a 2x2 grey checker baseColorTexture lit by the light, plus the
+    same emissive texture repeated twice across the quad
+    (KHR_texture_transform scale [2, 2]) with emissiveFactor [0.2, 0.6, 1];
+    right, KHR_materials_unlit with the glowing checker as its base colour
+    texture and baseColorFactor [1, 0.5, 0.5, 1]."""
+    b = Buf()
+    pos, uv = [], []
+    for x0 in (-3.3, -1.0, 1.3):
+        pos += [x0, -1, 0, x0 + 2, -1, 0, x0 + 2, 1, 0, x0, 1, 0]
+        uv += [0, 1, 1, 1, 1, 0, 0, 0]
+    n = [0, 0, 1] * 12
+    p = b.f32(pos, "VEC3", 3, target=34962, minmax=bounds(pos, 3))
+    nn = b.f32(n, "VEC3", 3, target=34962)
+    t = b.f32(uv, "VEC2", 2, target=34962)
+    idx = [b.add("H", [k, k + 1, k + 2, k, k + 2, k + 3], 5123, "SCALAR", 6, target=34963) for k in (0, 4, 8)]
+    glow = [[(255, 200 - 40 * y, 40 + 60 * x) if (x + y) % 2 == 0 else (0, 0, 0) for x in range(4)] for y in range(4)]
+    grey = [[(200, 200, 200), (90, 90, 90)], [(90, 90, 90), (200, 200, 200)]]
+    imgs = [png(4, 4, glow, False), png(2, 2, grey, False)]
+    views = b.images(imgs)
+    prim = lambda k, m: {"attributes": {"POSITION": p, "NORMAL": nn, "TEXCOORD_0": t}, "indices": idx[k], "material": m}
+    doc = {
+        "asset": {"version": "2.0", "generator": "make.py"},
+        "extensionsUsed": ["KHR_texture_transform", "KHR_materials_unlit", "KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 1.0}]}},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2, 3]}],
+        "nodes": [
+            {"name": "Glow", "mesh": 0},
+            {"name": "Lit", "mesh": 1},
+            {"name": "Unlit", "mesh": 2},
+            {"name": "Sun", "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        ],
+        "meshes": [{"primitives": [prim(k, k)]} for k in range(3)],
+        "materials": [
+            {"name": "GlowMap", "emissiveTexture": {"index": 0}, "emissiveFactor": [1, 1, 1],
+             "pbrMetallicRoughness": {"baseColorFactor": [0.05, 0.05, 0.05, 1], "metallicFactor": 0}},
+            {"name": "LitAndGlow", "emissiveFactor": [0.2, 0.6, 1],
+             "emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"scale": [2, 2]}}},
+             "pbrMetallicRoughness": {"baseColorTexture": {"index": 1}, "metallicFactor": 0}},
+            {"name": "UnlitMap", "extensions": {"KHR_materials_unlit": {}},
+             "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "baseColorFactor": [1, 0.5, 0.5, 1]}},
+        ],
+        "samplers": [{"wrapS": 10497, "wrapT": 10497, "magFilter": 9728, "minFilter": 9728}],
+        "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0}],
+        "images": [
+            {"bufferView": views[0], "mimeType": "image/png", "name": "glow"},
+            {"bufferView": views[1], "mimeType": "image/png", "name": "grey"},
+        ],
+    }
+    write("emissive.gltf", doc, b)
+
+
 if __name__ == "__main__":
+    emissive()
     sampler_modes()
     textured()
     animated()
