@@ -10,6 +10,8 @@ use animed::internals::editor::{After, Editor, Event, Key, Mods, MouseButton};
 use animed::internals::scene::{NodeId, Scene};
 use ui_input::*;
 
+mod editor_menus;
+
 /// Mouse to (x, y) without a button.
 fn hover(ed: &mut Editor, (x, y): (f32, f32)) {
     ed.handle(Event::MouseMove {
@@ -942,6 +944,8 @@ fn the_key_strips_context_menu_edits_the_keys_under_the_mouse() {
             "Interpolation: step",
             "Interpolation: linear",
             "Interpolation: tcb",
+            "Ease in",
+            "Ease out",
             "Ease in and out",
             "No ease",
             "Delete keys",

@@ -26,6 +26,9 @@ pub enum Intent {
     Seek(f32),
     /// A line for the status bar (true: an error).
     Status(String, bool),
+    /// A right click at this window point: open the keys' context menu
+    /// there (`keymenu.rs`).
+    ContextMenu((f32, f32)),
 }
 
 /// A component's answer to one event.

@@ -196,6 +196,10 @@ impl Editor {
         if let FieldId::Material(f) = id {
             return self.material_text(f, max_chars);
         }
+        if let FieldId::Preview(_) = id {
+            let v = self.preview_field(id);
+            return v.map_or(String::new(), |x| super::fields::format_fit(x, max_chars));
+        }
         if let FieldId::Morph(i) = id {
             let v = self.morph_text(i);
             return v.map_or(String::new(), |x| super::fields::format_fit(x, max_chars));

@@ -32,6 +32,9 @@ pub enum FieldId {
     ClipName,
     /// A value of the selection's material (`material/`).
     Material(super::material::MatField),
+    /// The preview range's first (0) or last (1) frame (editor state,
+    /// typed only).
+    Preview(u8),
 }
 
 /// A field's value.
@@ -108,6 +111,8 @@ impl FieldId {
             FieldId::Morph(i) => format!("Weight {i}"),
             FieldId::ClipName => "Clip name".into(),
             FieldId::Material(m) => m.label(),
+            FieldId::Preview(0) => "Preview start".into(),
+            FieldId::Preview(_) => "Preview end".into(),
             other => format!("{other:?}"),
         }
     }

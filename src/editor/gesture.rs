@@ -124,6 +124,8 @@ pub(super) enum Base {
     Clip,
     /// A material field (`material/`).
     Material(Box<super::material::MatBase>),
+    /// A preview range field (`route/timeline.rs`): typed, never dragged.
+    Preview,
 }
 
 /// Pixels the mouse may move before a press counts as a drag.

@@ -8,7 +8,7 @@
 //! refused.
 
 use super::keystrip::{row_name, Clipboard, KeyRef};
-use crate::anim::{Animation, Key, Keys, Target, TargetRef, Value, KEY_EPS};
+use crate::anim::{Animation, Key, KeyParams, Keys, Target, TargetRef, Value, KEY_EPS};
 
 pub(super) fn typed(kind: crate::anim::ValueKind, keys: &[Key<Value>]) -> Result<Keys, String> {
     Keys::from_values(kind, keys).map_err(|e| e.to_string())
@@ -122,6 +122,39 @@ pub(super) fn copy(anim: &Animation, keys: &[KeyRef]) -> Clipboard {
     }
 }
 
+/// Which ease a menu item sets on the selected keys.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ease {
+    /// Slow into the key (ease in = 1, ease out kept).
+    In,
+    /// Slow out of the key (ease out = 1, ease in kept).
+    Out,
+    Both,
+    None,
+}
+
+impl Ease {
+    /// Sets this ease on a key's parameters.
+    pub fn apply(self, key: &mut KeyParams) {
+        match self {
+            Ease::In => key.ease_in = 1.0,
+            Ease::Out => key.ease_out = 1.0,
+            Ease::Both => (key.ease_in, key.ease_out) = (1.0, 1.0),
+            Ease::None => (key.ease_in, key.ease_out) = (0.0, 0.0),
+        }
+    }
+
+    /// The undo label and menu line.
+    pub fn label(self) -> &'static str {
+        match self {
+            Ease::In => "Ease in",
+            Ease::Out => "Ease out",
+            Ease::Both => "Ease in and out",
+            Ease::None => "No ease",
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -149,6 +182,21 @@ mod tests {
             property: Property::Translation,
             frame: f,
         }
+    }
+
+    #[test]
+    fn ease_in_and_out_are_set_separately() {
+        let mut k = KeyParams {
+            ease_out: 0.5,
+            ..KeyParams::default()
+        };
+        Ease::In.apply(&mut k);
+        assert_eq!((k.ease_in, k.ease_out), (1.0, 0.5));
+        Ease::None.apply(&mut k);
+        Ease::Out.apply(&mut k);
+        assert_eq!((k.ease_in, k.ease_out), (0.0, 1.0));
+        Ease::Both.apply(&mut k);
+        assert_eq!((k.ease_in, k.ease_out), (1.0, 1.0));
     }
 
     #[test]

@@ -28,14 +28,15 @@ pub enum KeyAction {
     /// Show the node's properties / the key panel.
     ShowNode,
     ShowKeys,
-    /// The key strip's context menu: ease in and out fully (`true`) or
-    /// not at all, delete, copy, paste at the current frame, and select
-    /// every key of a row.
-    Ease(bool),
+    /// The keys' context menu (`keymenu.rs`): ease in, out, both or
+    /// none, delete, copy, paste at the current frame, and select every
+    /// key of a strip row or of the graph channel under the mouse.
+    Ease(super::keyedit::Ease),
     Delete,
     Copy,
     Paste,
     SelectRow(super::keystrip::Row),
+    SelectChannel,
 }
 
 /// The number a field shows for `key`.

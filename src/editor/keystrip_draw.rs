@@ -91,7 +91,9 @@ impl Editor {
         let hint = match self.selection {
             None => Some("Select an object to see its keys here".to_string()),
             Some(_) if self.row_markers(Row::Summary).is_empty() => {
-                Some("No keys yet: K keys the selection, R records changes".to_string())
+                Some(self.material_keys_hint().unwrap_or_else(|| {
+                    "No keys yet: K keys the selection, R records changes".to_string()
+                }))
             }
             Some(_) => None,
         };

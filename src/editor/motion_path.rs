@@ -64,6 +64,19 @@ pub fn path(scene: &Scene, id: NodeId, frames: &[f32]) -> Vec<Vec3> {
         .collect()
 }
 
+/// Whether a path drawn at these screen points goes anywhere: it spans
+/// at least [`TRAVEL_PX`] pixels.
+fn travels(pts: &[(f32, f32)]) -> bool {
+    let Some(&(x0, y0)) = pts.first() else {
+        return false;
+    };
+    pts.iter()
+        .any(|&(x, y)| (x - x0).abs() >= TRAVEL_PX || (y - y0).abs() >= TRAVEL_PX)
+}
+
+/// Smallest on-screen travel that gets a path drawn.
+const TRAVEL_PX: f32 = 4.0;
+
 impl Editor {
     /// Draws the selection's motion path when it (or an ancestor) is animated.
     pub(super) fn draw_motion_path(&mut self, p: &mut Painter) {
@@ -95,6 +108,12 @@ impl Editor {
         let keys = key_frames(&self.scene.animation, Some(id));
         let key_pts = path(&self.scene, id, &keys);
         let proj = self.projector();
+        let on_screen: Vec<(f32, f32)> = pts.iter().filter_map(|&q| proj.point(q)).collect();
+        if !travels(&on_screen) {
+            // Keys that only turn or scale it (the Spinner): a path of one
+            // point would sit on the object and hide it.
+            return;
+        }
         p.set_clip(Some(self.layout().viewport));
         for w in pts.windows(2) {
             if let Some((a, b)) = proj.segment(w[0], w[1]) {
@@ -146,6 +165,13 @@ mod tests {
         assert!((pts[0] - Vec3::new(0.0, 2.0, 0.0)).length() < 1e-5);
         assert!((pts[1] - Vec3::new(2.0, 2.0, 0.0)).length() < 1e-4);
         assert!((pts[2] - Vec3::new(4.0, 2.0, 0.0)).length() < 1e-5);
+    }
+
+    #[test]
+    fn a_path_that_stays_in_place_is_not_drawn() {
+        assert!(!travels(&[]));
+        assert!(!travels(&[(10.0, 10.0), (11.5, 12.0), (9.0, 13.9)]));
+        assert!(travels(&[(10.0, 10.0), (10.0, 14.0)]));
     }
 
     #[test]

@@ -58,6 +58,8 @@ pub enum Action {
     Key(super::keyprops::KeyAction),
     /// Clip buttons and menu items (`rig/clips.rs`).
     Clip(super::rig::clip_action::ClipAction),
+    /// Type the preview range's frames (F3; `route/timeline.rs`).
+    TypePreview,
     /// Material panel buttons (`material/`).
     Material(super::material::MatAction),
 }

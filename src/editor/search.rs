@@ -56,6 +56,7 @@ pub fn commands() -> Vec<MenuItem> {
         MenuItem::new("Grid on/off", "G", Action::Grid),
         MenuItem::new("Onion skin", "O", Action::Onion),
         MenuItem::new("Graph editor", "Shift+F6", Action::ToggleGraph),
+        MenuItem::new("Preview range: type its frames", "[ ]", Action::TypePreview),
         MenuItem::new(
             "Material panel",
             "M",

@@ -8,7 +8,7 @@ use super::fields::FieldId;
 use super::keyprops::KeyAction;
 use super::manip::Tool;
 use super::material::MatAction;
-use super::panel::{Action, WidgetKind};
+use super::panel::{Action, List, WidgetKind};
 
 /// Seconds the mouse rests before the tooltip shows.
 pub const DELAY_S: f64 = 0.5;
@@ -65,13 +65,23 @@ impl Hover {
     }
 }
 
-/// What a widget's tooltip says (`None`: no tooltip, e.g. list rows).
+/// What a widget's tooltip says (`None`: no tooltip, e.g. headers).
 pub fn text_for(kind: &WidgetKind) -> Option<String> {
     match kind {
         WidgetKind::Button { action, .. } | WidgetKind::Check { action, .. } => {
             action_text(action).map(str::to_string)
         }
         WidgetKind::Field(id) => Some(field_text(*id)),
+        WidgetKind::Row { list, .. } => Some(
+            match list {
+                List::Objects => "Click selects; drag onto a row parents it; right-click: menu",
+                List::Lights => "Click selects the light; right-click: rename, duplicate, delete",
+            }
+            .to_string(),
+        ),
+        // The key strip's tips (`strip_tips.rs`): labels are never hovered
+        // widgets, so a label here is a tip's text.
+        WidgetKind::Label { text, .. } => Some(text.clone()),
         _ => None,
     }
 }
@@ -116,6 +126,10 @@ fn field_text(id: FieldId) -> String {
         FieldId::Duration => "Scene length in frames (2*24 works)".into(),
         FieldId::Frame => "Current frame: type one (Left/Right step)".into(),
         FieldId::Name => "Object name: click to type".into(),
+        FieldId::Preview(_) => format!(
+            "{}: type a frame; playback loops over the range",
+            id.label()
+        ),
         FieldId::Material(m) => format!("{}: 0..1, drag or type; K keys it", m.label()),
         other => format!("{}: drag to change, click to type", other.label()),
     }

@@ -231,12 +231,8 @@ impl Editor {
         {
             let end = (c.0 + d.0 * 15.0, c.1 + d.1 * 15.0);
             p.line(c, end, color, 1.5);
-            p.text(
-                (end.0 + d.0 * 5.0 - 3.0) as i32,
-                (end.1 + d.1 * 5.0 - 8.0) as i32,
-                name,
-                color,
-            );
+            let (x, y) = tripod_label(end, d, vp);
+            p.text(x, y, name, color);
         }
     }
 
@@ -359,6 +355,21 @@ fn handle_scale(r_px: f32) -> f32 {
 }
 
 /// Screen directions (x right, y down; length ≤ 1) of the world axes
+/// Where an arm's letter goes: beyond the arm's end, except that a
+/// letter that would cross the viewport's bottom edge (an arm pointing
+/// down, as z does in the top view) sits beside the arm's end instead, so
+/// it is never cut off.
+fn tripod_label(end: (f32, f32), d: (f32, f32), vp: Rect) -> (i32, i32) {
+    let x = (end.0 + d.0 * 5.0 - 3.0) as i32;
+    let y = (end.1 + d.1 * 5.0 - 8.0) as i32;
+    // The font's letters end 12 rows below the text's top.
+    let lowest = vp.bottom() - 13;
+    match y > lowest {
+        true => (x.max((end.0 + 4.0) as i32), lowest),
+        false => (x, y),
+    }
+}
+
 /// x, y, z under the view matrix `view`: the corner tripod's arms.
 fn corner_axes(view: &glam::Mat4) -> [(f32, f32); 3] {
     [Vec3::X, Vec3::Y, Vec3::Z].map(|a| {
@@ -369,7 +380,22 @@ fn corner_axes(view: &glam::Mat4) -> [(f32, f32); 3] {
 
 #[cfg(test)]
 mod tests {
-    use super::{corner_axes, handle_scale, outline_ring, Ring, ARROW_PX};
+    use super::{corner_axes, handle_scale, outline_ring, tripod_label, Ring, ARROW_PX};
+    use crate::ui::Rect;
+
+    #[test]
+    fn tripod_letters_stay_inside_the_viewport() {
+        let vp = Rect::new(0, 20, 300, 200);
+        let c = (22.0, vp.bottom() as f32 - 22.0);
+        // Straight down (z in the top view): beside the arm, above the edge.
+        let end = (c.0, c.1 + 15.0);
+        let (x, y) = tripod_label(end, (0.0, 1.0), vp);
+        assert!(y + 12 < vp.bottom(), "{y}");
+        assert!(x as f32 > end.0, "beside the arm: {x}");
+        // Up or sideways: beyond the arm's end as before.
+        assert_eq!(tripod_label((c.0, c.1 - 15.0), (0.0, -1.0), vp), (19, 170));
+        assert_eq!(tripod_label((c.0 + 15.0, c.1), (1.0, 0.0), vp), (39, 190));
+    }
 
     #[test]
     fn the_outline_lies_outside_the_silhouette() {

@@ -171,6 +171,11 @@ fn an_animated_material_keeps_a_change_pending_until_k_and_record_mode_keys() {
     let mut ed = scene();
     let m = material_of(&mut ed, "Glow");
     let before = diffuse_track(&ed, m).expect("the ColorInterpolator's track");
+    // The strip has no rows for material tracks: its line says where they are.
+    let hint = ed
+        .material_keys_hint()
+        .expect("a hint for an animated material");
+    assert!(hint.starts_with("Material keys at 0 12 24"), "{hint}");
     assert!(before.iter().all(|(f, _)| *f != 54.0), "{before:?}");
     run(&mut ed, "key m\nclick-field Frame\ntype 54\nkey enter");
     run(

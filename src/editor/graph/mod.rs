@@ -106,6 +106,13 @@ enum Gesture {
     Pan {
         last: (f32, f32),
     },
+    /// Right button in the plot: a drag pans, a click asks for the keys'
+    /// context menu.
+    Context {
+        at: (f32, f32),
+        last: (f32, f32),
+        moved: bool,
+    },
     Scrub,
     /// Dragging the splitter: the graph's height from `h0` at `y0`.
     Split {
@@ -131,6 +138,9 @@ pub struct GraphEditor {
     framed: Option<NodeId>,
     /// Normalisation ranges frozen while a drag runs.
     frozen: Option<Vec<(Channel, (f32, f32))>>,
+    /// The channel of the key a context menu was opened on ("Select all
+    /// on channel").
+    menu_channel: Option<Channel>,
 }
 
 impl Default for GraphEditor {
@@ -145,6 +155,7 @@ impl Default for GraphEditor {
             gesture: None,
             framed: None,
             frozen: None,
+            menu_channel: None,
         }
     }
 }
@@ -386,9 +397,16 @@ impl GraphEditor {
         if self.gesture.is_some() {
             return Response::taken();
         }
-        if button == MouseButton::Middle || (button == MouseButton::Right && a.plot.contains(x, y))
-        {
+        if button == MouseButton::Middle {
             self.gesture = Some(Gesture::Pan { last: (x, y) });
+            return Response::taken();
+        }
+        if button == MouseButton::Right && a.plot.contains(x, y) {
+            self.gesture = Some(Gesture::Context {
+                at: (x, y),
+                last: (x, y),
+                moved: false,
+            });
             return Response::taken();
         }
         if button != MouseButton::Left {
@@ -490,13 +508,7 @@ impl GraphEditor {
             return Response::redraw();
         }
         // The name: select the channel's keys (Shift adds).
-        let keys = ctx
-            .anim
-            .track(ch.target())
-            .map(|t| t.keys.frames())
-            .unwrap_or_default()
-            .into_iter()
-            .map(|frame| CurveKey { ch, frame });
+        let keys = self.channel_keys(ch, ctx);
         let mut sel = if mods.shift {
             self.selected(ctx)
         } else {
@@ -519,6 +531,18 @@ impl GraphEditor {
             Gesture::Pan { last } => {
                 self.view.pan(a.plot, x - last.0, y - last.1);
                 self.gesture = Some(Gesture::Pan { last: (x, y) });
+                Response::redraw()
+            }
+            Gesture::Context { at, last, moved } => {
+                let moved = moved || dist(at, (x, y)) > 3.0;
+                if moved {
+                    self.view.pan(a.plot, x - last.0, y - last.1);
+                }
+                self.gesture = Some(Gesture::Context {
+                    at,
+                    last: (x, y),
+                    moved,
+                });
                 Response::redraw()
             }
             Gesture::Split { y0, h0 } => {
@@ -664,9 +688,53 @@ impl GraphEditor {
                 }
                 self.set_selection(sel)
             }
+            Some(Gesture::Context {
+                at, moved: false, ..
+            }) => self.context_click(at, ctx),
             Some(_) => Response::redraw(),
             None => Response::ignored(),
         }
+    }
+
+    /// A right click in the plot: the key under the mouse is selected
+    /// (unless it already is) and the editor is asked for the keys'
+    /// context menu.
+    fn context_click(&mut self, at: (f32, f32), ctx: &Ctx) -> Response {
+        let hit = self.key_at(ctx, at.0, at.1);
+        self.menu_channel = hit.map(|k| k.ch);
+        let mut r = match hit {
+            Some(k) if !self.selected(ctx).iter().any(|s| s.same(&k)) => {
+                self.set_selection(vec![k])
+            }
+            _ => Response::redraw(),
+        };
+        r.intents.push(Intent::ContextMenu(at));
+        r
+    }
+
+    /// The channel the context menu was opened on, if any.
+    pub fn menu_channel(&self) -> Option<Channel> {
+        self.menu_channel
+    }
+
+    /// "Select all on channel": every key of the menu's channel.
+    pub fn select_channel(&mut self, ctx: &Ctx) -> Response {
+        let Some(ch) = self.menu_channel else {
+            return Response::ignored();
+        };
+        let sel = self.channel_keys(ch, ctx).collect();
+        self.hidden.retain(|c| *c != ch);
+        self.set_selection(sel)
+    }
+
+    /// Every key of channel `ch`'s curve.
+    fn channel_keys(&self, ch: Channel, ctx: &Ctx) -> impl Iterator<Item = CurveKey> {
+        ctx.anim
+            .track(ch.target())
+            .map(|t| t.keys.frames())
+            .unwrap_or_default()
+            .into_iter()
+            .map(move |frame| CurveKey { ch, frame })
     }
 
     fn key(&mut self, key: Key, mods: Mods, ctx: &Ctx) -> Response {

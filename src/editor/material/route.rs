@@ -316,6 +316,30 @@ impl Editor {
         self.material_action(a);
     }
 
+    /// The key strip's line for a selection without keys of its own
+    /// whose material is animated (the strip's rows are the object's
+    /// tracks, so material keys would otherwise look absent).
+    pub fn material_keys_hint(&self) -> Option<String> {
+        let sh = shown(&self.scene, self.selection?)?;
+        let mut frames: Vec<f32> = self
+            .scene
+            .animation
+            .tracks_of(crate::anim::TargetRef::Material(sh.material))
+            .flat_map(|t| t.keys.frames())
+            .collect();
+        if frames.is_empty() {
+            return None;
+        }
+        frames.sort_by(f32::total_cmp);
+        frames.dedup();
+        let list: Vec<String> = frames.iter().take(8).map(|&f| format_number(f)).collect();
+        let more = if frames.len() > 8 { " …" } else { "" };
+        Some(format!(
+            "Material keys at {}{more} (M shows the material; K over a field keys it)",
+            list.join(" ")
+        ))
+    }
+
     /// The panel's buttons.
     pub(in crate::internals::editor) fn material_action(&mut self, a: MatAction) {
         match a {

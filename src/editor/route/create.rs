@@ -12,10 +12,19 @@ use crate::editor::Editor;
 use crate::input::Event;
 use crate::scene::{NodeId, Scene};
 
+/// The Add menu's title (how `add_menu_open` knows it).
+const ADD_TITLE: &str = "Add (Shift+A)";
+
 impl Editor {
     /// The open pop-up menu, if any.
     pub fn menu(&self) -> Option<&Menu> {
         self.menu.as_ref()
+    }
+
+    /// Whether the open menu is the Add menu (the toolbar's `Add` is lit
+    /// by it only, not by context menus or the search).
+    pub fn add_menu_open(&self) -> bool {
+        self.menu.as_ref().is_some_and(|m| m.title == ADD_TITLE)
     }
 
     /// Opens the Add menu with its top-left corner at (x, y).
@@ -24,7 +33,7 @@ impl Editor {
             .iter()
             .map(|&t| MenuItem::new(t.label(), "", Action::Add(t)))
             .collect();
-        self.menu = Some(Menu::new("Add (Shift+A)", items, (x, y)));
+        self.menu = Some(Menu::new(ADD_TITLE, items, (x, y)));
     }
 
     /// Right-click in the viewport: add, duplicate, delete, key, frame,

@@ -119,6 +119,7 @@ impl Editor {
                     self.frame = f;
                 }
                 Intent::Status(s, error) => self.set_status(&s, error),
+                Intent::ContextMenu(at) => self.open_graph_menu(at),
             }
         }
         r.consumed.then_some(r.redraw)

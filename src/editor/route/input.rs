@@ -89,7 +89,10 @@ impl Editor {
     /// drags, menus and dialogs); `true` when a shown tooltip went away.
     fn hover_move(&mut self, x: f32, y: f32) -> bool {
         let over = match (&self.drag, &self.menu, &self.dialog, &self.browser) {
-            (Drag::None, None, None, None) => self.widget_at(x, y).map(|w| w.kind),
+            (Drag::None, None, None, None) => self
+                .widget_at(x, y)
+                .map(|w| w.kind)
+                .or_else(|| self.strip_tip(x, y)),
             _ => None,
         };
         self.hover.moved(over)
@@ -118,6 +121,7 @@ impl Editor {
                 start_frame: self.frame,
             }),
         };
+        self.say_playback();
     }
 
     pub(in crate::internals::editor) fn stop_playback(&mut self) {
@@ -517,6 +521,9 @@ impl Editor {
         if let FieldId::Material(_) = id {
             return self.material_base().map(|b| Base::Material(Box::new(b)));
         }
+        if let FieldId::Preview(_) = id {
+            return Some(Base::Preview);
+        }
         let sel = self.selection?;
         // Fields edit what is shown: animated values at the current frame.
         Some(Base::Node(sel, Box::new(self.posed_node(sel))))
@@ -534,6 +541,7 @@ impl Editor {
             Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
             Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
             Base::Clip => Some(FieldValue::Text(self.clip_name())),
+            Base::Preview => self.preview_field(id).map(FieldValue::Number),
             Base::Material(b) => match id {
                 FieldId::Material(f) => Some(FieldValue::Number(f.read(&b.start))),
                 _ => None,
@@ -550,9 +558,12 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_) | Base::Keys(..) | Base::Morph(_) | Base::Clip | Base::Material(_) => {
-                None
-            }
+            Base::Frame(_)
+            | Base::Keys(..)
+            | Base::Morph(_)
+            | Base::Clip
+            | Base::Material(_)
+            | Base::Preview => None,
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -603,7 +614,7 @@ impl Editor {
     pub(in crate::internals::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
         let label = format!("Drag {id:?}");
         match base {
-            Base::Frame(_) | Base::Clip => {}
+            Base::Frame(_) | Base::Clip | Base::Preview => {}
             Base::Material(b) => {
                 if let FieldId::Material(f) = id {
                     self.finish_material_drag(f, &b);
@@ -668,6 +679,10 @@ impl Editor {
         }
         if let (FieldId::ClipName, FieldValue::Text(t)) = (edit.field, &value) {
             self.rename_clip(t);
+            return;
+        }
+        if let (FieldId::Preview(i), FieldValue::Number(x)) = (edit.field, &value) {
+            self.set_preview_field(i, *x);
             return;
         }
         if let (FieldId::Material(f), FieldValue::Number(x)) = (edit.field, &value) {
@@ -804,7 +819,7 @@ impl Editor {
             match base {
                 Base::Frame(f) => self.frame = f,
                 Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
-                Base::Clip => {}
+                Base::Clip | Base::Preview => {}
                 Base::Material(_) => self.cancel_material_drag(),
                 Base::Morph(_) => {
                     self.rig.morph_pending = None;
@@ -920,6 +935,7 @@ impl Editor {
         match a {
             Action::Clip(c) => self.clip_action(c),
             Action::Material(m) => self.material_action(m),
+            Action::TypePreview => self.type_preview_range(),
             Action::New => self.ask_unsaved(After::New),
             Action::Open => self.ask_unsaved(After::Open),
             Action::Import => self.browse(Purpose::Import, None),

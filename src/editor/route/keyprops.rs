@@ -133,27 +133,26 @@ impl Editor {
         match a {
             KeyAction::ShowNode => self.keys.node_panel = true,
             KeyAction::ShowKeys => self.keys.node_panel = false,
-            KeyAction::Ease(on) => {
-                let e = if on { 1.0 } else { 0.0 };
+            KeyAction::Ease(e) => {
                 let mut anim = self.scene.animation.clone();
                 for k in &keys {
                     if let Some(t) = anim.track_mut(k.target()) {
                         if let Some(idx) = t.key_index_at(k.frame) {
                             if let Some(mut p) = t.key_params(idx) {
-                                (p.ease_in, p.ease_out) = (e, e);
+                                e.apply(&mut p);
                                 // 0 and 1 are in range: cannot fail.
                                 let _ = t.set_key_params(idx, p);
                             }
                         }
                     }
                 }
-                let label = if on { "Ease in and out" } else { "No ease" };
-                self.apply_key_edit(label, anim, Vec::new());
+                self.apply_key_edit(e.label(), anim, Vec::new());
             }
             KeyAction::Delete => self.delete_selected_keys(),
             KeyAction::Copy => self.copy_selected_keys(),
             KeyAction::Paste => self.paste_keys(),
             KeyAction::SelectRow(row) => self.select_row_keys(row),
+            KeyAction::SelectChannel => self.graph_select_channel(),
             KeyAction::Interp(i) => {
                 let mut anim = self.scene.animation.clone();
                 for k in &keys {

@@ -505,7 +505,7 @@ impl Editor {
     /// (interpolation, ease, delete, copy/paste, select the row).
     pub(in crate::internals::editor) fn open_strip_menu(&mut self, x: f32, y: f32) {
         use crate::editor::keyprops::KeyAction as K;
-        use crate::editor::menu::{Menu, MenuItem};
+        use crate::editor::menu::Menu;
         use crate::editor::panel::Action;
         let row = self
             .key_strip_layout()
@@ -518,45 +518,21 @@ impl Editor {
                 self.set_key_selection(ks);
             }
         }
-        let has = !self.selected_keys().is_empty();
-        let mut items = Vec::new();
-        if has {
-            let rot = self
-                .selected_keys()
+        let keys = self.selected_keys();
+        let over = crate::editor::keymenu::Over {
+            keys: !keys.is_empty(),
+            rotation: keys
                 .first()
-                .is_some_and(|k| k.property.kind() == crate::anim::ValueKind::Rotation);
-            for i in [
-                crate::anim::Interp::Step,
-                crate::anim::Interp::Linear,
-                crate::anim::Interp::Tcb,
-            ] {
-                let label = format!("Interpolation: {}", i.name(rot));
-                items.push(MenuItem::new(&label, "", Action::Key(K::Interp(i))));
-            }
-            items.push(MenuItem::new(
-                "Ease in and out",
-                "",
-                Action::Key(K::Ease(true)),
-            ));
-            items.push(MenuItem::new("No ease", "", Action::Key(K::Ease(false))));
-            items.push(MenuItem::new(
-                "Delete keys",
-                "Delete",
-                Action::Key(K::Delete),
-            ));
-            items.push(MenuItem::new("Copy keys", "Ctrl+C", Action::Key(K::Copy)));
-        }
-        if !self.keys.clipboard.keys.is_empty() {
-            let label = format!("Paste at frame {}", self.frame);
-            items.push(MenuItem::new(&label, "Ctrl+V", Action::Key(K::Paste)));
-        }
-        if let Some(r @ (Row::Summary | Row::Track(_))) = row {
-            items.push(MenuItem::new(
-                "Select all on row",
-                "",
-                Action::Key(K::SelectRow(r)),
-            ));
-        }
+                .is_some_and(|k| k.property.kind() == crate::anim::ValueKind::Rotation),
+            paste_at: (!self.keys.clipboard.keys.is_empty()).then_some(self.frame),
+            select_all: match row {
+                Some(r @ (Row::Summary | Row::Track(_))) => {
+                    Some(("Select all on row", Action::Key(K::SelectRow(r))))
+                }
+                _ => None,
+            },
+        };
+        let items = crate::editor::keymenu::items(&over);
         if items.is_empty() {
             return;
         }

@@ -99,7 +99,7 @@ impl Editor {
             ("Open", Action::Open, false),
             ("Imp", Action::Import, false),
             ("Save", Action::Save, false),
-            ("Add", Action::AddMenu, self.menu.is_some()),
+            ("Add", Action::AddMenu, self.add_menu_open()),
             (
                 "Mov",
                 Action::Tool(Tool::Translate),
@@ -385,6 +385,7 @@ impl Editor {
         let tw = text::width(&total);
         out.push(label(Rect::new(x, y, tw, h), &total, true));
         x += tw + 8;
+        x = self.preview_widgets(x, y, h, out);
         let mode = match self.mode {
             Mode::Select => "Select",
             Mode::View => "View",

@@ -4,8 +4,12 @@
 //! `[` / `]` set the preview range, Alt+P clears it; and the note when a
 //! shorter scene leaves keys after its end.
 
+use crate::editor::fields::FieldId;
+use crate::editor::panel::{label, Widget, WidgetKind};
 use crate::editor::timeline::{full_span, play_frame};
 use crate::editor::Editor;
+use crate::ui::text::{self, CHAR_W};
+use crate::ui::Rect;
 
 impl Editor {
     /// The last key frame of every track in the scene.
@@ -45,6 +49,106 @@ impl Editor {
                     false,
                 );
             }
+        }
+    }
+
+    /// Play or stop: the status line says which (and over which frames),
+    /// so an older message such as the preview range's hint does not
+    /// stay after playback stops.
+    pub(in crate::internals::editor) fn say_playback(&mut self) {
+        let msg = match (self.playback.is_some(), self.timeline.preview) {
+            (true, Some((a, b))) => {
+                format!("Playing frames {a} to {b} (preview range; Space stops)")
+            }
+            (true, None) => "Playing (Space stops)".to_string(),
+            (false, _) => format!("Stopped at frame {}", self.frame.round()),
+        };
+        self.set_status(&msg, false);
+    }
+
+    /// A preview range field's frame (`None` without a range).
+    pub(in crate::internals::editor) fn preview_field(&self, id: FieldId) -> Option<f32> {
+        let (a, b) = self.timeline.preview?;
+        match id {
+            FieldId::Preview(0) => Some(a),
+            FieldId::Preview(_) => Some(b),
+            _ => None,
+        }
+    }
+
+    /// A typed preview start (`end` 0) or end (1): the other end is kept;
+    /// a start not before the end (or the reverse) is refused, a frame
+    /// outside the scene is clamped, both said in the status line.
+    pub(in crate::internals::editor) fn set_preview_field(&mut self, end: u8, x: f32) {
+        let dur = self.scene.settings.duration;
+        let (a, b) = self.timeline.preview.unwrap_or((0.0, dur));
+        let f = x.round().clamp(0.0, dur);
+        let name = FieldId::Preview(end).label();
+        let ok = match end {
+            0 => f < b,
+            _ => f > a,
+        };
+        if !ok {
+            let other = if end == 0 { b } else { a };
+            let side = if end == 0 { "before" } else { "after" };
+            let msg = format!("{name} {x} must be {side} the other end ({other})");
+            self.set_status(&msg, true);
+            return;
+        }
+        let r = if end == 0 { (f, b) } else { (a, f) };
+        self.set_preview_range(Some(r));
+        if let Some(n) = crate::editor::fields::clamp_note(&name, x, f) {
+            self.set_status(&format!("{n} (the scene has frames 0 to {dur})"), false);
+        }
+    }
+
+    /// The controls bar's `Preview [a]-[b]` fields while a range is set;
+    /// returns the next free x.
+    pub(in crate::internals::editor) fn preview_widgets(
+        &self,
+        x: i32,
+        y: i32,
+        h: i32,
+        out: &mut Vec<Widget>,
+    ) -> i32 {
+        if self.timeline.preview.is_none() {
+            return x;
+        }
+        let lw = text::width("Preview");
+        let fw = 5 * CHAR_W;
+        if x + lw + 2 * fw + 24 > self.layout().controls.right() - 60 {
+            return x;
+        }
+        out.push(label(Rect::new(x, y, lw, h), "Preview", true));
+        let mut x = x + lw + 4;
+        for i in 0..2u8 {
+            let r = Rect::new(x, y, fw, h);
+            out.push(Widget {
+                rect: r,
+                kind: WidgetKind::Field(FieldId::Preview(i)),
+            });
+            x += fw + 2;
+            if i == 0 {
+                out.push(label(Rect::new(x, y, CHAR_W, h), "-", true));
+                x += CHAR_W + 2;
+            }
+        }
+        x + 6
+    }
+
+    /// F3's "Preview range": sets one over the whole scene when there is
+    /// none and starts typing its first frame.
+    pub(in crate::internals::editor) fn type_preview_range(&mut self) {
+        if self.timeline.preview.is_none() {
+            self.set_preview_range(Some((0.0, self.scene.settings.duration)));
+        }
+        if let Some(a) = self.preview_field(FieldId::Preview(0)) {
+            self.edit = Some(crate::editor::TextEdit {
+                field: FieldId::Preview(0),
+                text: crate::editor::fields::format_number(a),
+                fresh: true,
+            });
+            self.set_status("Type the preview's first frame, Enter sets it", false);
         }
     }
 
