@@ -6,9 +6,11 @@
 
 use super::browser::Browser;
 use super::panel::{button, label, w, Action, Widget, WidgetKind};
+use super::widget_paint;
 use crate::input::{Event, Key, MouseButton};
 use crate::ui::layout::ROW;
-use crate::ui::{text, Rect};
+use crate::ui::text::{self, CHAR_W};
+use crate::ui::{theme, widgets, Painter, Rect};
 use std::path::PathBuf;
 
 /// The browser's answer to one event.
@@ -108,6 +110,47 @@ impl Browser {
     pub fn up(&mut self) {
         if let Some(p) = self.dir.parent().map(|p| p.to_path_buf()) {
             self.enter(&p);
+        }
+    }
+
+    /// Draws the browser in its box `r` over the dimmed window `win`;
+    /// `mouse` lights the row or button under it (`None` during a drag).
+    pub fn draw(&self, p: &mut Painter, r: Rect, win: Rect, mouse: Option<(f32, f32)>) {
+        p.fill_rect_alpha(win, 0x000000, 110);
+        p.fill_rect(r, theme::DIALOG);
+        p.stroke_rect(r, theme::BORDER);
+        for w in self.widgets(r) {
+            match &w.kind {
+                WidgetKind::PathInput => {
+                    widgets::field(p, w.rect, &self.input, false, true);
+                }
+                WidgetKind::Entry(i) => {
+                    let e = &self.entries[*i];
+                    let label = if e.is_dir {
+                        format!("{}/", e.name)
+                    } else {
+                        e.name.clone()
+                    };
+                    let selected = self.highlight == Some(*i);
+                    let hot = mouse.is_some_and(|(x, y)| w.rect.contains(x, y));
+                    widgets::list_row(p, w.rect, &label, 0, selected, hot);
+                    if e.is_dir {
+                        let x = w.rect.right() - 4 * CHAR_W;
+                        p.text(x, w.rect.y, "dir", theme::TEXT_DIM);
+                    }
+                }
+                _ => {
+                    widget_paint::plain(p, &w, mouse);
+                }
+            }
+        }
+        if self.entries.is_empty() {
+            p.text(
+                r.x + 8,
+                r.y + 3 * ROW + 4,
+                "(empty folder)",
+                theme::TEXT_DIM,
+            );
         }
     }
 
