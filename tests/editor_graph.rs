@@ -356,7 +356,7 @@ fn editor_code() -> std::collections::BTreeMap<Vec<String>, String> {
 /// the shell and `animed recover` call), `browser.rs` (lists folders).
 #[test]
 fn only_the_shell_touches_files() {
-    let allowed = ["shell", "script", "screen", "recovery", "views", "browser"];
+    let allowed = ["shell", "script", "screen", "recovery", "views"];
     let io = [
         "std::fs",
         "fs::",

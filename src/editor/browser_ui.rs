@@ -211,6 +211,7 @@ impl Browser {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::editor::browser::tests::settle;
     use crate::editor::browser::Purpose;
     use crate::input::Mods;
 
@@ -232,7 +233,7 @@ mod tests {
             .expect("widget shown");
         let (x, y) = (at.rect.x as f32 + 4.0, at.rect.y as f32 + 4.0);
         let button = MouseButton::Left;
-        b.handle(
+        let reply = b.handle(
             &Event::MouseDown {
                 button,
                 x,
@@ -240,7 +241,9 @@ mod tests {
                 mods: Mods::NONE,
             },
             r,
-        )
+        );
+        settle(b);
+        reply
     }
 
     /// Driven by events alone, without an editor: folders are entered,
@@ -254,6 +257,7 @@ mod tests {
         std::fs::write(d.join("models/walk.wrl"), b"x").unwrap();
         let r = Rect::new(0, 0, 400, 300);
         let mut b = Browser::new(Purpose::Open, &d);
+        settle(&mut b);
         let models = b.entries.iter().position(|e| e.name == "models").unwrap();
         assert_eq!(
             click(&mut b, &WidgetKind::Entry(models), r),
@@ -279,6 +283,7 @@ mod tests {
         b.handle(&Event::Text("nothing.wrl".into()), r);
         assert!(b.input.ends_with("nothing.wrl"), "{}", b.input);
         assert_eq!(press(&mut b, Key::Enter, r), Reply::Taken(true));
+        assert_eq!(settle(&mut b), None);
         assert!(b.message.as_deref().is_some_and(|m| m.contains("no file")));
         assert_eq!(press(&mut b, Key::Escape, r), Reply::Cancel);
         assert_eq!(b.handle(&Event::Tick { time: 1.0 }, r), Reply::Ignored);

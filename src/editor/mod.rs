@@ -488,6 +488,13 @@ impl Editor {
     /// The file work asked for since the last call, oldest first (the
     /// shell performs it and answers through the `*_done` methods).
     pub fn take_requests(&mut self) -> Vec<request::Request> {
+        if let Some(b) = &mut self.browser {
+            // What the browser waits to have read.
+            if let Some(ask) = b.asks.take() {
+                let purpose = b.purpose;
+                self.requests.push(request::Request::Look { ask, purpose });
+            }
+        }
         std::mem::take(&mut self.requests)
     }
 
