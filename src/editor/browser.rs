@@ -343,7 +343,7 @@ pub fn restart_at_root(t: &str) -> &str {
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+pub(crate) mod tests {
     use super::*;
 
     /// Answers what the browser asked, as the shell does; the path to
