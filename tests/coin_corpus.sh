@@ -86,7 +86,8 @@ fi
 # by at most 12% (ImageMagick fuzz), "bg" in the note.
 one() {
   local rel=$1 name tmp a b hex inter union iou note="" own_bg=0 bgargs
-  grep -q 'Background' "$SHARED/corpus/$rel" 2>/dev/null && own_bg=1
+  # zgrep: gzipped files (.wrl.gz) hold Backgrounds too.
+  zgrep -q 'Background' "$SHARED/corpus/$rel" 2>/dev/null && own_bg=1
   if [ $own_bg = 1 ]; then bgargs=(); else bgargs=(--bg "$BG"); fi
   name=$(tr '/ ' '__' <<<"$rel")
   tmp=$OUT/tmp/$name
