@@ -114,7 +114,10 @@ impl XfBox {
 
     /// `SbXfBox3f::project`: the world box around the transformed corners.
     fn world(&self) -> (Vec3, Vec3) {
-        let mut pts = self.corners().map(|c| self.m.transform_point3(c)).into_iter();
+        let mut pts = self
+            .corners()
+            .map(|c| self.m.transform_point3(c))
+            .into_iter();
         let first = pts.next().expect("8 corners");
         pts.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p)))
     }
@@ -216,8 +219,13 @@ mod tests {
         assert!((lo - union.0).length() < 1e-5 && (hi - union.1).length() < 1e-5);
         // Each shape's own world box is smaller.
         let shapes = super::super::view::shape_bounds(&s, &pose);
-        let (plo, phi) = shapes.iter().fold((hi, lo), |(a, b), s| (a.min(s.1), b.max(s.2)));
-        assert!(hi.y - lo.y > phi.y - plo.y + 0.1, "{lo} {hi} vs {plo} {phi}");
+        let (plo, phi) = shapes
+            .iter()
+            .fold((hi, lo), |(a, b), s| (a.min(s.1), b.max(s.2)));
+        assert!(
+            hi.y - lo.y > phi.y - plo.y + 0.1,
+            "{lo} {hi} vs {plo} {phi}"
+        );
     }
 
     /// Different matrices: the smaller of the two candidate boxes is kept.
