@@ -17,6 +17,7 @@
 mod background;
 pub mod bench_scenes;
 mod clip;
+mod coin_bounds;
 mod fragment;
 mod frame;
 mod geometry;
