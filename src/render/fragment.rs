@@ -58,48 +58,45 @@ pub struct Shaded<'a> {
     pub ids: &'a mut [u32],
 }
 
-/// Shades the visible samples of a `w`×`h` tile with `samples` samples per
-/// pixel; samples with no triangle get `background` and id 0.
-pub fn shade_visible(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    size: (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
+/// What the shading pass of a tile works with besides its buffers.
+#[derive(Clone, Copy)]
+pub struct Pass<'a> {
+    pub p: &'a Prepared,
+    pub eye: Vec3,
+    /// The colour of samples no triangle covers.
+    pub background: Vec3,
+    /// Tile width and height in pixels, samples per pixel.
+    pub size: (usize, usize, usize),
+}
+
+/// Shades the visible samples of a tile; samples with no triangle get the
+/// background and id 0.
+pub fn shade_visible(pass: &Pass, vis: &Visible, out: &mut Shaded) {
     if vis.textured {
-        shade_visible_isa::<true>(p, eye, background, size, vis, out);
+        shade_visible_isa::<true>(pass, vis, out);
     } else {
-        shade_visible_isa::<false>(p, eye, background, size, vis, out);
+        shade_visible_isa::<false>(pass, vis, out);
     }
 }
 
 /// The shading loop (with or without the texture steps, `TEX`) on the
 /// widest lanes the CPU has.
 #[inline(always)]
-fn shade_visible_isa<const TEX: bool>(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    size: (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
+fn shade_visible_isa<const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx512() {
         // SAFETY: `simd::avx512()` checked that the CPU has AVX-512F/VL
         // (and so AVX).
-        unsafe { shade_visible_avx512::<TEX>(p, eye, background, size, vis, out) };
+        unsafe { shade_visible_avx512::<TEX>(pass, vis, out) };
         return;
     }
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { shade_visible_avx::<TEX>(p, eye, background, size, vis, out) };
+        unsafe { shade_visible_avx::<TEX>(pass, vis, out) };
         return;
     }
-    shade_visible_in::<Sse8, TEX>(p, eye, background, size, vis, out);
+    shade_visible_in::<Sse8, TEX>(pass, vis, out);
 }
 
 /// `shade_visible_in` on AVX lanes compiled with the target features
@@ -110,15 +107,8 @@ macro_rules! avx_entry {
         $(#[$doc])*
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = $features)]
-        unsafe fn $name<const TEX: bool>(
-            p: &Prepared,
-            eye: Vec3,
-            background: Vec3,
-            size: (usize, usize, usize),
-            vis: &Visible,
-            out: &mut Shaded,
-        ) {
-            shade_visible_in::<simd::Avx8, TEX>(p, eye, background, size, vis, out);
+        unsafe fn $name<const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
+            shade_visible_in::<simd::Avx8, TEX>(pass, vis, out);
         }
     };
 }
@@ -163,14 +153,13 @@ pub fn store_masked<V: V8>(dst: &mut [f32; 8], v: V, mask: u32) {
 }
 
 #[inline(always)]
-fn shade_visible_in<V: V8, const TEX: bool>(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    (w, h, ns): (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
+fn shade_visible_in<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
+    let Pass {
+        p,
+        eye,
+        background,
+        size: (w, h, ns),
+    } = *pass;
     let bg = [
         V::splat(background.x),
         V::splat(background.y),

@@ -6,7 +6,7 @@
 //! picture stays the same.
 
 use super::clip::ATTRS;
-use super::fragment::{self, store_masked, Shaded, Visible, NONE};
+use super::fragment::{self, store_masked, Pass, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, POINT_SIZE, SUBPIXEL};
 use super::shade::shade;
 use super::simd::{self, Lanes, Sse8, V8};
@@ -464,11 +464,14 @@ pub fn shade_tile(
         b2,
         ..
     } = scratch;
-    fragment::shade_visible(
+    let pass = Pass {
         p,
         eye,
         background,
-        (tw, th, ns),
+        size: (tw, th, ns),
+    };
+    fragment::shade_visible(
+        &pass,
         &Visible {
             winner,
             b1,
