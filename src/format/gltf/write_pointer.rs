@@ -183,9 +183,7 @@ fn material<'a>(
         Value::Vec3(c) => *c,
         _ => glam::Vec3::ZERO,
     };
-    let (path, width, value): (&str, usize, Box<ValueAt>) = match ch
-        .property
-    {
+    let (path, width, value): (&str, usize, Box<ValueAt>) = match ch.property {
         Property::Diffuse if unlit => return Err("an unlit material shows its emissive colour"),
         Property::Diffuse => (
             "pbrMetallicRoughness/baseColorFactor",
