@@ -28,6 +28,8 @@ mod raster;
 mod shade;
 mod simd;
 pub mod stages;
+mod texel_block;
+mod texel_fetch;
 mod texture;
 mod texture_lanes;
 mod view;

@@ -17,7 +17,8 @@
 //! `MAXPS` disagree).
 
 use super::log2_lanes::log2f8;
-use super::simd::{Lanes, V8};
+use super::simd::V8;
+use super::texel_block::{finite, wrap2};
 use super::texture::Sampler;
 use crate::scene::{MipLevel, TextureModel, Wrap};
 use glam::{Vec2, Vec4};
@@ -57,7 +58,11 @@ impl Sampler {
         let rho2 = lx.max(ly);
         let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
         let safe = V::select(in_range, rho2, V::splat(2.0));
-        let lods = to_arr((V::splat(0.5) * log2f8(safe)).keep(in_range));
+        let lod = (V::splat(0.5) * log2f8(safe)).keep(in_range);
+        if let Some(out) = self.texel8_one_level(lod, uv.u, uv.v) {
+            return out;
+        }
+        let lods = to_arr(lod);
         let levels = self.image().levels();
         let last = levels.len() - 1;
         // Per lane: the two levels and the blend fraction (`Sampler::sample`).
@@ -237,43 +242,6 @@ fn to_arr<V: V8>(v: V) -> [f32; 8] {
     let mut a = [0.0; 8];
     v.store(&mut a);
     a
-}
-
-/// A mask of the finite lanes.
-#[inline(always)]
-fn finite<V: V8>(x: V) -> V {
-    Lanes::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
-}
-
-/// `texture::wrap` of the texel indices `i` and `i + 1` for lanes of whole
-/// numbers in −2..=n (`n` per lane, the level's size): repeat is
-/// `rem_euclid` (by one period's addition or subtraction, see
-/// [`repeat_once`]), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
-/// here (see `Sampler::lanes_cover`).
-#[inline(always)]
-fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
-    let one = V::splat(1.0);
-    let j = i + one;
-    match mode {
-        Wrap::Clamp => {
-            let (lo, hi) = (V::splat(0.0), n - one);
-            (i.max(lo).min(hi), j.max(lo).min(hi))
-        }
-        // Repeat: i lies in −2..=n (the clamp before), j = i + 1, so one
-        // period up or down wraps them (small whole numbers: exact, the
-        // same as `rem_euclid`, with no division).
-        _ => (repeat_once(i, n), repeat_once(j, n)),
-    }
-}
-
-/// `i` wrapped into 0..n for whole-number lanes in −2..=n + 1: one period
-/// up or down, then a clamp that only acts for n = 1 (where two periods
-/// may be needed and the answer is 0).
-#[inline(always)]
-fn repeat_once<V: V8>(i: V, n: V) -> V {
-    let zero = V::splat(0.0);
-    let once = i + n.keep(zero.gt(i)) - n.keep(n.le(i));
-    once.max(zero).min(n - V::splat(1.0))
 }
 
 #[cfg(test)]
