@@ -64,7 +64,7 @@ impl Sampler {
     /// non-finite coordinates read as 0, repeating ones are reduced to one
     /// period.
     #[inline(always)]
-    fn reduce8<V: V8>(&self, s: V, t: V) -> (V, V) {
+    pub(super) fn reduce8<V: V8>(&self, s: V, t: V) -> (V, V) {
         let s = s.keep(finite(s));
         let t = t.keep(finite(t));
         let s = if self.wrap_s() == Wrap::Repeat {
@@ -84,48 +84,84 @@ impl Sampler {
     /// coordinates (see [`Sampler::reduce8`]), as R, G, B, A in 0..1.
     #[inline(always)]
     fn bilinear_level8<V: V8>(&self, level: &MipLevel, s: V, t: V) -> [V; 4] {
-        let one = V::splat(1.0);
-        let half = V::splat(0.5);
         let (w, h) = (
             V::splat(level.width() as f32),
             V::splat(level.height() as f32),
         );
-        let x = s * w - half;
-        let y = (one - t) * h - half;
+        let f = self.footprint8(s, t, w, h);
+        // Texel addresses: whole numbers below 2²⁴ (the caller checked the
+        // level's size), so every product and sum here is exact.
+        let (ra, rb) = (f.ya * w, f.yb * w);
+        let idx = [
+            (ra + f.xa).trunc_i32(),
+            (ra + f.xb).trunc_i32(),
+            (rb + f.xa).trunc_i32(),
+            (rb + f.xb).trunc_i32(),
+        ];
+        filter(&fetch4(level.pixels(), &idx), f.fx, f.fy)
+    }
+}
+
+/// Where a bilinear lookup reads in a level: the wrapped texel columns
+/// `xa`, `xb` and rows `ya`, `yb` (whole numbers) and the blend fractions.
+pub(super) struct Footprint<V> {
+    pub xa: V,
+    pub xb: V,
+    pub ya: V,
+    pub yb: V,
+    pub fx: V,
+    pub fy: V,
+}
+
+impl Sampler {
+    /// The [`Footprint`] of reduced coordinates `s`, `t` (see
+    /// [`Sampler::reduce8`]) in a level of `w`×`h` texels (per lane).
+    #[inline(always)]
+    pub(super) fn footprint8<V: V8>(&self, s: V, t: V, w: V, h: V) -> Footprint<V> {
+        let x = s * w - V::splat(0.5);
+        // Rows are stored top first; t = 0 is the bottom row.
+        let y = (V::splat(1.0) - t) * h - V::splat(0.5);
         let (x0, y0) = (x.floor(), y.floor());
         let (fx, fy) = (x - x0, y - y0);
+        // `clamp(-2, w)` as in the scalar path (x0 is finite here), then the
+        // two wrapped indices per axis on lanes (small whole numbers, exact).
         let x0 = x0.max(V::splat(-2.0)).min(w);
         let y0 = y0.max(V::splat(-2.0)).min(h);
         let (xa, xb) = wrap2(x0, w, self.wrap_s());
         let (ya, yb) = wrap2(y0, h, self.wrap_t());
-        // Texel addresses: whole numbers below 2²⁴ (the caller checked the
-        // level's size), so every product and sum here is exact.
-        let (ra, rb) = (ya * w, yb * w);
-        let idx = [
-            (ra + xa).trunc_i32(),
-            (ra + xb).trunc_i32(),
-            (rb + xa).trunc_i32(),
-            (rb + xb).trunc_i32(),
-        ];
-        let corner = fetch4(level.pixels(), &idx);
-        let c00 = V::unpack_rgba8(&corner[0]);
-        let c10 = V::unpack_rgba8(&corner[1]);
-        let c01 = V::unpack_rgba8(&corner[2]);
-        let c11 = V::unpack_rgba8(&corner[3]);
-        let scale = V::splat(1.0 / 255.0);
-        let mut out = c00;
-        for c in 0..4 {
-            let top = c00[c] + (c10[c] - c00[c]) * fx;
-            let bottom = c01[c] + (c11[c] - c01[c]) * fx;
-            out[c] = (top + (bottom - top) * fy) * scale;
+        Footprint {
+            xa,
+            xb,
+            ya,
+            yb,
+            fx,
+            fy,
         }
-        out
     }
+}
+
+/// The bilinear blend of the four corners' RGBA8 words (top left, top
+/// right, bottom left, bottom right) by the fractions `fx`, `fy`, as R, G,
+/// B, A in 0..1: `Sampler::bilinear`'s arithmetic on lanes.
+#[inline(always)]
+pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V) -> [V; 4] {
+    let c00 = V::unpack_rgba8(&corner[0]);
+    let c10 = V::unpack_rgba8(&corner[1]);
+    let c01 = V::unpack_rgba8(&corner[2]);
+    let c11 = V::unpack_rgba8(&corner[3]);
+    let scale = V::splat(1.0 / 255.0);
+    let mut out = c00;
+    for c in 0..4 {
+        let top = c00[c] + (c10[c] - c00[c]) * fx;
+        let bottom = c01[c] + (c11[c] - c01[c]) * fx;
+        out[c] = (top + (bottom - top) * fy) * scale;
+    }
+    out
 }
 
 /// A mask of the finite lanes.
 #[inline(always)]
-pub(super) fn finite<V: V8>(x: V) -> V {
+fn finite<V: V8>(x: V) -> V {
     Lanes::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
 }
 
@@ -135,7 +171,7 @@ pub(super) fn finite<V: V8>(x: V) -> V {
 /// [`repeat_once`]), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
 /// here (see `Sampler::lanes_cover`).
 #[inline(always)]
-pub(super) fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
+fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
     let one = V::splat(1.0);
     let j = i + one;
     match mode {
@@ -164,18 +200,9 @@ fn repeat_once<V: V8>(i: V, n: V) -> V {
 mod tests {
     use super::*;
     use crate::render::simd::Sse8;
-    use crate::render::texture_lanes::{lane, UvIn};
-    use crate::scene::{Image, ImageId, ImageSource, Texture};
+    use crate::render::texture_lanes::tests::{assert_lanes_match, image};
+    use crate::scene::{ImageId, Texture};
     use glam::Vec2;
-
-    fn image(w: u32, h: u32) -> Image {
-        let px = (0..h).flat_map(|y| (0..w).map(move |x| (x, y)));
-        let f = |(x, y): (u32, u32)| {
-            let v = (x * 53 + y * 29) as u8;
-            [v, v.wrapping_mul(5), 255 - v, (y * 11) as u8]
-        };
-        Image::new("t", ImageSource::Inline, w, h, 4, px.map(f).collect()).unwrap()
-    }
 
     /// Blocks whose lanes share a level pair take the one-level path, and
     /// every lane gets `texel`'s exact bits: magnified (no blending),
@@ -191,7 +218,7 @@ mod tests {
         };
         let mut taken = [0usize; 3];
         for (w, h) in [(64, 32), (50, 30), (1, 7)] {
-            let img = image(w, h);
+            let img = image(w, h, [53, 29, 11]);
             for wrap in [
                 (Wrap::Repeat, Wrap::Repeat),
                 (Wrap::Clamp, Wrap::Repeat),
@@ -213,37 +240,19 @@ mod tests {
                         lanes[2][k] = scale * (1.0 + 0.01 * rnd());
                         lanes[5][k] = scale * 0.5;
                     }
-                    let l = |i: usize| Sse8::load(&lanes[i]);
-                    let uv = UvIn {
-                        u: l(0),
-                        v: l(1),
-                        du_dx: l(2),
-                        dv_dx: l(3),
-                        du_dy: l(4),
-                        dv_dy: l(5),
-                    };
-                    let got = s.texel8(&uv);
-                    for k in 0..8 {
-                        let want = s.texel(
-                            Vec2::new(lanes[0][k], lanes[1][k]),
-                            Vec2::new(lanes[2][k], lanes[3][k]),
-                            Vec2::new(lanes[4][k], lanes[5][k]),
-                        );
-                        assert_eq!(
-                            lane(&got, k).to_array().map(f32::to_bits),
-                            want.to_array().map(f32::to_bits),
-                            "{w}x{h} {wrap:?} round {round} lane {k}"
-                        );
-                    }
-                    // The same lod lanes straight into the one-level path.
-                    let lod = s.lod(Vec2::new(lanes[2][0], 0.0), Vec2::new(0.0, lanes[5][0]));
-                    let lods = std::array::from_fn(|k| {
+                    assert_lanes_match(&s, &lanes, &format!("{w}x{h} {wrap:?} round {round}"));
+                    // The same levels of detail straight into the one-level path.
+                    let lods: [f32; 8] = std::array::from_fn(|k| {
                         s.lod(Vec2::new(lanes[2][k], 0.0), Vec2::new(0.0, lanes[5][k]))
                     });
-                    if s.texel8_one_level(Sse8::load(&lods), l(0), l(1)).is_some() {
+                    let (u, v) = (Sse8::load(&lanes[0]), Sse8::load(&lanes[1]));
+                    if s.texel8_one_level(Sse8::load(&lods), u, v).is_some() {
                         taken[round % 3] += 1;
                     } else {
-                        assert!(lods.iter().any(|&x| x as usize != lod as usize), "{lods:?}");
+                        assert!(
+                            lods.iter().any(|&x| x as usize != lods[0] as usize),
+                            "{lods:?}"
+                        );
                     }
                 }
             }
@@ -255,7 +264,7 @@ mod tests {
     /// Lanes on different levels are left to the per-lane path.
     #[test]
     fn lanes_on_different_levels_are_not_taken() {
-        let img = image(64, 64);
+        let img = image(64, 64, [53, 29, 11]);
         let s = Sampler::new(&Texture::new(ImageId(0)), &img);
         let lod = Sse8::load(&[0.5, 0.5, 0.5, 1.5, 0.5, 0.5, 0.5, 0.5]);
         let z = Sse8::splat(0.3);
