@@ -226,7 +226,10 @@ pub fn phong_from_extras(m: &gltf::Material, read: &Pbr) -> Option<Material> {
         && want.roughness == read.roughness
         && want.emissive == read.emissive
         && want.unlit == read.unlit
-        && want.alpha_mode == read.alpha_mode;
+        // The writer blends (or masks) a material opaque at rest when its
+        // texture has alpha or its transparency is animated.
+        && (want.alpha_mode == read.alpha_mode
+            || want.alpha_mode == gltf::material::AlphaMode::Opaque);
     same.then_some(phong)
 }
 
