@@ -33,6 +33,7 @@ pub mod keymenu;
 pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
+pub mod keystrip_ui;
 pub mod manip;
 pub mod material;
 pub mod menu;
