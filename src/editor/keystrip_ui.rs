@@ -6,7 +6,7 @@
 //! row scroll, the keys it shows selected and the drag it runs — is in
 //! [`KeyStrip`]; it never names the `Editor`. Drawing is `keystrip_draw.rs`.
 
-use super::component::{Intent, Response};
+use super::component::{Intent, Keyed, Response};
 use super::keyedit::retime;
 use super::keystrip::*;
 use crate::anim::{Animation, KEY_EPS};
@@ -17,18 +17,20 @@ use crate::ui::{Layout, Rect};
 
 /// What the strip sees of the editor.
 pub struct StripCtx<'a> {
-    pub anim: &'a Animation,
-    /// The selected object (its keys are shown) and its name.
-    pub node: Option<NodeId>,
-    pub node_name: String,
-    /// The scene's length (later keys are drawn greyed).
-    pub duration: f32,
-    /// The current frame (Alt+drag scales timing about it).
-    pub frame: f32,
+    /// The animation, selected object, frame (Alt+drag scales timing about
+    /// it) and length (later keys are drawn greyed): `ctx.anim`, ...
+    pub keyed: Keyed<'a>,
     /// The window's layout (the strip is `key_rows`).
     pub layout: Layout,
     /// The frames the ruler shows.
     pub span: (f32, f32),
+}
+
+impl<'a> std::ops::Deref for StripCtx<'a> {
+    type Target = Keyed<'a>;
+    fn deref(&self) -> &Keyed<'a> {
+        &self.keyed
+    }
 }
 
 impl StripCtx<'_> {
@@ -453,11 +455,13 @@ mod tests {
 
     fn ctx(anim: &Animation) -> StripCtx<'_> {
         StripCtx {
-            anim,
-            node: Some(NodeId(1)),
-            node_name: "Ball".into(),
-            duration: 48.0,
-            frame: 0.0,
+            keyed: Keyed {
+                anim,
+                node: Some(NodeId(1)),
+                node_name: "Ball".into(),
+                frame: 0.0,
+                duration: 48.0,
+            },
             layout: Layout::with_strip(480, 320, 3 * KEY_ROW_H),
             span: (0.0, 48.0),
         }
@@ -472,15 +476,19 @@ mod tests {
         }
     }
 
+    /// The strip, the animation's one track row, and the strip's state.
+    fn setup() -> (Animation, KeyStrip, Row) {
+        let track = Row::Track(Property::Translation);
+        (anim(), KeyStrip::default(), track)
+    }
+
     /// Driven by events alone, without an editor: a press on a marker
     /// selects its key and starts a drag, a move previews the key moved by
     /// whole frames, the release asks for one undo step.
     #[test]
     fn the_strip_moves_a_key_by_itself() {
-        let a = anim();
+        let (a, mut s, track) = setup();
         let c = ctx(&a);
-        let mut s = KeyStrip::default();
-        let track = Row::Track(Property::Translation);
         let at = s.marker_at(&c, track, 10.0).expect("the key's marker");
         let r = s.handle(&mouse("down", at), &c);
         let k10 = track_keys(&a, NodeId(1), Property::Translation)[1];
@@ -496,11 +504,7 @@ mod tests {
         let frames = moved.tracks[0].keys.frames();
         assert_eq!(frames, vec![0.0, 15.0, 30.0]);
         assert_eq!(s.selected[0].frame, 15.0, "the selection follows the key");
-        let c2 = StripCtx {
-            anim: moved,
-            ..ctx(moved)
-        };
-        let r = s.handle(&mouse("up", to), &c2);
+        let r = s.handle(&mouse("up", to), &ctx(moved));
         assert!(!s.is_dragging());
         assert!(
             matches!(&r.intents[0], Intent::Commit { label, before, .. } if label == "Move 1 key" && *before == a),
@@ -513,10 +517,8 @@ mod tests {
     /// before it; the wheel scrolls only rows that overflow.
     #[test]
     fn a_box_selects_and_esc_puts_it_back() {
-        let a = anim();
+        let (a, mut s, track) = setup();
         let c = ctx(&a);
-        let mut s = KeyStrip::default();
-        let track = Row::Track(Property::Translation);
         let k0 = s.marker_at(&c, track, 0.0).unwrap();
         let k10 = s.marker_at(&c, track, 10.0).unwrap();
         let empty = (k0.0 - 6.0, k0.1 - 6.0);

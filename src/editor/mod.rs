@@ -414,6 +414,20 @@ impl Editor {
         &self.pose.as_ref().expect("pose cached").2
     }
 
+    /// What the keys components (key strip, graph editor) see alike.
+    pub fn keyed(&self) -> component::Keyed<'_> {
+        component::Keyed {
+            anim: &self.scene.animation,
+            node: self.selection,
+            node_name: self
+                .selection
+                .map(|s| ops::display_name(&self.scene, s))
+                .unwrap_or_default(),
+            frame: self.frame,
+            duration: self.scene.settings.duration,
+        }
+    }
+
     /// Applies and records a command.
     pub fn execute(&mut self, label: &str, c: Command) {
         self.history.execute(&mut self.scene, label, c);

@@ -88,14 +88,7 @@ impl Editor {
     /// the layout and the frames the ruler shows.
     pub fn strip_ctx(&self) -> StripCtx<'_> {
         StripCtx {
-            anim: &self.scene.animation,
-            node: self.selection,
-            node_name: self
-                .selection
-                .map(|s| crate::editor::ops::display_name(&self.scene, s))
-                .unwrap_or_default(),
-            duration: self.scene.settings.duration,
-            frame: self.frame,
+            keyed: self.keyed(),
             layout: self.layout(),
             span: self.time_span(),
         }
