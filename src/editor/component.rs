@@ -7,6 +7,21 @@
 
 use crate::anim::Animation;
 use crate::editor::keystrip::KeyRef;
+use crate::scene::NodeId;
+
+/// What the keys components (key strip, graph editor) see of the editor
+/// alike: the animation, the selected object and its name, the current
+/// frame and the scene's length. Their contexts add their own areas and
+/// deref to this.
+#[derive(Clone, Debug)]
+pub struct Keyed<'a> {
+    pub anim: &'a Animation,
+    /// The selected object (its keys or channels are shown).
+    pub node: Option<NodeId>,
+    pub node_name: String,
+    pub frame: f32,
+    pub duration: f32,
+}
 
 /// A change a component asks the editor to make.
 #[derive(Clone, Debug, PartialEq)]

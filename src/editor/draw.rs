@@ -262,7 +262,7 @@ impl Editor {
         p.fill_rect(Rect::new(r.x, base, r.w, 1), theme::BORDER);
         match self.graph_shown {
             true => self.draw_graph(p, l),
-            false => self.draw_key_strip(p, l),
+            false => self.draw_key_strip(p),
         }
         self.draw_time_shading(p, l, span);
         // Current frame cursor with its number (not when zoomed or panned

@@ -6,7 +6,6 @@
 //! Routing lives in `route/input.rs`.
 
 use super::fields::FieldId;
-use super::keystrip::StripDrag;
 use super::manip::{Handle, HandleDrag};
 use super::rig::state::IkDrag;
 use crate::scene::{Node, NodeId, Settings};
@@ -18,8 +17,9 @@ pub(super) enum Drag {
     None,
     /// A handle of the current tool (`manip/`): the node at press.
     Handle(Box<HandleDrag>),
-    /// Keys moved or a selection box in the key strip.
-    Keys(StripDrag),
+    /// The key strip took the press (keys moved or a selection box); it
+    /// keeps its own drag state.
+    Keys,
     /// The IK target (`rig/ik.rs`).
     Ik(Box<IkDrag>),
     /// The graph editor took the press; it keeps its own drag state.
@@ -86,11 +86,6 @@ impl Drag {
                 None
             }
         }
-    }
-
-    /// The key strip's drag, if it holds the gesture (which then ends).
-    pub(super) fn take_keys(&mut self) -> Option<StripDrag> {
-        self.take_if(|d| if let Drag::Keys(k) = d { Ok(k) } else { Err(d) })
     }
 
     /// The handle drag, if it is the gesture (which then ends).

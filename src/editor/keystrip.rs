@@ -5,8 +5,9 @@
 //! frame), delete, copy and paste. A drag previews live and records one
 //! [`Command::SetAnimation`] at release; a refused step (two selected keys
 //! squeezed onto one frame) keeps the drag's last valid state. The edits
-//! themselves are in `keyedit.rs`, drawing in `keystrip_draw.rs`, the key
-//! properties panel in `keyprops.rs`.
+//! themselves are in `keyedit.rs`, the component's event handling in
+//! `keystrip_ui.rs`, drawing in `keystrip_draw.rs`, the key properties
+//! panel in `keyprops.rs`.
 
 use crate::anim::{Animation, Key, Property, Target, TargetRef, Value, KEY_EPS};
 use crate::scene::NodeId;
@@ -64,7 +65,7 @@ pub enum Hit {
 
 /// A mouse drag that started in the strip.
 #[derive(Clone, Debug)]
-pub(super) enum StripDrag {
+pub enum StripDrag {
     /// Pressed on a marker: moves (or with Alt scales) `keys` from `base`.
     Keys {
         x0: f32,
@@ -104,6 +105,9 @@ pub struct KeyStrip {
     pub(super) memo: Vec<(Animation, Vec<KeyRef>)>,
     /// First row shown (rows scroll inside the strip's fixed height).
     pub scroll: usize,
+    /// The drag the strip runs, if any (the editor's gesture is then
+    /// `Drag::Keys`).
+    pub(super) drag: Option<StripDrag>,
 }
 
 /// Pairs kept in [`KeyStrip::memo`].

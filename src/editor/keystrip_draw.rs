@@ -1,12 +1,13 @@
-//! Painting the key strip: row names, a marker per key (diamond for
-//! spline keys, square for stepped ones), selected keys highlighted, the
-//! fold triangle on the summary row and the selection box.
+//! Painting the key strip (the component's `draw`): row names, a marker
+//! per key (diamond for spline keys, square for stepped ones), selected
+//! keys highlighted, the fold triangle on the summary row and the
+//! selection box.
 
-use super::keystrip::{row_name, KeyRef, Row, MARKER_R};
-use super::Editor;
+use super::keystrip::{row_name, KeyRef, KeyStrip, Row, MARKER_R};
+use super::keystrip_ui::StripCtx;
 use crate::anim::Interp;
 use crate::ui::text;
-use crate::ui::{theme, Layout, Painter, Rect};
+use crate::ui::{theme, Painter, Rect};
 
 const MARKER: u32 = 0xc9cbd0;
 const SUMMARY_MARKER: u32 = 0x9a9ca3;
@@ -17,17 +18,18 @@ const SUMMARY_BG: u32 = 0x33363c;
 const LATE_MARKER: u32 = 0x5e6066;
 const KEY_ROW_H_PX: i32 = crate::ui::layout::KEY_ROW_H;
 
-impl Editor {
-    /// Draws the strip's rows under the ruler.
-    pub(super) fn draw_key_strip(&self, p: &mut Painter, l: &Layout) {
+impl KeyStrip {
+    /// Draws the strip's rows under the ruler; `hint` is what an empty
+    /// strip says (the editor knows why it is empty).
+    pub fn draw(&self, p: &mut Painter, ctx: &StripCtx, hint: Option<&str>) {
+        let l = &ctx.layout;
         if l.key_rows.is_empty() {
             return;
         }
-        let dur = self.scene.settings.duration;
-        let span = self.time_span();
+        let dur = ctx.duration;
         let names_w = l.key_names_w();
         p.set_clip(Some(l.key_rows));
-        for (i, (row, r)) in self.key_strip_layout().into_iter().enumerate() {
+        for (i, (row, r)) in self.rows(ctx).into_iter().enumerate() {
             let bg = match row {
                 Row::Summary => SUMMARY_BG,
                 _ if i % 2 == 0 => ROW_A,
@@ -41,17 +43,13 @@ impl Editor {
             match row {
                 Row::Summary => {
                     let (cx, cy) = (r.x as f32 + 7.0, r.y as f32 + r.h as f32 / 2.0);
-                    let tri = if self.keys.collapsed {
+                    let tri = if self.collapsed {
                         [(cx - 2.0, cy - 4.0), (cx + 3.0, cy), (cx - 2.0, cy + 4.0)]
                     } else {
                         [(cx - 4.0, cy - 2.0), (cx + 4.0, cy - 2.0), (cx, cy + 3.0)]
                     };
                     p.fill_polygon(&tri, theme::TEXT, 255);
-                    let name = self
-                        .selection
-                        .map(|s| super::ops::display_name(&self.scene, s))
-                        .unwrap_or_default();
-                    p.text_clipped(r.x + 14, ty, &name, theme::TEXT, names_w - 16);
+                    p.text_clipped(r.x + 14, ty, &ctx.node_name, theme::TEXT, names_w - 16);
                 }
                 Row::Track(prop) => {
                     p.text_clipped(r.x + 10, ty, row_name(prop), theme::TEXT_DIM, names_w - 12);
@@ -64,10 +62,10 @@ impl Editor {
             let keys_r = Rect::new(r.x + names_w, r.y, r.w - names_w, r.h);
             p.set_clip(Some(keys_r));
             let cy = r.y as f32 + r.h as f32 / 2.0;
-            for (f, ks) in self.row_markers(row) {
-                let x = l.frame_to_x_in(f, span);
-                let sel = ks.iter().filter(|k| self.is_key_selected(k)).count();
-                let step = ks.iter().all(|k| self.key_interp(k) == Some(Interp::Step));
+            for (f, ks) in self.markers(ctx, row) {
+                let x = l.frame_to_x_in(f, ctx.span);
+                let sel = ks.iter().filter(|k| self.is_selected(k)).count();
+                let step = ks.iter().all(|k| interp(ctx, k) == Some(Interp::Step));
                 let color = match (sel, row) {
                     // After the scene's end: greyed (they do not play).
                     (0, _) if f > dur => LATE_MARKER,
@@ -88,21 +86,12 @@ impl Editor {
             }
             p.set_clip(Some(l.key_rows));
         }
-        let hint = match self.selection {
-            None => Some("Select an object to see its keys here".to_string()),
-            Some(_) if self.row_markers(Row::Summary).is_empty() => {
-                Some(self.material_keys_hint().unwrap_or_else(|| {
-                    "No keys yet: K keys the selection, R records changes".to_string()
-                }))
-            }
-            Some(_) => None,
-        };
         if let Some(h) = hint {
             let x = l.key_rows.x + names_w + 8;
             let y = l.key_rows.y + (KEY_ROW_H_PX - text::LINE_H) / 2;
-            p.text_clipped(x, y, &h, theme::TEXT_DIM, l.key_rows.right() - x - 4);
+            p.text_clipped(x, y, h, theme::TEXT_DIM, l.key_rows.right() - x - 4);
         }
-        let (first, all, cap) = self.key_strip_scroll();
+        let (first, all, cap) = self.scroll_state(ctx);
         if all > cap && cap > 0 {
             // A scroll bar: rows scroll (wheel) inside the fixed strip.
             let r = l.key_rows;
@@ -119,9 +108,14 @@ impl Editor {
         p.set_clip(None);
     }
 
-    fn key_interp(&self, k: &KeyRef) -> Option<Interp> {
-        k.get(&self.scene.animation).map(|k| k.interp)
+    /// Whether the key is selected.
+    pub fn is_selected(&self, k: &KeyRef) -> bool {
+        self.selected.iter().any(|s| s.same(k))
     }
+}
+
+fn interp(ctx: &StripCtx, k: &KeyRef) -> Option<Interp> {
+    k.get(ctx.anim).map(|k| k.interp)
 }
 
 /// A diamond (or a square for stepped keys) centred at `c`.

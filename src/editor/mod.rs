@@ -33,6 +33,7 @@ pub mod keymenu;
 pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
+pub mod keystrip_ui;
 pub mod manip;
 pub mod material;
 pub mod menu;
@@ -411,6 +412,20 @@ impl Editor {
         }
         // Just filled above.
         &self.pose.as_ref().expect("pose cached").2
+    }
+
+    /// What the keys components (key strip, graph editor) see alike.
+    pub fn keyed(&self) -> component::Keyed<'_> {
+        component::Keyed {
+            anim: &self.scene.animation,
+            node: self.selection,
+            node_name: self
+                .selection
+                .map(|s| ops::display_name(&self.scene, s))
+                .unwrap_or_default(),
+            frame: self.frame,
+            duration: self.scene.settings.duration,
+        }
     }
 
     /// Applies and records a command.

@@ -17,7 +17,7 @@ mod draw;
 pub mod edit;
 pub mod view;
 
-use super::component::{Intent, Response};
+use super::component::{Intent, Keyed, Response};
 use super::keystrip::KeyRef;
 use crate::anim::hermite::Tcb;
 use crate::anim::Animation;
@@ -42,16 +42,19 @@ const SLOP: f32 = 3.0;
 
 /// What the graph needs to know of the editor for one event or draw.
 pub struct Ctx<'a> {
-    pub anim: &'a Animation,
-    /// The selected object (its channels are shown).
-    pub node: Option<NodeId>,
-    pub node_name: String,
-    pub frame: f32,
-    pub duration: f32,
+    /// The animation, selected object, frame and length (`ctx.anim`, ...).
+    pub keyed: Keyed<'a>,
     /// The whole graph area (splitter, channel list, plot).
     pub rect: Rect,
     /// The editor's selected keys (shared with the key strip and panel).
     pub selected: &'a [KeyRef],
+}
+
+impl<'a> std::ops::Deref for Ctx<'a> {
+    type Target = Keyed<'a>;
+    fn deref(&self) -> &Keyed<'a> {
+        &self.keyed
+    }
 }
 
 /// The graph area's parts.

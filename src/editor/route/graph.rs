@@ -37,14 +37,7 @@ impl Editor {
     /// its area and the selected keys.
     pub fn graph_ctx(&self) -> Ctx<'_> {
         Ctx {
-            anim: &self.scene.animation,
-            node: self.selection,
-            node_name: self
-                .selection
-                .map(|s| crate::editor::ops::display_name(&self.scene, s))
-                .unwrap_or_default(),
-            frame: self.frame,
-            duration: self.scene.settings.duration,
+            keyed: self.keyed(),
             rect: self.layout().key_rows,
             selected: &self.keys.selected,
         }

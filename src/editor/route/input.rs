@@ -141,7 +141,7 @@ impl Editor {
         let part = match &self.drag {
             Drag::Graph => self.graph_event(&Event::MouseMove { x, y, mods }),
             Drag::Ik(_) => self.ik_move(x, y),
-            Drag::Keys(_) => self.key_strip_move(x, y),
+            Drag::Keys => self.strip_event(&Event::MouseMove { x, y, mods }),
             // A handle drag, a pick about to become one, or hover over
             // the handles.
             Drag::Handle(_) | Drag::Pick { .. } | Drag::None => self.handles_move(x, y, mods),
@@ -151,7 +151,7 @@ impl Editor {
             return redraw;
         }
         match self.drag.clone() {
-            Drag::Handle(_) | Drag::Keys(_) | Drag::Ik(_) | Drag::Graph => false,
+            Drag::Handle(_) | Drag::Keys | Drag::Ik(_) | Drag::Graph => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -335,7 +335,7 @@ impl Editor {
         }
         if l.key_rows.contains(x, y) {
             self.commit_edit();
-            self.key_strip_press(x, y, mods);
+            self.key_strip_press(button, x, y, mods);
             return;
         }
         let Some(widget) = self.widget_at(x, y) else {
@@ -397,8 +397,8 @@ impl Editor {
                 self.handles_release();
                 return;
             }
-            Drag::Keys(_) => {
-                self.key_strip_release();
+            Drag::Keys => {
+                self.strip_event(&Event::MouseUp { button, x, y, mods });
                 return;
             }
             _ => {}
@@ -483,8 +483,8 @@ impl Editor {
         }
         // Over the key rows the wheel scrolls rows that overflow (Ctrl:
         // zooms); elsewhere on the ruler and strip it zooms the frames.
-        if l.key_rows.contains(x, y) && !mods.ctrl && self.scroll_key_rows(delta) {
-            return true;
+        if let Some(redraw) = self.strip_event(&Event::Wheel { delta, x, y, mods }) {
+            return redraw;
         }
         if l.ruler.contains(x, y) || l.key_rows.contains(x, y) {
             self.zoom_timeline(x, delta);

@@ -1,32 +1,24 @@
-//! The editor's side of `keystrip`: routes events to it and applies what it returns.
+//! The editor's side of the key strip component (`keystrip_ui.rs`): the
+//! context it sees, routing events to it and applying what it returns,
+//! the key selection's memory across undo, and the strip's key commands.
 
-use crate::anim::{Animation, KEY_EPS};
-use crate::editor::command::Command;
+use crate::editor::component::Intent;
 use crate::editor::gesture::Drag;
-use crate::editor::keyedit::{copy, retime};
+use crate::editor::keyedit::copy;
 #[allow(unused_imports)]
 use crate::editor::keystrip::*;
+use crate::editor::keystrip_ui::StripCtx;
 use crate::editor::Editor;
-use crate::input::{Key as KeyName, Mods};
-use crate::ui::layout::KEY_ROW_H;
-use crate::ui::Rect;
+use crate::input::{Event, Key as KeyName, Mods, MouseButton};
+use crate::ui::{Painter, Rect};
 
 impl Editor {
     // ----- state -----
 
     /// The selected keys that still exist on the selected node.
     pub fn selected_keys(&self) -> Vec<KeyRef> {
-        let Some(sel) = self.selection else {
-            return Vec::new();
-        };
-        let anim = &self.scene.animation;
-        let mut out: Vec<KeyRef> = Vec::new();
-        for k in &self.keys.selected {
-            if k.node == sel && k.get(anim).is_some() && !out.iter().any(|o| o.same(k)) {
-                out.push(*k);
-            }
-        }
-        out
+        self.keys
+            .live_selection(&self.scene.animation, self.selection)
     }
 
     pub(in crate::internals::editor) fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
@@ -89,131 +81,43 @@ impl Editor {
 
     /// Whether the key is selected.
     pub fn is_key_selected(&self, k: &KeyRef) -> bool {
-        self.keys.selected.iter().any(|s| s.same(k))
+        self.keys.is_selected(k)
     }
 
-    /// Rows the strip wants (0 when the selection is not animated).
-    pub(in crate::internals::editor) fn key_strip_rows(&self) -> usize {
-        let Some(sel) = self.selection else { return 0 };
-        let props = animated_properties(&self.scene.animation, sel);
-        match (props.len(), self.keys.collapsed) {
-            (0, _) => 0,
-            (_, true) => 1,
-            (n, false) => n + 1,
+    /// What the strip sees: the animation, the selected object, the frame,
+    /// the layout and the frames the ruler shows.
+    pub fn strip_ctx(&self) -> StripCtx<'_> {
+        StripCtx {
+            keyed: self.keyed(),
+            layout: self.layout(),
+            span: self.time_span(),
         }
     }
 
-    /// The visible rows with their rectangles (the last one says how many
-    /// did not fit when the strip is too short).
+    /// The visible rows with their rectangles.
     pub fn key_strip_layout(&self) -> Vec<(Row, Rect)> {
-        let l = self.layout();
-        let Some(sel) = self.selection else {
-            return Vec::new();
-        };
-        let mut rows = vec![Row::Summary];
-        if !self.keys.collapsed {
-            rows.extend(
-                animated_properties(&self.scene.animation, sel)
-                    .into_iter()
-                    .map(Row::Track),
-            );
-        }
-        let cap = (l.key_rows.h / KEY_ROW_H).max(0) as usize;
-        let first = self.keys.scroll.min(rows.len().saturating_sub(cap));
-        rows.into_iter()
-            .skip(first)
-            .take(cap)
-            .enumerate()
-            .map(|(i, r)| {
-                let y = l.key_rows.y + i as i32 * KEY_ROW_H;
-                (r, Rect::new(l.key_rows.x, y, l.key_rows.w, KEY_ROW_H))
-            })
-            .collect()
+        self.keys.rows(&self.strip_ctx())
     }
 
     /// Rows in the strip: (first shown, all, how many fit).
     pub fn key_strip_scroll(&self) -> (usize, usize, usize) {
-        let all = self.key_strip_rows();
-        let cap = (self.layout().key_rows.h / KEY_ROW_H).max(0) as usize;
-        (self.keys.scroll.min(all.saturating_sub(cap)), all, cap)
-    }
-
-    /// Wheel over the strip: scrolls its rows when they do not all fit.
-    pub(in crate::internals::editor) fn scroll_key_rows(&mut self, delta: f32) -> bool {
-        let (first, all, cap) = self.key_strip_scroll();
-        if all <= cap {
-            return false;
-        }
-        let n = (delta.abs().ceil() as usize).max(1);
-        self.keys.scroll = if delta > 0.0 {
-            first.saturating_sub(n)
-        } else {
-            (first + n).min(all - cap)
-        };
-        true
+        self.keys.scroll_state(&self.strip_ctx())
     }
 
     /// The keys a row shows, grouped per marker: (frame, keys at it).
     pub fn row_markers(&self, row: Row) -> Vec<(f32, Vec<KeyRef>)> {
-        let Some(sel) = self.selection else {
-            return Vec::new();
-        };
-        let anim = &self.scene.animation;
-        let keys = match row {
-            Row::Summary => node_keys(anim, sel),
-            Row::Track(p) => track_keys(anim, sel, p),
-            Row::More(_) => Vec::new(),
-        };
-        let mut out: Vec<(f32, Vec<KeyRef>)> = Vec::new();
-        for k in keys {
-            match out.iter_mut().find(|(f, _)| (f - k.frame).abs() <= KEY_EPS) {
-                Some((_, v)) => v.push(k),
-                None => out.push((k.frame, vec![k])),
-            }
-        }
-        out.sort_by(|a, b| a.0.total_cmp(&b.0));
-        out
+        self.keys.markers(&self.strip_ctx(), row)
     }
 
     /// Window point of the marker for `row` at `frame` (for tests and
     /// scripts that aim at keys).
     pub fn key_marker_at(&self, row: Row, frame: f32) -> Option<(f32, f32)> {
-        let (_, r) = self
-            .key_strip_layout()
-            .into_iter()
-            .find(|(rr, _)| *rr == row)?;
-        let l = self.layout();
-        let x = l.frame_to_x_in(frame, self.time_span());
-        Some((x, r.y as f32 + r.h as f32 / 2.0))
+        self.keys.marker_at(&self.strip_ctx(), row, frame)
     }
 
     /// What is under (x, y) in the strip.
     pub fn key_strip_hit(&self, x: f32, y: f32) -> Option<Hit> {
-        let l = self.layout();
-        if !l.key_rows.contains(x, y) {
-            return None;
-        }
-        let Some((row, r)) = self
-            .key_strip_layout()
-            .into_iter()
-            .find(|(_, r)| r.contains(x, y))
-        else {
-            return Some(Hit::Empty);
-        };
-        if x < (r.x + l.key_names_w()) as f32 {
-            return Some(Hit::Name(row));
-        }
-        let span = self.time_span();
-        let best = self
-            .row_markers(row)
-            .into_iter()
-            .map(|(f, ks)| ((l.frame_to_x_in(f, span) - x).abs(), ks))
-            .filter(|(d, _)| *d <= MARKER_R + 1.0)
-            .min_by(|a, b| a.0.total_cmp(&b.0));
-        Some(match best {
-            Some((_, ks)) => Hit::Keys(ks),
-            None => Hit::Empty,
-        })
+        self.keys.hit(&self.strip_ctx(), x, y)
     }
 
     /// Whether `x` is on the current-frame line (within 2 px).
@@ -228,245 +132,56 @@ impl Editor {
         (x0 - 0.5..=x1 + 0.5).contains(&cx) && (x - (cx + 0.5)).abs() <= 2.5
     }
 
-    /// Keys whose markers lie in the box between two window points.
-    pub(in crate::internals::editor) fn keys_in_box(
-        &self,
-        a: (f32, f32),
-        b: (f32, f32),
-    ) -> Vec<KeyRef> {
-        let l = self.layout();
-        let span = self.time_span();
-        let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
-        let (y0, y1) = (a.1.min(b.1), a.1.max(b.1));
-        let mut out: Vec<KeyRef> = Vec::new();
-        for (row, r) in self.key_strip_layout() {
-            let cy = r.y as f32 + r.h as f32 / 2.0;
-            if cy < y0 - MARKER_R || cy > y1 + MARKER_R {
-                continue;
-            }
-            for (f, ks) in self.row_markers(row) {
-                let x = l.frame_to_x_in(f, span);
-                if x >= x0 - MARKER_R && x <= x1 + MARKER_R {
-                    add_unique(&mut out, ks);
-                }
-            }
-        }
-        out
-    }
-
-    /// The selection box being dragged, if any (for drawing).
-    pub(in crate::internals::editor) fn key_box(&self) -> Option<Rect> {
-        match &self.drag {
-            Drag::Keys(StripDrag::Box { from, to, .. }) => {
-                let x = from.0.min(to.0) as i32;
-                let y = from.1.min(to.1) as i32;
-                let w = (from.0 - to.0).abs() as i32 + 1;
-                let h = (from.1 - to.1).abs() as i32 + 1;
-                Some(Rect::new(x, y, w, h))
-            }
-            _ => None,
-        }
-    }
-
     // ----- mouse -----
 
-    /// A left press in the key rows.
-    pub(in crate::internals::editor) fn key_strip_press(&mut self, x: f32, y: f32, mods: Mods) {
-        let Some(hit) = self.key_strip_hit(x, y) else {
-            return;
-        };
-        match hit {
-            Hit::Name(Row::Summary) => self.keys.collapsed = !self.keys.collapsed,
-            Hit::Name(Row::Track(p)) => {
-                let Some(sel) = self.selection else { return };
-                let ks = track_keys(&self.scene.animation, sel, p);
-                let mut now = if mods.shift {
-                    self.selected_keys()
-                } else {
-                    Vec::new()
-                };
-                add_unique(&mut now, ks);
-                self.set_key_selection(now);
-            }
-            Hit::Name(Row::More(_)) => {}
-            Hit::Keys(ks) => {
-                let current = self.selected_keys();
-                let all_in = ks.iter().all(|k| current.iter().any(|c| c.same(k)));
-                let mut narrow_to = None;
-                let now: Vec<KeyRef> = if mods.shift {
-                    if all_in {
-                        current
-                            .into_iter()
-                            .filter(|c| !ks.iter().any(|k| k.same(c)))
-                            .collect()
-                    } else {
-                        let mut v = current;
-                        add_unique(&mut v, ks.iter().copied());
-                        v
-                    }
-                } else if all_in {
-                    narrow_to = Some(ks.clone());
-                    current
-                } else {
-                    ks.clone()
-                };
-                let grabbed = now.iter().any(|c| ks.iter().any(|k| k.same(c)));
-                self.set_key_selection(now.clone());
-                if grabbed {
-                    self.drag = Drag::Keys(StripDrag::Keys {
-                        x0: x,
-                        base: Box::new(self.scene.animation.clone()),
-                        keys: now,
-                        scale: mods.alt,
-                        moved: false,
-                        narrow_to,
-                    });
-                }
-            }
-            Hit::Empty if self.near_cursor(x) => {
-                // The current-frame line runs through the strip: grab it.
-                self.drag = Drag::Seek;
-            }
-            Hit::Empty => {
-                self.drag = Drag::Keys(StripDrag::Box {
-                    from: (x, y),
-                    to: (x, y),
-                    add: mods.shift,
-                    before: self.selected_keys(),
-                });
-            }
-        }
-    }
-
-    /// Mouse move during a strip drag (`None` when no strip drag runs).
-    pub(in crate::internals::editor) fn key_strip_move(&mut self, x: f32, y: f32) -> Option<bool> {
-        // Taken out so `self` can be borrowed; put back changed in place.
-        let mut drag = self.drag.take_keys()?;
-        let redraw = match &mut drag {
-            StripDrag::Box {
-                from,
-                to,
-                add,
-                before,
-            } => {
-                let mut now = if *add { before.clone() } else { Vec::new() };
-                add_unique(&mut now, self.keys_in_box(*from, (x, y)));
-                self.keys.selected = now;
-                *to = (x, y);
-                true
-            }
-            StripDrag::Keys { x0, moved, .. } if !*moved && (x - *x0).abs() < 3.0 => false,
-            StripDrag::Keys {
-                x0,
-                base,
-                keys,
-                scale,
-                moved,
-                narrow_to,
-            } => {
-                if !*moved {
-                    self.stop_playback();
-                    self.pending = None;
-                }
-                self.retime_preview(*x0, x, base, keys, *scale);
-                *moved = true;
-                *narrow_to = None;
-                true
-            }
-        };
-        self.drag = Drag::Keys(drag);
-        Some(redraw)
-    }
-
-    /// Shows `keys` moved (or scaled) for a drag from `x0` to `x`.
-    pub(in crate::internals::editor) fn retime_preview(
+    /// A press in the key rows: on the current-frame line it seeks, else
+    /// the strip takes it.
+    pub(in crate::internals::editor) fn key_strip_press(
         &mut self,
-        x0: f32,
+        button: MouseButton,
         x: f32,
-        base: &Animation,
-        keys: &[KeyRef],
-        scale: bool,
+        y: f32,
+        mods: Mods,
     ) {
-        let l = self.layout();
-        let span = self.time_span();
-        let ppf = (l.frame_to_x_in(1.0, span) - l.frame_to_x_in(0.0, span)).max(1e-3);
-        let result = if scale {
-            let pivot = self.frame;
-            let px = l.frame_to_x_in(pivot, span);
-            let f = if (x0 - px).abs() >= 3.0 {
-                (x - px) / (x0 - px)
-            } else {
-                1.0 + (x - x0) / 100.0
-            };
-            let f = f.max(0.0);
-            retime(base, keys, |k| (pivot + (k - pivot) * f).round())
-        } else {
-            let first = keys.iter().map(|k| k.frame).fold(f32::INFINITY, f32::min);
-            let delta = ((x - x0) / ppf).round().max(-first.max(0.0).floor());
-            retime(base, keys, |k| k + delta)
-        };
-        match result {
-            Ok((anim, refs)) => {
-                self.scene.animation = anim;
-                self.scene_rev += 1;
-                self.keys.selected = refs;
-            }
-            Err(e) => self.set_status(&e, true),
+        if matches!(self.key_strip_hit(x, y), Some(Hit::Empty)) && self.near_cursor(x) {
+            // The current-frame line runs through the strip: grab it.
+            self.drag = Drag::Seek;
+            return;
         }
+        self.strip_event(&Event::MouseDown { button, x, y, mods });
     }
 
-    /// Release of a strip drag; false when none ran.
-    pub(in crate::internals::editor) fn key_strip_release(&mut self) -> bool {
-        let Some(drag) = self.drag.take_keys() else {
-            return false;
-        };
-        match drag {
-            StripDrag::Box { from, to, add, .. } => {
-                let tiny = (from.0 - to.0).abs() < 3.0 && (from.1 - to.1).abs() < 3.0;
-                if tiny && !add {
-                    // A click on empty strip space clears the key selection.
-                    self.set_key_selection(Vec::new());
-                }
-            }
-            StripDrag::Keys {
-                base,
-                moved,
-                narrow_to,
-                scale,
-                ..
-            } => {
-                if moved {
-                    let after = Box::new(self.scene.animation.clone());
-                    let n = self.keys.selected.len();
-                    let what = if scale { "Scale" } else { "Move" };
-                    let label = format!("{what} {n} key{}", if n == 1 { "" } else { "s" });
-                    self.push_applied(
-                        &label,
-                        Command::SetAnimation {
-                            before: base,
-                            after,
-                        },
-                    );
-                    self.set_status(&label, false);
-                } else if let Some(ks) = narrow_to {
-                    self.set_key_selection(ks);
-                }
-            }
+    /// Offers `ev` to the key strip: `Some(redraw)` when it took it. A
+    /// drag the strip runs is the editor's one gesture (`Drag::Keys`).
+    pub(in crate::internals::editor) fn strip_event(&mut self, ev: &Event) -> Option<bool> {
+        let mut strip = std::mem::take(&mut self.keys);
+        let r = strip.handle(ev, &self.strip_ctx());
+        let dragging = strip.is_dragging();
+        self.keys = strip;
+        match (dragging, matches!(self.drag, Drag::Keys)) {
+            (true, false) => self.drag = Drag::Keys,
+            (false, true) => self.drag = Drag::None,
+            _ => {}
         }
-        true
+        if r.intents.iter().any(|i| matches!(i, Intent::Preview(_))) {
+            // Keys moving: a change not yet keyed is dropped.
+            self.pending = None;
+        }
+        self.apply_response(r)
     }
 
-    /// Esc during a strip drag: puts back what it changed.
-    pub(in crate::internals::editor) fn cancel_strip_drag(&mut self) {
-        match self.drag.take_keys() {
-            Some(StripDrag::Keys { base, keys, .. }) => {
-                self.scene.animation = *base;
-                self.scene_rev += 1;
-                self.keys.selected = keys;
+    pub(in crate::internals::editor) fn draw_key_strip(&self, p: &mut Painter) {
+        let ctx = self.strip_ctx();
+        let hint = match self.selection {
+            None => Some("Select an object to see its keys here".to_string()),
+            Some(_) if self.keys.markers(&ctx, Row::Summary).is_empty() => {
+                Some(self.material_keys_hint().unwrap_or_else(|| {
+                    "No keys yet: K keys the selection, R records changes".to_string()
+                }))
             }
-            Some(StripDrag::Box { before, .. }) => self.keys.selected = before,
-            None => {}
-        }
+            Some(_) => None,
+        };
+        self.keys.draw(p, &ctx, hint.as_deref());
     }
 
     // ----- keyboard -----
@@ -540,10 +255,9 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn key_strip_key(&mut self, key: KeyName, m: Mods) -> bool {
-        if matches!(self.drag, Drag::Keys(_)) {
-            if key == KeyName::Escape {
-                self.cancel_strip_drag();
-            }
+        if matches!(self.drag, Drag::Keys) {
+            // The strip's drag takes every key (Esc cancels it).
+            self.strip_event(&Event::KeyDown { key, mods: m });
             return true;
         }
         let has = !self.selected_keys().is_empty();
