@@ -17,6 +17,11 @@ use super::texel_fetch::fetch4;
 use super::texture::Sampler;
 use crate::scene::{MipLevel, Wrap};
 
+/// The filtered alpha of four texels of alpha 255: 255 + (255 − 255)·f
+/// is 255 for any finite f, then × (1/255) (const arithmetic is IEEE
+/// f32, the same as at run time). Blending two levels of it gives it again.
+const OPAQUE: f32 = 255.0 * (1.0 / 255.0);
+
 /// Largest level (in texels) whose addresses stay exact in f32 lanes.
 const EXACT_TEXELS: u64 = 1 << 24;
 
@@ -98,7 +103,7 @@ impl Sampler {
             (rb + f.xa).trunc_i32(),
             (rb + f.xb).trunc_i32(),
         ];
-        filter(&fetch4(level.pixels(), &idx), f.fx, f.fy)
+        filter(&fetch4(level.pixels(), &idx), f.fx, f.fy, !self.opaque())
     }
 }
 
@@ -142,16 +147,19 @@ impl Sampler {
 
 /// The bilinear blend of the four corners' RGBA8 words (top left, top
 /// right, bottom left, bottom right) by the fractions `fx`, `fy`, as R, G,
-/// B, A in 0..1: `Sampler::bilinear`'s arithmetic on lanes.
+/// B, A in 0..1: `Sampler::bilinear`'s arithmetic on lanes. Without
+/// `alpha` (an image whose texels are all opaque) the alpha lanes are that
+/// arithmetic's result for four 255s, [`OPAQUE`], without doing it.
 #[inline(always)]
-pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V) -> [V; 4] {
+pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V, alpha: bool) -> [V; 4] {
     let c00 = V::unpack_rgba8(&corner[0]);
     let c10 = V::unpack_rgba8(&corner[1]);
     let c01 = V::unpack_rgba8(&corner[2]);
     let c11 = V::unpack_rgba8(&corner[3]);
     let scale = V::splat(1.0 / 255.0);
     let mut out = c00;
-    for c in 0..4 {
+    out[3] = V::splat(OPAQUE);
+    for c in 0..(if alpha { 4 } else { 3 }) {
         let top = c00[c] + (c10[c] - c00[c]) * fx;
         let bottom = c01[c] + (c11[c] - c01[c]) * fx;
         out[c] = (top + (bottom - top) * fy) * scale;
@@ -207,7 +215,8 @@ mod tests {
     /// Blocks whose lanes share a level pair take the one-level path, and
     /// every lane gets `texel`'s exact bits: magnified (no blending),
     /// blended between two levels, beyond the last level, repeat and clamp,
-    /// power-of-two and odd sizes, coordinates far outside 0..1.
+    /// power-of-two and odd sizes, coordinates far outside 0..1, images
+    /// with alpha and opaque ones (whose alpha lanes are not filtered).
     #[test]
     #[allow(clippy::needless_range_loop)]
     fn shared_level_blocks_match_one_pixel_bit_for_bit() {
@@ -217,8 +226,9 @@ mod tests {
             (seed >> 8) as f32 / (1u32 << 24) as f32
         };
         let mut taken = [0usize; 3];
-        for (w, h) in [(64, 32), (50, 30), (1, 7)] {
-            let img = image(w, h, [53, 29, 11]);
+        for (w, h, a) in [(64, 32, 11), (50, 30, 11), (7, 1, 11), (40, 24, 0)] {
+            let img = image(w, h, [53, 29, a]);
+            assert_eq!(img.has_alpha(), a != 0);
             for wrap in [
                 (Wrap::Repeat, Wrap::Repeat),
                 (Wrap::Clamp, Wrap::Repeat),

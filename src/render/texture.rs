@@ -30,6 +30,9 @@ pub struct Sampler {
     pub components: u8,
     blend_color: Vec3,
     translucent: bool,
+    /// Every texel's alpha is 255 (then sampled alpha is exactly
+    /// 255 · (1/255) everywhere, and the lanes need not filter it).
+    opaque: bool,
     filter: Filter,
     alpha_cutoff: Option<f32>,
 }
@@ -47,6 +50,7 @@ impl Sampler {
             components: image.components(),
             blend_color: t.blend_color,
             translucent: uses_alpha && image.has_alpha(),
+            opaque: !image.has_alpha(),
             filter: t.filter,
             alpha_cutoff: t.alpha_cutoff,
         }
@@ -61,6 +65,10 @@ impl Sampler {
     }
     pub(super) fn wrap_t(&self) -> Wrap {
         self.wrap_t
+    }
+    /// Whether every texel is fully opaque.
+    pub(super) fn opaque(&self) -> bool {
+        self.opaque
     }
     /// Whether the eight-lane path (`texture_lanes`) covers this sampler:
     /// repeat/clamp wraps, trilinear filtering, no transform.

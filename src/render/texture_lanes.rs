@@ -58,7 +58,12 @@ impl Sampler {
         let rho2 = lx.max(ly);
         let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
         let safe = V::select(in_range, rho2, V::splat(2.0));
-        let lod = (V::splat(0.5) * log2f8(safe)).keep(in_range);
+        // All magnified (the common close-up): λ = 0 without the log.
+        let lod = if in_range.bits() == 0 {
+            V::splat(0.0)
+        } else {
+            (V::splat(0.5) * log2f8(safe)).keep(in_range)
+        };
         if let Some(out) = self.texel8_one_level(lod, uv.u, uv.v) {
             return out;
         }
@@ -139,7 +144,7 @@ impl Sampler {
             corner[2][k] = u32::from_le_bytes(px[rb + ca]);
             corner[3][k] = u32::from_le_bytes(px[rb + cb]);
         }
-        filter(&corner, f.fx, f.fy)
+        filter(&corner, f.fx, f.fy, true)
     }
 }
 
@@ -217,12 +222,12 @@ pub(super) mod tests {
     use crate::scene::{Image, ImageId, ImageSource, Texture, Wrap};
 
     /// A `w`×`h` RGBA test image with different values in every channel
-    /// (`mix` varies the pattern).
+    /// (`mix` varies the pattern; `mix[2]` = 0 makes it opaque).
     pub fn image(w: u32, h: u32, mix: [u32; 3]) -> Image {
         let px = (0..h).flat_map(|y| (0..w).map(move |x| (x, y)));
         let f = |(x, y): (u32, u32)| {
             let v = (x * mix[0] + y * mix[1]) as u8;
-            [v, v.wrapping_mul(3), 255 - v, (x * mix[2]) as u8]
+            [v, v.wrapping_mul(3), 255 - v, 255 - (x * mix[2]) as u8]
         };
         Image::new("t", ImageSource::Inline, w, h, 4, px.map(f).collect()).unwrap()
     }

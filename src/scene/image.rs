@@ -99,6 +99,9 @@ impl MipLevel {
 struct ImageData {
     components: u8,
     levels: Vec<MipLevel>,
+    /// Some pixel is not fully opaque (found once here: samplers are made
+    /// every frame and ask).
+    has_alpha: bool,
 }
 
 /// A decoded image: RGBA8 plus the number of components the source had
@@ -150,7 +153,11 @@ impl Image {
         Ok(Image {
             name: name.into(),
             source,
-            data: Arc::new(ImageData { components, levels }),
+            data: Arc::new(ImageData {
+                components,
+                has_alpha: levels[0].pixels.iter().any(|p| p[3] != 255),
+                levels,
+            }),
         })
     }
 
@@ -174,7 +181,7 @@ impl Image {
     }
     /// Whether any pixel is not fully opaque.
     pub fn has_alpha(&self) -> bool {
-        self.data.levels[0].pixels.iter().any(|p| p[3] != 255)
+        self.data.has_alpha
     }
     /// Whether both share one decoded copy (clones of one image).
     pub fn same_pixels(&self, other: &Image) -> bool {
