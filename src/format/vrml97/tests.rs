@@ -377,3 +377,31 @@ fn textured_primitives_get_the_default_mapping_and_untextured_ones_none() {
     assert_eq!(meshes[0].texcoords.len(), meshes[0].positions.len());
     assert!(meshes[1].texcoords.is_empty());
 }
+
+#[test]
+fn coloured_face_set_without_material_is_unlit_and_written_without_one() {
+    // A floor seen edge-on by the headlight: lit it would be black; unlit
+    // (§4.14.2 table 4.5) it shows its Color node's yellow exactly.
+    let src = "#VRML V2.0 utf8\nViewpoint { position 0 1 4 }\nShape { geometry IndexedFaceSet {\n coord Coordinate { point [-2 0 2, 2 0 2, 2 0 -2, -2 0 -2] } coordIndex [0 1 2 3]\n colorPerVertex FALSE color Color { color [1 1 0] } solid FALSE } }";
+    let l = load(src);
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    assert!(first_shape(&l.scene).1.unlit);
+    let yellow = |scene: &crate::scene::Scene| {
+        let img = crate::render(scene, &crate::RenderSpec::new(40, 30)).unwrap();
+        img.pixel(20, 25)
+    };
+    assert_eq!(yellow(&l.scene), [255, 255, 0]);
+    // Written back as an Appearance without Material, which reads unlit.
+    let (text, _) = super::write::write(&l.scene, &Default::default());
+    assert!(!text.contains("Material"), "{text}");
+    let again = load(&text);
+    assert!(first_shape(&again.scene).1.unlit);
+    assert_eq!(yellow(&again.scene), [255, 255, 0]);
+    // With a Material the same floor is lit (and black edge-on).
+    let lit = load(&src.replace(
+        "Shape { geometry",
+        "Shape { appearance Appearance { material Material {} } geometry",
+    ));
+    assert!(!first_shape(&lit.scene).1.unlit);
+    assert_ne!(yellow(&lit.scene), [255, 255, 0]);
+}
