@@ -28,7 +28,8 @@ pub struct Item {
     pub id: u32,
     pub material: ShadeMaterial,
     pub lights: Vec<WorldLight>,
-    /// Lines/points without normals: colour is used as is.
+    /// Lines/points without normals, or an unlit material: colour is used
+    /// as is.
     pub unlit: bool,
     /// The shading pass computes texture coordinates and their derivatives
     /// for this item and calls `fragment::apply_texture` (set it when the
@@ -228,7 +229,9 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             .collect();
         item_lights.extend(headlight.clone());
         item_lights.extend(global_ambient.clone());
-        let has_normals = mesh.normals.len() == mesh.positions.len();
+        // An unlit material (lighting off) draws like a mesh without
+        // normals: its vertex colours or its emissive colour as they are.
+        let has_normals = mesh.normals.len() == mesh.positions.len() && !material.unlit;
         let mut smat = ShadeMaterial::new(material);
         let item = out.items.len() as u32;
         // Textured: the material's texture, when its image exists and the

@@ -46,8 +46,11 @@ impl View {
             let d = -(eye_to_world.inverse().transform_point3(c)).z;
             far = (d + r) * 1.01;
             near = (d - r) * 0.99;
-            if near < far * 1e-3 {
-                near = far * 1e-3;
+            // Not nearer than far / 2000: a deep scene (a 1000 m path seen
+            // from its start) keeps what lies a metre ahead, as the
+            // reference viewers' automatic planes do.
+            if near < far * 5e-4 {
+                near = far * 5e-4;
             }
             if far <= near {
                 far = near * 2.0;

@@ -21,6 +21,11 @@ pub struct Material {
     /// like [`Material::texture`], with its own wraps and transform; its
     /// image lives in the scene's image store like every other.
     pub emissive_texture: Option<Texture>,
+    /// Lighting is off (VRML97 §4.14.2, table 4.5: a Shape without
+    /// Material, whose colour is its Color node's or white): lights are ignored and the
+    /// colour is the mesh's vertex colours, else `emissive`, like an
+    /// unlit line set's. Writers keep it (no Material node in VRML97/X3D).
+    pub unlit: bool,
 }
 
 impl Default for Material {
@@ -36,6 +41,7 @@ impl Default for Material {
             transparency: 0.0,
             texture: None,
             emissive_texture: None,
+            unlit: false,
         }
     }
 }

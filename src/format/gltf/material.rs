@@ -214,6 +214,7 @@ pub fn phong_from_extras(m: &gltf::Material, read: &Pbr) -> Option<Material> {
         transparency: f("transparency")?,
         texture: slot(m.pbr_metallic_roughness().base_color_texture().is_some()),
         emissive_texture: slot(m.emissive_texture().is_some()),
+        unlit: false,
     };
     let mut want = pbr_from_phong(&phong);
     want.name = read.name.clone();
@@ -274,6 +275,7 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
             transparency,
             texture: None,
             emissive_texture: None,
+            unlit: false,
         };
     }
     let metallic = p.metallic.clamp(0.0, 1.0);
@@ -289,6 +291,7 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
         transparency,
         texture: None,
         emissive_texture: None,
+        unlit: false,
     }
 }
 

@@ -617,6 +617,7 @@ impl Builder {
             transparency,
             texture,
             emissive_texture: None,
+            unlit: false,
         };
         if st.unlit {
             mat.emissive = mat.diffuse;

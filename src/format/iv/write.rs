@@ -593,11 +593,18 @@ impl Writer<'_> {
             return;
         }
         let has_normals = !mesh.normals.is_empty() && mesh.normals.len() == mesh.positions.len();
-        // Faces without normals are drawn unlit (in their colours, else the
+        // Faces without normals, or with an unlit material (a VRML97 Shape
+        // without Material), are drawn unlit (in their colours, else the
         // material's emissive colour): Inventor says so with LightModel
         // BASE_COLOR, whose base colour is the diffuse one (1.0 has no
         // LightModel: lit there).
-        let unlit = !self.v1 && !mesh.triangles.is_empty() && mesh.normals.is_empty();
+        let unlit_material = self
+            .scene
+            .materials
+            .get(s.material.0 as usize)
+            .is_some_and(|m| m.unlit);
+        let unlit =
+            !self.v1 && !mesh.triangles.is_empty() && (mesh.normals.is_empty() || unlit_material);
         if unlit {
             self.out.line("LightModel { model BASE_COLOR }");
             if mesh.colors.len() != mesh.positions.len() {

@@ -8,6 +8,7 @@
 
 use super::build::Builder;
 use super::geometry;
+use super::touch_clips;
 use crate::anim::{
     Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Weights, MAX_MORPH_TARGETS,
 };
@@ -47,7 +48,7 @@ fn field_name(s: &str) -> &str {
 }
 
 /// Follows PROTO interface bindings to the real (node, field) pairs.
-fn resolve(node: &NodeRef, field: &str, out: &mut Vec<(NodeRef, String)>, depth: usize) {
+pub(super) fn resolve(node: &NodeRef, field: &str, out: &mut Vec<(NodeRef, String)>, depth: usize) {
     if depth > 64 {
         return;
     }
@@ -174,13 +175,14 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
     struct Pending {
         interp: NodeRef,
         ease: Option<NodeRef>,
+        sensor: NodeRef,
         clock: Clock,
         of: TargetRef,
         property: Property,
     }
     let mut pending: Vec<Pending> = Vec::new();
-    // CoordinateInterpolators: (interpolator, clock, Coordinate node).
-    let mut coord_pending: Vec<(NodeRef, Clock, *const AstNode)> = Vec::new();
+    // CoordinateInterpolators: (interpolator, clock, Coordinate node, sensor).
+    let mut coord_pending: Vec<(NodeRef, Clock, *const AstNode, NodeRef)> = Vec::new();
     // NormalInterpolators: (interpolator, Normal node); each rides on the
     // CoordinateInterpolator of the same shape when their keys agree.
     let mut normal_pending: Vec<(NodeRef, *const AstNode)> = Vec::new();
@@ -233,7 +235,7 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             for (t, f) in targets {
                 let t = t.effective();
                 if t.kind == "Coordinate" && field_name(&f) == "point" {
-                    coord_pending.push((interp.clone(), c, Rc::as_ptr(&t)));
+                    coord_pending.push((interp.clone(), c, Rc::as_ptr(&t), ts.clone()));
                 } else {
                     let msg = format!(
                         "animating {}.{} is not supported; not imported",
@@ -268,6 +270,7 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                             pending.push(Pending {
                                 interp: interp.clone(),
                                 ease: eased.get(&Rc::as_ptr(&interp)).cloned(),
+                                sensor: ts.clone(),
                                 clock: c,
                                 of: TargetRef::Node(id),
                                 property,
@@ -285,6 +288,7 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                         pending.push(Pending {
                             interp: interp.clone(),
                             ease: eased.get(&Rc::as_ptr(&interp)).cloned(),
+                            sensor: ts.clone(),
                             clock: c,
                             of: TargetRef::Material(id),
                             property,
@@ -310,7 +314,7 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
     let clocks = pending
         .iter()
         .map(|p| (&p.interp, p.clock))
-        .chain(coord_pending.iter().map(|(i, c, _)| (i, *c)));
+        .chain(coord_pending.iter().map(|(i, c, _, _)| (i, *c)));
     for (interp, clock) in clocks.clone() {
         if let Some(keys) = interp.nums("key") {
             seconds.extend(keys.iter().map(|k| clock.start + k * clock.cycle));
@@ -337,6 +341,10 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
     };
     b.scene.settings = settings;
 
+    // Which sensor each new track follows (for the clips of sensors that
+    // wait for an event, `touch_clips`).
+    let first = b.scene.animation.tracks.len();
+    let mut owners: Vec<(usize, NodeRef)> = Vec::new();
     for p in pending {
         let made = if x3d_interp::handles(&p.interp, p.ease.as_deref()) {
             // X3D splines, squad and EaseInEaseOut: exact keys or samples.
@@ -383,7 +391,10 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
                     Repeat::Constant
                 };
                 match Track::new(target, repeat, keys) {
-                    Ok(t) => b.scene.animation.tracks.push(t),
+                    Ok(t) => {
+                        owners.push((b.scene.animation.tracks.len(), p.sensor.clone()));
+                        b.scene.animation.tracks.push(t);
+                    }
                     Err(e) => {
                         let msg = format!("{} not imported: {e}", p.interp.kind);
                         b.warn(p.interp.pos, &msg);
@@ -394,7 +405,8 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
         }
     }
     let mut normals_used: HashSet<*const AstNode> = HashSet::new();
-    for (interp, c, coord) in coord_pending {
+    for (interp, c, coord, sensor) in coord_pending {
+        let before = b.scene.animation.tracks.len();
         import_coordinates(
             b,
             &interp,
@@ -404,6 +416,8 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             &normal_pending,
             &mut normals_used,
         );
+        let after = b.scene.animation.tracks.len();
+        owners.extend((before..after).map(|i| (i, sensor.clone())));
     }
     for (interp, _) in &normal_pending {
         if !normals_used.contains(&Rc::as_ptr(interp)) {
@@ -416,6 +430,11 @@ pub fn import(b: &mut Builder, routes: &[Route]) {
             );
         }
     }
+    let waiting = touch_clips::event_started(routes);
+    touch_clips::split(b, first, &owners, &waiting, |ts| {
+        let c = clock(ts);
+        ((c.start + c.cycle) * fps as f64) as f32
+    });
 }
 
 /// The key normals of the NormalInterpolator driving `g`'s Normal with

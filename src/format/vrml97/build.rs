@@ -60,7 +60,6 @@ pub struct Builder {
     /// Coordinate node: what a CoordinateInterpolator on it morphs.
     pub(super) coord_users: HashMap<*const AstNode, Vec<(NodeRef, bool, MeshId)>>,
     unlit: Option<MaterialId>,
-    default_material: Option<MaterialId>,
     saw_navigation: bool,
     saw_background: bool,
     build_depth: usize,
@@ -85,7 +84,6 @@ impl Builder {
             meshes: HashMap::new(),
             coord_users: HashMap::new(),
             unlit: None,
-            default_material: None,
             saw_navigation: false,
             saw_background: false,
             build_depth: 0,
@@ -341,14 +339,15 @@ impl Builder {
             }
         };
         let Some(mesh) = mesh else { return };
-        let has_colors = !self.scene.meshes[mesh.0 as usize].colors.is_empty();
         let mat_node = appearance
             .as_ref()
             .and_then(|a| a.node("material").map(|m| m.effective()));
         let material = match (&appearance, &mat_node, texture) {
             (Some(a), m, Some(t)) => self.textured_material(a, m.as_ref(), t),
             (_, Some(m), _) => self.material(m),
-            (_, None, _) if has_colors => self.default_material(),
+            // §4.14.2 (table 4.5): no Material, lighting off: the Color
+            // node's colours or white (a textured shape keeps its texture
+            // model instead).
             (_, None, _) => self.unlit(),
         };
         self.push(
@@ -391,21 +390,15 @@ impl Builder {
         id
     }
 
-    fn default_material(&mut self) -> MaterialId {
-        if let Some(id) = self.default_material {
-            return id;
-        }
-        let id = self.scene.add_material(Material::default());
-        self.default_material = Some(id);
-        id
-    }
-
     /// VRML97 §4.14: a Shape without Material is unlit and white.
     fn unlit(&mut self) -> MaterialId {
         if let Some(id) = self.unlit {
             return id;
         }
-        let id = self.scene.add_material(unlit_fields());
+        let id = self.scene.add_material(Material {
+            unlit: true,
+            ..unlit_fields()
+        });
         self.unlit = Some(id);
         id
     }
@@ -423,6 +416,7 @@ fn unlit_fields() -> Material {
         transparency: 0.0,
         texture: None,
         emissive_texture: None,
+        unlit: false,
     }
 }
 
@@ -439,6 +433,7 @@ fn material_fields(m: &NodeRef) -> Material {
         transparency: m.f32("transparency", d.transparency),
         texture: None,
         emissive_texture: None,
+        unlit: false,
     }
 }
 

@@ -8,6 +8,7 @@ mod build;
 mod geometry;
 mod hanim;
 mod text;
+mod touch_clips;
 pub mod write;
 mod write_morph;
 mod write_text;

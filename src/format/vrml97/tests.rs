@@ -377,3 +377,90 @@ fn textured_primitives_get_the_default_mapping_and_untextured_ones_none() {
     assert_eq!(meshes[0].texcoords.len(), meshes[0].positions.len());
     assert!(meshes[1].texcoords.is_empty());
 }
+
+#[test]
+fn coloured_face_set_without_material_is_unlit_and_written_without_one() {
+    // A floor seen edge-on by the headlight: lit it would be black; unlit
+    // (§4.14.2 table 4.5) it shows its Color node's yellow exactly.
+    let src = "#VRML V2.0 utf8\nViewpoint { position 0 1 4 }\nShape { geometry IndexedFaceSet {\n coord Coordinate { point [-2 0 2, 2 0 2, 2 0 -2, -2 0 -2] } coordIndex [0 1 2 3]\n colorPerVertex FALSE color Color { color [1 1 0] } solid FALSE } }";
+    let l = load(src);
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    assert!(first_shape(&l.scene).1.unlit);
+    let yellow = |scene: &crate::scene::Scene| {
+        let img = crate::render(scene, &crate::RenderSpec::new(40, 30)).unwrap();
+        img.pixel(20, 25)
+    };
+    assert_eq!(yellow(&l.scene), [255, 255, 0]);
+    // Written back as an Appearance without Material, which reads unlit.
+    let (text, _) = super::write::write(&l.scene, &Default::default());
+    assert!(!text.contains("Material"), "{text}");
+    let again = load(&text);
+    assert!(first_shape(&again.scene).1.unlit);
+    assert_eq!(yellow(&again.scene), [255, 255, 0]);
+    // Inventor says it with LightModel BASE_COLOR (what Coin draws unlit).
+    let (iv, _) = crate::format::iv::write::write(&l.scene, &Default::default());
+    assert!(iv.contains("LightModel { model BASE_COLOR }"), "{iv}");
+    // With a Material the same floor is lit (and black edge-on).
+    let lit = load(&src.replace(
+        "Shape { geometry",
+        "Shape { appearance Appearance { material Material {} } geometry",
+    ));
+    assert!(!first_shape(&lit.scene).1.unlit);
+    assert_ne!(yellow(&lit.scene), [255, 255, 0]);
+}
+
+#[test]
+fn sensors_started_by_an_event_get_their_own_clip() {
+    let src = "#VRML V2.0 utf8
+DEF Spin Transform { children [ DEF Touch TouchSensor {} Shape { geometry Box {} } ] }
+DEF Slide Transform { translation 5 0 0 children Shape { geometry Sphere {} } }
+DEF Clock TimeSensor { cycleInterval 2 loop TRUE }
+DEF Once TimeSensor { cycleInterval 1 }
+DEF R OrientationInterpolator { key [0 1] keyValue [0 1 0 0, 0 1 0 3] }
+DEF P PositionInterpolator { key [0 1] keyValue [5 0 0, 5 4 0] }
+ROUTE Clock.fraction_changed TO R.set_fraction
+ROUTE R.value_changed TO Spin.set_rotation
+ROUTE Touch.touchTime TO Once.set_startTime
+ROUTE Once.fraction_changed TO P.set_fraction
+ROUTE P.value_changed TO Slide.set_translation";
+    let l = load(src);
+    // Only the TouchSensor itself is unknown to animed.
+    assert_eq!(l.warnings.len(), 1, "{:?}", l.warnings);
+    assert!(l.warnings[0].contains("TouchSensor is not supported"));
+    let s = &l.scene;
+    let names: Vec<&str> = s.clips.names().collect();
+    assert_eq!(names, ["at load", "Once"]);
+    // At load only the looping Clock plays; Slide keeps its translation.
+    assert_eq!(s.animation.tracks.len(), 1);
+    assert_eq!(s.animation.tracks[0].target.property, Property::Rotation);
+    let slide = s.find_node("Slide").unwrap();
+    let pose = crate::anim::evaluate(s, 0.5);
+    assert_eq!(
+        pose.world[slide.0 as usize].w_axis.truncate(),
+        Vec3::new(5.0, 0.0, 0.0)
+    );
+    // The touch clip moves it when played.
+    let mut s = l.scene.clone();
+    s.play_clip_index(s.find_clip("Once").unwrap()).unwrap();
+    let pose = crate::anim::evaluate(&s, 1.0);
+    assert_eq!(
+        pose.world[slide.0 as usize].w_axis.truncate(),
+        Vec3::new(5.0, 4.0, 0.0)
+    );
+    // A looping sensor that runs forever (stopTime <= startTime) plays at
+    // load whatever restarts it; one that stopped does not.
+    let looping = load(&src.replace(
+        "DEF Once TimeSensor { cycleInterval 1 }",
+        "DEF Once TimeSensor { cycleInterval 1 loop TRUE }",
+    ));
+    assert!(looping.scene.clips.is_empty());
+    assert_eq!(looping.scene.animation.tracks.len(), 2);
+    let stopped = load(&src.replace(
+        "DEF Once TimeSensor { cycleInterval 1 }",
+        "DEF Once TimeSensor { cycleInterval 1 loop TRUE startTime -1 }",
+    ));
+    assert_eq!(
+        stopped.scene.clips.names().collect::<Vec<_>>(),
+        ["at load", "Once"]
+    );
+}

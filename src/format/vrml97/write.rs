@@ -392,13 +392,15 @@ impl Writer<'_> {
             .tracks
             .iter()
             .any(|t| t.target.of == TargetRef::Material(crate::scene::MaterialId(mi as u32)));
-        let unlit = m
-            .texture
-            .as_ref()
-            .is_some_and(|t| t.model == TextureModel::Replace)
+        // An unlit material (lighting off, §4.14.2) is an Appearance
+        // without Material too.
+        let unlit = (m.unlit
+            || m.texture
+                .as_ref()
+                .is_some_and(|t| t.model == TextureModel::Replace))
             && !animated;
         let reuse = name.is_some() && self.written_materials[mi];
-        if reuse && m.texture.is_none() {
+        if reuse && m.texture.is_none() && !unlit {
             let n = name.as_deref().unwrap_or_default();
             self.out
                 .line(&format!("appearance Appearance {{ material USE {n} }}"));
