@@ -104,6 +104,8 @@ pub struct Line {
     pub inv_w: [f32; 2],
     pub attr: [[f32; ATTRS]; 2],
     pub item: u32,
+    /// Width in whole pixels (≥ 1; see [`stroke_pixels`]).
+    pub width: i32,
     pub bbox: [i32; 4],
 }
 
@@ -115,11 +117,26 @@ pub struct Point {
     pub z: f32,
     pub attr: [f32; ATTRS],
     pub item: u32,
+    /// Side of its square in whole pixels (≥ 1; see [`stroke_pixels`]).
+    pub size: i32,
     pub bbox: [i32; 4],
 }
 
-/// Side of the square a point covers, in pixels.
-pub const POINT_SIZE: i32 = 2;
+/// The widest line and largest point drawn, in pixels (a hostile
+/// lineWidth cannot make one primitive cover the whole picture many times).
+pub const MAX_STROKE: i32 = 64;
+
+/// A node's line width or point size in whole pixels: OpenGL rounds a
+/// non-antialiased width to the nearest integer and draws 0 as 1 (OpenGL
+/// 2.1 §3.3.1, §3.4.2), and Coin leaves OpenGL's default of 1 when the
+/// DrawStyle says 0.
+pub fn stroke_pixels(w: f32) -> i32 {
+    if w.is_finite() && w > 0.0 {
+        (w.round() as i32).clamp(1, MAX_STROKE)
+    } else {
+        1
+    }
+}
 
 /// Everything the tiles draw, in drawing order. Kept between frames (see
 /// `render::render_into`) so its buffers are not allocated and faulted in
@@ -254,6 +271,11 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
         let translucent = texture.as_ref().is_some_and(Sampler::translucent);
 
         transform_vertices(mesh, &geo, view_proj, material, has_normals, &mut verts);
+        let stroke = Stroke {
+            item,
+            line: stroke_pixels(node.line_width),
+            point: stroke_pixels(node.point_size),
+        };
         match style {
             RenderStyle::Filled => {
                 let dest = if smat.alpha < 1.0 || translucent {
@@ -262,21 +284,28 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
                     &mut out.opaque
                 };
                 setup_triangles(mesh, &verts, item, &screen, opts, &mut out.chunks, dest);
-                push_lines(&mut out.lines, &mesh.lines, &verts, item, &screen);
-                push_points(&mut out.points, &mesh.points, &verts, item, &screen);
+                push_lines(&mut out.lines, &mesh.lines, &verts, stroke, &screen);
+                push_points(&mut out.points, &mesh.points, &verts, stroke, &screen);
             }
             RenderStyle::Lines => {
-                let mut edges: Vec<[u32; 2]> = Vec::with_capacity(mesh.triangles.len() * 3);
-                for t in &mesh.triangles {
-                    edges.extend([[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]]);
+                // The polygons' outlines when the mesh keeps them (no
+                // triangulation diagonals), else the triangles' edges.
+                let mut edges: Vec<[u32; 2]> = Vec::new();
+                if mesh.edges.is_empty() {
+                    edges.reserve(mesh.triangles.len() * 3 + mesh.lines.len());
+                    for t in &mesh.triangles {
+                        edges.extend([[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]]);
+                    }
+                } else {
+                    edges.extend(&mesh.edges);
                 }
                 edges.extend(&mesh.lines);
-                push_lines(&mut out.lines, &edges, &verts, item, &screen);
-                push_points(&mut out.points, &mesh.points, &verts, item, &screen);
+                push_lines(&mut out.lines, &edges, &verts, stroke, &screen);
+                push_points(&mut out.points, &mesh.points, &verts, stroke, &screen);
             }
             RenderStyle::Points | RenderStyle::Hidden => {
                 let all: Vec<u32> = (0..mesh.positions.len() as u32).collect();
-                push_points(&mut out.points, &all, &verts, item, &screen);
+                push_points(&mut out.points, &all, &verts, stroke, &screen);
             }
         }
         out.items.push(Item {
@@ -546,7 +575,15 @@ pub fn planes(
     (base, d1, d2)
 }
 
-fn push_lines(out: &mut Vec<Line>, edges: &[[u32; 2]], verts: &[ClipVert], item: u32, s: &Screen) {
+/// Which item a line or point belongs to and how wide it is drawn.
+#[derive(Clone, Copy)]
+struct Stroke {
+    item: u32,
+    line: i32,
+    point: i32,
+}
+
+fn push_lines(out: &mut Vec<Line>, edges: &[[u32; 2]], verts: &[ClipVert], k: Stroke, s: &Screen) {
     let n = verts.len();
     for e in edges {
         if e[0] as usize >= n || e[1] as usize >= n {
@@ -562,11 +599,13 @@ fn push_lines(out: &mut Vec<Line>, edges: &[[u32; 2]], verts: &[ClipVert], item:
         if ![ax, ay, az, bx, by, bz].iter().all(|v| v.is_finite()) {
             continue;
         }
+        // A wide line reaches half its width further each way.
+        let reach = 1 + k.line / 2;
         let bbox = [
-            (ax.min(bx).floor() as i32 - 1).max(0),
-            (ay.min(by).floor() as i32 - 1).max(0),
-            (ax.max(bx).ceil() as i32 + 1).min(s.w as i32),
-            (ay.max(by).ceil() as i32 + 1).min(s.h as i32),
+            (ax.min(bx).floor() as i32 - reach).max(0),
+            (ay.min(by).floor() as i32 - reach).max(0),
+            (ax.max(bx).ceil() as i32 + reach).min(s.w as i32),
+            (ay.max(by).ceil() as i32 + reach).min(s.h as i32),
         ];
         if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
             continue;
@@ -577,13 +616,15 @@ fn push_lines(out: &mut Vec<Line>, edges: &[[u32; 2]], verts: &[ClipVert], item:
             z: [az, bz],
             inv_w: [aw, bw],
             attr: [a.attr, b.attr],
-            item,
+            item: k.item,
+            width: k.line,
             bbox,
         });
     }
 }
 
-fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], item: u32, s: &Screen) {
+fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], k: Stroke, s: &Screen) {
+    let size = k.point;
     for &i in idx {
         let Some(v) = verts.get(i as usize) else {
             continue;
@@ -594,21 +635,28 @@ fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], item: u32,
         }
         let (x, y, z, _) = s.project(c);
         if !(x.is_finite() && y.is_finite())
-            || x < -4.0
-            || y < -4.0
-            || x > s.w + 4.0
-            || y > s.h + 4.0
+            || x < -(size as f32) - 4.0
+            || y < -(size as f32) - 4.0
+            || x > s.w + size as f32 + 4.0
+            || y > s.h + size as f32 + 4.0
         {
             continue;
         }
-        // The POINT_SIZE × POINT_SIZE pixels whose centres are nearest.
-        let x0 = (x - POINT_SIZE as f32 * 0.5).round() as i32;
-        let y0 = (y - POINT_SIZE as f32 * 0.5).round() as i32;
+        // OpenGL's square (2.1 §3.3.1), in our y-down rows: an odd size is
+        // centred on the pixel holding the point (row ⌈y⌉−1 is GL's
+        // ⌊y_gl⌋), an even one on the nearest pixel corner.
+        let (x0, y0) = if size % 2 == 1 {
+            let r = (size - 1) / 2;
+            (x.floor() as i32 - r, y.ceil() as i32 - 1 - r)
+        } else {
+            let r = size / 2;
+            ((x + 0.5).floor() as i32 - r, (y - 0.5).ceil() as i32 - r)
+        };
         let bbox = [
             x0.max(0),
             y0.max(0),
-            (x0 + POINT_SIZE).min(s.w as i32),
-            (y0 + POINT_SIZE).min(s.h as i32),
+            (x0 + size).min(s.w as i32),
+            (y0 + size).min(s.h as i32),
         ];
         if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
             continue;
@@ -618,8 +666,8 @@ fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], item: u32,
             [
                 (x0 - 1).max(0),
                 (y0 - 1).max(0),
-                (x0 + POINT_SIZE + 1).min(s.w as i32),
-                (y0 + POINT_SIZE + 1).min(s.h as i32),
+                (x0 + size + 1).min(s.w as i32),
+                (y0 + size + 1).min(s.h as i32),
             ]
         } else {
             bbox
@@ -628,7 +676,8 @@ fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], item: u32,
             c: [x, y],
             z,
             attr: v.attr,
-            item,
+            item: k.item,
+            size,
             bbox,
         });
     }

@@ -7,7 +7,7 @@
 
 use super::clip::ATTRS;
 use super::fragment::{self, store_masked, Pass, Shaded, Visible, NONE};
-use super::prepare::{Item, Line, Point, Prepared, Tri, POINT_SIZE, SUBPIXEL};
+use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
 use super::shade::shade;
 use super::simd::{self, Lanes, Sse8, V8};
 use super::surface;
@@ -521,7 +521,7 @@ pub fn draw_tile(
         rgb[2][i] = c.z;
     }
     // 3. Lines and points, depth-tested and shaded as they come; under
-    // multisampling they cover samples (a 1-pixel-wide band, a square).
+    // multisampling they cover samples (a band of the line's width, a square).
     let sample_px: Vec<(f32, f32)> = offsets
         .iter()
         .map(|&(x, y)| (x as f32 / SUBPIXEL as f32, y as f32 / SUBPIXEL as f32))
@@ -558,7 +558,7 @@ pub fn draw_tile(
         let pt: &Point = &p.points[pi as usize];
         let item = &p.items[pt.item as usize];
         let c = shade_attrs(item, &facing(pt.attr, eye), eye);
-        let half = POINT_SIZE as f32 * 0.5;
+        let half = pt.size as f32 * 0.5;
         for y in pt.bbox[1].max(rect[1])..pt.bbox[3].min(rect[3]) {
             for x in pt.bbox[0].max(rect[0])..pt.bbox[2].min(rect[2]) {
                 let i = at(x, y);
@@ -740,10 +740,12 @@ fn facing(mut a: [f32; ATTRS], eye: Vec3) -> [f32; ATTRS] {
     a
 }
 
-/// Calls `f(x, y, depth, attrs)` for the pixels of a 1-pixel-wide line in
-/// `rect`: one pixel per column (x-major) or per row (y-major), whose centre
-/// column/row lies in the half-open span of the segment. Each pixel is a
-/// function of the segment alone, so tiles agree at their borders.
+/// Calls `f(x, y, depth, attrs)` for the pixels of a line in `rect`: per
+/// column (x-major) or row (y-major) whose centre lies in the half-open
+/// span of the segment, the pixel the line crosses, or for a line `width`
+/// pixels wide a run of that many centred on it (OpenGL 2.1 §3.4.2: the
+/// segment moved by −(w−1)/2 across, then w pixels from there). Each pixel
+/// is a function of the segment alone, so tiles agree at their borders.
 pub fn for_each_line_pixel(l: &Line, rect: Rect, mut f: impl FnMut(i32, i32, f32, [f32; ATTRS])) {
     let (dx, dy) = (l.x[1] - l.x[0], l.y[1] - l.y[0]);
     let x_major = dx.abs() >= dy.abs();
@@ -771,11 +773,17 @@ pub fn for_each_line_pixel(l: &Line, rect: Rect, mut f: impl FnMut(i32, i32, f32
         }
         return;
     }
+    let shift = (l.width - 1) as f32 * 0.5;
     for k in first..last {
         let t = (k as f32 + 0.5 - m0) / dm;
-        let o = (o0 + t * od).floor() as i32;
-        let (x, y) = if x_major { (k, o) } else { (o, k) };
-        if x < rect[0] || x >= rect[2] || y < rect[1] || y >= rect[3] {
+        let o = (o0 + t * od - shift).floor() as i32;
+        let (o_lo, o_hi) = if x_major {
+            (rect[1], rect[3])
+        } else {
+            (rect[0], rect[2])
+        };
+        let run = o.max(o_lo)..(o + l.width).min(o_hi);
+        if run.is_empty() {
             continue;
         }
         let z = l.z[0] + t * (l.z[1] - l.z[0]);
@@ -787,13 +795,16 @@ pub fn for_each_line_pixel(l: &Line, rect: Rect, mut f: impl FnMut(i32, i32, f32
         for (j, v) in a.iter_mut().enumerate() {
             *v = l.attr[0][j] + s * (l.attr[1][j] - l.attr[0][j]);
         }
-        f(x, y, z, a);
+        for o in run {
+            let (x, y) = if x_major { (k, o) } else { (o, k) };
+            f(x, y, z, a);
+        }
     }
 }
 
 /// Multisampled lines: calls `f(x, y, sample mask, depth, attrs)` for the
 /// pixels of `rect` some of whose samples (`samples`, in pixels from the
-/// centre) lie in the 1-pixel-wide band around the segment, within its
+/// centre) lie in the `width`-pixel-wide band around the segment, within its
 /// half-open length. Depth and attributes are taken once per pixel, where
 /// the pixel's centre projects onto the segment.
 pub fn for_each_line_pixel_aa(
@@ -813,23 +824,26 @@ pub fn for_each_line_pixel_aa(
         return;
     }
     let inv_len = 1.0 / len2.sqrt();
-    let x0 = (l.x[0].min(l.x[1]).floor() as i32 - 1)
+    // Half the band's width, and how far past the ends it reaches.
+    let half = l.width as f32 * 0.5;
+    let reach = 1 + l.width / 2;
+    let x0 = (l.x[0].min(l.x[1]).floor() as i32 - reach)
         .max(rect[0])
         .max(l.bbox[0]);
-    let x1 = (l.x[0].max(l.x[1]).ceil() as i32 + 1)
+    let x1 = (l.x[0].max(l.x[1]).ceil() as i32 + reach)
         .min(rect[2])
         .min(l.bbox[2]);
-    let y0 = (l.y[0].min(l.y[1]).floor() as i32 - 1)
+    let y0 = (l.y[0].min(l.y[1]).floor() as i32 - reach)
         .max(rect[1])
         .max(l.bbox[1]);
-    let y1 = (l.y[0].max(l.y[1]).ceil() as i32 + 1)
+    let y1 = (l.y[0].max(l.y[1]).ceil() as i32 + reach)
         .min(rect[3])
         .min(l.bbox[3]);
     for y in y0..y1 {
         for x in x0..x1 {
             let (cx, cy) = (x as f32 + 0.5, y as f32 + 0.5);
-            // Cheap reject: the centre is more than √2 pixels from the line.
-            if ((cx - l.x[0]) * dy - (cy - l.y[0]) * dx).abs() * inv_len > 1.5 {
+            // Cheap reject: no sample of this pixel can be in the band.
+            if ((cx - l.x[0]) * dy - (cy - l.y[0]) * dx).abs() * inv_len > half + 1.0 {
                 continue;
             }
             let mut mask = 0u32;
@@ -837,7 +851,7 @@ pub fn for_each_line_pixel_aa(
                 let (px, py) = (cx + ox - l.x[0], cy + oy - l.y[0]);
                 let dist = (px * dy - py * dx).abs() * inv_len;
                 let t = (px * dx + py * dy) / len2;
-                if dist <= 0.5 && (0.0..1.0).contains(&t) {
+                if dist <= half && (0.0..1.0).contains(&t) {
                     mask |= 1 << s;
                 }
             }
@@ -986,6 +1000,7 @@ mod tests {
             inv_w: [1.0, 1.0],
             attr: [[0.0; ATTRS]; 2],
             item: 0,
+            width: 1,
             bbox: [0, 0, 64, 64],
         };
         let mut cols = Vec::new();
@@ -999,5 +1014,38 @@ mod tests {
         let mut whole = Vec::new();
         for_each_line_pixel(&l, [0, 0, 64, 64], |x, y, _, _| whole.push((x, y)));
         assert_eq!(split, whole);
+    }
+
+    /// A line 2 pixels wide covers, in each column, the pixel it crosses
+    /// and the nearer neighbour (the two centres within 1 of the line); a
+    /// 3-pixel one is centred on the 1-pixel line's pixel.
+    #[test]
+    fn wide_lines_cover_width_pixels_per_column() {
+        let line = |width| Line {
+            x: [2.0, 30.0],
+            y: [10.3, 10.3],
+            z: [0.5, 0.5],
+            inv_w: [1.0, 1.0],
+            attr: [[0.0; ATTRS]; 2],
+            item: 0,
+            width,
+            bbox: [0, 0, 64, 64],
+        };
+        let rows = |width| {
+            let mut rows = Vec::new();
+            for_each_line_pixel(&line(width), [0, 0, 64, 64], |x, y, _, _| {
+                if x == 5 {
+                    rows.push(y)
+                }
+            });
+            rows
+        };
+        assert_eq!(rows(1), [10]);
+        assert_eq!(rows(2), [9, 10]);
+        assert_eq!(rows(3), [9, 10, 11]);
+        // Clipped to the tile across the line, too.
+        let mut clipped = Vec::new();
+        for_each_line_pixel(&line(3), [0, 10, 64, 64], |_, y, _, _| clipped.push(y));
+        assert!(clipped.iter().all(|&y| y >= 10) && clipped.len() == 28 * 2);
     }
 }

@@ -20,6 +20,11 @@ pub struct Mesh {
     pub triangles: Vec<[u32; 3]>,
     pub lines: Vec<[u32; 2]>,
     pub points: Vec<u32>,
+    /// The polygons' outline edges, what a face set drawn as lines shows
+    /// (Inventor's DrawStyle LINES draws each polygon's boundary, not the
+    /// diagonals triangulation adds). Empty when the triangles' own edges
+    /// are the outline (every face a triangle).
+    pub edges: Vec<[u32; 2]>,
     /// Solid shapes are back-face culled; others are lit on both sides.
     pub solid: bool,
     /// Morph targets and their default weights (animated per shape as

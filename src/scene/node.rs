@@ -35,6 +35,13 @@ pub struct Node {
     pub transform: Transform,
     pub visible: bool,
     pub style: RenderStyle,
+    /// Width of the lines this shape draws, in pixels (Inventor's
+    /// DrawStyle lineWidth); 0 = the renderer's default, 1 pixel as in
+    /// OpenGL and Coin.
+    pub line_width: f32,
+    /// Side of the square each of its points covers, in pixels (DrawStyle
+    /// pointSize); 0 = the default, 1 pixel.
+    pub point_size: f32,
     pub kind: NodeKind,
     /// The skin that deforms this shape's mesh (its joints, not this node's
     /// transform, then place the vertices, as glTF §3.7.3 says).
@@ -50,6 +57,8 @@ impl Node {
             transform: Transform::default(),
             visible: true,
             style: RenderStyle::Filled,
+            line_width: 0.0,
+            point_size: 0.0,
             kind,
             skin: None,
         }

@@ -162,6 +162,8 @@ pub fn mesh_from_polygons_corners(
     let mut welded: HashMap<Key, u32> = HashMap::new();
     let mut corners: Vec<u32> = Vec::with_capacity(faces.iter().map(Vec::len).sum());
     let mut corner = 0usize;
+    // Whether some face has more than 3 corners (else no outline is kept).
+    let mut polygons = false;
     for face in faces {
         let n = face.len();
         let mut out = Vec::with_capacity(n);
@@ -189,11 +191,17 @@ pub fn mesh_from_polygons_corners(
         if n < 3 {
             continue;
         }
+        polygons |= n > 3;
+        mesh.edges
+            .extend((0..n).map(|k| [out[k], out[(k + 1) % n]]));
         for [a, b, c] in triangulate(positions, face) {
             let t = [out[a], out[b], out[c]];
             mesh.triangles
                 .push(if opts.ccw { t } else { [t[0], t[2], t[1]] });
         }
+    }
+    if !polygons {
+        mesh.edges = Vec::new();
     }
     Ok((mesh, corners))
 }

@@ -46,6 +46,9 @@ pub fn box_mesh(size: Vec3) -> Mesh {
         }
         m.triangles.push([base, base + 1, base + 2]);
         m.triangles.push([base, base + 2, base + 3]);
+        // The face's outline, for drawing as lines (a Cube shows 6 squares).
+        m.edges
+            .extend((0..4).map(|k| [base + k, base + (k + 1) % 4]));
     }
     m
 }

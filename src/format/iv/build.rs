@@ -58,6 +58,22 @@ struct Cursor {
     depth: u32,
 }
 
+/// The child a Switch traverses (−1 none, −3 all): SO_SWITCH_INHERIT
+/// (−2) takes the last Switch's value from the state, wrapped into range
+/// as Coin does (chessboard.iv picks its kings and queens that way); any
+/// other value becomes that state value (SoSwitch::doAction).
+fn switch_child(which: f64, children: usize, st: &mut State) -> i64 {
+    let which = which as i64;
+    if which != -2 {
+        st.switch_value = which;
+        return which;
+    }
+    match st.switch_value {
+        v if v >= 0 && children > 0 => v % children as i64,
+        v => v,
+    }
+}
+
 /// How deep named transforms may nest the scene when they follow each other
 /// as siblings (each moves what follows, so each nests the rest). Beyond it
 /// their matrices are merged into what follows, so the scene stays shallow
@@ -254,8 +270,8 @@ impl Builder {
                 }
             }
             "Switch" | "Blinker" => {
-                let which = n.num("whichChild").unwrap_or(-1.0) as i64;
                 let kids = n.nodes("children").to_vec();
+                let which = switch_child(n.num("whichChild").unwrap_or(-1.0), kids.len(), st);
                 if which == -3 {
                     for c in &kids {
                         self.node(c, st, cur);
@@ -441,7 +457,7 @@ impl Builder {
                 self.material(st, texture)
             };
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
-        node.style = st.style;
+        (node.style, node.line_width, node.point_size) = (st.style, st.line_width, st.point_size);
         self.add(n.pos, cur, node);
     }
 
@@ -553,7 +569,7 @@ impl Builder {
         // Text carries no texture coordinates: drawn untextured.
         let material = self.material(st, None);
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
-        node.style = st.style;
+        (node.style, node.line_width, node.point_size) = (st.style, st.line_width, st.point_size);
         self.add(n.pos, cur, node);
     }
 

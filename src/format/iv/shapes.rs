@@ -286,12 +286,19 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             } else {
                 primitives::cone
             };
-            Some(cone(
-                n.f32("bottomRadius", 1.0),
-                n.f32("height", 2.0),
+            let (side, bottom) = (
                 all || parts.iter().any(|p| p == "SIDES"),
                 all || parts.iter().any(|p| p == "BOTTOM"),
-            ))
+            );
+            let mut m = cone(
+                n.f32("bottomRadius", 1.0),
+                n.f32("height", 2.0),
+                side,
+                bottom,
+            );
+            // An open cone shows its inside (Coin culls no primitive).
+            m.solid = side && bottom;
+            Some(m)
         }
         "Cylinder" => {
             let (all, parts) = parts(n);
@@ -300,13 +307,17 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             } else {
                 primitives::cylinder
             };
-            Some(cylinder(
+            let has = |w: &str| all || parts.iter().any(|p| p == w);
+            let (side, top, bottom) = (has("SIDES"), has("TOP"), has("BOTTOM"));
+            let mut m = cylinder(
                 n.f32("radius", 1.0),
                 n.f32("height", 2.0),
-                all || parts.iter().any(|p| p == "SIDES"),
-                all || parts.iter().any(|p| p == "TOP"),
-                all || parts.iter().any(|p| p == "BOTTOM"),
-            ))
+                side,
+                top,
+                bottom,
+            );
+            m.solid = side && top && bottom;
+            Some(m)
         }
         "IndexedFaceSet" | "IndexedTriangleStripSet" => {
             let (faces, o, texcoords) = indexed_faces(n, kind, st, inp);
@@ -618,7 +629,11 @@ fn quad_mesh(n: &AstNode, start: usize) -> (Vec<Vec<u32>>, Vec<u32>) {
     let at = |r: usize, c: usize| (start + r * cols + c) as u32;
     for r in 0..rows - 1 {
         for c in 0..cols - 1 {
-            faces.push(vec![at(r, c), at(r + 1, c), at(r + 1, c + 1), at(r, c + 1)]);
+            // Coin draws each row as a GL_QUAD_STRIP, which Mesa splits
+            // along (r, c)–(r+1, c+1); starting the quad at (r+1, c) makes
+            // the triangulation cut the same diagonal (it clips the first
+            // corner's ear), so a bent quad has Coin's silhouette.
+            faces.push(vec![at(r + 1, c), at(r + 1, c + 1), at(r, c + 1), at(r, c)]);
             parts.push(r as u32);
         }
     }

@@ -49,6 +49,12 @@ pub struct State {
     pub solid_type: bool,
     pub crease_angle: f32,
     pub style: RenderStyle,
+    /// DrawStyle lineWidth and pointSize in pixels (0: the default).
+    pub line_width: f32,
+    pub point_size: f32,
+    /// The last Switch's whichChild (Coin's SoSwitchElement), what a
+    /// Switch with whichChild −2 (SO_SWITCH_INHERIT) takes; −1 at first.
+    pub switch_value: i64,
     /// LightModel BASE_COLOR: shapes are unlit.
     pub unlit: bool,
     /// Font (Inventor) or FontStyle (VRML 1.0) for the text nodes.
@@ -128,6 +134,9 @@ impl State {
             // VRML 1.0 §ShapeHints says 0.5; Coin's Inventor default is 0.
             crease_angle: if vrml1 { 0.5 } else { 0.0 },
             style: RenderStyle::Filled,
+            line_width: 0.0,
+            point_size: 0.0,
+            switch_value: -1,
             unlit: false,
             font: None,
             profile: (None, None),
@@ -175,6 +184,12 @@ impl State {
                         "INVISIBLE" => RenderStyle::Hidden,
                         _ => RenderStyle::Filled,
                     };
+                }
+                if let Some(w) = n.num("lineWidth") {
+                    self.line_width = w as f32;
+                }
+                if let Some(w) = n.num("pointSize") {
+                    self.point_size = w as f32;
                 }
             }
             "Font" | "FontStyle" => self.font = Some(n.clone()),

@@ -82,6 +82,66 @@ fn switch_group_drawstyle_info_and_camera() {
     assert_eq!(cam.kind, CameraKind::Perspective { height_angle: 0.5 });
 }
 
+/// DrawStyle's lineWidth and pointSize reach the shapes after it, and a
+/// face set keeps its polygons' outlines for LINES (a quad is 4 edges, not
+/// the 5 of its two triangles); a triangle-only set keeps none.
+#[test]
+fn drawstyle_widths_and_polygon_outlines() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF Thin Cube {}\n DrawStyle { style LINES lineWidth 2 pointSize 3.4 }\n Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0, 2 0 0 ] }\n DEF Quad IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] }\n DEF Tri IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }\n}",
+    );
+    let s = &l.scene;
+    let node = |name| s.node(s.find_node(name).unwrap());
+    let mesh = |name| match &node(name).kind {
+        NodeKind::Shape(sh) => &s.meshes[sh.mesh.0 as usize],
+        _ => panic!(),
+    };
+    assert_eq!(
+        (node("Thin").line_width, node("Thin").point_size),
+        (0.0, 0.0)
+    );
+    let q = node("Quad");
+    assert_eq!(
+        (q.style, q.line_width, q.point_size),
+        (RenderStyle::Lines, 2.0, 3.4)
+    );
+    let m = mesh("Quad");
+    assert_eq!(m.triangles.len(), 2);
+    let mut outline: Vec<[Vec3; 2]> = m
+        .edges
+        .iter()
+        .map(|e| [m.positions[e[0] as usize], m.positions[e[1] as usize]])
+        .collect();
+    outline.sort_by(|a, b| a[0].to_array().partial_cmp(&b[0].to_array()).unwrap());
+    assert_eq!(outline.len(), 4);
+    assert_eq!(outline[0], [Vec3::ZERO, Vec3::X]);
+    assert!(mesh("Tri").edges.is_empty());
+    // A Cube's outline is its 6 squares.
+    assert_eq!(mesh("Thin").edges.len(), 24);
+}
+
+/// whichChild −2 (SO_SWITCH_INHERIT) takes the last Switch's value, also
+/// a sibling's, wrapped into range, as Coin's SoSwitch does; a Separator
+/// scopes it. An open Cone is drawn two-sided (its inside shows).
+#[test]
+fn inherited_switch_values_and_open_primitives() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n Switch { whichChild 1 Info {} }\n Switch { whichChild -2 DEF A0 Cube {} DEF A1 Cube {} }\n Switch { whichChild -2 DEF B0 Cube {} }\n Separator { Switch { whichChild 0 Info {} } }\n Switch { whichChild -2 DEF C0 Cube {} DEF C1 Cube {} }\n DEF Open Cone { parts SIDES }\n DEF Closed Cone { parts (SIDES | BOTTOM) }\n}",
+    );
+    let s = &l.scene;
+    let found = |n: &str| s.find_node(n).is_some();
+    assert!(!found("A0") && found("A1"));
+    // 1 wraps to 0 in a one-child switch.
+    assert!(found("B0"));
+    // The Separator's whichChild 0 stays inside it.
+    assert!(!found("C0") && found("C1"));
+    let solid = |n| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].solid,
+        _ => panic!(),
+    };
+    assert!(!solid("Open") && solid("Closed"));
+}
+
 #[test]
 fn indexed_face_set_with_per_face_materials_and_clockwise_hints() {
     let l = load(

@@ -162,6 +162,10 @@ pub fn write(scene: &Scene, opts: &WriteOptions) -> (String, WriteReport) {
             .push("Inventor has no background or headlight node: kept in the key note only".into());
     }
     w.report_channels();
+    // VRML 1.0 has no DrawStyle: widths are lost there only.
+    w.report
+        .warnings
+        .extend(crate::format::export::dropped::dropped_parts(scene, !v1));
     (w.out.text, w.report)
 }
 
@@ -617,6 +621,17 @@ impl Writer<'_> {
                     .line(&format!("BaseColor {{ rgb {} }}", vec3(base)));
             }
         }
+        // DrawStyle's widths (Inventor 2.x; VRML 1.0 has no DrawStyle),
+        // set back to the defaults after the shape like the LightModel.
+        let node = self.scene.node(id);
+        let widths = !self.v1 && (node.line_width != 0.0 || node.point_size != 0.0);
+        if widths {
+            self.out.line(&format!(
+                "DrawStyle {{ lineWidth {} pointSize {} }}",
+                num(node.line_width),
+                num(node.point_size)
+            ));
+        }
         let key = mesh_key(mesh);
         let hints = if mesh.solid {
             "ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID }"
@@ -716,6 +731,9 @@ impl Writer<'_> {
         }
         if unlit {
             self.out.line("LightModel { model PHONG }");
+        }
+        if widths {
+            self.out.line("DrawStyle { lineWidth 0 pointSize 0 }");
         }
     }
 

@@ -125,6 +125,9 @@ fn write_dialect(scene: &Scene, opts: &WriteOptions, x3d: bool) -> (String, Writ
         w.node(root);
     }
     w.animation(opts);
+    w.report
+        .warnings
+        .extend(crate::format::export::dropped::dropped_parts(scene, false));
     if let (n, Some(first)) = &w.lossy_matrices {
         w.report.warnings.push(format!(
             "{n} node(s) had a matrix with shear, written as translation/rotation/scale \
