@@ -714,7 +714,7 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
             let mut id = [0u32; 8];
             for s in 0..ns {
                 let j = s * PLANE + src + k;
-                for (a, c) in acc.iter_mut().zip([&*r, &*g, &*b]) {
+                for (a, c) in acc.iter_mut().zip([r, g, b]) {
                     *a = *a + Sse8::load(c[j..j + 8].try_into().expect("8"));
                 }
                 for (z, d) in zmin.iter_mut().zip(&depth[j..j + 8]) {
