@@ -41,6 +41,12 @@ pub enum Request {
     /// Make the recovered `copy` this session's own copy `mine` (renamed;
     /// kept where it is if that fails).
     TakeOver { copy: PathBuf, mine: PathBuf },
+    /// Read what the file browser asked for (a folder's listing, or what
+    /// a typed path is), filtered for `purpose`.
+    Look {
+        ask: crate::editor::browser::Ask,
+        purpose: crate::editor::browser::Purpose,
+    },
     /// Read the view remembered for the scene `key` from `memory`.
     RecallView { memory: PathBuf, key: PathBuf },
     /// Remember `camera` for the scene `key` in `memory`.

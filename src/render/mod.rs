@@ -17,6 +17,7 @@
 mod background;
 pub mod bench_scenes;
 mod clip;
+mod coin_bounds;
 mod fragment;
 mod frame;
 mod geometry;
@@ -29,6 +30,8 @@ mod shade;
 mod simd;
 pub mod stages;
 mod surface;
+mod texel_block;
+mod texel_fetch;
 mod texture;
 mod texture_lanes;
 mod view;
