@@ -32,10 +32,11 @@ pub struct Item {
     /// as is.
     pub unlit: bool,
     /// The shading pass computes texture coordinates and their derivatives
-    /// for this item and calls `fragment::apply_texture` (set it when the
-    /// material has a texture and the mesh has texture coordinates; the
-    /// vertices then carry them in `clip::A_UV`). Untextured items never
-    /// pay for it.
+    /// for this item and runs its texture steps (`surface::shade_lanes`;
+    /// its tiles shade in the loop compiled with them). Set it when the
+    /// material has a texture or an emissive map and the mesh has texture
+    /// coordinates (the vertices then carry them in `clip::A_UV`).
+    /// Untextured items never pay for it.
     pub textured: bool,
     /// The texture of a textured item.
     pub texture: Option<Sampler>,

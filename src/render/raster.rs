@@ -385,9 +385,9 @@ fn edge_lanes<V: V8>(exact: bool, e: i64, s: i64) -> V {
 /// Writes the first `dst.len()` (at most 8) of `px`: a whole block as one
 /// fixed-size copy (a variable-length one becomes a `memmove` call).
 #[inline(always)]
-fn put8(dst: &mut [u32], px: &[u32; 8]) {
+fn put8<T: Copy>(dst: &mut [T], px: &[T; 8]) {
     let n = dst.len().min(8);
-    if let Ok(d) = <&mut [u32; 8]>::try_from(&mut dst[..n]) {
+    if let Ok(d) = <&mut [T; 8]>::try_from(&mut dst[..n]) {
         *d = *px;
     } else {
         dst[..n].copy_from_slice(&px[..n]);
@@ -692,39 +692,43 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
                 let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
                 let px = super::frame::pack_rgb8(ld(r), ld(g), ld(b));
                 put8(&mut target.color[dst + k..dst + tw], &px);
+                let at = src + k..src + k + 8;
+                put8(
+                    &mut target.depth[dst + k..dst + tw],
+                    depth[at.clone()].try_into().expect("8"),
+                );
+                put8(
+                    &mut target.ids[dst + k..dst + tw],
+                    ids[at].try_into().expect("8"),
+                );
             }
-            target.depth[dst..dst + tw].copy_from_slice(&depth[src..src + tw]);
-            target.ids[dst..dst + tw].copy_from_slice(&ids[src..src + tw]);
             continue;
         }
-        // Row by row, one sample plane at a time (contiguous reads); the
-        // sum runs in sample order, so it is the same on every machine.
-        let mut acc = [[0.0f32; TILE as usize]; 3];
-        let mut zmin = [f32::INFINITY; TILE as usize];
-        let mut id = [0u32; TILE as usize];
-        for s in 0..ns {
-            let j = s * PLANE + src;
-            for (a, c) in acc.iter_mut().zip([r, g, b]) {
-                for (a, c) in a[..tw].iter_mut().zip(&c[j..j + tw]) {
-                    *a += c;
-                }
-            }
-            for (z, d) in zmin[..tw].iter_mut().zip(&depth[j..j + tw]) {
-                *z = z.min(*d);
-            }
-            for (i, d) in id[..tw].iter_mut().zip(&ids[j..j + tw]) {
-                *i = if *i == 0 { *d } else { *i };
-            }
-        }
+        // Eight pixels at a time, all their samples at once (no row-long
+        // sums kept in memory); the sum runs in sample order from 0, so it
+        // is the same on every machine and as it always was.
         let inv = Sse8::splat(inv);
         for k in (0..tw).step_by(8) {
-            let ld =
-                |c: &[f32; TILE as usize]| Sse8::load(c[k..k + 8].try_into().expect("8")) * inv;
-            let px = super::frame::pack_rgb8(ld(&acc[0]), ld(&acc[1]), ld(&acc[2]));
+            let mut acc = [Sse8::splat(0.0); 3];
+            let mut zmin = [f32::INFINITY; 8];
+            let mut id = [0u32; 8];
+            for s in 0..ns {
+                let j = s * PLANE + src + k;
+                for (a, c) in acc.iter_mut().zip([r, g, b]) {
+                    *a = *a + Sse8::load(c[j..j + 8].try_into().expect("8"));
+                }
+                for (z, d) in zmin.iter_mut().zip(&depth[j..j + 8]) {
+                    *z = z.min(*d);
+                }
+                for (i, d) in id.iter_mut().zip(&ids[j..j + 8]) {
+                    *i = if *i == 0 { *d } else { *i };
+                }
+            }
+            let px = super::frame::pack_rgb8(acc[0] * inv, acc[1] * inv, acc[2] * inv);
             put8(&mut target.color[dst + k..dst + tw], &px);
+            put8(&mut target.depth[dst + k..dst + tw], &zmin);
+            put8(&mut target.ids[dst + k..dst + tw], &id);
         }
-        target.depth[dst..dst + tw].copy_from_slice(&zmin[..tw]);
-        target.ids[dst..dst + tw].copy_from_slice(&id[..tw]);
     }
 }
 

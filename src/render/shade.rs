@@ -198,6 +198,21 @@ pub fn shade8<V: Lanes>(
     let mut sum: [V; 3] = splat3(m.emissive);
     let use_specular = m.specular != Vec3::ZERO;
     for l in lights {
+        if l.color == Vec3::ZERO {
+            if let WorldLightKind::Directional { .. } = l.kind {
+                // Ambient only (Inventor's global ambient, a light of
+                // intensity 0): attenuation and spot are 1, and the direct
+                // terms below are 0·x, so the term is ambient × diffuse.
+                // Adding +0 keeps the sign of a zero as the full sum
+                // would; no vector, square root or division per lane.
+                let amb = l.ambient * m.ambient_intensity;
+                for ch in 0..3 {
+                    let term = V::splat(amb[ch]) * diffuse[ch] + zero;
+                    sum[ch] = sum[ch] + term;
+                }
+                continue;
+            }
+        }
         // Unit vector to the light and attenuation × spot factor per lane
         // (0 where the light does not reach).
         let (to_light, factor) = match l.kind {
