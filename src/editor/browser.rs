@@ -10,6 +10,8 @@ pub enum Purpose {
     Open,
     Import,
     SaveAs,
+    /// An image for the material panel's texture.
+    Texture,
 }
 
 impl Purpose {
@@ -18,6 +20,7 @@ impl Purpose {
             Purpose::Open => "Open scene",
             Purpose::Import => "Import model",
             Purpose::SaveAs => "Save scene as",
+            Purpose::Texture => "Texture image",
         }
     }
 
@@ -26,6 +29,15 @@ impl Purpose {
             Purpose::Open => "Open",
             Purpose::Import => "Import",
             Purpose::SaveAs => "Save",
+            Purpose::Texture => "Use",
+        }
+    }
+
+    /// Which files the listing shows (folders always).
+    pub fn lists(self) -> fn(&str) -> bool {
+        match self {
+            Purpose::Texture => is_image_file,
+            _ => is_known_file,
         }
     }
 }
@@ -43,6 +55,16 @@ pub fn is_known_file(name: &str) -> bool {
     [
         ".iv", ".wrl", ".wrl.gz", ".wrz", ".vrml", ".obj", ".gz", ".gltf", ".glb", ".x3d", ".x3dv",
         ".x3dz", ".x3dvz",
+    ]
+    .iter()
+    .any(|e| l.ends_with(e))
+}
+
+/// Image files a texture can be read from (`format::textures::decode`).
+pub fn is_image_file(name: &str) -> bool {
+    let l = name.to_ascii_lowercase();
+    [
+        ".png", ".jpg", ".jpeg", ".gif", ".bmp", ".rgb", ".rgba", ".bw", ".sgi",
     ]
     .iter()
     .any(|e| l.ends_with(e))
@@ -83,7 +105,7 @@ impl Browser {
     /// case-insensitively; hidden entries are skipped.
     pub fn enter(&mut self, dir: &Path) {
         let dir = normalize(dir);
-        match list(&dir) {
+        match list(&dir, self.purpose.lists()) {
             Ok(entries) => {
                 self.entries = entries;
                 self.dir = dir;
@@ -147,7 +169,7 @@ impl Browser {
         } else {
             expand_home(&head)
         };
-        let Ok(entries) = list(&folder) else {
+        let Ok(entries) = list(&folder, self.purpose.lists()) else {
             self.message = Some(format!("no folder {}", folder.display()));
             return;
         };
@@ -263,7 +285,8 @@ fn normalize(p: &Path) -> PathBuf {
     out
 }
 
-fn list(dir: &Path) -> std::io::Result<Vec<Entry>> {
+/// `dir`'s folders and the files `shown` accepts.
+fn list(dir: &Path, shown: fn(&str) -> bool) -> std::io::Result<Vec<Entry>> {
     let mut dirs = Vec::new();
     let mut files = Vec::new();
     for e in std::fs::read_dir(dir)? {
@@ -275,7 +298,7 @@ fn list(dir: &Path) -> std::io::Result<Vec<Entry>> {
         let is_dir = e.path().is_dir();
         if is_dir {
             dirs.push(Entry { name, is_dir });
-        } else if is_known_file(&name) {
+        } else if shown(&name) {
             files.push(Entry { name, is_dir });
         }
     }
