@@ -313,7 +313,7 @@ fn load_replaces_the_texture_through_the_browser_and_says_why_a_file_is_refused(
         "{}",
         ed.status().text
     );
-    assert!(has(&ed, "label: \"tex_2x2.png\""));
+    assert!(has(&ed, "\"tex_2x2.png\""), "the row names the new file");
     // One undo step brings the brick back, redo the new image.
     run(&mut ed, "key ctrl+z");
     assert_eq!(image_of(&ed), brick);
