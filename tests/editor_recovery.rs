@@ -209,8 +209,8 @@ fn opening_offers_the_copy_recover_keeps_the_name_and_undo_shows_the_saved_file(
     assert!(dlg.message.contains("UTC"), "{}", dlg.message);
     assert_eq!(ed.recovery_offer(), Some(copy.as_path()));
     // The dialog's buttons say what they do.
-    let labels: Vec<String> = ed
-        .dialog_widgets(&dlg.message)
+    let labels: Vec<String> = dlg
+        .widgets(ed.layout().window)
         .into_iter()
         .filter_map(|w| match w.kind {
             WidgetKind::Button { label, .. } => Some(label),
@@ -431,8 +431,8 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
     let shown: Vec<&str> = dlg.message.lines().collect();
     assert!(shown[1].starts_with("> 1  ") && shown[1].contains(&format!("{n} objects")));
     assert!(shown[2].starts_with("  2  ") && shown[2].contains("2 objects"));
-    let labels: Vec<String> = ed
-        .dialog_widgets(&dlg.message)
+    let labels: Vec<String> = dlg
+        .widgets(ed.layout().window)
         .into_iter()
         .filter_map(|w| match w.kind {
             WidgetKind::Button { label, .. } => Some(label),

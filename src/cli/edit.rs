@@ -84,6 +84,10 @@ pub fn run(args: Args) -> i32 {
     let made = autosave_interval(args.autosave_secs).and_then(|secs| {
         let mut ed = make_editor(args.file.as_ref(), args.size)?;
         ed.set_autosave_interval(secs);
+        if let Ok(dir) = std::env::current_dir() {
+            // The file browser starts here when no file is open.
+            ed.set_start_dir(&dir);
+        }
         Ok(ed)
     });
     let mut ed = match made {

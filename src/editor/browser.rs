@@ -1,6 +1,8 @@
 //! The in-app file browser (minifb has no native dialog): a folder listing
 //! of sub-folders and known scene files, and a typed path with Tab
-//! completion.
+//! completion. It reads no folder itself: what it needs from the disk is
+//! an [`Ask`] the shell answers with what it [`Found`] (`shell.rs`), so
+//! the browser is plain state and can be driven without a disk.
 
 use std::path::{Path, PathBuf};
 
@@ -33,13 +35,37 @@ impl Purpose {
         }
     }
 
-    /// Which files the listing shows (folders always).
-    pub fn lists(self) -> fn(&str) -> bool {
+    /// Whether a file called `name` is listed for this purpose (folders
+    /// always are).
+    pub fn shows(self, name: &str) -> bool {
         match self {
-            Purpose::Texture => is_image_file,
-            _ => is_known_file,
+            Purpose::Texture => is_image_file(name),
+            _ => is_known_file(name),
         }
     }
+}
+
+/// What the browser needs read from the disk (the shell answers it).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Ask {
+    /// List this folder and show it.
+    Enter(PathBuf),
+    /// List this folder to complete the typed path in it (Tab).
+    Complete(PathBuf),
+    /// Is this typed path a folder (then list it), a file, or nothing?
+    Probe(PathBuf),
+}
+
+/// The shell's answer to an [`Ask`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Found {
+    /// A folder's rows (`..` first, then folders, then the files the
+    /// purpose shows), or why it could not be read.
+    Listing(Result<Vec<Entry>, String>),
+    /// A file.
+    File,
+    /// Nothing there.
+    Missing,
 }
 
 /// A row of the listing.
@@ -84,6 +110,8 @@ pub struct Browser {
     pub scroll: usize,
     /// A problem to show (unreadable folder, no match).
     pub message: Option<String>,
+    /// What it waits to have read (the editor hands it to the shell).
+    pub asks: Option<Ask>,
 }
 
 impl Browser {
@@ -96,26 +124,49 @@ impl Browser {
             highlight: None,
             scroll: 0,
             message: None,
+            asks: None,
         };
         b.enter(dir);
         b
     }
 
-    /// Lists `dir`: ".." first, then folders, then known files, each sorted
-    /// case-insensitively; hidden entries are skipped.
+    /// Asks for `dir`'s listing; it is shown once the shell answers.
     pub fn enter(&mut self, dir: &Path) {
-        let dir = normalize(dir);
-        match list(&dir, self.purpose.lists()) {
-            Ok(entries) => {
-                self.entries = entries;
-                self.dir = dir;
-                self.input = with_slash(&self.dir);
-                self.highlight = None;
-                self.scroll = 0;
-                self.message = None;
+        self.asks = Some(Ask::Enter(normalize(dir)));
+    }
+
+    /// The shell's answer to `ask`: a listing is shown (or Tab completes
+    /// in it), a missing file is refused unless saving. Returns the path
+    /// to use when the answer settles the choice.
+    pub fn found(&mut self, ask: Ask, found: Found) -> Option<PathBuf> {
+        match (ask, found) {
+            (Ask::Complete(folder), Found::Listing(Ok(entries))) => {
+                self.complete_with(&folder, &entries);
             }
-            Err(e) => self.message = Some(format!("{}: {e}", dir.display())),
+            (Ask::Complete(folder), _) => {
+                self.message = Some(format!("no folder {}", folder.display()));
+            }
+            (Ask::Enter(dir) | Ask::Probe(dir), Found::Listing(listing)) => {
+                let dir = normalize(&dir);
+                match listing {
+                    Ok(entries) => {
+                        self.entries = entries;
+                        self.dir = dir;
+                        self.input = with_slash(&self.dir);
+                        self.highlight = None;
+                        self.scroll = 0;
+                        self.message = None;
+                    }
+                    Err(e) => self.message = Some(format!("{}: {e}", dir.display())),
+                }
+            }
+            (Ask::Probe(path), Found::File) => return Some(path),
+            (Ask::Probe(path), _) if self.purpose == Purpose::SaveAs => return Some(path),
+            (Ask::Probe(path) | Ask::Enter(path), _) => {
+                self.message = Some(format!("no file {}", path.display()));
+            }
         }
+        None
     }
 
     /// The typed path: a bare name is in the shown folder; anything with a
@@ -130,20 +181,21 @@ impl Browser {
         }
     }
 
-    /// Enter / the accept button: a folder is entered (`None`), a file
-    /// that is not there for reading is refused with a message (`None`);
-    /// otherwise the path to use.
+    /// Enter / the accept button: a listed folder is entered (`None`), a
+    /// listed file is the path to use; anything else is asked of the shell
+    /// (`Ask::Probe`: a folder is entered, a file used, a missing file
+    /// refused with a message unless saving).
     pub fn accept(&mut self) -> Option<PathBuf> {
         let path = self.resolved();
-        if path.is_dir() {
-            self.enter(&path);
-            return None;
+        let listed = self.entries.iter().find(|e| {
+            e.name != ".." && path.parent() == Some(&self.dir) && path.ends_with(&e.name)
+        });
+        match listed {
+            Some(e) if e.is_dir => self.enter(&path),
+            Some(_) => return Some(path),
+            None => self.asks = Some(Ask::Probe(path)),
         }
-        if self.purpose != Purpose::SaveAs && !path.is_file() {
-            self.message = Some(format!("no file {}", path.display()));
-            return None;
-        }
-        Some(path)
+        None
     }
 
     /// Typed text: a `/` or `~/` typed right after a folder's `/` starts
@@ -158,20 +210,31 @@ impl Browser {
 
     /// Tab: completes the typed path to the longest common prefix of the
     /// matching entries in its folder (a unique folder gets a trailing '/').
+    /// The shown folder's listing serves; another folder is asked for.
     pub fn complete(&mut self) {
+        let folder = self.typed_folder();
+        if folder == self.dir {
+            let entries = self.entries.clone();
+            self.complete_with(&folder, &entries);
+        } else {
+            self.asks = Some(Ask::Complete(folder));
+        }
+    }
+
+    /// The folder the typed path's last part is in.
+    fn typed_folder(&self) -> PathBuf {
+        match self.input.rfind('/') {
+            Some(i) => expand_home(&self.input[..=i]),
+            None => self.dir.clone(),
+        }
+    }
+
+    /// Completes the typed path among `entries`, the listing of `folder`.
+    fn complete_with(&mut self, folder: &Path, entries: &[Entry]) {
         let typed = self.input.clone();
         let (head, prefix) = match typed.rfind('/') {
             Some(i) => (typed[..=i].to_string(), typed[i + 1..].to_string()),
             None => (String::new(), typed.clone()),
-        };
-        let folder = if head.is_empty() {
-            self.dir.clone()
-        } else {
-            expand_home(&head)
-        };
-        let Ok(entries) = list(&folder, self.purpose.lists()) else {
-            self.message = Some(format!("no folder {}", folder.display()));
-            return;
         };
         let matches: Vec<&Entry> = entries
             .iter()
@@ -285,38 +348,6 @@ fn normalize(p: &Path) -> PathBuf {
     out
 }
 
-/// `dir`'s folders and the files `shown` accepts.
-fn list(dir: &Path, shown: fn(&str) -> bool) -> std::io::Result<Vec<Entry>> {
-    let mut dirs = Vec::new();
-    let mut files = Vec::new();
-    for e in std::fs::read_dir(dir)? {
-        let Ok(e) = e else { continue };
-        let name = e.file_name().to_string_lossy().to_string();
-        if name.starts_with('.') {
-            continue;
-        }
-        let is_dir = e.path().is_dir();
-        if is_dir {
-            dirs.push(Entry { name, is_dir });
-        } else if shown(&name) {
-            files.push(Entry { name, is_dir });
-        }
-    }
-    let key = |e: &Entry| e.name.to_lowercase();
-    dirs.sort_by_key(key);
-    files.sort_by_key(key);
-    let mut out = Vec::with_capacity(dirs.len() + files.len() + 1);
-    if dir.parent().is_some() {
-        out.push(Entry {
-            name: "..".into(),
-            is_dir: true,
-        });
-    }
-    out.extend(dirs);
-    out.extend(files);
-    Ok(out)
-}
-
 /// The part of a typed path from its last restart: `DIR//abs/path` →
 /// `/abs/path`, `DIR/~/x` → `~/x`; anything else unchanged.
 pub fn restart_at_root(t: &str) -> &str {
@@ -329,8 +360,19 @@ pub fn restart_at_root(t: &str) -> &str {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// Answers what the browser asked, as the shell does; the path to
+    /// use, if an answer settled one.
+    pub(crate) fn settle(b: &mut Browser) -> Option<PathBuf> {
+        let mut used = None;
+        while let Some(ask) = b.asks.take() {
+            let found = crate::editor::shell::look(&ask, b.purpose);
+            used = b.found(ask, found).or(used);
+        }
+        used
+    }
 
     #[test]
     fn a_typed_absolute_path_replaces_the_folder() {
@@ -339,6 +381,11 @@ mod tests {
         assert_eq!(restart_at_root("/home/u/a.wrl"), "/home/u/a.wrl");
         let dir = std::env::temp_dir();
         let mut b = Browser::new(Purpose::Open, &dir);
+        assert!(
+            b.entries.is_empty(),
+            "nothing is read before the shell answers"
+        );
+        settle(&mut b);
         assert!(b.input.ends_with('/'), "{}", b.input);
         b.type_text("/tmp/x.wrl");
         assert_eq!(b.input, "/tmp/x.wrl");
@@ -361,7 +408,9 @@ mod tests {
     #[test]
     fn lists_folders_then_known_files() {
         let d = tree("list");
-        let b = Browser::new(Purpose::Open, &d);
+        let mut b = Browser::new(Purpose::Open, &d);
+        assert_eq!(b.asks, Some(Ask::Enter(d.clone())));
+        settle(&mut b);
         let names: Vec<_> = b.entries.iter().map(|e| e.name.as_str()).collect();
         assert_eq!(
             names,
@@ -378,9 +427,19 @@ mod tests {
     }
 
     #[test]
+    fn a_texture_browser_shows_images_not_scenes() {
+        let t = Purpose::Texture;
+        assert!(t.shows("Brick.PNG") && t.shows("a.jpeg") && t.shows("head.rgb"));
+        assert!(!t.shows("walk.wrl") && !t.shows("notes.txt"));
+        assert!(!Purpose::Open.shows("brick.png"));
+        assert_eq!(t.verb(), "Use");
+    }
+
+    #[test]
     fn tab_completes_common_prefix_then_unique() {
         let d = tree("complete");
         let mut b = Browser::new(Purpose::Open, &d);
+        settle(&mut b);
         b.input = format!("{}/wa", d.display());
         b.complete();
         assert_eq!(
@@ -393,9 +452,16 @@ mod tests {
         assert_eq!(b.input, format!("{}/walk.wrl", d.display()));
         b.input = "mo".into();
         b.complete();
+        settle(&mut b);
         // A bare name completes in the shown folder.
         assert_eq!(b.input, format!("{}/models/", d.display()));
         assert!(b.dir.ends_with("models"));
+        // Tab in another folder asks the shell for its listing.
+        b.input = format!("{}/wa", d.display());
+        b.complete();
+        assert_eq!(b.asks, Some(Ask::Complete(d.clone())));
+        settle(&mut b);
+        assert_eq!(b.input, format!("{}/wa", d.display()));
         let _ = std::fs::remove_dir_all(&d);
     }
 }

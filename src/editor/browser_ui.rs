@@ -6,9 +6,11 @@
 
 use super::browser::Browser;
 use super::panel::{button, label, w, Action, Widget, WidgetKind};
+use super::widget_paint;
 use crate::input::{Event, Key, MouseButton};
 use crate::ui::layout::ROW;
-use crate::ui::{text, Rect};
+use crate::ui::text::{self, CHAR_W};
+use crate::ui::{theme, widgets, Painter, Rect};
 use std::path::PathBuf;
 
 /// The browser's answer to one event.
@@ -111,6 +113,47 @@ impl Browser {
         }
     }
 
+    /// Draws the browser in its box `r` over the dimmed window `win`;
+    /// `mouse` lights the row or button under it (`None` during a drag).
+    pub fn draw(&self, p: &mut Painter, r: Rect, win: Rect, mouse: Option<(f32, f32)>) {
+        p.fill_rect_alpha(win, 0x000000, 110);
+        p.fill_rect(r, theme::DIALOG);
+        p.stroke_rect(r, theme::BORDER);
+        for w in self.widgets(r) {
+            match &w.kind {
+                WidgetKind::PathInput => {
+                    widgets::field(p, w.rect, &self.input, false, true);
+                }
+                WidgetKind::Entry(i) => {
+                    let e = &self.entries[*i];
+                    let label = if e.is_dir {
+                        format!("{}/", e.name)
+                    } else {
+                        e.name.clone()
+                    };
+                    let selected = self.highlight == Some(*i);
+                    let hot = mouse.is_some_and(|(x, y)| w.rect.contains(x, y));
+                    widgets::list_row(p, w.rect, &label, 0, selected, hot);
+                    if e.is_dir {
+                        let x = w.rect.right() - 4 * CHAR_W;
+                        p.text(x, w.rect.y, "dir", theme::TEXT_DIM);
+                    }
+                }
+                _ => {
+                    widget_paint::plain(p, &w, mouse);
+                }
+            }
+        }
+        if self.entries.is_empty() {
+            p.text(
+                r.x + 8,
+                r.y + 3 * ROW + 4,
+                "(empty folder)",
+                theme::TEXT_DIM,
+            );
+        }
+    }
+
     fn key(&mut self, key: Key, r: Rect) -> Reply {
         let rows = ((r.h - 3 * 16 - 20) / 16).max(1) as usize;
         match key {
@@ -168,6 +211,7 @@ impl Browser {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::editor::browser::tests::settle;
     use crate::editor::browser::Purpose;
     use crate::input::Mods;
 
@@ -189,7 +233,7 @@ mod tests {
             .expect("widget shown");
         let (x, y) = (at.rect.x as f32 + 4.0, at.rect.y as f32 + 4.0);
         let button = MouseButton::Left;
-        b.handle(
+        let reply = b.handle(
             &Event::MouseDown {
                 button,
                 x,
@@ -197,7 +241,9 @@ mod tests {
                 mods: Mods::NONE,
             },
             r,
-        )
+        );
+        settle(b);
+        reply
     }
 
     /// Driven by events alone, without an editor: folders are entered,
@@ -211,6 +257,7 @@ mod tests {
         std::fs::write(d.join("models/walk.wrl"), b"x").unwrap();
         let r = Rect::new(0, 0, 400, 300);
         let mut b = Browser::new(Purpose::Open, &d);
+        settle(&mut b);
         let models = b.entries.iter().position(|e| e.name == "models").unwrap();
         assert_eq!(
             click(&mut b, &WidgetKind::Entry(models), r),
@@ -236,6 +283,7 @@ mod tests {
         b.handle(&Event::Text("nothing.wrl".into()), r);
         assert!(b.input.ends_with("nothing.wrl"), "{}", b.input);
         assert_eq!(press(&mut b, Key::Enter, r), Reply::Taken(true));
+        assert_eq!(settle(&mut b), None);
         assert!(b.message.as_deref().is_some_and(|m| m.contains("no file")));
         assert_eq!(press(&mut b, Key::Escape, r), Reply::Cancel);
         assert_eq!(b.handle(&Event::Tick { time: 1.0 }, r), Reply::Ignored);

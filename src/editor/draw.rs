@@ -7,8 +7,7 @@ use super::ops;
 use super::panel::{List, Widget, WidgetKind};
 use super::{Editor, Mode};
 use crate::render::Frame;
-use crate::ui::layout::ROW;
-use crate::ui::text::{self, CHAR_W};
+use crate::ui::text;
 use crate::ui::{theme, widgets, Layout, Painter, Rect};
 use glam::Vec3;
 
@@ -347,42 +346,7 @@ impl Editor {
     fn draw_modal(&self, p: &mut Painter) {
         let win = self.layout().window;
         if let Some(b) = &self.browser {
-            p.fill_rect_alpha(win, 0x000000, 110);
-            let r = self.browser_rect();
-            p.fill_rect(r, theme::DIALOG);
-            p.stroke_rect(r, theme::BORDER);
-            for w in self.browser_widgets(b) {
-                let hot = self.hot(&w);
-                match &w.kind {
-                    WidgetKind::PathInput => {
-                        widgets::field(p, w.rect, &b.input, false, true);
-                    }
-                    WidgetKind::Entry(i) => {
-                        let e = &b.entries[*i];
-                        let label = if e.is_dir {
-                            format!("{}/", e.name)
-                        } else {
-                            e.name.clone()
-                        };
-                        let selected = b.highlight == Some(*i);
-                        widgets::list_row(p, w.rect, &label, 0, selected, hot);
-                        if e.is_dir {
-                            let x = w.rect.right() - 4 * CHAR_W;
-                            p.text(x, w.rect.y, "dir", theme::TEXT_DIM);
-                        }
-                    }
-                    _ => self.draw_widget(p, &w),
-                }
-            }
-            if b.entries.is_empty() {
-                let r = self.browser_rect();
-                p.text(
-                    r.x + 8,
-                    r.y + 3 * ROW + 4,
-                    "(empty folder)",
-                    theme::TEXT_DIM,
-                );
-            }
+            b.draw(p, self.browser_rect(), win, self.modal_mouse());
         }
         if let Some(m) = &self.menu {
             m.draw(p, win);
@@ -391,13 +355,7 @@ impl Editor {
             s.menu.draw(p, win);
         }
         if let Some(d) = &self.dialog {
-            p.fill_rect_alpha(win, 0x000000, 110);
-            let r = self.dialog_rect();
-            p.fill_rect(r, theme::DIALOG);
-            p.stroke_rect(r, theme::ACCENT);
-            for w in self.dialog_widgets(&d.message) {
-                self.draw_widget(p, &w);
-            }
+            d.draw(p, win, self.modal_mouse());
         }
     }
 }

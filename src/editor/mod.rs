@@ -20,6 +20,7 @@ pub mod browser_ui;
 pub mod command;
 pub mod component;
 pub mod create;
+pub mod dialog;
 mod draw;
 pub mod fields;
 mod gesture;
@@ -53,8 +54,10 @@ pub mod timeline;
 pub mod tooltip;
 mod viewport;
 pub mod views;
+mod widget_paint;
 
 pub use crate::input::{Event, Key, Mods, MouseButton};
+pub use dialog::Dialog;
 pub use request::After;
 
 use crate::anim::Pose;
@@ -73,13 +76,6 @@ use std::path::{Path, PathBuf};
 pub enum Mode {
     Select,
     View,
-}
-
-/// A modal question.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Dialog {
-    pub message: String,
-    pub then: After,
 }
 
 /// The line of feedback at the bottom.
@@ -259,7 +255,8 @@ impl Editor {
             help: false,
             scroll: [0, 0],
             revealed: None,
-            start_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
+            // The shell passes the working directory (`set_start_dir`).
+            start_dir: PathBuf::from("."),
             pose: None,
             sphere: None,
             autosave: recovery::Autosave::default(),
@@ -384,8 +381,9 @@ impl Editor {
         }
     }
 
-    /// Where the file browser starts when no file is open (default: the
-    /// working directory).
+    /// Where the file browser starts when no file is open (`animed edit`
+    /// passes the working directory; `.` until then: the editor asks the
+    /// process for nothing).
     pub fn set_start_dir(&mut self, dir: &Path) {
         self.start_dir = dir.to_path_buf();
     }
@@ -494,6 +492,13 @@ impl Editor {
     /// The file work asked for since the last call, oldest first (the
     /// shell performs it and answers through the `*_done` methods).
     pub fn take_requests(&mut self) -> Vec<request::Request> {
+        if let Some(b) = &mut self.browser {
+            // What the browser waits to have read.
+            if let Some(ask) = b.asks.take() {
+                let purpose = b.purpose;
+                self.requests.push(request::Request::Look { ask, purpose });
+            }
+        }
         std::mem::take(&mut self.requests)
     }
 

@@ -44,6 +44,12 @@ pub enum Request {
     /// Read and decode the image file `path` as the new texture of
     /// `material` (the material panel's Load).
     ReadTexture { path: PathBuf, material: MaterialId },
+    /// Read what the file browser asked for (a folder's listing, or what
+    /// a typed path is), filtered for `purpose`.
+    Look {
+        ask: crate::editor::browser::Ask,
+        purpose: crate::editor::browser::Purpose,
+    },
     /// Read the view remembered for the scene `key` from `memory`.
     RecallView { memory: PathBuf, key: PathBuf },
     /// Remember the view (camera, timeline zoom, preview range) for the

@@ -9,6 +9,7 @@
 //! each reads or writes here and applies the outcome through the same
 //! `*_done` method an event's request would.
 
+use super::browser::{Ask, Entry, Found, Purpose};
 use super::recovery::{self, Session};
 use super::request::{AutosaveWhy, Read, Request};
 use super::{views, Editor};
@@ -96,6 +97,10 @@ fn perform_one(ed: &mut Editor, r: Request) {
                 ed.view_recalled(m);
             }
         }
+        Request::Look { ask, purpose } => {
+            let found = look(&ask, purpose);
+            ed.browser_found(ask, found);
+        }
         Request::RememberView { memory, key, memo } => {
             if let Err(e) = views::remember(&memory, &key, &memo) {
                 ed.file_error(&format!("cannot remember the view: {e}"));
@@ -118,6 +123,50 @@ fn read_image(path: &Path) -> super::request::ReadImage {
         path: abs,
     };
     decode::read_file(path).and_then(|bytes| decode::decode(&bytes, &name, source))
+}
+
+/// What the file browser asked to have read: a folder's listing, or
+/// whether a typed path is a folder, a file or nothing.
+pub fn look(ask: &Ask, purpose: Purpose) -> Found {
+    match ask {
+        Ask::Enter(dir) | Ask::Complete(dir) => Found::Listing(list(dir, purpose)),
+        Ask::Probe(p) if p.is_dir() => Found::Listing(list(p, purpose)),
+        Ask::Probe(p) if p.is_file() => Found::File,
+        Ask::Probe(_) => Found::Missing,
+    }
+}
+
+/// Lists `dir`: ".." first, then folders, then the files `purpose` shows,
+/// each sorted case-insensitively; hidden entries are skipped.
+fn list(dir: &Path, purpose: Purpose) -> Result<Vec<Entry>, String> {
+    let mut dirs = Vec::new();
+    let mut files = Vec::new();
+    for e in std::fs::read_dir(dir).map_err(|e| e.to_string())? {
+        let Ok(e) = e else { continue };
+        let name = e.file_name().to_string_lossy().to_string();
+        if name.starts_with('.') {
+            continue;
+        }
+        let is_dir = e.path().is_dir();
+        if is_dir {
+            dirs.push(Entry { name, is_dir });
+        } else if purpose.shows(&name) {
+            files.push(Entry { name, is_dir });
+        }
+    }
+    let key = |e: &Entry| e.name.to_lowercase();
+    dirs.sort_by_key(key);
+    files.sort_by_key(key);
+    let mut out = Vec::with_capacity(dirs.len() + files.len() + 1);
+    if dir.parent().is_some() {
+        out.push(Entry {
+            name: "..".into(),
+            is_dir: true,
+        });
+    }
+    out.extend(dirs);
+    out.extend(files);
+    Ok(out)
 }
 
 /// Writes the recovery copy and tells the editor; returns where.

@@ -142,18 +142,22 @@ pub fn set_tcb(anim: &Animation, r: KeyRef, tcb: Tcb) -> Result<Animation, Strin
     Ok(out)
 }
 
-/// Tangent handle length in pixels for tension `t`: 40 px at t = 0,
-/// shorter as tension tightens the curve (10 px at 1), longer as it
-/// loosens (70 px at -1).
+/// Tangent handle length in pixels for tension `t`: 40 px at t = 0, and
+/// every doubling of the length loosens by 0.5 (80 px: -0.5, 160 px: -1),
+/// every halving tightens by 0.5 (10 px: 1). A ratio scale, as weighted
+/// tangents feel in Blender and Maya: a 40-px pull loosens a default
+/// handle to -0.5, where a linear scale reached -1 after 30 px.
 pub fn handle_len(t: f32) -> f32 {
-    HANDLE_PX * (1.0 - 0.75 * t)
+    HANDLE_PX * LOOSEN.powf(-t)
 }
 
 /// Inverse of [`handle_len`], clamped to the tension range.
 pub fn tension_for_len(len: f32) -> f32 {
-    ((1.0 - len / HANDLE_PX) / 0.75).clamp(-1.0, 1.0)
+    (-(len.max(1e-3) / HANDLE_PX).ln() / LOOSEN.ln()).clamp(-1.0, 1.0)
 }
 
+/// The length ratio between tension 0 and tension -1 (or 1 and 0).
+const LOOSEN: f32 = 4.0;
 const HANDLE_PX: f32 = 40.0;
 
 #[cfg(test)]
@@ -226,6 +230,14 @@ mod tests {
         for t in [-1.0f32, -0.3, 0.0, 0.6, 1.0] {
             assert!((tension_for_len(handle_len(t)) - t).abs() < 1e-5);
         }
+        // A comfortable range: pulling a default handle 40 px longer
+        // loosens it halfway, not to the limit; the limits are 4x and 1/4
+        // of the default length.
+        assert!((tension_for_len(handle_len(0.0) + 40.0) + 0.5).abs() < 1e-5);
+        assert!((tension_for_len(handle_len(0.0) - 20.0) - 0.5).abs() < 1e-5);
+        assert_eq!(tension_for_len(160.0), -1.0);
+        assert_eq!(tension_for_len(1000.0), -1.0);
+        assert_eq!(tension_for_len(0.0), 1.0);
         let a = set_tcb(
             &anim(),
             ty(10.0).key_ref(),

@@ -629,7 +629,11 @@ impl GraphEditor {
                     new.continuity = (tcb.continuity + (x - start.0) / 60.0).clamp(-1.0, 1.0);
                 } else {
                     let (dx, dy) = ((x - p.0).max(1.0), y - p.1);
-                    new.tension = edit::tension_for_len(dx.hypot(dy));
+                    // Relative to where the handle was grabbed, so a press
+                    // beside its end does not jump.
+                    let grabbed = (start.0 - p.0).max(1.0).hypot(start.1 - p.1);
+                    let len = edit::handle_len(tcb.tension) * dx.hypot(dy) / grabbed;
+                    new.tension = edit::tension_for_len(len);
                     let (sx, sy) = self.view.scale(a.plot);
                     let scale = self
                         .shown(ctx)

@@ -2,7 +2,7 @@
 //! routes events to it while it is open and turns its answer into file
 //! requests for the shell.
 
-use crate::editor::browser::Purpose;
+use crate::editor::browser::{Ask, Found, Purpose};
 use crate::editor::browser_ui::Reply;
 use crate::editor::gesture::is_writable_type;
 use crate::editor::request::Request;
@@ -19,6 +19,15 @@ impl Editor {
         let r = self.browser_rect();
         let reply = self.browser.as_mut()?.handle(ev, r);
         self.browser_reply(reply)
+    }
+
+    /// The shell's answer to what the browser asked to have read (a
+    /// listing, or what a typed path is); a settled choice is used.
+    pub fn browser_found(&mut self, ask: Ask, found: Found) {
+        let Some(b) = &mut self.browser else { return };
+        if let Some(path) = b.found(ask, found) {
+            self.browser_reply(Reply::Use(path));
+        }
     }
 
     /// Applies the browser's answer: a chosen file is asked of the shell

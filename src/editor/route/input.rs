@@ -3,6 +3,7 @@
 use crate::editor::browser::Purpose;
 use crate::editor::browser_ui::Reply;
 use crate::editor::command::Command;
+use crate::editor::dialog::Answer;
 use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
@@ -42,6 +43,9 @@ impl Editor {
             return redraw;
         }
         if let Some(redraw) = self.menu_event(&ev) {
+            return redraw;
+        }
+        if let Some(redraw) = self.dialog_event(&ev) {
             return redraw;
         }
         if let Some(redraw) = self.browser_event(&ev) {
@@ -251,9 +255,7 @@ impl Editor {
         mods: Mods,
     ) {
         if self.dialog.is_some() || self.browser.is_some() {
-            if button == MouseButton::Left {
-                self.click_modal(x, y);
-            }
+            // Their own clicks (`dialog.rs`, `browser_ui.rs`).
             return;
         }
         let l = self.layout();
@@ -768,18 +770,6 @@ impl Editor {
     // ----- keyboard -----
 
     pub(in crate::internals::editor) fn key_down(&mut self, key: Key, mods: Mods) {
-        if self.recovery_key(key) {
-            return;
-        }
-        if self.dialog.is_some() {
-            match key {
-                Key::Escape => self.run_action(Action::DialogCancel),
-                Key::Enter | Key::Char('s') => self.run_action(Action::DialogSave),
-                Key::Char('d') | Key::Char('n') => self.run_action(Action::DialogDiscard),
-                _ => {}
-            }
-            return;
-        }
         if let Some(e) = &mut self.edit {
             match key {
                 Key::Enter | Key::Tab => self.commit_edit(),
@@ -909,10 +899,7 @@ impl Editor {
     /// Runs `then` now, or first asks what to do with unsaved changes.
     pub(in crate::internals::editor) fn ask_unsaved(&mut self, then: After) {
         if self.is_dirty() {
-            self.dialog = Some(Dialog {
-                message: "Save changes first?".into(),
-                then,
-            });
+            self.dialog = Some(Dialog::new("Save changes first?", then));
         } else {
             self.continue_with(then);
         }
@@ -929,9 +916,6 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn run_action(&mut self, a: Action) {
-        if self.recovery_action(a) {
-            return;
-        }
         match a {
             Action::Clip(c) => self.clip_action(c),
             Action::Material(m) => self.material_action(m),
@@ -1048,48 +1032,10 @@ impl Editor {
                     self.set_status("Type the new name, Enter sets it, Esc cancels", false);
                 }
             }
-            Action::DialogCancel => {
-                if self
-                    .dialog
-                    .take()
-                    .is_some_and(|d| d.then == After::DeleteObject)
-                {
-                    self.set_status("Nothing deleted", false);
-                }
-            }
-            Action::DialogDiscard
-                if self
-                    .dialog
-                    .as_ref()
-                    .is_some_and(|d| d.then == After::DeleteObject) =>
-            {
-                self.dialog = None;
-                self.set_status("Nothing deleted", false);
-            }
-            Action::DialogDiscard => {
-                if let Some(d) = self.dialog.take() {
-                    // Discarding: forget the changes before continuing.
-                    self.saved_revision = self.history.revision();
-                    self.continue_with(d.then);
-                }
-            }
-            Action::DialogSave
-                if self
-                    .dialog
-                    .as_ref()
-                    .is_some_and(|d| d.then == After::DeleteObject) =>
-            {
-                self.dialog = None;
-                self.delete_selection();
-            }
-            Action::DialogSave => {
-                if let Some(d) = self.dialog.take() {
-                    match self.path.clone() {
-                        Some(p) if is_writable_type(&p) => self.request_save(p, Some(d.then)),
-                        _ => self.browse(Purpose::SaveAs, Some(d.then)),
-                    }
-                }
-            }
+            // The dialog's buttons (it answers its own clicks).
+            Action::DialogSave => self.dialog_answer(Answer::Yes),
+            Action::DialogDiscard => self.dialog_answer(Answer::Discard),
+            Action::DialogCancel => self.dialog_answer(Answer::Cancel),
             Action::Key(a) => self.key_action(a),
             Action::BrowserAccept => {
                 if let Some(b) = &mut self.browser {
@@ -1165,12 +1111,12 @@ impl Editor {
         match self.selection {
             Some(sel) if over_strip => {
                 let name = ops::display_name(&self.scene, sel);
-                self.dialog = Some(Dialog {
-                    message: format!(
+                self.dialog = Some(Dialog::new(
+                    format!(
                         "No key is selected in the key strip.\nDelete the object {name} and its keys?"
                     ),
-                    then: After::DeleteObject,
-                });
+                    After::DeleteObject,
+                ));
             }
             _ => self.run_action(Action::Delete),
         }
@@ -1193,15 +1139,5 @@ impl Editor {
             },
         );
         self.set_status(&format!("Deleted {name}"), false);
-    }
-
-    // ----- modal boxes -----
-
-    /// A click while a question is open: its buttons (the browser
-    /// answers its own clicks, `browser_ui.rs`).
-    pub(in crate::internals::editor) fn click_modal(&mut self, x: f32, y: f32) {
-        if let Some(WidgetKind::Button { action, .. }) = self.widget_at(x, y).map(|w| w.kind) {
-            self.run_action(action);
-        }
     }
 }

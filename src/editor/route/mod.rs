@@ -4,6 +4,7 @@
 
 mod browser;
 mod create;
+mod dialog;
 mod files;
 mod graph;
 mod input;

@@ -5,7 +5,7 @@ use crate::editor::fields::FieldId;
 use crate::editor::ops::{self, NewLight};
 #[allow(unused_imports)]
 use crate::editor::panel::*;
-use crate::editor::{After, Editor, Mode};
+use crate::editor::{Editor, Mode};
 use crate::scene::{LightKind, NodeId, NodeKind};
 use crate::ui::layout::{CONTROLS_H, ROW};
 use crate::ui::text::{self, CHAR_W};
@@ -428,65 +428,10 @@ impl Editor {
         b.widgets(self.browser_rect())
     }
 
-    pub fn dialog_rect(&self) -> Rect {
-        let win = self.layout().window;
-        let msg = self.dialog.as_ref().map_or("", |d| d.message.as_str());
-        // Wide enough for the longest line (recovery lists), in the window.
-        let widest = msg.lines().map(text::width).max().unwrap_or(0) + 16;
-        let bw = widest.clamp(360, 640).min(win.w - 20).max(100);
-        let lines = msg.lines().count();
-        let bh = (2 + lines.max(1) as i32) * ROW + 20;
-        Rect::new((win.w - bw) / 2, (win.h - bh) / 2, bw, bh)
-    }
-
-    pub fn dialog_widgets(&self, message: &str) -> Vec<Widget> {
-        let r = self.dialog_rect();
-        let mut out = Vec::new();
-        let then = self.dialog.as_ref().map(|d| d.then);
-        let (heading, labels) = match then {
-            Some(After::Recover) if !self.autosave.untitled.is_empty() => {
-                ("Recovery copies", ["Not now", "Discard copy", "Recover"])
-            }
-            Some(After::Recover) => ("Recovery copy", ["Open saved", "Discard copy", "Recover"]),
-            Some(After::DeleteObject) => ("Delete", ["Cancel", "", "Delete"]),
-            _ => ("Unsaved changes", ["Cancel", "Discard", "Save"]),
-        };
-        let (title, rest) = r.take_top(ROW + 2);
-        out.push(w(title, WidgetKind::Header(heading.into())));
-        for (i, line) in message.lines().enumerate() {
-            out.push(label(
-                Rect::new(rest.x + 6, rest.y + 4 + i as i32 * ROW, rest.w - 12, ROW),
-                line,
-                false,
-            ));
-        }
-        let by = rest.bottom() - ROW - 8;
-        let mut x = rest.right() - 6;
-        for (l, a) in labels.into_iter().zip([
-            Action::DialogCancel,
-            Action::DialogDiscard,
-            Action::DialogSave,
-        ]) {
-            if l.is_empty() {
-                continue;
-            }
-            let bw = text::width(l) + 10;
-            x -= bw;
-            out.push(button(
-                Rect::new(x, by, bw, ROW + 2),
-                l,
-                a,
-                a == Action::DialogSave,
-            ));
-            x -= 4;
-        }
-        out
-    }
-
     /// The topmost widget under (x, y), considering modal boxes first.
     pub fn widget_at(&self, x: f32, y: f32) -> Option<Widget> {
         let list = if let Some(d) = &self.dialog {
-            self.dialog_widgets(&d.message)
+            d.widgets(self.layout().window)
         } else if let Some(b) = &self.browser {
             self.browser_widgets(b)
         } else {

@@ -1,12 +1,10 @@
 //! The editor's side of `recovery`: routes events to it and applies what it returns.
 
 use crate::editor::command::Command;
-use crate::editor::panel::Action;
 #[allow(unused_imports)]
 use crate::editor::recovery::*;
 use crate::editor::request::{AutosaveWhy, Read, Request};
 use crate::editor::{After, Dialog, Editor};
-use crate::input::Key;
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
@@ -176,10 +174,10 @@ impl Editor {
             .unwrap_or_default();
         let when = describe_time(when, now);
         self.autosave.offer = Some(copy);
-        self.dialog = Some(Dialog {
-            message: format!("Unsaved work on {name} was autosaved\n{when}. Recover it?"),
-            then: After::Recover,
-        });
+        self.dialog = Some(Dialog::new(
+            format!("Unsaved work on {name} was autosaved\n{when}. Recover it?"),
+            After::Recover,
+        ));
     }
 
     /// The recovery copy the open dialog offers.
@@ -208,7 +206,7 @@ impl Editor {
 
     /// (Re)builds the dialog listing `autosave.untitled`; closes it when
     /// none are left.
-    fn show_untitled_offer(&mut self) {
+    pub(in crate::internals::editor) fn show_untitled_offer(&mut self) {
         let list = &self.autosave.untitled;
         if list.is_empty() {
             self.autosave.offer = None;
@@ -238,135 +236,8 @@ impl Editor {
         self.dialog = Some(Dialog {
             message,
             then: After::Recover,
+            list: true,
         });
-    }
-
-    /// Keys of the recovery dialog: Enter or R recovers, D discards the
-    /// copy, O or Esc opens the saved file. True when the key was taken.
-    pub(in crate::internals::editor) fn recovery_key(&mut self, key: Key) -> bool {
-        if !self
-            .dialog
-            .as_ref()
-            .is_some_and(|d| d.then == After::Recover)
-        {
-            return false;
-        }
-        let untitled = !self.autosave.untitled.is_empty();
-        let n = self.autosave.untitled.len().min(9);
-        let a = match key {
-            Key::Up | Key::Down if untitled => {
-                let c = self.autosave.chosen;
-                self.autosave.chosen = match key {
-                    Key::Up => c.saturating_sub(1),
-                    _ => (c + 1).min(n.saturating_sub(1)),
-                };
-                self.show_untitled_offer();
-                return true;
-            }
-            Key::Char(d @ '1'..='9') if untitled => {
-                let i = d as usize - '1' as usize;
-                if i >= n {
-                    return true;
-                }
-                self.autosave.chosen = i;
-                self.show_untitled_offer();
-                Action::DialogSave
-            }
-            Key::Enter | Key::Char('r') => Action::DialogSave,
-            Key::Char('d') => Action::DialogDiscard,
-            Key::Escape | Key::Char('o') => Action::DialogCancel,
-            _ => return true,
-        };
-        self.run_action(a);
-        true
-    }
-
-    /// Dialog buttons while the recovery question is open (Save = Recover,
-    /// Discard = Discard copy, Cancel = Open saved); also drops this
-    /// session's copy when unsaved changes are discarded. True when the
-    /// action was handled here.
-    pub(in crate::internals::editor) fn recovery_action(&mut self, a: Action) -> bool {
-        let recovering = self
-            .dialog
-            .as_ref()
-            .is_some_and(|d| d.then == After::Recover);
-        if !recovering {
-            if a == Action::DialogDiscard && self.dialog.is_some() {
-                self.forget_recovery();
-            }
-            return false;
-        }
-        if !self.autosave.untitled.is_empty() {
-            return self.untitled_action(a);
-        }
-        let copy = self.autosave.offer.take();
-        match a {
-            Action::DialogSave => {
-                self.dialog = None;
-                if let Some(copy) = copy {
-                    self.requests.push(Request::Recover { copy });
-                }
-            }
-            Action::DialogDiscard => {
-                self.dialog = None;
-                if let Some(copy) = copy {
-                    self.requests.push(Request::Remove(copy));
-                    self.set_status("Recovery copy deleted", false);
-                }
-            }
-            Action::DialogCancel => {
-                // Kept: asked again next time, replaced by the next autosave.
-                self.dialog = None;
-                self.set_status("Opened the saved file; the recovery copy is kept", false);
-            }
-            _ => {
-                self.autosave.offer = copy;
-                return false;
-            }
-        }
-        true
-    }
-
-    /// The recovery dialog's buttons for untitled sessions: Recover loads
-    /// the marked one as new untitled work, Discard copy deletes it and
-    /// lists the rest, Not now keeps them all for the next start.
-    fn untitled_action(&mut self, a: Action) -> bool {
-        let i = self.autosave.chosen;
-        match a {
-            Action::DialogSave => {
-                let s = self.autosave.untitled.remove(i);
-                self.autosave.untitled.clear();
-                self.autosave.offer = None;
-                self.dialog = None;
-                let mine = self.untitled_file();
-                self.requests
-                    .push(Request::RecoverUntitled { copy: s.path, mine });
-            }
-            Action::DialogDiscard => {
-                let s = self.autosave.untitled.remove(i);
-                self.set_status(
-                    &format!("Deleted the recovery copy {}", s.path.display()),
-                    false,
-                );
-                self.requests.push(Request::Remove(s.path));
-                self.show_untitled_offer();
-            }
-            Action::DialogCancel => {
-                let n = self.autosave.untitled.len();
-                self.autosave.untitled.clear();
-                self.autosave.offer = None;
-                self.dialog = None;
-                self.set_status(
-                    &format!(
-                        "Kept {n} recovery cop{} for later (`animed recover --list`)",
-                        if n == 1 { "y" } else { "ies" }
-                    ),
-                    false,
-                );
-            }
-            _ => return false,
-        }
-        true
     }
 
     /// The shell read an untitled session's copy: it becomes new untitled
@@ -436,10 +307,7 @@ impl Editor {
         if !self.is_dirty() || self.quit || asked {
             return false;
         }
-        self.dialog = Some(Dialog {
-            message: "Save changes before closing?".into(),
-            then: After::Quit,
-        });
+        self.dialog = Some(Dialog::new("Save changes before closing?", After::Quit));
         true
     }
 }
