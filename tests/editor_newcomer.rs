@@ -216,6 +216,14 @@ fn assert_text_fits(ed: &Editor) {
 fn selecting_never_moves_the_viewport_or_the_side_panel() {
     let mut ed = big_stage();
     let before = ed.layout();
+    // The lists' sections too: found under a real window, the lights list
+    // moved when the properties grew (selecting, the first key's line,
+    // the key panel) or when a light was added (its own +Pt button moved).
+    let lists = |ed: &Editor| {
+        let sp = ed.side_panel();
+        (sp.objects, sp.lights)
+    };
+    let sections = lists(&ed);
     for name in ["Ball", "Ground", "Lamp", "SpotLamp"] {
         let id = node(&ed, name);
         let row = find(&ed, &format!("node: NodeId({})", id.0));
@@ -227,8 +235,30 @@ fn selecting_never_moves_the_viewport_or_the_side_panel() {
             (before.viewport, before.side, before.key_rows),
             "{name}"
         );
+        assert_eq!(lists(&ed), sections, "{name}");
         assert_text_fits(&ed);
     }
+    // Keying an unkeyed object (its Keys line appears), adding a light
+    // and a box, and the key panel of a selected key keep them too.
+    let ground = node(&ed, "Ground");
+    ed.select(Some(ground));
+    key(&mut ed, Key::Char('k'), Mods::NONE);
+    assert_eq!(lists(&ed), sections, "keyed");
+    let pt = find(&ed, "AddLight(Point)");
+    click(&mut ed, pt);
+    assert_eq!(lists(&ed), sections, "a light added");
+    assert_eq!(
+        find(&ed, "AddLight(Point)"),
+        pt,
+        "+Pt stays under the mouse"
+    );
+    ed.select(Some(node(&ed, "Ball")));
+    let m = ed
+        .key_marker_at(animed::internals::editor::keystrip::Row::Summary, 24.0)
+        .expect("a key at 24");
+    click(&mut ed, m);
+    assert!(find(&ed, "Interp").0 > 0.0, "the key panel shows");
+    assert_eq!(lists(&ed), sections, "key panel");
 }
 
 #[test]
@@ -967,6 +997,47 @@ fn pick(ed: &mut Editor, label: &str) {
     let r = m.item_rect(ed.layout().window, i);
     click(ed, ((r.x + 10) as f32, (r.y + 5) as f32));
     assert!(ed.menu().is_none());
+}
+
+#[test]
+fn clear_keys_from_the_viewport_menu_or_alt_i_is_one_undo_step() {
+    use animed::internals::anim::TargetRef;
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    let keys = |ed: &Editor| -> usize {
+        ed.scene()
+            .animation
+            .tracks_of(TargetRef::Node(ball))
+            .map(|t| t.key_count())
+            .sum()
+    };
+    let n = keys(&ed);
+    assert!(n > 0);
+    let vp = ed.layout().viewport;
+    right_click(&mut ed, ((vp.x + 20) as f32, (vp.y + 20) as f32));
+    pick(&mut ed, "Clear keys");
+    assert_eq!(keys(&ed), 0);
+    assert_eq!(
+        ed.status().text,
+        format!("Cleared {n} keys of Ball (Ctrl+Z brings them back)")
+    );
+    // Other objects keep theirs.
+    assert!(ed
+        .scene()
+        .animation
+        .tracks
+        .iter()
+        .any(|t| t.target.of != TargetRef::Node(ball)));
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(keys(&ed), n);
+    // Alt+I does the same; again says there is nothing left.
+    key(&mut ed, Key::Char('i'), Mods::alt());
+    assert_eq!(keys(&ed), 0);
+    key(&mut ed, Key::Char('i'), Mods::alt());
+    assert_eq!(ed.status().text, "Ball has no keys to clear");
+    // The strip draws with the keys gone.
+    let _ = ed.render_frame();
 }
 
 #[test]

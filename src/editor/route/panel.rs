@@ -26,14 +26,7 @@ impl Editor {
     }
 
     pub fn side_panel(&self) -> SidePanel {
-        SidePanel::new(
-            self.layout().side,
-            self.section_rows(),
-            [
-                ops::objects(&self.scene).len(),
-                ops::lights(&self.scene).len(),
-            ],
-        )
+        SidePanel::new(self.layout().side, self.section_rows())
     }
 
     /// Scrolls the objects and lights lists so the selection's row shows.
