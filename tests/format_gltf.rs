@@ -6,6 +6,7 @@
 mod gltf_corpus;
 mod gltf_emissive;
 mod gltf_node;
+mod gltf_pointer;
 
 use animed::internals::anim::{
     evaluate, Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track, Value,

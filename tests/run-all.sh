@@ -51,18 +51,8 @@ set -e
 
 mkdir -p target
 # glTF checks against independent implementations (tests/gltf_node): the
-# Khronos validator and three.js, from npm into target/npm-gltf. Without
-# node/npm those tests print NOT RUN loudly.
-if command -v npm >/dev/null 2>&1 && command -v node >/dev/null 2>&1; then
-  if [ ! -d target/npm-gltf/node_modules/three ] || [ ! -d target/npm-gltf/node_modules/gltf-validator ]; then
-    mkdir -p target/npm-gltf
-    [ -f target/npm-gltf/package.json ] || echo '{"private":true}' > target/npm-gltf/package.json
-    npm install --prefix target/npm-gltf --no-audit --no-fund gltf-validator three >/dev/null 2>&1 \
-      || echo "run-all: could not install gltf-validator/three: glTF cross-checks NOT RUN"
-  fi
-else
-  echo "run-all: node/npm missing: glTF validator and three.js checks NOT RUN"
-fi
+# Khronos validator and three.js, from npm into target/npm-gltf.
+bash tests/npm_gltf.sh
 # GOLDEN_RECORD: every picture a golden test draws is also saved, for the
 # x86-64-v3 comparison below (tests/common/golden.rs).
 rm -rf target/golden-record

@@ -10,18 +10,20 @@
 //! (normally once). Each lane does exactly the arithmetic a lone pixel would,
 //! so neither the grouping nor the lane width (SSE2 or AVX) changes a bit.
 //!
-//! Texture coordinates (perspective-correct, with their screen-space
-//! derivatives for the mip level) are computed only for items that carry a
-//! texture; see [`UvLanes`] and [`apply_texture`].
+//! What a pixel's colour is made of (texture, lighting, emissive map) is
+//! `surface::shade_lanes`; this file gathers the lanes. Texture
+//! coordinates (perspective-correct, with their screen-space derivatives
+//! for the mip level, [`uv_in`]) are computed only for textured items, and
+//! the loop of a tile without textured triangles is compiled without any
+//! texture code (`TEX = false`).
 
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
 use super::lanes::Pair;
-use super::prepare::{EmissiveMap, Item, Prepared, Tri, INV_W, SUBPIXEL};
-use super::shade::shade8;
+use super::prepare::{Item, Prepared, Tri, INV_W};
 use super::simd::{self, Sse8, V8};
-use super::texture::Sampler;
+use super::surface::shade_lanes;
 use super::texture_lanes::UvIn;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// Tile width in pixels (the row stride of every tile buffer).
 pub const TILE: i32 = 64;
@@ -42,6 +44,9 @@ pub struct Visible<'a> {
     /// Screen-space barycentric weights of vertices 1 and 2 at the pixel.
     pub b1: &'a [f32],
     pub b2: &'a [f32],
+    /// Whether a triangle of a textured item may show in the tile: picks
+    /// the shading loop compiled with the texture steps.
+    pub textured: bool,
 }
 
 /// The tile's linear colour channels and object ids, per sample like
@@ -53,30 +58,45 @@ pub struct Shaded<'a> {
     pub ids: &'a mut [u32],
 }
 
-/// Shades the visible samples of a `w`×`h` tile with `samples` samples per
-/// pixel; samples with no triangle get `background` and id 0.
-pub fn shade_visible(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    size: (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
+/// What the shading pass of a tile works with besides its buffers.
+#[derive(Clone, Copy)]
+pub struct Pass<'a> {
+    pub p: &'a Prepared,
+    pub eye: Vec3,
+    /// The colour of samples no triangle covers.
+    pub background: Vec3,
+    /// Tile width and height in pixels, samples per pixel.
+    pub size: (usize, usize, usize),
+}
+
+/// Shades the visible samples of a tile; samples with no triangle get the
+/// background and id 0.
+pub fn shade_visible(pass: &Pass, vis: &Visible, out: &mut Shaded) {
+    if vis.textured {
+        shade_visible_isa::<true>(pass, vis, out);
+    } else {
+        shade_visible_isa::<false>(pass, vis, out);
+    }
+}
+
+/// The shading loop (with or without the texture steps, `TEX`) on the
+/// widest lanes the CPU has.
+#[inline(always)]
+fn shade_visible_isa<const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx512() {
         // SAFETY: `simd::avx512()` checked that the CPU has AVX-512F/VL
         // (and so AVX).
-        unsafe { shade_visible_avx512(p, eye, background, size, vis, out) };
+        unsafe { shade_visible_avx512::<TEX>(pass, vis, out) };
         return;
     }
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { shade_visible_avx(p, eye, background, size, vis, out) };
+        unsafe { shade_visible_avx::<TEX>(pass, vis, out) };
         return;
     }
-    shade_visible_in::<Sse8>(p, eye, background, size, vis, out);
+    shade_visible_in::<Sse8, TEX>(pass, vis, out);
 }
 
 /// `shade_visible_in` on AVX lanes compiled with the target features
@@ -87,15 +107,8 @@ macro_rules! avx_entry {
         $(#[$doc])*
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = $features)]
-        unsafe fn $name(
-            p: &Prepared,
-            eye: Vec3,
-            background: Vec3,
-            size: (usize, usize, usize),
-            vis: &Visible,
-            out: &mut Shaded,
-        ) {
-            shade_visible_in::<simd::Avx8>(p, eye, background, size, vis, out);
+        unsafe fn $name<const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
+            shade_visible_in::<simd::Avx8, TEX>(pass, vis, out);
         }
     };
 }
@@ -140,14 +153,13 @@ pub fn store_masked<V: V8>(dst: &mut [f32; 8], v: V, mask: u32) {
 }
 
 #[inline(always)]
-fn shade_visible_in<V: V8>(
-    p: &Prepared,
-    eye: Vec3,
-    background: Vec3,
-    (w, h, ns): (usize, usize, usize),
-    vis: &Visible,
-    out: &mut Shaded,
-) {
+fn shade_visible_in<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
+    let Pass {
+        p,
+        eye,
+        background,
+        size: (w, h, ns),
+    } = *pass;
     let bg = [
         V::splat(background.x),
         V::splat(background.y),
@@ -168,7 +180,7 @@ fn shade_visible_in<V: V8>(
             if bx + 8 < w {
                 if let Some(item) = pair_item(p, vis.winner, i0) {
                     if ns == 1 || samples_agree(vis.winner, i0, ns) {
-                        shade_pair::<V>(p, item, eye, vis, out, i0);
+                        shade_pair::<V, TEX>(p, item, eye, vis, out, i0);
                         copy_to_samples(out, i0, ns);
                         next = bx + 16;
                         continue;
@@ -232,7 +244,7 @@ fn shade_visible_in<V: V8>(
                     }
                     todo &= !group;
                     let item = &p.items[item_ix as usize];
-                    let c = shade_group::<V>(p, item, eye, &win, group, b1, b2);
+                    let c = shade_group::<V, TEX>(p, item, eye, &win, group, b1, b2);
                     for (dst, v) in rgb.iter_mut().zip(c) {
                         store_masked(dst, v, group);
                     }
@@ -305,7 +317,7 @@ fn plane<V: V8>(t: &Tri, j: usize, b1: V, b2: V) -> V {
 
 /// Interpolates and lights the lanes of `group` (all of one item).
 #[inline(always)]
-fn shade_group<V: V8>(
+fn shade_group<V: V8, const TEX: bool>(
     p: &Prepared,
     item: &Item,
     eye: Vec3,
@@ -322,39 +334,21 @@ fn shade_group<V: V8>(
     for (v, a) in v.iter_mut().zip(a) {
         *v = a * s;
     }
-    let mut diffuse = [v[6], v[7], v[8]];
-    let mut texels = None;
-    let mut uvs = None;
-    if item.textured {
-        let uv = UvLanes::new(p, win, group, b1, b2, s);
-        let (d, t) = apply_texture(item, &uv, diffuse);
-        diffuse = d;
-        texels = Some(t);
-        uvs = Some(uv);
-    }
-    if item.unlit {
-        // Unlit (no normals): the unlit colour is the lit colour, so the
-        // texture models that act after lighting still apply.
-        return match (&item.texture, texels) {
-            (Some(s), Some(t)) => after_lighting(s, &t, diffuse),
-            _ => diffuse,
-        };
-    }
-    let mut lit = shade8(
-        &item.material,
-        &item.lights,
+    let uv_store;
+    let uv: &[UvIn<V>] = if TEX && item.textured {
+        uv_store = [uv_in(p, win, group, b1, b2, s)];
+        &uv_store
+    } else {
+        &[]
+    };
+    shade_lanes::<V, V, TEX>(
+        item,
         eye,
         [v[0], v[1], v[2]],
         [v[3], v[4], v[5]],
-        diffuse,
-    );
-    if let (Some(e), Some(uv)) = (&item.emissive, &uvs) {
-        lit = add_emissive(e, uv, lit);
-    }
-    match (&item.texture, texels) {
-        (Some(s), Some(t)) => after_lighting(s, &t, lit),
-        _ => lit,
-    }
+        [v[6], v[7], v[8]],
+        uv,
+    )
 }
 
 /// Plane indices [`attributes`] evaluates: position, normal, colour, 1/w.
@@ -444,11 +438,11 @@ fn copy_to_samples(out: &mut Shaded, i0: usize, ns: usize) {
 }
 
 /// Shades the sixteen pixels at `i0` (one row, two blocks) that all show
-/// the lit `item` (see [`pair_item`]): attributes and texture per block,
-/// lighting once over both as a [`Pair`] — the same per-lane arithmetic
-/// as [`shade_group`], so the same bits.
+/// the lit `item` (see [`pair_item`]): attributes and texture coordinates
+/// per block, then the shading sequence once over both as a [`Pair`] —
+/// the same per-lane arithmetic as [`shade_group`], so the same bits.
 #[inline(always)]
-fn shade_pair<V: V8>(
+fn shade_pair<V: V8, const TEX: bool>(
     p: &Prepared,
     item: u32,
     eye: Vec3,
@@ -469,37 +463,24 @@ fn shade_pair<V: V8>(
     for (j, v) in v.iter_mut().enumerate() {
         *v = Pair(a[j] * sa, b[j] * sb);
     }
-    let mut diffuse = [v[6], v[7], v[8]];
-    // Textured: sampled per block, lit as a pair, combined per block.
-    let mut texels = None;
-    let mut uvs = None;
-    if it.textured {
-        let uva = UvLanes::new(p, &wa, 0xFF, b1a, b2a, sa);
-        let uvb = UvLanes::new(p, &wb, 0xFF, b1b, b2b, sb);
-        let (da, ta) = apply_texture(it, &uva, [v[6].0, v[7].0, v[8].0]);
-        let (db, tb) = apply_texture(it, &uvb, [v[6].1, v[7].1, v[8].1]);
-        diffuse = [Pair(da[0], db[0]), Pair(da[1], db[1]), Pair(da[2], db[2])];
-        texels = Some((ta, tb));
-        uvs = Some((uva, uvb));
-    }
-    let mut lit = shade8(
-        &it.material,
-        &it.lights,
+    let uv_store;
+    let uv: &[UvIn<V>] = if TEX && it.textured {
+        uv_store = [
+            uv_in(p, &wa, 0xFF, b1a, b2a, sa),
+            uv_in(p, &wb, 0xFF, b1b, b2b, sb),
+        ];
+        &uv_store
+    } else {
+        &[]
+    };
+    let lit = shade_lanes::<V, Pair<V>, TEX>(
+        it,
         eye,
         [v[0], v[1], v[2]],
         [v[3], v[4], v[5]],
-        diffuse,
+        [v[6], v[7], v[8]],
+        uv,
     );
-    if let (Some(e), Some((uva, uvb))) = (&it.emissive, &uvs) {
-        let la = add_emissive(e, uva, [lit[0].0, lit[1].0, lit[2].0]);
-        let lb = add_emissive(e, uvb, [lit[0].1, lit[1].1, lit[2].1]);
-        lit = [Pair(la[0], lb[0]), Pair(la[1], lb[1]), Pair(la[2], lb[2])];
-    }
-    if let (Some(s), Some((ta, tb))) = (&it.texture, texels) {
-        let la = after_lighting(s, &ta, [lit[0].0, lit[1].0, lit[2].0]);
-        let lb = after_lighting(s, &tb, [lit[0].1, lit[1].1, lit[2].1]);
-        lit = [Pair(la[0], lb[0]), Pair(la[1], lb[1]), Pair(la[2], lb[2])];
-    }
     for (dst, c) in [&mut *out.r, &mut *out.g, &mut *out.b].into_iter().zip(lit) {
         c.0.store(lanes8_mut(dst, i0));
         c.1.store(lanes8_mut(dst, i0 + 8));
@@ -507,193 +488,51 @@ fn shade_pair<V: V8>(
     out.ids[i0..i0 + 16].fill(it.id);
 }
 
-/// Perspective-correct texture coordinates of eight pixels and their
-/// screen-space derivatives (per pixel step in x and in y), from which a
-/// sampler picks the mip level (e.g. ρ = max(|∂uv/∂x|, |∂uv/∂y|) in texels,
-/// OpenGL 4.6 §8.14.1).
+/// Perspective-correct texture coordinates of the lanes of `group` and
+/// their screen-space derivatives (per pixel step in x and in y), from
+/// which the sampler picks the mip level (e.g. ρ = max(|∂uv/∂x|, |∂uv/∂y|)
+/// in texels, OpenGL 4.6 §8.14.1). `s` is 1/q, the reciprocal of the
+/// interpolated 1/w, per lane.
 ///
 /// With `q = 1/w` and `U = u/w` both affine in screen space,
 /// `u = U/q` and `∂u/∂x = (∂U/∂x − u·∂q/∂x)/q`.
-pub struct UvLanes<V> {
-    pub u: V,
-    pub v: V,
-    pub du_dx: V,
-    pub dv_dx: V,
-    pub du_dy: V,
-    pub dv_dy: V,
-}
-
-impl<V: V8> UvLanes<V> {
-    /// `s` is 1/q, the reciprocal of the interpolated 1/w, per lane.
-    #[inline(always)]
-    fn new(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V, s: V) -> UvLanes<V> {
-        // Per lane: U, V planes and the constant gradients of U, V and q.
-        let mut m = [V::splat(0.0); 8];
-        let mut rest = group;
-        let mut first = true;
-        while rest != 0 {
-            let (t, mask) = next_tri(p, win, &mut rest);
-            let g = t.gradients();
-            let vals = [
-                plane(t, A_UV, b1, b2),
-                plane(t, A_UV + 1, b1, b2),
-                V::splat(g.uv[0][0]),
-                V::splat(g.uv[1][0]),
-                V::splat(g.q[0]),
-                V::splat(g.uv[0][1]),
-                V::splat(g.uv[1][1]),
-                V::splat(g.q[1]),
-            ];
-            if first {
-                m = vals;
-                first = false;
-            } else {
-                let mk = V::from_bits(mask);
-                for (o, v) in m.iter_mut().zip(vals) {
-                    *o = V::select(mk, v, *o);
-                }
+#[inline(always)]
+fn uv_in<V: V8>(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V, s: V) -> UvIn<V> {
+    // Per lane: U, V planes and the constant gradients of U, V and q.
+    let mut m = [V::splat(0.0); 8];
+    let mut rest = group;
+    let mut first = true;
+    while rest != 0 {
+        let (t, mask) = next_tri(p, win, &mut rest);
+        let g = t.gradients();
+        let vals = [
+            plane(t, A_UV, b1, b2),
+            plane(t, A_UV + 1, b1, b2),
+            V::splat(g.uv[0][0]),
+            V::splat(g.uv[1][0]),
+            V::splat(g.q[0]),
+            V::splat(g.uv[0][1]),
+            V::splat(g.uv[1][1]),
+            V::splat(g.q[1]),
+        ];
+        if first {
+            m = vals;
+            first = false;
+        } else {
+            let mk = V::from_bits(mask);
+            for (o, v) in m.iter_mut().zip(vals) {
+                *o = V::select(mk, v, *o);
             }
         }
-        let (u, v) = (m[0] * s, m[1] * s);
-        UvLanes {
-            u,
-            v,
-            du_dx: (m[2] - u * m[4]) * s,
-            dv_dx: (m[3] - v * m[4]) * s,
-            du_dy: (m[5] - u * m[7]) * s,
-            dv_dy: (m[6] - v * m[7]) * s,
-        }
     }
-
-    /// The coordinates as the lane sampler takes them.
-    #[inline(always)]
-    fn input(&self) -> UvIn<V> {
-        UvIn {
-            u: self.u,
-            v: self.v,
-            du_dx: self.du_dx,
-            dv_dx: self.dv_dx,
-            du_dy: self.du_dy,
-            dv_dy: self.dv_dy,
-        }
-    }
-}
-
-/// The texture of a textured item applied to eight lanes before lighting:
-/// returns the diffuse colour lighting starts from (VRML97 acts here, see
-/// `texture::Sampler::before_lighting`) and the lanes' texels (R, G, B, A)
-/// for [`after_lighting`]. Sampling is trilinear with the level from each
-/// pixel's exact derivatives, on lanes (`texture_lanes`).
-#[inline(always)]
-pub fn apply_texture<V: V8>(item: &Item, uv: &UvLanes<V>, diffuse: [V; 3]) -> ([V; 3], [V; 4]) {
-    let Some(s) = &item.texture else {
-        return (diffuse, [V::splat(1.0); 4]);
-    };
-    let t = s.texel8(&uv.input());
-    (s.before_lighting8(&t, diffuse), t)
-}
-
-/// The emissive map's `factor × texel` added to eight lit lanes (before
-/// anything clamps them), with the one-pixel path's exact operations:
-/// see [`shade_textured`].
-#[inline(always)]
-pub fn add_emissive<V: V8>(e: &EmissiveMap, uv: &UvLanes<V>, lit: [V; 3]) -> [V; 3] {
-    let t = e.map.texel8(&uv.input());
-    let f = e.factor;
-    [
-        lit[0] + V::splat(f.x) * t[0],
-        lit[1] + V::splat(f.y) * t[1],
-        lit[2] + V::splat(f.z) * t[2],
-    ]
-}
-
-/// The texture models that act on the lit colour (Replace, MODULATE, DECAL,
-/// BLEND), per lane; others leave `lit` as it is.
-#[inline(always)]
-pub fn after_lighting<V: V8>(s: &Sampler, texels: &[V; 4], lit: [V; 3]) -> [V; 3] {
-    s.after_lighting8(texels, lit)
-}
-
-/// One pixel of a textured triangle drawn outside the 8-lane pass (the
-/// transparent pass): colour and alpha at screen weights `b1`, `b2`, with
-/// the same texture arithmetic as the lanes (texture, then lighting, then
-/// the emissive map, then the models acting after lighting).
-pub fn shade_textured(item: &Item, t: &Tri, b1: f32, b2: f32, eye: Vec3) -> (Vec3, f32) {
-    let a = t.attrs_at(b1, b2);
-    let plane = |j: usize| t.base[j] + b1 * t.d1[j] + b2 * t.d2[j];
-    let inv_q = 1.0 / plane(INV_W);
-    let (u, v) = (a[A_UV], a[A_UV + 1]);
-    let g = t.gradients();
-    let ddx = Vec2::new(
-        (g.uv[0][0] - u * g.q[0]) * inv_q,
-        (g.uv[1][0] - v * g.q[0]) * inv_q,
-    );
-    let ddy = Vec2::new(
-        (g.uv[0][1] - u * g.q[1]) * inv_q,
-        (g.uv[1][1] - v * g.q[1]) * inv_q,
-    );
-    let uv = Vec2::new(u, v);
-    let color = Vec3::new(a[A_COLOR], a[A_COLOR + 1], a[A_COLOR + 2]);
-    let mut diffuse = color;
-    let mut alpha = item.material.alpha;
-    let texel = item.texture.as_ref().map(|s| s.texel(uv, ddx, ddy));
-    if let (Some(s), Some(texel)) = (&item.texture, texel) {
-        (diffuse, alpha) = s.before_lighting(texel, color, alpha);
-    }
-    let p = Vec3::new(a[A_POS], a[A_POS + 1], a[A_POS + 2]);
-    let n = Vec3::new(a[A_NORMAL], a[A_NORMAL + 1], a[A_NORMAL + 2]);
-    // Unlit (no normals): the unlit colour is the lit colour, as in
-    // `shade_group` (its emission is already that colour).
-    let mut lit = if item.unlit {
-        diffuse
-    } else {
-        super::shade::shade(&item.material, diffuse, &item.lights, p, n, eye)
-    };
-    if let (Some(e), false) = (&item.emissive, item.unlit) {
-        lit += e.factor * e.map.texel(uv, ddx, ddy).truncate();
-    }
-    match (&item.texture, texel) {
-        (Some(s), Some(texel)) => {
-            let (c, alpha) = s.after_lighting(texel, lit, alpha);
-            (c, s.masked(alpha))
-        }
-        _ => (lit, alpha),
-    }
-}
-
-/// Screen-space gradients of a triangle's planes, per pixel step.
-pub struct Gradients {
-    /// ∂(u/w)/∂x, ∂(u/w)/∂y; then the same for v/w.
-    pub uv: [[f32; 2]; 2],
-    /// ∂(1/w)/∂x, ∂(1/w)/∂y.
-    pub q: [f32; 2],
-}
-
-impl Tri {
-    /// Gradients of the texture planes and of 1/w: the barycentric weight
-    /// of vertex k is its edge function over twice the area, so its step
-    /// per pixel is the edge's (fixed-point) delta over the area.
-    pub fn gradients(&self) -> Gradients {
-        let area = (self.x[1] - self.x[0]) * (self.y[2] - self.y[0])
-            - (self.y[1] - self.y[0]) * (self.x[2] - self.x[0]);
-        let inv = SUBPIXEL as f32 / area as f32;
-        // b1: edge from vertex 2 to 0; b2: edge from vertex 0 to 1.
-        let db1 = [
-            -((self.y[0] - self.y[2]) as f32) * inv,
-            (self.x[0] - self.x[2]) as f32 * inv,
-        ];
-        let db2 = [
-            -((self.y[1] - self.y[0]) as f32) * inv,
-            (self.x[1] - self.x[0]) as f32 * inv,
-        ];
-        let grad = |j: usize, axis: usize| self.d1[j] * db1[axis] + self.d2[j] * db2[axis];
-        Gradients {
-            uv: [
-                [grad(A_UV, 0), grad(A_UV, 1)],
-                [grad(A_UV + 1, 0), grad(A_UV + 1, 1)],
-            ],
-            q: [grad(INV_W, 0), grad(INV_W, 1)],
-        }
+    let (u, v) = (m[0] * s, m[1] * s);
+    UvIn {
+        u,
+        v,
+        du_dx: (m[2] - u * m[4]) * s,
+        dv_dx: (m[3] - v * m[4]) * s,
+        du_dy: (m[5] - u * m[7]) * s,
+        dv_dy: (m[6] - v * m[7]) * s,
     }
 }
 
@@ -701,7 +540,7 @@ impl Tri {
 mod tests {
     use super::*;
     use crate::render::clip::ATTRS;
-    use crate::render::prepare::planes;
+    use crate::render::prepare::{planes, SUBPIXEL};
     use crate::render::simd::Lanes;
 
     /// Screen positions, 1/w and texture coordinates of three vertices.
@@ -765,7 +604,7 @@ mod tests {
         let mut checked = 0;
         crate::render::raster::for_each_pixel(t, [0, 0, 64, 64], |x, y, b1, b2| {
             let q = t.base[INV_W] + b1 * t.d1[INV_W] + b2 * t.d2[INV_W];
-            let lanes = UvLanes::new(
+            let lanes = uv_in(
                 &p,
                 &[0; 8],
                 0xFF,

@@ -98,3 +98,48 @@ impl<V: V8> Lanes for Pair<V> {
         Pair(self.0.map2(o.0, &f), self.1.map2(o.1, &f))
     }
 }
+
+/// Lanes made of `N` eight-lane blocks (one block, or a [`Pair`]): what the
+/// per-block steps of shading (texture sampling, which works on eight
+/// lanes) need to take a value apart and put it back, so one shading
+/// sequence serves a block and a pair alike.
+pub trait Blocks<V: V8>: Lanes {
+    /// Blocks per value (1 or 2).
+    const N: usize;
+    /// Block `k` (< `N`).
+    fn block(self, k: usize) -> V;
+    /// Replaces block `k` (< `N`).
+    fn set_block(&mut self, k: usize, v: V);
+}
+
+impl<V: V8> Blocks<V> for V {
+    const N: usize = 1;
+    #[inline(always)]
+    fn block(self, _: usize) -> V {
+        self
+    }
+    #[inline(always)]
+    fn set_block(&mut self, _: usize, v: V) {
+        *self = v;
+    }
+}
+
+impl<V: V8> Blocks<V> for Pair<V> {
+    const N: usize = 2;
+    #[inline(always)]
+    fn block(self, k: usize) -> V {
+        if k == 0 {
+            self.0
+        } else {
+            self.1
+        }
+    }
+    #[inline(always)]
+    fn set_block(&mut self, k: usize, v: V) {
+        if k == 0 {
+            self.0 = v;
+        } else {
+            self.1 = v;
+        }
+    }
+}

@@ -17,6 +17,7 @@
 mod background;
 pub mod bench_scenes;
 mod clip;
+mod coin_bounds;
 mod fragment;
 mod frame;
 mod geometry;
@@ -28,6 +29,7 @@ mod raster;
 mod shade;
 mod simd;
 pub mod stages;
+mod surface;
 mod texture;
 mod texture_lanes;
 mod view;
@@ -224,34 +226,36 @@ fn bin_tiles(p: &prepare::Prepared, bins: &mut Vec<raster::Bin>, w: i32, h: i32)
     for b in bins.iter_mut() {
         b.clear();
     }
+    /// Appends each primitive's index to the bins its box touches; a
+    /// `textured` one (an opaque triangle of a textured item) marks them
+    /// so their shading loop has the texture steps compiled in.
     fn bin_all(
         bins: &mut [raster::Bin],
         tiles_x: i32,
-        boxes: impl Iterator<Item = [i32; 4]>,
+        boxes: impl Iterator<Item = ([i32; 4], bool)>,
         pick: fn(&mut raster::Bin) -> &mut Vec<u32>,
     ) {
-        for (i, b) in boxes.enumerate() {
+        for (i, (b, textured)) in boxes.enumerate() {
             let (tx0, ty0) = (b[0] / raster::TILE, b[1] / raster::TILE_H);
             let (tx1, ty1) = ((b[2] - 1) / raster::TILE, (b[3] - 1) / raster::TILE_H);
             for ty in ty0..=ty1 {
                 for tx in tx0..=tx1 {
-                    pick(&mut bins[(ty * tiles_x + tx) as usize]).push(i as u32);
+                    let bin = &mut bins[(ty * tiles_x + tx) as usize];
+                    bin.textured |= textured;
+                    pick(bin).push(i as u32);
                 }
             }
         }
     }
-    bin_all(bins, tiles_x, p.opaque.iter().map(|t| t.bbox), |b| {
-        &mut b.opaque
-    });
-    bin_all(bins, tiles_x, p.transparent.iter().map(|t| t.bbox), |b| {
-        &mut b.transparent
-    });
-    bin_all(bins, tiles_x, p.lines.iter().map(|l| l.bbox), |b| {
-        &mut b.lines
-    });
-    bin_all(bins, tiles_x, p.points.iter().map(|q| q.bbox), |b| {
-        &mut b.points
-    });
+    let opaque = p.opaque.iter();
+    let textured = |t: &prepare::Tri| (t.bbox, p.items[t.item as usize].textured);
+    bin_all(bins, tiles_x, opaque.map(textured), |b| &mut b.opaque);
+    let transparent = p.transparent.iter().map(|t| (t.bbox, false));
+    bin_all(bins, tiles_x, transparent, |b| &mut b.transparent);
+    let lines = p.lines.iter().map(|l| (l.bbox, false));
+    bin_all(bins, tiles_x, lines, |b| &mut b.lines);
+    let points = p.points.iter().map(|q| (q.bbox, false));
+    bin_all(bins, tiles_x, points, |b| &mut b.points);
 
     tiles_x
 }

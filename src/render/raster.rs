@@ -6,10 +6,11 @@
 //! picture stays the same.
 
 use super::clip::ATTRS;
-use super::fragment::{self, store_masked, Shaded, Visible, NONE};
+use super::fragment::{self, store_masked, Pass, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, POINT_SIZE, SUBPIXEL};
 use super::shade::shade;
 use super::simd::{self, Lanes, Sse8, V8};
+use super::surface;
 use glam::Vec3;
 
 pub use super::fragment::{PLANE, TILE, TILE_H};
@@ -24,11 +25,15 @@ pub struct Bin {
     pub transparent: Vec<u32>,
     pub lines: Vec<u32>,
     pub points: Vec<u32>,
+    /// Whether an opaque triangle of a textured item is in `opaque`: the
+    /// tile's shading loop then needs the texture steps.
+    pub textured: bool,
 }
 
 impl Bin {
     /// Empties the lists, keeping their memory.
     pub fn clear(&mut self) {
+        self.textured = false;
         self.opaque.clear();
         self.transparent.clear();
         self.lines.clear();
@@ -438,7 +443,14 @@ pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch) {
 
 /// Stage 2 of a tile: shade each visible sample once per triangle it
 /// shows (after [`depth_tile`]), then the sky behind what was drawn.
-pub fn shade_tile(p: &Prepared, rect: Rect, background: Vec3, eye: Vec3, scratch: &mut Scratch) {
+pub fn shade_tile(
+    p: &Prepared,
+    bin: &Bin,
+    rect: Rect,
+    background: Vec3,
+    eye: Vec3,
+    scratch: &mut Scratch,
+) {
     let tw = (rect[2] - rect[0]) as usize;
     let th = (rect[3] - rect[1]) as usize;
     let ns = scratch.samples;
@@ -452,12 +464,20 @@ pub fn shade_tile(p: &Prepared, rect: Rect, background: Vec3, eye: Vec3, scratch
         b2,
         ..
     } = scratch;
-    fragment::shade_visible(
+    let pass = Pass {
         p,
         eye,
         background,
-        (tw, th, ns),
-        &Visible { winner, b1, b2 },
+        size: (tw, th, ns),
+    };
+    fragment::shade_visible(
+        &pass,
+        &Visible {
+            winner,
+            b1,
+            b2,
+            textured: bin.textured,
+        },
         &mut Shaded { r, g, b, ids },
     );
     if let Some(sky) = &p.sky {
@@ -481,7 +501,7 @@ pub fn draw_tile(
     target: &mut Target,
 ) {
     depth_tile(p, bin, rect, scratch);
-    shade_tile(p, rect, background, eye, scratch);
+    shade_tile(p, bin, rect, background, eye, scratch);
     let ns = scratch.samples;
     let offsets = sample_offsets(ns);
     let at = |x: i32, y: i32| (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
@@ -582,7 +602,7 @@ pub fn draw_tile(
         // Colour and alpha of a fragment (textures may vary the alpha).
         let color_at = |w1: f32, w2: f32| {
             if item.textured {
-                fragment::shade_textured(item, t, w1, w2, eye)
+                surface::shade_textured(item, t, w1, w2, eye)
             } else {
                 (
                     shade_attrs(item, &t.attrs_at(w1, w2), eye),

@@ -80,7 +80,14 @@ impl Stages {
         let (bg, eye) = (self.opts.background, self.view.eye);
         for (rect, bin) in self.tiles() {
             raster::depth_tile(&self.prepared, &self.bins[bin], rect, &mut self.scratch);
-            raster::shade_tile(&self.prepared, rect, bg, eye, &mut self.scratch);
+            raster::shade_tile(
+                &self.prepared,
+                &self.bins[bin],
+                rect,
+                bg,
+                eye,
+                &mut self.scratch,
+            );
         }
     }
 

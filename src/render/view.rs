@@ -63,7 +63,8 @@ impl View {
     }
 
     /// Frames the whole posed scene the way Coin's `viewAll` does: the
-    /// sphere around the scene's bounding box (radius r), a default camera
+    /// sphere around the scene's bounding box as Coin's bounding-box action
+    /// merges it ([`super::coin_bounds`]; radius r), a default camera
     /// (heightAngle 45°, looking down −z) moved back from the sphere's centre
     /// by `r' / tan(heightAngle/2)` with `r' = r / min(aspect, 1)`, near and
     /// far at that distance ∓ r. That distance is what Coin 4.0 (Debian's
@@ -73,7 +74,7 @@ impl View {
     /// the sphere's silhouette is slightly cropped, as in Coin.)
     /// An empty scene gives the VRML97 default view.
     pub fn view_all(scene: &Scene, pose: &Pose, aspect: f32) -> View {
-        Self::build_view_all(bounding_sphere(scene, pose), aspect).0
+        Self::build_view_all(coin_sphere(scene, pose), aspect).0
     }
 
     /// [`View::view_all`] framed once per file: the camera comes from
@@ -83,7 +84,7 @@ impl View {
     /// hold `now` as well (Coin's automatic clipping planes do the same).
     /// For a still scene (`now` = `start`) it is exactly `view_all`.
     pub fn view_all_from_start(scene: &Scene, start: &Pose, now: &Pose, aspect: f32) -> View {
-        let (view, mut cam) = Self::build_view_all(bounding_sphere(scene, start), aspect);
+        let (view, mut cam) = Self::build_view_all(coin_sphere(scene, start), aspect);
         let (Some((c, r)), Some(near), Some(far)) =
             (bounding_sphere(scene, now), cam.near, cam.far)
         else {
@@ -110,7 +111,7 @@ impl View {
     /// The camera [`View::view_all`] builds (for the editor's orbit and for
     /// writers that want to save it), with the view.
     pub fn view_all_camera(scene: &Scene, pose: &Pose, aspect: f32) -> (View, Camera) {
-        Self::build_view_all(bounding_sphere(scene, pose), aspect)
+        Self::build_view_all(coin_sphere(scene, pose), aspect)
     }
 
     fn build_view_all(sphere: Option<(Vec3, f32)>, aspect: f32) -> (View, Camera) {
@@ -277,6 +278,13 @@ pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
         }
     }
     out
+}
+
+/// The sphere circumscribing the scene's box as Coin merges it
+/// ([`super::coin_bounds`]): what view-all frames.
+fn coin_sphere(scene: &Scene, pose: &Pose) -> Option<(Vec3, f32)> {
+    super::coin_bounds::coin_scene_bounds(scene, pose)
+        .map(|(lo, hi)| ((lo + hi) * 0.5, (hi - lo).length() * 0.5))
 }
 
 /// Axis-aligned bounds of finite points, `None` when there are none.

@@ -169,6 +169,8 @@ fn written(dir: &Path) -> Vec<PathBuf> {
         // Skins and morph targets (with weights channels) written by animed.
         ("tests/data/gltf/corpus/Bunny.gltf", "bunny"),
         ("tests/data/gltf/corpus/monkey_morph.glb", "monkey"),
+        // A track looping four times in its clip (unrolled in the file).
+        ("tests/data/gltf/looping_track.wrl", "looping"),
     ] {
         for ext in ["gltf", "glb"] {
             let o = dir.join(format!("{stem}.{ext}"));

@@ -175,6 +175,39 @@ pub fn light_from_extras(l: &gltf::khr_lights_punctual::Light, read: &Punctual) 
     (want.intensity == read.intensity && want.range == read.range).then_some(light)
 }
 
+/// A light animed wrote (restored exactly by [`light_from_extras`]) and
+/// the reference distance its intensity was mapped with.
+pub fn animed_light(l: &gltf::khr_lights_punctual::Light) -> Option<(Light, f32)> {
+    let light = light_from_extras(l, &Punctual::from_gltf(l))?;
+    let raw = l.extras().as_ref()?;
+    let v: serde_json::Value = serde_json::from_str(raw.get()).ok()?;
+    let reference = v.get("animed")?.get("reference")?.as_f64()? as f32;
+    Some((light, reference))
+}
+
+/// The inverse of [`punctual_from_light`]'s intensity for a light that is
+/// on: the animed intensity whose glTF intensity is `e` (an animated
+/// intensity of a light animed wrote, read back without its key note).
+pub fn intensity_from_punctual(l: &Light, e: f32, reference: f32) -> f32 {
+    let e = e.max(0.0);
+    match l.kind {
+        LightKind::Directional => (e / PI).min(1.0),
+        _ => {
+            let a = l.attenuation;
+            if a.x == 0.0 && a.y == 0.0 && a.z > 0.0 {
+                e * a.z / PI
+            } else {
+                let d = if reference.is_finite() && reference > 0.0 {
+                    reference
+                } else {
+                    1.0
+                };
+                e * (a.x + a.y * d + a.z * d * d).max(1.0) / (PI * d * d)
+            }
+        }
+    }
+}
+
 /// A glTF camera (§3.10) → animed camera at its node's origin looking down −z.
 pub fn camera_from_gltf(c: &gltf::Camera) -> Camera {
     let (kind, near, far) = match c.projection() {

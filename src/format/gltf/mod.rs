@@ -8,7 +8,8 @@
 //! units, cameras), `anim` (animations → clips), `pointer_anim`
 //! (KHR_animation_pointer channels onto lights, cameras, materials), `texture` (base colour
 //! textures, samplers, KHR_texture_transform), `read` (the node tree and
-//! the entry point); the writer: `write`, `write_anim`, `write_texture`,
+//! the entry point); the writer: `write`, `write_anim`, `write_pointer`
+//! (KHR_animation_pointer channels), `write_texture`,
 //! `bin`. Errors name the JSON pointer of the offending part.
 
 mod accessor;
@@ -26,6 +27,7 @@ mod texture;
 mod uri;
 mod write;
 mod write_anim;
+mod write_pointer;
 mod write_texture;
 
 pub use container::SUPPORTED_EXTENSIONS;

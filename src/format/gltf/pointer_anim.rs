@@ -28,6 +28,7 @@
 
 use super::anim::{cubic_rows, frames_of, sampler_values};
 use super::container::{json_error, GltfError, Result};
+use super::lights::{animed_light, intensity_from_punctual};
 use super::material::{srgb_from_linear, Pbr};
 use super::pointer::pointer;
 use crate::anim::{Interp, Key, Keys, Property, Repeat, Target, TargetRef, Track};
@@ -312,8 +313,16 @@ fn map_channel(
                 let NodeKind::Light(light) = &mut scene.node_mut(id).kind else {
                     continue;
                 };
+                let ours = doc
+                    .lights()
+                    .and_then(|mut ls| ls.nth(l))
+                    .and_then(|g| animed_light(&g));
                 let keys = if matches!(light.kind, LightKind::Directional) {
                     scalar(&|e| (e.max(0.0) / PI).min(1.0))
+                } else if let Some((mine, reference)) = ours {
+                    // animed's own light keeps its attenuation: invert the
+                    // writer's mapping instead of re-deriving one.
+                    scalar(&|e| intensity_from_punctual(&mine, e, reference))
                 } else {
                     let static_i = doc
                         .lights()

@@ -20,6 +20,7 @@ use super::lights::{punctual_from_light, PunctualKind};
 use super::material::{linear_exact, pbr_from_phong};
 use super::uri::base64_encode;
 use super::write_anim::{animations, NodeSlots};
+use super::write_pointer::{PointerSlots, WrittenMaterial, EXTENSION as POINTER_EXTENSION};
 use super::write_texture::{replaces_diffuse, TextureWriter};
 use crate::anim::{Property, TargetRef};
 use crate::format::export::channels::scene_diagonal;
@@ -317,6 +318,24 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     let mut materials: Vec<Json> = Vec::new();
     let mut lights: Vec<Json> = Vec::new();
     let mut cameras: Vec<Json> = Vec::new();
+    let mut pointers = PointerSlots {
+        light: vec![None; n],
+        camera: vec![None; n],
+        material: vec![Vec::new(); scene.materials.len()],
+        reference,
+    };
+    // Materials whose transparency is animated blend even when opaque at
+    // rest (an OPAQUE material's alpha is ignored by every reader).
+    let see_through: HashSet<u32> = scene
+        .clip_refs()
+        .iter()
+        .flat_map(|c| c.animation.tracks.iter())
+        .filter(|t| t.target.property == Property::Transparency)
+        .filter_map(|t| match t.target.of {
+            TargetRef::Material(m) => Some(m.0),
+            _ => None,
+        })
+        .collect();
     let mut mesh_cache: BTreeMap<(u32, u32), usize> = BTreeMap::new();
     let mut material_cache: BTreeMap<(u32, bool, bool), usize> = BTreeMap::new();
     // Attributes and index accessors of a scene mesh, shared by every glTF
@@ -401,9 +420,18 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                         mj["alphaCutoff"] = num(c);
                                     }
                                     (true, None) => mj["alphaMode"] = json!("BLEND"),
+                                    _ if see_through.contains(&sh.material.0) => {
+                                        mj["alphaMode"] = json!("BLEND")
+                                    }
                                     _ => {}
                                 }
                                 materials.push(mj);
+                                if let Some(w) = pointers.material.get_mut(sh.material.0 as usize) {
+                                    w.push(WrittenMaterial {
+                                        index: materials.len() - 1,
+                                        white,
+                                    });
+                                }
                                 material_cache.insert(key, materials.len() - 1);
                                 materials.len() - 1
                             }
@@ -542,6 +570,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                     lj["name"] = json!(names[i]);
                 }
                 lights.push(lj);
+                pointers.light[i] = Some(lights.len() - 1);
                 content.insert(
                     "extensions".into(),
                     json!({ "KHR_lights_punctual": { "light": lights.len() - 1 } }),
@@ -569,6 +598,7 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                     cj["name"] = json!(c.description);
                 }
                 cameras.push(cj);
+                pointers.camera[i] = Some(cameras.len() - 1);
                 content.insert("camera".into(), json!(cameras.len() - 1));
             }
         }
@@ -604,7 +634,31 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
 
     let tol = Tolerances::new(scene_diagonal(scene), opts.tolerance, opts.angle_tolerance);
     let clips = scene.clip_refs();
-    let anims = animations(scene, &clips, &slots, &names, &tol, &mut bin, &mut report);
+    let (anims, pointed) = animations(
+        scene,
+        &clips,
+        &slots,
+        &pointers,
+        &names,
+        &tol,
+        &mut bin,
+        &mut report,
+    );
+    // A pointer must name a property the document has: an animated
+    // emissive colour that is black at rest still needs its factor.
+    for p in &pointed {
+        if let Some(m) = p
+            .strip_prefix("/materials/")
+            .and_then(|r| r.strip_suffix("/emissiveFactor"))
+            .and_then(|i| i.parse::<usize>().ok())
+        {
+            if let Some(mj) = materials.get_mut(m) {
+                if mj.get("emissiveFactor").is_none() {
+                    mj["emissiveFactor"] = json!([0.0, 0.0, 0.0]);
+                }
+            }
+        }
+    }
 
     // The key note of every clip, naming nodes as written here.
     let mut plan = WritePlan::new(scene);
@@ -641,6 +695,9 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
     }
     if textures.transform_used {
         used.push("KHR_texture_transform");
+    }
+    if !pointed.is_empty() {
+        used.push(POINTER_EXTENSION);
     }
     let roots: Vec<usize> = scene
         .roots

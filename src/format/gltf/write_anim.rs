@@ -10,10 +10,16 @@
 //! * everything else (squad, eases, looping tracks, visibility folded into
 //!   scale, keys before time 0) is sampled adaptively within the writer
 //!   tolerances by `export::channels`, and reported;
-//! * properties glTF cannot animate without extensions (light colour and
-//!   intensity, camera field of view, materials) live in the key note only.
+//! * light colour and intensity, spot cones, a camera's field of view and
+//!   material colours go out as KHR_animation_pointer channels
+//!   (`write_pointer`), sampled; specular colour and shininess, which core
+//!   materials lack, live in the key note only (and the report says so);
+//! * a channel that loops with its own period (`Channel::period`) is
+//!   unrolled over the clip: glTF has no per-channel clock, and a file
+//!   holding one period would stop there in every other player.
 
 use super::bin::Bin;
+use super::write_pointer::{pointed, PointerSlots, EXTENSION};
 use crate::anim::hermite::{kb_in, kb_out, Tcb};
 use crate::anim::repeat::{after, before};
 use crate::anim::{Interp, Key, Keys, Property, Repeat, TargetRef, Track, Value, Weights};
@@ -248,12 +254,33 @@ fn exact_weights(k: &[Key<Weights>], width: usize, fps: f32) -> Option<Written> 
     })
 }
 
-/// A sampled channel as LINEAR keys; jumps (two samples at one time) get
-/// the next representable time, as glTF times must increase.
-fn sampled(ch: &Channel, fps: f32, rotation: bool) -> Written {
-    let mut times: Vec<f32> = Vec::with_capacity(ch.samples.len());
-    let mut values = Vec::new();
-    for &(f, v) in &ch.samples {
+/// A channel's samples over the whole clip: one period repeated when it
+/// loops on a clock of its own (module doc), else as sampled. A repeat
+/// starts where the last one ended; its first sample is dropped when it
+/// equals that end (a smooth loop), kept when it jumps.
+fn unrolled(ch: &Channel, duration: f32) -> Vec<(f32, Value)> {
+    let Some(p) = ch.period.filter(|p| *p > 0.0) else {
+        return ch.samples.clone();
+    };
+    let repeats = (duration / p).round().max(1.0) as usize;
+    let mut out: Vec<(f32, Value)> = Vec::with_capacity(ch.samples.len() * repeats);
+    for k in 0..repeats {
+        let shift = k as f32 * p;
+        for (j, &(f, v)) in ch.samples.iter().enumerate() {
+            if j == 0 && k > 0 && out.last().is_some_and(|&(_, last)| last == v) {
+                continue;
+            }
+            out.push((f + shift, v));
+        }
+    }
+    out
+}
+
+/// The seconds of `samples` for a sampler's input: jumps (two samples at
+/// one time) get the next representable time, as glTF times must increase.
+fn seconds(samples: &[(f32, Value)], fps: f32) -> Vec<f32> {
+    let mut times: Vec<f32> = Vec::with_capacity(samples.len());
+    for &(f, _) in samples {
         let mut t = (f / fps).max(0.0);
         if let Some(&last) = times.last() {
             if t <= last {
@@ -261,6 +288,15 @@ fn sampled(ch: &Channel, fps: f32, rotation: bool) -> Written {
             }
         }
         times.push(t);
+    }
+    times
+}
+
+/// A sampled channel as LINEAR keys.
+fn sampled(samples: &[(f32, Value)], fps: f32, rotation: bool) -> Written {
+    let times = seconds(samples, fps);
+    let mut values = Vec::new();
+    for &(_, v) in samples {
         match v {
             Value::Vec3(v) if rotation => {
                 // A direction: the rotation taking −z onto it.
@@ -274,7 +310,7 @@ fn sampled(ch: &Channel, fps: f32, rotation: bool) -> Written {
             Value::Bool(_) => values.extend_from_slice(&[0.0, 0.0, 0.0]),
         }
     }
-    let width = match ch.samples.first() {
+    let width = match samples.first() {
         Some((_, Value::Weights(w))) => w.len().max(1),
         _ if rotation => 4,
         _ => 3,
@@ -288,18 +324,30 @@ fn sampled(ch: &Channel, fps: f32, rotation: bool) -> Written {
     }
 }
 
-/// The animations of every clip, and the report lines.
+/// `{"KHR_animation_pointer": {"pointer": …}}` of a channel target.
+fn pointer_ext(pointer: &str) -> Json {
+    let mut ext = serde_json::Map::new();
+    ext.insert(EXTENSION.into(), json!({ "pointer": pointer }));
+    Json::Object(ext)
+}
+
+/// The animations of every clip, and the report lines; also the JSON
+/// pointers the KHR_animation_pointer channels target (empty: the
+/// extension is not used).
+#[allow(clippy::too_many_arguments)]
 pub fn animations(
     scene: &Scene,
     clips: &[ClipRef],
     slots: &NodeSlots,
+    pointers: &PointerSlots,
     names: &[String],
     tol: &Tolerances,
     bin: &mut Bin,
     report: &mut WriteReport,
-) -> Vec<Json> {
+) -> (Vec<Json>, Vec<String>) {
     let fps = scene.settings.fps.max(1e-6);
     let mut out = Vec::new();
+    let mut targets = Vec::new();
     for clip in clips {
         // A scene holding just this clip, without meshes, for the sampler.
         let one = Scene {
@@ -325,10 +373,42 @@ pub fn animations(
                     .unwrap_or_default(),
             };
             let label = format!("{label}.{}", ch.property.name());
+            let samples = unrolled(&ch, clip.duration);
             let Some((node, path)) = slot(slots, ch.of, ch.property) else {
-                report.warnings.push(format!(
-                    "{label}: glTF cannot animate it without extensions; it is kept in the key note only"
-                ));
+                let track = |of: TargetRef, p: Property| {
+                    clip.animation
+                        .tracks
+                        .iter()
+                        .rev()
+                        .find(|t| t.target.of == of && t.target.property == p)
+                };
+                match pointed(scene, pointers, &ch, &samples, &track) {
+                    Ok(list) => {
+                        let input = bin.floats(&seconds(&samples, fps), 1, true, None);
+                        for p in list {
+                            let output = bin.floats(&p.values, p.width, false, None);
+                            samplers.push(json!({
+                                "input": input,
+                                "output": output,
+                                "interpolation": "LINEAR",
+                            }));
+                            chans.push(json!({
+                                "sampler": samplers.len() - 1,
+                                "target": { "path": "pointer", "extensions": pointer_ext(&p.pointer) },
+                            }));
+                            targets.push(p.pointer);
+                        }
+                        report.channels.push(ChannelReport {
+                            name: format!("{label} ({EXTENSION}, sampled)"),
+                            authored_keys: ch.authored_keys,
+                            written_keys: samples.len(),
+                            per_frame_keys: per_frame_keys(clip.duration),
+                        });
+                    }
+                    Err(why) => report.warnings.push(format!(
+                        "{label}: not written as a glTF channel ({why}); it is kept in the key note only"
+                    )),
+                }
                 continue;
             };
             let track = clip
@@ -356,7 +436,7 @@ pub fn animations(
                     let how = format!("{} exact", w.interp);
                     (w, how)
                 }
-                None => (sampled(&ch, fps, rotation), "sampled".to_string()),
+                None => (sampled(&samples, fps, rotation), "sampled".to_string()),
             };
             report.channels.push(ChannelReport {
                 name: format!("{label} ({how})"),
@@ -388,5 +468,5 @@ pub fn animations(
         };
         out.push(json!({ "name": name, "channels": chans, "samplers": samplers }));
     }
-    out
+    (out, targets)
 }
