@@ -30,6 +30,8 @@ mod shade;
 mod simd;
 pub mod stages;
 mod surface;
+mod texel_block;
+mod texel_fetch;
 mod texture;
 mod texture_lanes;
 mod view;

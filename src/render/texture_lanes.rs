@@ -17,9 +17,10 @@
 //! `MAXPS` disagree).
 
 use super::log2_lanes::log2f8;
-use super::simd::{Lanes, V8};
+use super::simd::V8;
+use super::texel_block::filter;
 use super::texture::Sampler;
-use crate::scene::{MipLevel, TextureModel, Wrap};
+use crate::scene::{MipLevel, TextureModel};
 use glam::{Vec2, Vec4};
 
 /// Texture coordinates of eight lanes and their screen derivatives.
@@ -57,7 +58,11 @@ impl Sampler {
         let rho2 = lx.max(ly);
         let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
         let safe = V::select(in_range, rho2, V::splat(2.0));
-        let lods = to_arr((V::splat(0.5) * log2f8(safe)).keep(in_range));
+        let lod = (V::splat(0.5) * log2f8(safe)).keep(in_range);
+        if let Some(out) = self.texel8_one_level(lod, uv.u, uv.v) {
+            return out;
+        }
+        let lods = to_arr(lod);
         let levels = self.image().levels();
         let last = levels.len() - 1;
         // Per lane: the two levels and the blend fraction (`Sampler::sample`).
@@ -113,38 +118,15 @@ impl Sampler {
     /// `Sampler::bilinear` for eight lanes, lane k in level `lv[k]`.
     #[inline(always)]
     fn bilinear8<V: V8>(&self, levels: &[MipLevel], lv: &[usize; 8], s: V, t: V) -> [V; 4] {
-        let one = V::splat(1.0);
-        let half = V::splat(0.5);
         let (ws, hs): ([f32; 8], [f32; 8]) = (
             std::array::from_fn(|k| levels[lv[k]].width() as f32),
             std::array::from_fn(|k| levels[lv[k]].height() as f32),
         );
         let (w, h) = (V::load(&ws), V::load(&hs));
-        // Non-finite coordinates read as 0.
-        let s = s.keep(finite(s));
-        let t = t.keep(finite(t));
-        let s = if self.wrap_s() == Wrap::Repeat {
-            s - s.floor()
-        } else {
-            s
-        };
-        let t = if self.wrap_t() == Wrap::Repeat {
-            t - t.floor()
-        } else {
-            t
-        };
-        let x = s * w - half;
-        let y = (one - t) * h - half;
-        let (x0, y0) = (x.floor(), y.floor());
-        let (fx, fy) = (x - x0, y - y0);
-        // `clamp(-2, w)` as in the scalar path (x0 is finite here), then the
-        // two wrapped indices per axis on lanes (small whole numbers, exact).
-        let x0 = x0.max(V::splat(-2.0)).min(w);
-        let y0 = y0.max(V::splat(-2.0)).min(h);
-        let (xa, xb) = wrap2(x0, w, self.wrap_s());
-        let (ya, yb) = wrap2(y0, h, self.wrap_t());
-        let (xa, xb) = (xa.trunc_i32(), xb.trunc_i32());
-        let (ya, yb) = (ya.trunc_i32(), yb.trunc_i32());
+        let (s, t) = self.reduce8(s, t);
+        let f = self.footprint8(s, t, w, h);
+        let (xa, xb) = (f.xa.trunc_i32(), f.xb.trunc_i32());
+        let (ya, yb) = (f.ya.trunc_i32(), f.yb.trunc_i32());
         let mut corner = [[0u32; 8]; 4];
         for k in 0..8 {
             let level = &levels[lv[k]];
@@ -157,18 +139,7 @@ impl Sampler {
             corner[2][k] = u32::from_le_bytes(px[rb + ca]);
             corner[3][k] = u32::from_le_bytes(px[rb + cb]);
         }
-        let c00 = V::unpack_rgba8(&corner[0]);
-        let c10 = V::unpack_rgba8(&corner[1]);
-        let c01 = V::unpack_rgba8(&corner[2]);
-        let c11 = V::unpack_rgba8(&corner[3]);
-        let scale = V::splat(1.0 / 255.0);
-        let mut out = c00;
-        for c in 0..4 {
-            let top = c00[c] + (c10[c] - c00[c]) * fx;
-            let bottom = c01[c] + (c11[c] - c01[c]) * fx;
-            out[c] = (top + (bottom - top) * fy) * scale;
-        }
-        out
+        filter(&corner, f.fx, f.fy)
     }
 }
 
@@ -239,56 +210,50 @@ fn to_arr<V: V8>(v: V) -> [f32; 8] {
     a
 }
 
-/// A mask of the finite lanes.
-#[inline(always)]
-fn finite<V: V8>(x: V) -> V {
-    Lanes::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
-}
-
-/// `texture::wrap` of the texel indices `i` and `i + 1` for lanes of whole
-/// numbers in −2..=n (`n` per lane, the level's size): repeat is
-/// `rem_euclid` (by one period's addition or subtraction, see
-/// [`repeat_once`]), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
-/// here (see `Sampler::lanes_cover`).
-#[inline(always)]
-fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
-    let one = V::splat(1.0);
-    let j = i + one;
-    match mode {
-        Wrap::Clamp => {
-            let (lo, hi) = (V::splat(0.0), n - one);
-            (i.max(lo).min(hi), j.max(lo).min(hi))
-        }
-        // Repeat: i lies in −2..=n (the clamp before), j = i + 1, so one
-        // period up or down wraps them (small whole numbers: exact, the
-        // same as `rem_euclid`, with no division).
-        _ => (repeat_once(i, n), repeat_once(j, n)),
-    }
-}
-
-/// `i` wrapped into 0..n for whole-number lanes in −2..=n + 1: one period
-/// up or down, then a clamp that only acts for n = 1 (where two periods
-/// may be needed and the answer is 0).
-#[inline(always)]
-fn repeat_once<V: V8>(i: V, n: V) -> V {
-    let zero = V::splat(0.0);
-    let once = i + n.keep(zero.gt(i)) - n.keep(n.le(i));
-    once.max(zero).min(n - V::splat(1.0))
-}
-
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::render::simd::Sse8;
-    use crate::scene::{Image, ImageId, ImageSource, Texture};
+    use crate::scene::{Image, ImageId, ImageSource, Texture, Wrap};
 
-    fn image(w: u32, h: u32) -> Image {
+    /// A `w`×`h` RGBA test image with different values in every channel
+    /// (`mix` varies the pattern).
+    pub fn image(w: u32, h: u32, mix: [u32; 3]) -> Image {
         let px = (0..h).flat_map(|y| (0..w).map(move |x| (x, y)));
         let f = |(x, y): (u32, u32)| {
-            let v = (x * 37 + y * 91) as u8;
-            [v, v.wrapping_mul(3), 255 - v, (x * 7) as u8]
+            let v = (x * mix[0] + y * mix[1]) as u8;
+            [v, v.wrapping_mul(3), 255 - v, (x * mix[2]) as u8]
         };
         Image::new("t", ImageSource::Inline, w, h, 4, px.map(f).collect()).unwrap()
+    }
+
+    /// Asserts that `texel8` gives every lane `texel`'s exact bits for the
+    /// six coordinate lanes (u, v, du/dx, dv/dx, du/dy, dv/dy).
+    #[allow(clippy::needless_range_loop)]
+    pub fn assert_lanes_match(s: &Sampler, lanes: &[[f32; 8]; 6], what: &str) {
+        let l = |i: usize| Sse8::load(&lanes[i]);
+        let uv = UvIn {
+            u: l(0),
+            v: l(1),
+            du_dx: l(2),
+            dv_dx: l(3),
+            du_dy: l(4),
+            dv_dy: l(5),
+        };
+        let got = s.texel8(&uv);
+        for k in 0..8 {
+            let want = s.texel(
+                Vec2::new(lanes[0][k], lanes[1][k]),
+                Vec2::new(lanes[2][k], lanes[3][k]),
+                Vec2::new(lanes[4][k], lanes[5][k]),
+            );
+            let have = lane(&got, k);
+            assert_eq!(
+                have.to_array().map(f32::to_bits),
+                want.to_array().map(f32::to_bits),
+                "{what} lane {k}: {have} vs {want}"
+            );
+        }
     }
 
     /// Eight lanes give `texel`'s exact bits for magnified, minified,
@@ -296,7 +261,7 @@ mod tests {
     #[test]
     #[allow(clippy::needless_range_loop)]
     fn eight_lanes_match_one_pixel_bit_for_bit() {
-        let img = image(64, 32);
+        let img = image(64, 32, [37, 91, 7]);
         let mut seed = 12345u32;
         let mut rnd = || {
             seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
@@ -321,29 +286,7 @@ mod tests {
                     lanes[1][5] = f32::NAN;
                     lanes[2][6] = f32::NAN;
                 }
-                let l = |i: usize| Sse8::load(&lanes[i]);
-                let uv = UvIn {
-                    u: l(0),
-                    v: l(1),
-                    du_dx: l(2),
-                    dv_dx: l(3),
-                    du_dy: l(4),
-                    dv_dy: l(5),
-                };
-                let got = s.texel8(&uv);
-                for k in 0..8 {
-                    let want = s.texel(
-                        Vec2::new(lanes[0][k], lanes[1][k]),
-                        Vec2::new(lanes[2][k], lanes[3][k]),
-                        Vec2::new(lanes[4][k], lanes[5][k]),
-                    );
-                    let have = lane(&got, k);
-                    assert_eq!(
-                        have.to_array().map(f32::to_bits),
-                        want.to_array().map(f32::to_bits),
-                        "round {round} lane {k}: {have} vs {want}"
-                    );
-                }
+                assert_lanes_match(&s, &lanes, &format!("round {round}"));
             }
         }
     }

@@ -1,0 +1,275 @@
+//! Trilinear sampling of eight lanes that all read the same mip level
+//! pair: the common case (a plane, a model's face, anything whose texture
+//! scale changes slowly across eight pixels), and the fast path of
+//! [`Sampler::texel8`](super::texture::Sampler).
+//!
+//! Why a path of its own: with one level per block the level's size is a
+//! constant, so the texel addresses are computed on lanes (row · width +
+//! column, whole numbers below 2²⁴ and so exact in f32), the coordinates
+//! are reduced to one period once for both levels, and the four corners of
+//! each lane come from one gather per corner where the CPU has AVX2
+//! (`texel_fetch`) instead of per-lane level lookups and index arithmetic.
+//! The filtering arithmetic is `Sampler::bilinear`'s, operation for
+//! operation, so the bits do not change.
+
+use super::simd::{Lanes, V8};
+use super::texel_fetch::fetch4;
+use super::texture::Sampler;
+use crate::scene::{MipLevel, Wrap};
+
+/// Largest level (in texels) whose addresses stay exact in f32 lanes.
+const EXACT_TEXELS: u64 = 1 << 24;
+
+impl Sampler {
+    /// The trilinear texel of eight lanes when they share their level pair,
+    /// `None` otherwise (or for levels too large to address in f32). `lod`
+    /// is each lane's level of detail (finite, ≥ 0); `u`, `v` the
+    /// untransformed coordinates.
+    #[inline(always)]
+    pub(super) fn texel8_one_level<V: V8>(&self, lod: V, u: V, v: V) -> Option<[V; 4]> {
+        let levels = self.image().levels();
+        let last = levels.len() - 1;
+        // `Sampler::sample`'s choice: level `lod as usize` and the next,
+        // or the last level alone from `lod ≥ last` on. Truncating
+        // min(lod, last) names both cases by one number per lane.
+        let i = lod.min(V::splat(last as f32)).trunc_i32();
+        if i.iter().any(|&k| k != i[0]) {
+            return None;
+        }
+        let i = i[0] as usize;
+        let level = &levels[i];
+        if level.width() as u64 * level.height() as u64 > EXACT_TEXELS {
+            return None;
+        }
+        let (s, t) = self.reduce8(u, v);
+        let a = self.bilinear_level8(level, s, t);
+        if i == last {
+            return Some(a);
+        }
+        // `lod − i as f32`; a block that needs no blending (all magnified,
+        // or exactly on a level) reads one level, as `sample` does.
+        let f = lod - V::splat(i as f32);
+        if f.eq(V::splat(0.0)).bits() == 0xFF {
+            return Some(a);
+        }
+        let b = self.bilinear_level8(&levels[i + 1], s, t);
+        let mut out = a;
+        for c in 0..4 {
+            out[c] = a[c] + (b[c] - a[c]) * f;
+        }
+        Some(out)
+    }
+
+    /// `Sampler::bilinear`'s first steps, shared by both levels:
+    /// non-finite coordinates read as 0, repeating ones are reduced to one
+    /// period.
+    #[inline(always)]
+    pub(super) fn reduce8<V: V8>(&self, s: V, t: V) -> (V, V) {
+        let s = s.keep(finite(s));
+        let t = t.keep(finite(t));
+        let s = if self.wrap_s() == Wrap::Repeat {
+            s - s.floor()
+        } else {
+            s
+        };
+        let t = if self.wrap_t() == Wrap::Repeat {
+            t - t.floor()
+        } else {
+            t
+        };
+        (s, t)
+    }
+
+    /// `Sampler::bilinear` in one level for eight lanes of reduced
+    /// coordinates (see [`Sampler::reduce8`]), as R, G, B, A in 0..1.
+    #[inline(always)]
+    fn bilinear_level8<V: V8>(&self, level: &MipLevel, s: V, t: V) -> [V; 4] {
+        let (w, h) = (
+            V::splat(level.width() as f32),
+            V::splat(level.height() as f32),
+        );
+        let f = self.footprint8(s, t, w, h);
+        // Texel addresses: whole numbers below 2²⁴ (the caller checked the
+        // level's size), so every product and sum here is exact.
+        let (ra, rb) = (f.ya * w, f.yb * w);
+        let idx = [
+            (ra + f.xa).trunc_i32(),
+            (ra + f.xb).trunc_i32(),
+            (rb + f.xa).trunc_i32(),
+            (rb + f.xb).trunc_i32(),
+        ];
+        filter(&fetch4(level.pixels(), &idx), f.fx, f.fy)
+    }
+}
+
+/// Where a bilinear lookup reads in a level: the wrapped texel columns
+/// `xa`, `xb` and rows `ya`, `yb` (whole numbers) and the blend fractions.
+pub(super) struct Footprint<V> {
+    pub xa: V,
+    pub xb: V,
+    pub ya: V,
+    pub yb: V,
+    pub fx: V,
+    pub fy: V,
+}
+
+impl Sampler {
+    /// The [`Footprint`] of reduced coordinates `s`, `t` (see
+    /// [`Sampler::reduce8`]) in a level of `w`×`h` texels (per lane).
+    #[inline(always)]
+    pub(super) fn footprint8<V: V8>(&self, s: V, t: V, w: V, h: V) -> Footprint<V> {
+        let x = s * w - V::splat(0.5);
+        // Rows are stored top first; t = 0 is the bottom row.
+        let y = (V::splat(1.0) - t) * h - V::splat(0.5);
+        let (x0, y0) = (x.floor(), y.floor());
+        let (fx, fy) = (x - x0, y - y0);
+        // `clamp(-2, w)` as in the scalar path (x0 is finite here), then the
+        // two wrapped indices per axis on lanes (small whole numbers, exact).
+        let x0 = x0.max(V::splat(-2.0)).min(w);
+        let y0 = y0.max(V::splat(-2.0)).min(h);
+        let (xa, xb) = wrap2(x0, w, self.wrap_s());
+        let (ya, yb) = wrap2(y0, h, self.wrap_t());
+        Footprint {
+            xa,
+            xb,
+            ya,
+            yb,
+            fx,
+            fy,
+        }
+    }
+}
+
+/// The bilinear blend of the four corners' RGBA8 words (top left, top
+/// right, bottom left, bottom right) by the fractions `fx`, `fy`, as R, G,
+/// B, A in 0..1: `Sampler::bilinear`'s arithmetic on lanes.
+#[inline(always)]
+pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V) -> [V; 4] {
+    let c00 = V::unpack_rgba8(&corner[0]);
+    let c10 = V::unpack_rgba8(&corner[1]);
+    let c01 = V::unpack_rgba8(&corner[2]);
+    let c11 = V::unpack_rgba8(&corner[3]);
+    let scale = V::splat(1.0 / 255.0);
+    let mut out = c00;
+    for c in 0..4 {
+        let top = c00[c] + (c10[c] - c00[c]) * fx;
+        let bottom = c01[c] + (c11[c] - c01[c]) * fx;
+        out[c] = (top + (bottom - top) * fy) * scale;
+    }
+    out
+}
+
+/// A mask of the finite lanes.
+#[inline(always)]
+fn finite<V: V8>(x: V) -> V {
+    Lanes::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
+}
+
+/// `texture::wrap` of the texel indices `i` and `i + 1` for lanes of whole
+/// numbers in −2..=n (`n` per lane, the level's size): repeat is
+/// `rem_euclid` (by one period's addition or subtraction, see
+/// [`repeat_once`]), clamp is `clamp(i, 0, n − 1)`. Mirror never comes
+/// here (see `Sampler::lanes_cover`).
+#[inline(always)]
+fn wrap2<V: V8>(i: V, n: V, mode: Wrap) -> (V, V) {
+    let one = V::splat(1.0);
+    let j = i + one;
+    match mode {
+        Wrap::Clamp => {
+            let (lo, hi) = (V::splat(0.0), n - one);
+            (i.max(lo).min(hi), j.max(lo).min(hi))
+        }
+        // Repeat: i lies in −2..=n (the clamp before), j = i + 1, so one
+        // period up or down wraps them (small whole numbers: exact, the
+        // same as `rem_euclid`, with no division).
+        _ => (repeat_once(i, n), repeat_once(j, n)),
+    }
+}
+
+/// `i` wrapped into 0..n for whole-number lanes in −2..=n + 1: one period
+/// up or down, then a clamp that only acts for n = 1 (where two periods
+/// may be needed and the answer is 0).
+#[inline(always)]
+fn repeat_once<V: V8>(i: V, n: V) -> V {
+    let zero = V::splat(0.0);
+    let once = i + n.keep(zero.gt(i)) - n.keep(n.le(i));
+    once.max(zero).min(n - V::splat(1.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::simd::Sse8;
+    use crate::render::texture_lanes::tests::{assert_lanes_match, image};
+    use crate::scene::{ImageId, Texture};
+    use glam::Vec2;
+
+    /// Blocks whose lanes share a level pair take the one-level path, and
+    /// every lane gets `texel`'s exact bits: magnified (no blending),
+    /// blended between two levels, beyond the last level, repeat and clamp,
+    /// power-of-two and odd sizes, coordinates far outside 0..1.
+    #[test]
+    #[allow(clippy::needless_range_loop)]
+    fn shared_level_blocks_match_one_pixel_bit_for_bit() {
+        let mut seed = 777u32;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32
+        };
+        let mut taken = [0usize; 3];
+        for (w, h) in [(64, 32), (50, 30), (1, 7)] {
+            let img = image(w, h, [53, 29, 11]);
+            for wrap in [
+                (Wrap::Repeat, Wrap::Repeat),
+                (Wrap::Clamp, Wrap::Repeat),
+                (Wrap::Repeat, Wrap::Clamp),
+            ] {
+                let mut tex = Texture::new(ImageId(0));
+                (tex.wrap_s, tex.wrap_t) = wrap;
+                let s = Sampler::new(&tex, &img);
+                for round in 0..300 {
+                    // Texels per pixel: magnified, between levels 1 and 2,
+                    // beyond the last level.
+                    let scale = [0.2, 5.0, 300.0][round % 3] / w as f32;
+                    let mut lanes = [[0.0f32; 8]; 6];
+                    for k in 0..8 {
+                        lanes[0][k] = (rnd() - 0.3) * 9.0;
+                        lanes[1][k] = (rnd() - 0.5) * 5.0;
+                        // One footprint per block, nudged per lane so the
+                        // lanes' fractions differ within their level pair.
+                        lanes[2][k] = scale * (1.0 + 0.01 * rnd());
+                        lanes[5][k] = scale * 0.5;
+                    }
+                    assert_lanes_match(&s, &lanes, &format!("{w}x{h} {wrap:?} round {round}"));
+                    // The same levels of detail straight into the one-level path.
+                    let lods: [f32; 8] = std::array::from_fn(|k| {
+                        s.lod(Vec2::new(lanes[2][k], 0.0), Vec2::new(0.0, lanes[5][k]))
+                    });
+                    let (u, v) = (Sse8::load(&lanes[0]), Sse8::load(&lanes[1]));
+                    if s.texel8_one_level(Sse8::load(&lods), u, v).is_some() {
+                        taken[round % 3] += 1;
+                    } else {
+                        assert!(
+                            lods.iter().any(|&x| x as usize != lods[0] as usize),
+                            "{lods:?}"
+                        );
+                    }
+                }
+            }
+        }
+        // Each kind of block went through the one-level path most times.
+        assert!(taken.iter().all(|&n| n > 250), "{taken:?}");
+    }
+
+    /// Lanes on different levels are left to the per-lane path.
+    #[test]
+    fn lanes_on_different_levels_are_not_taken() {
+        let img = image(64, 64, [53, 29, 11]);
+        let s = Sampler::new(&Texture::new(ImageId(0)), &img);
+        let lod = Sse8::load(&[0.5, 0.5, 0.5, 1.5, 0.5, 0.5, 0.5, 0.5]);
+        let z = Sse8::splat(0.3);
+        assert!(s.texel8_one_level(lod, z, z).is_none());
+        let lod = Sse8::load(&[0.5, 0.0, 0.25, 0.75, 0.5, 0.5, 0.5, 0.999]);
+        assert!(s.texel8_one_level(lod, z, z).is_some());
+    }
+}
