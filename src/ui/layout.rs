@@ -144,28 +144,19 @@ pub struct SidePanel {
     pub props: Rect,
 }
 
-/// Rows the properties section keeps whatever it shows (an object with
-/// its key lines, a light, the material panel, the key panel for a key or
-/// two), so selecting, keying or adding never moves the lists above it
-/// under the mouse. Only a taller panel (many keys selected, morph
-/// weights) pushes them up.
-pub const PROP_ROWS_KEPT: i32 = 9;
-
 impl SidePanel {
-    /// Splits `side`: the scene fields, the objects list (three fifths of
-    /// the lists' rows) and the lights list (the rest; each keeps its
-    /// header and at least one row, and scrolls), then the properties with
-    /// `prop_rows` rows but never fewer than [`PROP_ROWS_KEPT`]. The split
-    /// does not follow the lists' lengths or the selection, so the headers
-    /// and their buttons stay put.
-    pub fn new(side: Rect, prop_rows: i32) -> SidePanel {
+    /// Splits `side` so the selection's `prop_rows` rows fit and the two
+    /// lists share what is left in proportion to their `rows` (each keeps
+    /// its header and at least one row).
+    pub fn new(side: Rect, prop_rows: i32, rows: [usize; 2]) -> SidePanel {
         let (scene, rest) = side.take_top(2 * ROW + 2);
         let min_lists = 2 * (2 * ROW);
-        let prop_rows = prop_rows.max(PROP_ROWS_KEPT);
         let props_h = ((prop_rows + 1) * ROW + 2).min((rest.h - min_lists).max(ROW));
         let (lists, props) = rest.take_top(rest.h - props_h);
         let free_rows = ((lists.h - 2 * ROW) / ROW).max(2);
-        let obj_rows = ((free_rows * 3 + 2) / 5).clamp(1, (free_rows - 1).max(1));
+        let (a, b) = (rows[0].max(1) as i32, rows[1].max(1) as i32);
+        let obj_rows = (free_rows * a + (a + b) / 2) / (a + b);
+        let obj_rows = obj_rows.clamp(1, (free_rows - 1).max(1));
         let obj_h = ((obj_rows + 1) * ROW).min(lists.h);
         let (objects, lights) = lists.take_top(obj_h);
         SidePanel {
@@ -192,13 +183,9 @@ mod tests {
                 l.viewport.w > l.side.w,
                 "{w}x{h}: viewport is the main area"
             );
-            let s = SidePanel::new(l.side, 5);
+            let s = SidePanel::new(l.side, 5, [6, 3]);
             assert!(s.objects.h >= 2 * ROW && s.lights.h >= 2 * ROW);
             assert_eq!(s.scene.h + s.objects.h + s.lights.h + s.props.h, l.side.h);
-            // Up to the kept rows, the properties' needs move nothing.
-            for rows in 1..=PROP_ROWS_KEPT {
-                assert_eq!(SidePanel::new(l.side, rows), s, "{w}x{h} {rows} rows");
-            }
         }
     }
 

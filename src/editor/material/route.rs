@@ -492,26 +492,17 @@ impl Editor {
         let x0 = l.thumb.right() + 4;
         if ok(&tex_r) {
             // Right to left: [x] (with a texture), [Load].
-            let mut right = tex_r.right();
-            if texture.is_some() {
-                let xw = text::width("x") + 6;
-                right -= xw;
-                out.push(button(
-                    Rect::new(right, tex_r.y + 1, xw, ROW - 2),
-                    "x",
-                    Action::Material(MatAction::RemoveTexture),
-                    false,
-                ));
-                right -= 2;
+            let mut right = tex_r.right() + 2;
+            let buttons = [
+                ("x", MatAction::RemoveTexture, texture.is_some()),
+                ("Load", MatAction::LoadTexture, true),
+            ];
+            for (name, a, _) in buttons.into_iter().filter(|b| b.2) {
+                let bw = text::width(name) + 6;
+                right -= bw + 2;
+                let r = Rect::new(right, tex_r.y + 1, bw, ROW - 2);
+                out.push(button(r, name, Action::Material(a), false));
             }
-            let lw = text::width("Load") + 6;
-            right -= lw;
-            out.push(button(
-                Rect::new(right, tex_r.y + 1, lw, ROW - 2),
-                "Load",
-                Action::Material(MatAction::LoadTexture),
-                false,
-            ));
             match (&tex, texture) {
                 (Some(name), Some(_)) => {
                     let nr = Rect::new(x0, tex_r.y, right - x0 - 2, ROW);

@@ -26,7 +26,14 @@ impl Editor {
     }
 
     pub fn side_panel(&self) -> SidePanel {
-        SidePanel::new(self.layout().side, self.section_rows())
+        SidePanel::new(
+            self.layout().side,
+            self.section_rows(),
+            [
+                ops::objects(&self.scene).len(),
+                ops::lights(&self.scene).len(),
+            ],
+        )
     }
 
     /// Scrolls the objects and lights lists so the selection's row shows.
