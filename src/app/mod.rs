@@ -237,6 +237,38 @@ fn typed_events(inputs: Vec<Input>, mods: &mut Mods, events: &mut Vec<Event>) {
     flush(&mut text, events);
 }
 
+/// A resizable window whose input goes to `typed`, paced by the caller.
+fn open_window(
+    title: &str,
+    (w, h): (usize, usize),
+    typed: &Rc<RefCell<Typed>>,
+) -> Result<Window, String> {
+    let opts = WindowOptions {
+        resize: true,
+        ..WindowOptions::default()
+    };
+    // minifb reports a missing X server or libraries as an error; guard
+    // against a panic in its C glue as well.
+    let window = std::panic::catch_unwind(|| Window::new(title, w, h, opts));
+    let mut window = match window {
+        Ok(Ok(win)) => win,
+        Ok(Err(e)) => return Err(e.to_string()),
+        Err(_) => return Err("the window system failed".into()),
+    };
+    // We pace the loop ourselves.
+    window.set_target_fps(0);
+    window.set_input_callback(Box::new(Sink(typed.clone())));
+    Ok(window)
+}
+
+fn no_display(why: &str) -> String {
+    format!(
+        "cannot open a window ({why}). The editor needs an X display; \
+         without one use `animed render` to draw a scene to PNG, or \
+         `animed edit --script FILE --screenshot OUT.png` for a headless session"
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -285,36 +317,4 @@ mod tests {
         assert!(!ev.iter().any(|e| *e == Event::Text("s".into())), "{ev:?}");
         assert!(mods.ctrl);
     }
-}
-
-/// A resizable window whose input goes to `typed`, paced by the caller.
-fn open_window(
-    title: &str,
-    (w, h): (usize, usize),
-    typed: &Rc<RefCell<Typed>>,
-) -> Result<Window, String> {
-    let opts = WindowOptions {
-        resize: true,
-        ..WindowOptions::default()
-    };
-    // minifb reports a missing X server or libraries as an error; guard
-    // against a panic in its C glue as well.
-    let window = std::panic::catch_unwind(|| Window::new(title, w, h, opts));
-    let mut window = match window {
-        Ok(Ok(win)) => win,
-        Ok(Err(e)) => return Err(e.to_string()),
-        Err(_) => return Err("the window system failed".into()),
-    };
-    // We pace the loop ourselves.
-    window.set_target_fps(0);
-    window.set_input_callback(Box::new(Sink(typed.clone())));
-    Ok(window)
-}
-
-fn no_display(why: &str) -> String {
-    format!(
-        "cannot open a window ({why}). The editor needs an X display; \
-         without one use `animed render` to draw a scene to PNG, or \
-         `animed edit --script FILE --screenshot OUT.png` for a headless session"
-    )
 }
