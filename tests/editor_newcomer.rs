@@ -592,6 +592,20 @@ fn the_view_is_remembered_per_file_not_in_the_scene() {
     ed.set_view_memory(Some(mem.clone()));
     key(&mut ed, Key::Num(3), Mods::NONE);
     key(&mut ed, Key::Num(5), Mods::NONE);
+    // The timeline's zoom and preview range are remembered too.
+    let r = ed.layout().ruler;
+    let (x, y) = (r.x as f32 + r.w as f32 * 0.6, (r.y + r.h / 2) as f32);
+    for _ in 0..3 {
+        ed.handle(Event::Wheel {
+            delta: 1.0,
+            x,
+            y,
+            mods: Mods::NONE,
+        });
+    }
+    ed.set_preview_range(Some((20.0, 40.0)));
+    let zoom = ed.time_span();
+    assert!(zoom.1 - zoom.0 < 90.0, "{zoom:?}");
     ed.save_to(&file).unwrap();
     let saved = *ed.camera();
     let text = std::fs::read_to_string(&file).unwrap();
@@ -608,11 +622,25 @@ fn the_view_is_remembered_per_file_not_in_the_scene() {
     assert_ne!(*again.camera(), saved, "not read by the editor itself");
     animed::internals::editor::shell::perform(&mut again);
     assert_eq!(*again.camera(), saved);
+    assert_eq!(again.time_span(), zoom);
+    assert_eq!(again.preview_range(), Some((20.0, 40.0)));
     // Opening the file in another editor recalls it too.
     let mut other = Editor::new(Scene::new(), None, 480, 320);
-    other.set_view_memory(Some(mem));
+    other.set_view_memory(Some(mem.clone()));
     other.open_file(&file).unwrap();
     assert_eq!(*other.camera(), saved);
+    assert_eq!(other.time_span(), zoom);
+    assert_eq!(other.preview_range(), Some((20.0, 40.0)));
+    // Leaving the file for a new scene remembers what changed meanwhile,
+    // and the new scene starts unzoomed without a preview range.
+    other.set_preview_range(Some((5.0, 50.0)));
+    other.new_scene();
+    animed::internals::editor::shell::perform(&mut other);
+    assert_eq!(other.preview_range(), None);
+    assert_eq!(other.time_span().0, 0.0);
+    let memo = animed::internals::editor::views::recall(&mem, &file).unwrap();
+    assert_eq!(memo.preview, Some((5.0, 50.0)));
+    assert_eq!(memo.zoom, Some(zoom));
     std::fs::remove_dir_all(&d).unwrap();
 }
 
@@ -713,6 +741,26 @@ fn selection_keeps_the_objects_colour_and_handles_shrink_on_small_objects() {
             .any(|x| sel.color[row + x] == 0xff9a1f && plain.color[row + x] != sel.color[row + x]),
         "an orange outline left of the box"
     );
+    // The scale tool's centre box leaves the small box's pivot: it sits
+    // beside the box, off every axis, and still scales all three.
+    ed.select(Some(b));
+    key(&mut ed, Key::Char('t'), Mods::NONE);
+    let pivot = ed.pixel_of(c).unwrap();
+    let u = ed.handle_pixel("uniform").expect("a uniform box in view");
+    let away = ((u.0 - pivot.0).powi(2) + (u.1 - pivot.1).powi(2)).sqrt();
+    assert!(away > 20.0, "off the object's disc: {away} px");
+    assert_ne!(ed.pick_at(u.0, u.1), Some(b), "not over the box itself");
+    assert_ne!(
+        ed.handle_at(pivot.0, pivot.1),
+        Some(animed::internals::editor::manip::Handle::Uniform),
+        "the pivot shows the object"
+    );
+    golden::check("editor_scale_small", &ed.render_frame());
+    drag_via(&mut ed, &[u, (u.0 + 35.0, u.1)], Mods::NONE);
+    let s = ed.scene().node(b).transform.scale;
+    assert!((s - glam::Vec3::splat(1.5)).length() < 1e-4, "{s}");
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    key(&mut ed, Key::Char('w'), Mods::NONE);
     // Framed, the box is big on screen and the handles are full size.
     ed.select(Some(b));
     key(&mut ed, Key::Char('f'), Mods::NONE);
@@ -919,6 +967,47 @@ fn pick(ed: &mut Editor, label: &str) {
     let r = m.item_rect(ed.layout().window, i);
     click(ed, ((r.x + 10) as f32, (r.y + 5) as f32));
     assert!(ed.menu().is_none());
+}
+
+#[test]
+fn clear_keys_from_the_viewport_menu_or_alt_i_is_one_undo_step() {
+    use animed::internals::anim::TargetRef;
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    ed.select(Some(ball));
+    let keys = |ed: &Editor| -> usize {
+        ed.scene()
+            .animation
+            .tracks_of(TargetRef::Node(ball))
+            .map(|t| t.key_count())
+            .sum()
+    };
+    let n = keys(&ed);
+    assert!(n > 0);
+    let vp = ed.layout().viewport;
+    right_click(&mut ed, ((vp.x + 20) as f32, (vp.y + 20) as f32));
+    pick(&mut ed, "Clear keys");
+    assert_eq!(keys(&ed), 0);
+    assert_eq!(
+        ed.status().text,
+        format!("Cleared {n} keys of Ball (Ctrl+Z brings them back)")
+    );
+    // Other objects keep theirs.
+    assert!(ed
+        .scene()
+        .animation
+        .tracks
+        .iter()
+        .any(|t| t.target.of != TargetRef::Node(ball)));
+    key(&mut ed, Key::Char('z'), Mods::ctrl());
+    assert_eq!(keys(&ed), n);
+    // Alt+I does the same; again says there is nothing left.
+    key(&mut ed, Key::Char('i'), Mods::alt());
+    assert_eq!(keys(&ed), 0);
+    key(&mut ed, Key::Char('i'), Mods::alt());
+    assert_eq!(ed.status().text, "Ball has no keys to clear");
+    // The strip draws with the keys gone.
+    let _ = ed.render_frame();
 }
 
 #[test]

@@ -357,12 +357,16 @@ fn uniform_box_scales_all_three() {
     let pyr = node(&ed, "Pyramid");
     ed.select(Some(pyr));
     key(&mut ed, Key::Char('t'), Mods::NONE);
-    let c = ed.scale_points().unwrap()[0];
+    // The pyramid is small on screen: the box sits beside its pivot.
+    let c = ed.handle_pixel("uniform").unwrap();
+    assert_ne!(c, ed.scale_points().unwrap()[0]);
     assert_eq!(ed.handle_at(c.0, c.1), Some(Handle::Uniform));
     drag_via(&mut ed, &[c, (c.0 + ARROW_PX, c.1)], Mods::NONE);
     let s = ed.scene().node(pyr).transform.scale;
     assert!((s - Vec3::splat(2.0)).length() < 1e-4, "{s}");
-    // Down by half an arrow: halves.
+    // Down by half an arrow: halves (the box may have moved with the
+    // pyramid's size on screen).
+    let c = ed.handle_pixel("uniform").unwrap();
     drag_via(&mut ed, &[c, (c.0, c.1 + ARROW_PX * 0.5)], Mods::NONE);
     let s = ed.scene().node(pyr).transform.scale;
     assert!((s - Vec3::splat(1.0)).length() < 1e-4, "{s}");

@@ -25,10 +25,18 @@ const CLOCK_EVERY: Duration = Duration::from_secs(1);
 /// What minifb's input callback saw since the last poll, in order. Key
 /// edges come from here rather than from `get_keys_pressed`, which misses a
 /// press and release that both happen between two polls (xdotool does that).
+/// Characters and keys share one queue: text typed just before Enter in
+/// the same poll must reach the field before the Enter does (a fast
+/// `2*24⏎` otherwise set `2*2`).
 #[derive(Default)]
 struct Typed {
-    text: String,
-    keys: Vec<(minifb::Key, bool)>,
+    inputs: Vec<Input>,
+}
+
+/// One item of [`Typed`].
+enum Input {
+    Char(char),
+    Key(minifb::Key, bool),
 }
 
 struct Sink(Rc<RefCell<Typed>>);
@@ -37,13 +45,13 @@ impl minifb::InputCallback for Sink {
     fn add_char(&mut self, c: u32) {
         if let Some(ch) = char::from_u32(c) {
             if !ch.is_control() {
-                self.0.borrow_mut().text.push(ch);
+                self.0.borrow_mut().inputs.push(Input::Char(ch));
             }
         }
     }
 
     fn set_key_state(&mut self, key: minifb::Key, down: bool) {
-        self.0.borrow_mut().keys.push((key, down));
+        self.0.borrow_mut().inputs.push(Input::Key(key, down));
     }
 }
 
@@ -85,10 +93,9 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
             continue;
         }
         let mut events = Vec::new();
-        let Typed { text, keys } = std::mem::take(&mut *typed.borrow_mut());
-        let mods_before = mods;
+        let Typed { inputs } = std::mem::take(&mut *typed.borrow_mut());
         // Modifier level as of the start of this batch, for mouse events.
-        let mouse_mods = mods_before;
+        let mouse_mods = mods;
         let now_size = window.get_size();
         if now_size != size && now_size.0 > 0 && now_size.1 > 0 {
             size = now_size;
@@ -146,25 +153,7 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
                 });
             }
         }
-        for (k, down) in keys {
-            use minifb::Key as K;
-            match k {
-                K::LeftCtrl | K::RightCtrl => mods.ctrl = down,
-                K::LeftShift | K::RightShift => mods.shift = down,
-                K::LeftAlt | K::RightAlt => mods.alt = down,
-                _ => {}
-            }
-            if let Some(key) = keymap::key(k) {
-                events.push(if down {
-                    Event::KeyDown { key, mods }
-                } else {
-                    Event::KeyUp { key, mods }
-                });
-            }
-        }
-        if !text.is_empty() && !mods.ctrl && !mods.alt && !mods_before.ctrl {
-            events.push(Event::Text(text));
-        }
+        typed_events(inputs, &mut mods, &mut events);
         if !events.is_empty() {
             last_input = Instant::now();
         }
@@ -208,6 +197,46 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     Ok(())
 }
 
+/// The key and text events of one poll's `inputs`, in the order they were
+/// typed: characters gather into one `Text` until the next key edge (so
+/// text typed before Enter reaches the field first). Text typed while
+/// Ctrl or Alt is held is a shortcut's, not text, and is dropped.
+fn typed_events(inputs: Vec<Input>, mods: &mut Mods, events: &mut Vec<Event>) {
+    let mut text = String::new();
+    let flush = |text: &mut String, events: &mut Vec<Event>| {
+        if !text.is_empty() {
+            events.push(Event::Text(std::mem::take(text)));
+        }
+    };
+    for input in inputs {
+        let (k, down) = match input {
+            Input::Char(c) => {
+                if !mods.ctrl && !mods.alt {
+                    text.push(c);
+                }
+                continue;
+            }
+            Input::Key(k, down) => (k, down),
+        };
+        use minifb::Key as K;
+        match k {
+            K::LeftCtrl | K::RightCtrl => mods.ctrl = down,
+            K::LeftShift | K::RightShift => mods.shift = down,
+            K::LeftAlt | K::RightAlt => mods.alt = down,
+            _ => {}
+        }
+        if let Some(key) = keymap::key(k) {
+            flush(&mut text, events);
+            events.push(if down {
+                Event::KeyDown { key, mods: *mods }
+            } else {
+                Event::KeyUp { key, mods: *mods }
+            });
+        }
+    }
+    flush(&mut text, events);
+}
+
 /// A resizable window whose input goes to `typed`, paced by the caller.
 fn open_window(
     title: &str,
@@ -238,4 +267,54 @@ fn no_display(why: &str) -> String {
          without one use `animed render` to draw a scene to PNG, or \
          `animed edit --script FILE --screenshot OUT.png` for a headless session"
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::Key;
+
+    #[test]
+    fn text_typed_before_enter_in_one_poll_comes_first() {
+        let mut mods = Mods::NONE;
+        let mut ev = Vec::new();
+        let inputs = vec![
+            Input::Char('2'),
+            Input::Char('*'),
+            Input::Char('2'),
+            Input::Char('4'),
+            Input::Key(minifb::Key::Enter, true),
+            Input::Key(minifb::Key::Enter, false),
+            Input::Char('x'),
+        ];
+        typed_events(inputs, &mut mods, &mut ev);
+        let m = Mods::NONE;
+        assert_eq!(
+            ev,
+            vec![
+                Event::Text("2*24".into()),
+                Event::KeyDown {
+                    key: Key::Enter,
+                    mods: m
+                },
+                Event::KeyUp {
+                    key: Key::Enter,
+                    mods: m
+                },
+                Event::Text("x".into()),
+            ]
+        );
+        // Characters typed with Ctrl held are a shortcut's, not text.
+        let mut ev = Vec::new();
+        let inputs = vec![
+            Input::Char('a'),
+            Input::Key(minifb::Key::LeftCtrl, true),
+            Input::Char('s'),
+            Input::Key(minifb::Key::S, true),
+        ];
+        typed_events(inputs, &mut mods, &mut ev);
+        assert_eq!(ev[0], Event::Text("a".into()));
+        assert!(!ev.iter().any(|e| *e == Event::Text("s".into())), "{ev:?}");
+        assert!(mods.ctrl);
+    }
 }

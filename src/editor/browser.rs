@@ -12,6 +12,8 @@ pub enum Purpose {
     Open,
     Import,
     SaveAs,
+    /// An image for the material panel's texture.
+    Texture,
 }
 
 impl Purpose {
@@ -20,6 +22,7 @@ impl Purpose {
             Purpose::Open => "Open scene",
             Purpose::Import => "Import model",
             Purpose::SaveAs => "Save scene as",
+            Purpose::Texture => "Texture image",
         }
     }
 
@@ -28,13 +31,17 @@ impl Purpose {
             Purpose::Open => "Open",
             Purpose::Import => "Import",
             Purpose::SaveAs => "Save",
+            Purpose::Texture => "Use",
         }
     }
 
     /// Whether a file called `name` is listed for this purpose (folders
     /// always are).
     pub fn shows(self, name: &str) -> bool {
-        is_known_file(name)
+        match self {
+            Purpose::Texture => is_image_file(name),
+            _ => is_known_file(name),
+        }
     }
 }
 
@@ -74,6 +81,16 @@ pub fn is_known_file(name: &str) -> bool {
     [
         ".iv", ".wrl", ".wrl.gz", ".wrz", ".vrml", ".obj", ".gz", ".gltf", ".glb", ".x3d", ".x3dv",
         ".x3dz", ".x3dvz",
+    ]
+    .iter()
+    .any(|e| l.ends_with(e))
+}
+
+/// Image files a texture can be read from (`format::textures::decode`).
+pub fn is_image_file(name: &str) -> bool {
+    let l = name.to_ascii_lowercase();
+    [
+        ".png", ".jpg", ".jpeg", ".gif", ".bmp", ".rgb", ".rgba", ".bw", ".sgi",
     ]
     .iter()
     .any(|e| l.ends_with(e))
@@ -407,6 +424,15 @@ pub(crate) mod tests {
             ]
         );
         let _ = std::fs::remove_dir_all(&d);
+    }
+
+    #[test]
+    fn a_texture_browser_shows_images_not_scenes() {
+        let t = Purpose::Texture;
+        assert!(t.shows("Brick.PNG") && t.shows("a.jpeg") && t.shows("head.rgb"));
+        assert!(!t.shows("walk.wrl") && !t.shows("notes.txt"));
+        assert!(!Purpose::Open.shows("brick.png"));
+        assert_eq!(t.verb(), "Use");
     }
 
     #[test]

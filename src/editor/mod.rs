@@ -480,6 +480,10 @@ impl Editor {
 
     /// Replaces the scene (new/open): history restarts, camera frames it.
     fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
+        // The file being left keeps its view; the next starts unzoomed.
+        self.remember_view();
+        self.timeline = timeline::Timeline::default();
+        self.through = None;
         self.scene = scene;
         self.path = path;
         self.history = History::default();

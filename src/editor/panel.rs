@@ -43,6 +43,8 @@ pub enum Action {
     View(super::views::ViewCmd),
     /// Key the selection (K).
     KeySelection,
+    /// Remove every key of the selection (Alt+I, as in Blender).
+    ClearKeys,
     ToggleLight(NodeId),
     ObjectStyle,
     Delete,

@@ -7,9 +7,9 @@
 //! model. Tests can drive the editor with events alone and assert on the
 //! requests it returns.
 
+use crate::editor::views::Memo;
 use crate::format::export::atomic::Stamp;
-use crate::input::OrbitCamera;
-use crate::scene::Scene;
+use crate::scene::{Image, MaterialId, Scene};
 use std::path::PathBuf;
 
 /// One piece of file work, with what the editor needs to continue.
@@ -41,6 +41,9 @@ pub enum Request {
     /// Make the recovered `copy` this session's own copy `mine` (renamed;
     /// kept where it is if that fails).
     TakeOver { copy: PathBuf, mine: PathBuf },
+    /// Read and decode the image file `path` as the new texture of
+    /// `material` (the material panel's Load).
+    ReadTexture { path: PathBuf, material: MaterialId },
     /// Read what the file browser asked for (a folder's listing, or what
     /// a typed path is), filtered for `purpose`.
     Look {
@@ -49,11 +52,12 @@ pub enum Request {
     },
     /// Read the view remembered for the scene `key` from `memory`.
     RecallView { memory: PathBuf, key: PathBuf },
-    /// Remember `camera` for the scene `key` in `memory`.
+    /// Remember the view (camera, timeline zoom, preview range) for the
+    /// scene `key` in `memory`.
     RememberView {
         memory: PathBuf,
         key: PathBuf,
-        camera: OrbitCamera,
+        memo: Memo,
     },
 }
 
@@ -79,6 +83,9 @@ pub enum After {
     /// key strip with no key selected: the object is not what has focus).
     DeleteObject,
 }
+
+/// An image the shell read for a texture, or why it could not.
+pub type ReadImage = Result<Image, String>;
 
 /// A scene the shell read: the scene, its warning count, and the file's
 /// stamp taken before reading (a later save checks nobody changed it).

@@ -36,6 +36,7 @@ pub fn commands() -> Vec<MenuItem> {
         MenuItem::new("Play / stop", "Space", Action::Play),
         MenuItem::new("Record mode", "R", Action::Record),
         MenuItem::new("Key the selection", "K", Action::KeySelection),
+        MenuItem::new("Clear the selection's keys", "Alt+I", Action::ClearKeys),
         MenuItem::new("Move tool", "W", Action::Tool(Tool::Translate)),
         MenuItem::new("Rotate tool", "E", Action::Tool(Tool::Rotate)),
         MenuItem::new("Scale tool", "T", Action::Tool(Tool::Scale)),

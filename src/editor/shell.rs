@@ -88,25 +88,41 @@ fn perform_one(ed: &mut Editor, r: Request) {
             };
             ed.took_over(taken);
         }
+        Request::ReadTexture { path, material } => {
+            let r = read_image(&path);
+            ed.texture_read(&path, material, r);
+        }
         Request::RecallView { memory, key } => {
-            if let Some(c) = views::recall(&memory, &key) {
-                ed.view_recalled(c);
+            if let Some(m) = views::recall(&memory, &key) {
+                ed.view_recalled(m);
             }
         }
         Request::Look { ask, purpose } => {
             let found = look(&ask, purpose);
             ed.browser_found(ask, found);
         }
-        Request::RememberView {
-            memory,
-            key,
-            camera,
-        } => {
-            if let Err(e) = views::remember(&memory, &key, &camera) {
+        Request::RememberView { memory, key, memo } => {
+            if let Err(e) = views::remember(&memory, &key, &memo) {
                 ed.file_error(&format!("cannot remember the view: {e}"));
             }
         }
     }
+}
+
+/// An image file decoded for a texture (the readers' decoder, so the same
+/// formats and size limits as a texture named in a scene file).
+fn read_image(path: &Path) -> super::request::ReadImage {
+    use crate::format::textures::decode;
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let abs = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let source = crate::scene::ImageSource::File {
+        url: abs.display().to_string(),
+        path: abs,
+    };
+    decode::read_file(path).and_then(|bytes| decode::decode(&bytes, &name, source))
 }
 
 /// What the file browser asked to have read: a folder's listing, or

@@ -38,6 +38,18 @@ impl Timeline {
         self.view.is_some()
     }
 
+    /// The zoomed or panned span (`None`: the whole scene), as the
+    /// per-file view memory keeps it.
+    pub fn zoomed_span(&self) -> Option<(f32, f32)> {
+        self.view
+    }
+
+    /// A remembered zoom back in place: kept only when finite and at
+    /// least [`MIN_SPAN`] wide (the memory file is text anyone can edit).
+    pub fn restore_zoom(&mut self, span: Option<(f32, f32)>) {
+        self.view = span.filter(|&(a, b)| a.is_finite() && b.is_finite() && b - a >= MIN_SPAN);
+    }
+
     /// Zooms `notches` wheel steps (positive: in) keeping frame `about`
     /// under the mouse. Never narrower than [`MIN_SPAN`] nor wider than
     /// ten times the full span; zooming back out to the full span or

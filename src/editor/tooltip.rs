@@ -116,6 +116,9 @@ fn action_text(a: &Action) -> Option<&'static str> {
         Action::Material(MatAction::WrapS) => "Texture wrap across (S): repeat or clamp",
         Action::Material(MatAction::WrapT) => "Texture wrap up (T): repeat or clamp",
         Action::Material(MatAction::RemoveTexture) => "Take the texture off (Ctrl+Z undoes)",
+        Action::Material(MatAction::LoadTexture) => {
+            "Load an image file as the texture (replaces it; Ctrl+Z undoes)"
+        }
         _ => return None,
     })
 }

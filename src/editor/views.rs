@@ -100,12 +100,26 @@ impl ViewCmd {
     }
 }
 
-/// The per-file view memory: `path<TAB>tx ty tz distance yaw pitch fov ortho`
-/// lines, newest last, at most [`KEEP`].
+/// What is remembered per file: the orbit camera, and the timeline's
+/// zoom and preview range (each `None` when unset).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Memo {
+    pub camera: OrbitCamera,
+    /// Frames at the key strip's ends once zoomed or panned.
+    pub zoom: Option<(f32, f32)>,
+    /// The preview range playback loops over.
+    pub preview: Option<(f32, f32)>,
+}
+
+/// The per-file view memory: `path<TAB>tx ty tz distance yaw pitch fov
+/// ortho [zoom a b] [preview a b]` lines, newest last, at most [`KEEP`].
+/// Lines written before the timeline was remembered (camera only) still
+/// read.
 pub const KEEP: usize = 200;
 
-fn line_of(scene: &Path, c: &OrbitCamera) -> String {
-    format!(
+fn line_of(scene: &Path, m: &Memo) -> String {
+    let c = &m.camera;
+    let mut line = format!(
         "{}\t{} {} {} {} {} {} {} {}",
         scene.display(),
         c.target.x,
@@ -116,29 +130,58 @@ fn line_of(scene: &Path, c: &OrbitCamera) -> String {
         c.pitch,
         c.fov_y,
         u8::from(c.ortho)
-    )
+    );
+    for (word, range) in [("zoom", m.zoom), ("preview", m.preview)] {
+        if let Some((a, b)) = range {
+            line += &format!(" {word} {a} {b}");
+        }
+    }
+    line
 }
 
-fn parse(rest: &str) -> Option<OrbitCamera> {
-    let v: Vec<f32> = rest
-        .split_whitespace()
+/// A remembered frame range: finite, in order, not empty.
+fn range(a: &str, b: &str) -> Option<(f32, f32)> {
+    let (a, b) = (a.parse::<f32>().ok()?, b.parse::<f32>().ok()?);
+    (a.is_finite() && b.is_finite() && b > a).then_some((a, b))
+}
+
+fn parse(rest: &str) -> Option<Memo> {
+    let words: Vec<&str> = rest.split_whitespace().collect();
+    let (cam, mut extra) = (words.get(..8)?, &words[8..]);
+    let v: Vec<f32> = cam
+        .iter()
         .map(|t| t.parse::<f32>().ok().filter(|x| x.is_finite()))
         .collect::<Option<_>>()?;
     let [tx, ty, tz, distance, yaw, pitch, fov_y, ortho] = v[..] else {
         return None;
     };
-    Some(OrbitCamera {
-        target: glam::Vec3::new(tx, ty, tz),
-        distance: distance.clamp(1e-3, 1e6),
-        yaw,
-        pitch: pitch.clamp(-FRAC_PI_2, FRAC_PI_2),
-        fov_y: fov_y.clamp(0.01, 3.0),
-        ortho: ortho != 0.0,
-    })
+    let mut memo = Memo {
+        camera: OrbitCamera {
+            target: glam::Vec3::new(tx, ty, tz),
+            distance: distance.clamp(1e-3, 1e6),
+            yaw,
+            pitch: pitch.clamp(-FRAC_PI_2, FRAC_PI_2),
+            fov_y: fov_y.clamp(0.01, 3.0),
+            ortho: ortho != 0.0,
+        },
+        zoom: None,
+        preview: None,
+    };
+    // Unknown or broken trailing words are skipped, never an error: the
+    // camera alone is still worth recalling.
+    while let [word, a, b, rest @ ..] = extra {
+        match *word {
+            "zoom" => memo.zoom = range(a, b),
+            "preview" => memo.preview = range(a, b),
+            _ => {}
+        }
+        extra = rest;
+    }
+    Some(memo)
 }
 
 /// The remembered view of `scene` (an absolute path) in `memory`.
-pub fn recall(memory: &Path, scene: &Path) -> Option<OrbitCamera> {
+pub fn recall(memory: &Path, scene: &Path) -> Option<Memo> {
     let text = std::fs::read_to_string(memory).ok()?;
     let key = scene.display().to_string();
     text.lines()
@@ -147,8 +190,8 @@ pub fn recall(memory: &Path, scene: &Path) -> Option<OrbitCamera> {
         .and_then(parse)
 }
 
-/// Remembers `camera` for `scene`, replacing its older line.
-pub fn remember(memory: &Path, scene: &Path, camera: &OrbitCamera) -> Result<(), String> {
+/// Remembers `memo` for `scene`, replacing its older line.
+pub fn remember(memory: &Path, scene: &Path, memo: &Memo) -> Result<(), String> {
     let key = scene.display().to_string();
     let old = std::fs::read_to_string(memory).unwrap_or_default();
     let mut lines: Vec<&str> = old
@@ -161,7 +204,7 @@ pub fn remember(memory: &Path, scene: &Path, camera: &OrbitCamera) -> Result<(),
     if !text.is_empty() {
         text.push('\n');
     }
-    text += &line_of(scene, camera);
+    text += &line_of(scene, memo);
     text.push('\n');
     if let Some(d) = memory.parent() {
         std::fs::create_dir_all(d).map_err(|e| format!("{}: {e}", d.display()))?;
@@ -191,14 +234,22 @@ mod tests {
         let a = Path::new("/x/a.wrl");
         let b = Path::new("/x/b wrl.iv");
         assert_eq!(recall(&mem, a), None);
-        let ca = OrbitCamera {
-            yaw: 1.25,
-            ortho: true,
-            ..OrbitCamera::default()
+        let ca = Memo {
+            camera: OrbitCamera {
+                yaw: 1.25,
+                ortho: true,
+                ..OrbitCamera::default()
+            },
+            zoom: Some((12.5, 40.0)),
+            preview: Some((20.0, 30.0)),
         };
-        let cb = OrbitCamera {
-            distance: 3.5,
-            ..OrbitCamera::default()
+        let cb = Memo {
+            camera: OrbitCamera {
+                distance: 3.5,
+                ..OrbitCamera::default()
+            },
+            zoom: None,
+            preview: None,
         };
         remember(&mem, a, &ca).unwrap();
         remember(&mem, b, &cb).unwrap();
@@ -208,5 +259,19 @@ mod tests {
         let text = std::fs::read_to_string(&mem).unwrap();
         assert_eq!(text.lines().count(), 2, "one line per file: {text}");
         std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn old_camera_only_lines_and_broken_ranges_still_recall_the_camera() {
+        let old = parse("1 2 3 4 0.5 0.25 0.8 1").unwrap();
+        assert_eq!(old.camera.target, glam::Vec3::new(1.0, 2.0, 3.0));
+        assert!(old.camera.ortho);
+        assert_eq!((old.zoom, old.preview), (None, None));
+        // An empty, reversed or non-finite range is dropped, the rest kept.
+        let m = parse("0 0 0 4 0 0 0.8 0 zoom 9 3 preview 2 8 junk").unwrap();
+        assert_eq!((m.zoom, m.preview), (None, Some((2.0, 8.0))));
+        let m = parse("0 0 0 4 0 0 0.8 0 zoom NaN 3").unwrap();
+        assert_eq!(m.zoom, None);
+        assert_eq!(parse("0 0 0 4 0 0 0.8"), None, "too short");
     }
 }

@@ -264,6 +264,103 @@ fn wrap_toggles_and_removing_the_texture_are_undoable() {
     assert!(tex(&ed).is_some());
 }
 
+#[test]
+fn load_replaces_the_texture_through_the_browser_and_says_why_a_file_is_refused() {
+    let mut ed = scene();
+    let m = material_of(&mut ed, "Crate");
+    let tex = |ed: &Editor| ed.scene().materials[m.0 as usize].texture.clone();
+    let image_of = |ed: &Editor| {
+        let t = tex(ed).unwrap();
+        let i = ed.scene().image(t.image).unwrap();
+        (i.name.clone(), i.width(), i.height())
+    };
+    let brick = image_of(&ed);
+    run(&mut ed, "key m");
+    click_on(&mut ed, "label: \"Load\"");
+    let b = ed.browser().expect("Load opens the file browser");
+    assert_eq!(b.purpose.title(), "Texture image");
+    let gltf = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/gltf");
+    // A typed folder lists its images only (not the .gltf files).
+    run(&mut ed, &format!("type {}/\nkey enter", gltf.display()));
+    let names: Vec<String> = ed
+        .browser()
+        .unwrap()
+        .entries
+        .iter()
+        .map(|e| e.name.clone())
+        .collect();
+    assert!(names.contains(&"tex_2x2.png".to_string()), "{names:?}");
+    assert!(!names.iter().any(|n| n.ends_with(".gltf")), "{names:?}");
+    // A file that is not an image: the browser stays and says why.
+    let d = std::env::temp_dir().join(format!("animed-mat-load-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    let bad = d.join("broken.png");
+    std::fs::write(&bad, b"not a png at all").unwrap();
+    run(&mut ed, &format!("type {}\nkey enter", bad.display()));
+    let msg = ed.browser().expect("still open").message.clone().unwrap();
+    assert!(msg.starts_with("cannot read texture 'broken.png'"), "{msg}");
+    assert!(ed.status().error);
+    assert_eq!(image_of(&ed), brick, "nothing changed");
+    // A real image replaces the brick and keeps the wrap (S clamped).
+    let png = gltf.join("tex_2x2.png");
+    // The refused path stays typed; a '/' typed after it starts afresh.
+    run(&mut ed, &format!("type /{}\nkey enter", png.display()));
+    assert!(ed.browser().is_none(), "closed once used");
+    assert_eq!(image_of(&ed), ("tex_2x2.png".to_string(), 2, 2));
+    assert_eq!(tex(&ed).unwrap().wrap_s, Wrap::Clamp, "the wrap is kept");
+    assert!(
+        ed.status().text.contains("texture tex_2x2.png (2x2)"),
+        "{}",
+        ed.status().text
+    );
+    assert!(has(&ed, "\"tex_2x2.png\""), "the row names the new file");
+    // One undo step brings the brick back, redo the new image.
+    run(&mut ed, "key ctrl+z");
+    assert_eq!(image_of(&ed), brick);
+    run(&mut ed, "key ctrl+shift+z");
+    assert_eq!(image_of(&ed).0, "tex_2x2.png");
+    // A material without a texture gets a plain repeating one.
+    click_on(&mut ed, "label: \"x\"");
+    assert!(tex(&ed).is_none());
+    click_on(&mut ed, "label: \"Load\"");
+    run(&mut ed, &format!("type {}\nkey enter", png.display()));
+    let t = tex(&ed).expect("textured again");
+    assert_eq!((t.wrap_s, t.wrap_t), (Wrap::Repeat, Wrap::Repeat));
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn an_emissive_map_is_named_in_the_panel() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/gltf/emissive.gltf");
+    let loaded = animed::internals::format::load(&path).expect("emissive.gltf loads");
+    let mut ed = Editor::new(loaded.scene, Some(path.clone()), W, H);
+    let glowing: Vec<usize> = (0..ed.scene().materials.len())
+        .filter(|&i| ed.scene().materials[i].emissive_texture.is_some())
+        .collect();
+    assert!(!glowing.is_empty(), "the file has an emissive map");
+    let shape = (0..ed.scene().nodes.len() as u32)
+        .map(animed::internals::scene::NodeId)
+        .find(|&n| {
+            material::shown(ed.scene(), n)
+                .is_some_and(|s| glowing.contains(&(s.material.0 as usize)))
+        })
+        .expect("a shape with the emissive map");
+    ed.select(Some(shape));
+    run(&mut ed, "key m");
+    assert!(has(&ed, "Emissive map: "), "{:?}", shown(&ed));
+    // A material without one has no such row.
+    let plain = (0..ed.scene().nodes.len() as u32)
+        .map(animed::internals::scene::NodeId)
+        .find(|&n| {
+            material::shown(ed.scene(), n)
+                .is_some_and(|s| !glowing.contains(&(s.material.0 as usize)))
+        });
+    if let Some(p) = plain {
+        ed.select(Some(p));
+        assert!(!has(&ed, "Emissive map: "));
+    }
+}
+
 /// The right part of the window: the textured box and the panel.
 fn crop(f: &Frame, x0: u32, y0: u32, w: u32, h: u32) -> Frame {
     let mut out = Frame::new(w, h, Vec3::ZERO);

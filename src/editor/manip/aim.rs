@@ -59,7 +59,10 @@ impl Editor {
                 .filter_map(|k| self.ring_pixel(h, k as f32 * 0.1))
                 .collect(),
             Handle::ScaleAxis(i) => vec![self.scale_points()?[i as usize + 1]],
-            Handle::Uniform => vec![self.scale_points()?[0]],
+            Handle::Uniform => {
+                let gap = self.handle_projector().gap_px();
+                vec![super::scale::centre_box(&self.scale_points()?, gap)]
+            }
             Handle::Body => return self.body_pixel(),
             Handle::Trackball => return None,
         };

@@ -37,11 +37,49 @@ pub fn points(proj: &Projector, pivot: Vec3, frame: &[Vec3; 3]) -> Option<[(f32,
     ])
 }
 
+/// Where the uniform-scale box goes: on the pivot, except over a small
+/// object (handles keep `gap` pixels clear round the pivot), where it
+/// would hide the object — there it sits just outside that disc, in the
+/// screen direction farthest from every axis shaft, so it lands on
+/// neither the object nor an axis. Axes too short on screen to have a
+/// shaft (pointing at the eye) do not count; their boxes stay inside the
+/// disc.
+pub fn centre_box(pts: &[(f32, f32); 4], gap: f32) -> (f32, f32) {
+    let c = pts[0];
+    if gap <= 0.0 {
+        return c;
+    }
+    let shafts: Vec<f32> = pts[1..]
+        .iter()
+        .filter(|&&e| shaft_start(c, e, gap).is_some())
+        .map(|e| (e.1 - c.1).atan2(e.0 - c.0))
+        .collect();
+    let apart = |a: f32, b: f32| {
+        let d = (a - b).rem_euclid(std::f32::consts::TAU);
+        d.min(std::f32::consts::TAU - d)
+    };
+    // 24 candidate directions from screen down-left round; the first of
+    // equally good ones wins, so the choice is the same every frame.
+    let best = (0..24)
+        .map(|k| 0.75 * std::f32::consts::PI + k as f32 * std::f32::consts::TAU / 24.0)
+        .map(|a| {
+            (
+                shafts.iter().map(|&s| apart(a, s)).fold(f32::MAX, f32::min),
+                a,
+            )
+        })
+        .fold((f32::MIN, 0.0), |b, x| if x.0 > b.0 { x } else { b })
+        .1;
+    // The box's half diagonal is under 1.5 half sides: all of it outside.
+    let r = gap + CENTRE_BOX * 1.5 + 1.0;
+    (c.0 + best.cos() * r, c.1 + best.sin() * r)
+}
+
 /// The box or axis line under pixel (x, y): the centre box first, then
 /// the closest axis.
 pub fn hit(proj: &Projector, pivot: Vec3, frame: &[Vec3; 3], x: f32, y: f32) -> Option<Handle> {
     let pts = points(proj, pivot, frame)?;
-    if in_box((x, y), pts[0], CENTRE_BOX + 1.0) {
+    if in_box((x, y), centre_box(&pts, proj.gap_px()), CENTRE_BOX + 1.0) {
         return Some(Handle::Uniform);
     }
     let mut best: Option<(f32, Handle)> = None;
@@ -135,12 +173,8 @@ pub fn draw(
     } else {
         0xe0e0e0
     };
-    let q = square(pts[0], CENTRE_BOX);
-    // Over a small object (handles kept off its disc) only the outline,
-    // so the object shows through.
-    if proj.gap_px() <= 0.0 {
-        p.fill_polygon(&q, color, 140);
-    }
+    let q = square(centre_box(&pts, proj.gap_px()), CENTRE_BOX);
+    p.fill_polygon(&q, color, 140);
     p.polyline(&q, color, 1.5, true);
 }
 
@@ -170,6 +204,42 @@ mod tests {
         // Snapped: a multiple of 0.1.
         let s = scaled_axis(&n, 2, 1.0, 1.234, true).transform.scale.z;
         assert!((s - 2.5).abs() < 1e-5, "{s}");
+    }
+
+    #[test]
+    fn the_centre_box_leaves_a_small_objects_disc_away_from_every_shaft() {
+        // Pivot at (100, 100); x right, y up, z down-left (a usual view).
+        let pts = [(100.0, 100.0), (150.0, 100.0), (100.0, 50.0), (70.0, 130.0)];
+        assert_eq!(
+            centre_box(&pts, 0.0),
+            (100.0, 100.0),
+            "no gap: on the pivot"
+        );
+        let gap = 20.0;
+        let b = centre_box(&pts, gap);
+        let (dx, dy) = (b.0 - 100.0, b.1 - 100.0);
+        let r = (dx * dx + dy * dy).sqrt();
+        assert!(r - CENTRE_BOX * 1.5 > gap, "outside the disc: {r}");
+        // Clear of every shaft by more than the box and the grab margin.
+        for &e in &pts[1..] {
+            let s = shaft_start(pts[0], e, gap).unwrap();
+            assert!(seg_dist(b, s, e) > CENTRE_BOX + GRAB_PX, "{b:?} near {e:?}");
+        }
+        // The widest opening is between y (up) and z (down-left): the box
+        // is on the left.
+        assert!(dx < 0.0, "{b:?}");
+        // An axis pointing at the eye (no shaft) does not steer it.
+        let eye = [
+            (100.0, 100.0),
+            (150.0, 100.0),
+            (100.0, 50.0),
+            (101.0, 101.0),
+        ];
+        let b = centre_box(&eye, gap);
+        assert!(
+            b.0 < 100.0 && b.1 > 100.0,
+            "down-left, opposite x and y: {b:?}"
+        );
     }
 
     #[test]

@@ -14,6 +14,7 @@
 //! editor's side (widgets, edits, keys, drawing).
 
 pub mod route;
+pub mod texture;
 pub mod thumb;
 
 use crate::anim::{Property, Target, TargetRef, Value};
@@ -183,6 +184,8 @@ pub enum MatAction {
     WrapT,
     /// Take the texture off the material.
     RemoveTexture,
+    /// Choose an image file for the texture (file browser).
+    LoadTexture,
 }
 
 /// The wrap a toggle click gives: repeat ⇄ clamp (mirror, which only glTF
@@ -205,7 +208,12 @@ pub fn wrap_name(w: Wrap) -> &'static str {
 /// The texture's image as the user knows it: the file name it was read
 /// from (not the whole path), else the image's name, else "inline WxH".
 pub fn texture_name(scene: &Scene, m: &Material) -> Option<String> {
-    let t = m.texture.as_ref()?;
+    m.texture.as_ref().and_then(|t| image_name(scene, t))
+}
+
+/// The name shown for texture `t`'s image: the file name, else the
+/// image's name, else `inline WxH`.
+pub fn image_name(scene: &Scene, t: &crate::scene::Texture) -> Option<String> {
     let Some(img) = scene.image(t.image) else {
         return Some("(missing image)".into());
     };

@@ -23,8 +23,9 @@ use crate::ui::text::{self, CHAR_W};
 use crate::ui::{theme, Painter, Rect};
 
 /// Rows under the panel's header: name, three colours, shininess and
-/// transparency, texture name, wrap.
-const ROWS: i32 = 7;
+/// transparency, texture name, wrap, and the emissive map's name (only
+/// shown when the material has one).
+const ROWS: i32 = 8;
 
 /// The panel's rows inside the properties rect `r`.
 struct Rows {
@@ -68,7 +69,11 @@ impl Editor {
 
     /// Rows the open panel needs (for the side panel split).
     pub(in crate::internals::editor) fn material_rows(&self) -> Option<i32> {
-        self.material_panel().map(|_| ROWS)
+        let sh = self.material_panel()?;
+        let glow = self.scene.materials[sh.material.0 as usize]
+            .emissive_texture
+            .is_some();
+        Some(if glow { ROWS } else { ROWS - 1 })
     }
 
     /// The pending material change, if it still applies.
@@ -120,7 +125,7 @@ impl Editor {
 
     /// The material's name for labels and messages: its own, else the
     /// shape's.
-    fn material_name(&self, id: MaterialId) -> String {
+    pub(super) fn material_name(&self, id: MaterialId) -> String {
         let own = self
             .scene
             .materials
@@ -354,6 +359,7 @@ impl Editor {
                 self.material.open = false;
                 return;
             }
+            MatAction::LoadTexture => return self.browse_texture(),
             _ => {}
         }
         let Some(sh) = self.material_panel() else {
@@ -443,7 +449,7 @@ impl Editor {
         ));
         let bottom = r.bottom() + 1;
         let ok = |r: &Rect| r.bottom() <= bottom;
-        let [name_r, dif, spe, emi, se, tex_r, wrap] = l.rows;
+        let [name_r, dif, spe, emi, se, tex_r, wrap, glow] = l.rows;
         let lw = 5 * CHAR_W;
         if ok(&name_r) {
             let name = self.material_name(sh.material);
@@ -485,20 +491,34 @@ impl Editor {
         let texture = m.and_then(|m| m.texture.as_ref());
         let x0 = l.thumb.right() + 4;
         if ok(&tex_r) {
+            // Right to left: [x] (with a texture), [Load].
+            let mut right = tex_r.right() + 2;
+            let buttons = [
+                ("x", MatAction::RemoveTexture, texture.is_some()),
+                ("Load", MatAction::LoadTexture, true),
+            ];
+            for (name, a, _) in buttons.into_iter().filter(|b| b.2) {
+                let bw = text::width(name) + 6;
+                right -= bw + 2;
+                let r = Rect::new(right, tex_r.y + 1, bw, ROW - 2);
+                out.push(button(r, name, Action::Material(a), false));
+            }
             match (&tex, texture) {
                 (Some(name), Some(_)) => {
-                    let xw = text::width("x") + 6;
-                    let nr = Rect::new(x0, tex_r.y, tex_r.right() - x0 - xw - 2, ROW);
+                    let nr = Rect::new(x0, tex_r.y, right - x0 - 2, ROW);
                     out.push(label(nr, name, false));
-                    out.push(button(
-                        Rect::new(tex_r.right() - xw, tex_r.y + 1, xw, ROW - 2),
-                        "x",
-                        Action::Material(MatAction::RemoveTexture),
-                        false,
-                    ));
                 }
-                _ => out.push(label(tex_r, "Texture: none", true)),
+                _ => {
+                    let nr = Rect::new(tex_r.x, tex_r.y, right - tex_r.x - 2, ROW);
+                    out.push(label(nr, "Texture: none", true));
+                }
             }
+        }
+        // The emissive map (glTF emissiveTexture): named, not edited here.
+        let glow_map = m.and_then(|m| m.emissive_texture.as_ref());
+        if let (true, Some(t)) = (ok(&glow), glow_map) {
+            let name = super::image_name(&self.scene, t).unwrap_or_default();
+            out.push(label(glow, &format!("Emissive map: {name}"), false));
         }
         if let (true, Some(t)) = (ok(&wrap), texture) {
             let mut x = x0;

@@ -46,6 +46,7 @@ impl Editor {
                 match purpose {
                     Purpose::Open => self.requests.push(Request::Open(path)),
                     Purpose::Import => self.requests.push(Request::Import(path)),
+                    Purpose::Texture => self.ask_texture(path),
                     Purpose::SaveAs => {
                         let path = if is_writable_type(&path) {
                             path

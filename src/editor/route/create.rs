@@ -44,11 +44,53 @@ impl Editor {
             MenuItem::new("Duplicate", "Shift+D", Action::Duplicate),
             MenuItem::new("Delete", "Delete", Action::Delete),
             MenuItem::new("Key the selection", "K", Action::KeySelection),
+            MenuItem::new("Clear keys", "Alt+I", Action::ClearKeys),
             MenuItem::new("Frame selected", "F", Action::View(ViewCmd::FrameSelected)),
             MenuItem::new("Frame all", "Home", Action::View(ViewCmd::FrameAll)),
             MenuItem::new("View...", "Num 1 3 7 5 0", Action::ViewMenu),
         ];
         self.menu = Some(Menu::new("Viewport", items, (x, y)));
+    }
+
+    /// "Clear keys" (Alt+I): every key of the selected object or light
+    /// goes, as one undo step, and the status line says how many.
+    pub(in crate::internals::editor) fn clear_selection_keys(&mut self) {
+        let Some(sel) = self.selection else {
+            self.set_status(
+                "Nothing selected: select an object to clear its keys",
+                false,
+            );
+            return;
+        };
+        let name = ops::display_name(&self.scene, sel);
+        let mine = |t: &crate::anim::Track| t.target.of == crate::anim::TargetRef::Node(sel);
+        let n: usize = self
+            .scene
+            .animation
+            .tracks
+            .iter()
+            .filter(|t| mine(t))
+            .map(|t| t.key_count())
+            .sum();
+        if n == 0 {
+            self.set_status(&format!("{name} has no keys to clear"), false);
+            return;
+        }
+        let mut after = self.scene.animation.clone();
+        after.tracks.retain(|t| !mine(t));
+        self.stop_playback();
+        self.execute(
+            &format!("Clear keys of {name}"),
+            Command::SetAnimation {
+                before: Box::new(self.scene.animation.clone()),
+                after: Box::new(after),
+            },
+        );
+        let s = if n == 1 { "key" } else { "keys" };
+        self.set_status(
+            &format!("Cleared {n} {s} of {name} (Ctrl+Z brings them back)"),
+            false,
+        );
     }
 
     /// F3: the command search over the window.

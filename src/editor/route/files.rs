@@ -4,9 +4,9 @@
 
 use crate::editor::command::Command;
 use crate::editor::request::{Read, Request};
+use crate::editor::views::Memo;
 use crate::editor::{fields, ops, After, Editor};
 use crate::format::export::atomic::Stamp;
-use crate::input::OrbitCamera;
 use crate::scene::Scene;
 use std::path::{Path, PathBuf};
 
@@ -118,8 +118,9 @@ impl Editor {
     }
 
     /// The shell found the remembered view of the open file.
-    pub fn view_recalled(&mut self, camera: OrbitCamera) {
-        self.camera = camera;
+    pub fn view_recalled(&mut self, memo: Memo) {
+        self.camera = memo.camera;
+        self.recall_timeline(memo.zoom, memo.preview);
     }
 
     /// File work that failed where nothing else reports it.

@@ -837,6 +837,10 @@ impl Editor {
             self.set_preview_range(None);
             return;
         }
+        if key == Key::Char('i') && m.alt {
+            self.clear_selection_keys();
+            return;
+        }
         match (key, m.ctrl, m.shift) {
             (Key::Char('n'), true, _) => self.run_action(Action::New),
             (Key::Char('o'), true, _) => self.run_action(Action::Open),
@@ -1014,6 +1018,7 @@ impl Editor {
             }
             Action::View(v) => self.view_command(v),
             Action::KeySelection => self.insert_keys(),
+            Action::ClearKeys => self.clear_selection_keys(),
             Action::Duplicate => self.duplicate_selection(),
             Action::AddMenu => {
                 let at = self.under_button(Action::AddMenu).unwrap_or((0, 0));

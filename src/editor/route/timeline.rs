@@ -201,6 +201,21 @@ impl Editor {
         self.timeline.pan(span, -dx * per_px);
     }
 
+    /// The remembered zoom and preview range of the opened file (the
+    /// preview is held to the scene's frames like a typed one).
+    pub(in crate::internals::editor) fn recall_timeline(
+        &mut self,
+        zoom: Option<(f32, f32)>,
+        preview: Option<(f32, f32)>,
+    ) {
+        self.timeline.restore_zoom(zoom);
+        let dur = self.scene.settings.duration;
+        self.timeline.preview = None;
+        if let Some((a, b)) = preview {
+            self.timeline.set_preview(a, b, dur);
+        }
+    }
+
     /// Back to the whole scene in the strip.
     pub(in crate::internals::editor) fn reset_timeline_view(&mut self) {
         self.timeline.reset_view();

@@ -5,7 +5,7 @@
 use crate::editor::menu::{Menu, MenuItem};
 use crate::editor::panel::Action;
 use crate::editor::request::Request;
-use crate::editor::views::ViewCmd;
+use crate::editor::views::{Memo, ViewCmd};
 use crate::editor::Editor;
 use crate::input::OrbitCamera;
 use crate::scene::NodeKind;
@@ -111,11 +111,15 @@ impl Editor {
         let (Some(mem), Some(key)) = (self.view_memory.clone(), self.view_key()) else {
             return;
         };
-        let camera = self.through.unwrap_or(self.camera);
+        let memo = Memo {
+            camera: self.through.unwrap_or(self.camera),
+            zoom: self.timeline.zoomed_span(),
+            preview: self.timeline.preview,
+        };
         self.requests.push(Request::RememberView {
             memory: mem,
             key,
-            camera,
+            memo,
         });
     }
 }
