@@ -8,7 +8,7 @@ use animed::internals::anim::{
 };
 use animed::internals::format::export::channels::channels;
 use animed::internals::format::sampling::{angle_between, slerp_shortest, Tolerances};
-use animed::internals::scene::{Node, Scene};
+use animed::internals::scene::{Light, LightKind, Node, NodeKind, Scene};
 use glam::{Quat, Vec3};
 use proptest::prelude::*;
 
@@ -234,4 +234,46 @@ fn a_loop_gets_its_own_clock_instead_of_being_unrolled() {
     assert_eq!(back.scene.animation.tracks.len(), 1);
     assert_eq!(back.scene.animation.tracks[0].keys, track.keys);
     assert_eq!(back.scene.animation.tracks[0].repeat, Repeat::Loop);
+}
+
+/// A light off at rest with an animated intensity (and no `on` track) is
+/// played dark by animed, so every writer's intensity channel is 0; the
+/// same light on plays its keys.
+#[test]
+fn a_light_off_at_rest_writes_a_dark_intensity_channel() {
+    for on in [false, true] {
+        let mut s = Scene::new();
+        s.settings.duration = 24.0;
+        let mut light = Light::new(LightKind::Point);
+        light.on = on;
+        let id = s.add_node(None, Node::new("Lamp", NodeKind::Light(light)));
+        s.animation.tracks.push(
+            Track::new(
+                Target {
+                    of: TargetRef::Node(id),
+                    property: Property::LightIntensity,
+                },
+                Repeat::Constant,
+                Keys::Scalar(vec![
+                    Key::new(0.0, 0.2).with_interp(Interp::Linear),
+                    Key::new(24.0, 0.9).with_interp(Interp::Linear),
+                ]),
+            )
+            .unwrap(),
+        );
+        let chans = channels(&s, &Tolerances::new(10.0, 0.001, 0.1));
+        let ch = chans
+            .iter()
+            .find(|c| c.property == Property::LightIntensity)
+            .expect("an intensity channel");
+        for f in [0.0, 12.0, 24.0] {
+            let want = if on { 0.2 + 0.7 * f / 24.0 } else { 0.0 };
+            match played(&ch.samples, f) {
+                Value::Scalar(x) => {
+                    assert!((x - want).abs() < 1e-3, "on={on} f={f}: {x} vs {want}")
+                }
+                v => panic!("{v:?}"),
+            }
+        }
+    }
 }

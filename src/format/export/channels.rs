@@ -192,11 +192,14 @@ pub fn channels(scene: &Scene, tol: &Tolerances) -> Vec<Channel> {
                 };
                 let on = find(of, Property::LightOn);
                 let rest = light.intensity;
+                // Without an `on` track the light stays as it is at rest:
+                // off means intensity 0 all along (animed plays it so).
+                let on_at_rest = light.on;
                 let authored = [main, on].into_iter().flatten().map(|t| t.keys.len()).sum();
                 (
                     Box::new(move |f| {
                         let i = main.map_or(rest, |t| scalar_of(t.sample(f)));
-                        let lit = on.is_none_or(|t| on_of(t.sample(f)));
+                        let lit = on.map_or(on_at_rest, |t| on_of(t.sample(f)));
                         Value::Scalar(if lit { i } else { 0.0 })
                     }),
                     [main, on],
