@@ -234,6 +234,20 @@ fn material_json(
     o
 }
 
+/// Materials (by index) whose `property` some clip animates.
+fn animated_materials(scene: &Scene, property: Property) -> HashSet<u32> {
+    scene
+        .clip_refs()
+        .iter()
+        .flat_map(|c| c.animation.tracks.iter())
+        .filter(|t| t.target.property == property)
+        .filter_map(|t| match t.target.of {
+            TargetRef::Material(m) => Some(m.0),
+            _ => None,
+        })
+        .collect()
+}
+
 /// Writes `scene` as glTF JSON (`glb == false`) or a .glb.
 pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, WriteReport) {
     let mut report = WriteReport::default();
@@ -325,17 +339,11 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
         reference,
     };
     // Materials whose transparency is animated blend even when opaque at
-    // rest (an OPAQUE material's alpha is ignored by every reader).
-    let see_through: HashSet<u32> = scene
-        .clip_refs()
-        .iter()
-        .flat_map(|c| c.animation.tracks.iter())
-        .filter(|t| t.target.property == Property::Transparency)
-        .filter_map(|t| match t.target.of {
-            TargetRef::Material(m) => Some(m.0),
-            _ => None,
-        })
-        .collect();
+    // rest (an OPAQUE material's alpha is ignored by every reader); an
+    // animated emissive colour black at rest still needs its factor (a
+    // pointer must name a property the document has).
+    let see_through = animated_materials(scene, Property::Transparency);
+    let glowing = animated_materials(scene, Property::Emissive);
     let mut mesh_cache: BTreeMap<(u32, u32), usize> = BTreeMap::new();
     let mut material_cache: BTreeMap<(u32, bool, bool), usize> = BTreeMap::new();
     // Attributes and index accessors of a scene mesh, shared by every glTF
@@ -424,6 +432,12 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
                                         mj["alphaMode"] = json!("BLEND")
                                     }
                                     _ => {}
+                                }
+                                if glowing.contains(&sh.material.0)
+                                    && !pbr_from_phong(&src).unlit
+                                    && mj.get("emissiveFactor").is_none()
+                                {
+                                    mj["emissiveFactor"] = json!([0.0, 0.0, 0.0]);
                                 }
                                 materials.push(mj);
                                 if let Some(w) = pointers.material.get_mut(sh.material.0 as usize) {
@@ -644,21 +658,6 @@ pub fn write(scene: &Scene, opts: &WriteOptions, binary: bool) -> (Vec<u8>, Writ
         &mut bin,
         &mut report,
     );
-    // A pointer must name a property the document has: an animated
-    // emissive colour that is black at rest still needs its factor.
-    for p in &pointed {
-        if let Some(m) = p
-            .strip_prefix("/materials/")
-            .and_then(|r| r.strip_suffix("/emissiveFactor"))
-            .and_then(|i| i.parse::<usize>().ok())
-        {
-            if let Some(mj) = materials.get_mut(m) {
-                if mj.get("emissiveFactor").is_none() {
-                    mj["emissiveFactor"] = json!([0.0, 0.0, 0.0]);
-                }
-            }
-        }
-    }
 
     // The key note of every clip, naming nodes as written here.
     let mut plan = WritePlan::new(scene);
