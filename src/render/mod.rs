@@ -34,6 +34,7 @@ mod texel_block;
 mod texel_fetch;
 mod texture;
 mod texture_lanes;
+mod tri_gradients;
 mod view;
 
 pub use frame::{pack_rgb, Frame};
