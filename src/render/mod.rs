@@ -32,6 +32,7 @@ pub mod stages;
 mod surface;
 mod texel_block;
 mod texel_fetch;
+mod texel_filter;
 mod texture;
 mod texture_lanes;
 mod tri_gradients;

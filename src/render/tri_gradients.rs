@@ -29,14 +29,8 @@ impl Gradients {
         let area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
         let inv = SUBPIXEL as f32 / area as f32;
         // b1: edge from vertex 2 to 0; b2: edge from vertex 0 to 1.
-        let db1 = [
-            -((y[0] - y[2]) as f32) * inv,
-            (x[0] - x[2]) as f32 * inv,
-        ];
-        let db2 = [
-            -((y[1] - y[0]) as f32) * inv,
-            (x[1] - x[0]) as f32 * inv,
-        ];
+        let db1 = [-((y[0] - y[2]) as f32) * inv, (x[0] - x[2]) as f32 * inv];
+        let db2 = [-((y[1] - y[0]) as f32) * inv, (x[1] - x[0]) as f32 * inv];
         let grad = |j: usize, axis: usize| d1[j] * db1[axis] + d2[j] * db2[axis];
         Gradients {
             uv: [
