@@ -25,9 +25,10 @@ pub fn fetch4(px: &[[u8; 4]], idx: &[[i32; 8]; 4]) -> [[u32; 8]; 4] {
 /// [`fetch4`] for blocks whose right texels follow their left ones in
 /// memory (every lane's right column is its left column + 1: no wrap seam
 /// and no clamped edge in the block): `a[k]` and `b[k]` are lane k's top
-/// and bottom left texel indices. With AVX2 each row is two 64-bit gathers
-/// (a texel and its right neighbour in one element) instead of two 32-bit
-/// gathers of eight: half the gathered elements, the same words.
+/// and bottom left texel indices. With AVX2 a row whose pairs all lie in
+/// sixteen consecutive texels is two loads and a permute; any other row
+/// is two 64-bit gathers (a texel and its right neighbour in one element)
+/// instead of two 32-bit gathers of eight. The same words either way.
 #[inline(always)]
 pub fn fetch_pairs(px: &[[u8; 4]], a: &[i32; 8], b: &[i32; 8]) -> [[u32; 8]; 4] {
     #[cfg(target_arch = "x86_64")]
@@ -107,6 +108,22 @@ fn gather_pairs(px: &[[u8; 4]], a: &[i32; 8], b: &[i32; 8]) -> [[u32; 8]; 4] {
         // gathered index is ≤ px.len() − 2 after the unsigned min, with
         // scale 4 (bytes per texel) each 8-byte read lies inside `px`.
         unsafe {
+            // All eight pairs within sixteen texels from the lowest index
+            // (a row of eight pixels crossing few texels, the common case
+            // in magnified and mildly minified blocks): two loads and a
+            // permute, no gather.
+            let v = _mm256_loadu_si256(i.as_ptr().cast());
+            let (first, span) = span8(v);
+            if span <= 14 && first >= 0 && first as usize + 16 <= px.len() {
+                // SAFETY: texels first..first + 16 lie inside `px`.
+                let t = px.as_ptr().add(first as usize).cast::<__m256i>();
+                let (t0, t1) = (_mm256_loadu_si256(t), _mm256_loadu_si256(t.add(1)));
+                let rel = _mm256_sub_epi32(v, _mm256_set1_epi32(first));
+                let right = _mm256_add_epi32(rel, _mm256_set1_epi32(1));
+                _mm256_storeu_si256(out[2 * row].as_mut_ptr().cast(), pick16(t0, t1, rel));
+                _mm256_storeu_si256(out[2 * row + 1].as_mut_ptr().cast(), pick16(t0, t1, right));
+                continue;
+            }
             let lo = _mm_min_epu32(_mm_loadu_si128(i.as_ptr().cast()), last);
             let hi = _mm_min_epu32(_mm_loadu_si128(i.as_ptr().add(4).cast()), last);
             // Dwords: g0 = L0 R0 L1 R1 | L2 R2 L3 R3, g1 the same for 4..8.
@@ -123,6 +140,40 @@ fn gather_pairs(px: &[[u8; 4]], a: &[i32; 8], b: &[i32; 8]) -> [[u32; 8]; 4] {
         }
     }
     out
+}
+
+/// The lowest of eight indices and how far the highest lies above it.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn span8(v: std::arch::x86_64::__m256i) -> (i32, i32) {
+    use std::arch::x86_64::*;
+    let swap = _mm256_permute2x128_si256::<1>(v, v);
+    let (lo, hi) = (_mm256_min_epi32(v, swap), _mm256_max_epi32(v, swap));
+    let lo = _mm256_min_epi32(lo, _mm256_shuffle_epi32::<0b01_00_11_10>(lo));
+    let hi = _mm256_max_epi32(hi, _mm256_shuffle_epi32::<0b01_00_11_10>(hi));
+    let lo = _mm256_min_epi32(lo, _mm256_shuffle_epi32::<0b10_11_00_01>(lo));
+    let hi = _mm256_max_epi32(hi, _mm256_shuffle_epi32::<0b10_11_00_01>(hi));
+    let (lo, hi) = (_mm256_cvtsi256_si32(lo), _mm256_cvtsi256_si32(hi));
+    (lo, hi.wrapping_sub(lo))
+}
+
+/// Lane k of the sixteen words `t0`, `t1` at index `i[k]` (0..16).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn pick16(
+    t0: std::arch::x86_64::__m256i,
+    t1: std::arch::x86_64::__m256i,
+    i: std::arch::x86_64::__m256i,
+) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    let upper = _mm256_cmpgt_epi32(i, _mm256_set1_epi32(7));
+    let (a, b) = (
+        _mm256_permutevar8x32_epi32(t0, i),
+        _mm256_permutevar8x32_epi32(t1, i),
+    );
+    _mm256_blendv_epi8(a, b, upper)
 }
 
 #[cfg(test)]
@@ -150,11 +201,27 @@ mod tests {
         let pairs = load4(&px, &[a, a.map(|i| i + 1), b, b.map(|i| i + 1)]);
         assert_eq!(fetch_pairs(&px, &a, &b), pairs);
         assert_eq!(pairs[3][0], u32::from_le_bytes(px[299]));
+        // Rows within sixteen texels (loaded and permuted): one that ends
+        // at the level's last texel, one that would end past it (gathered),
+        // one that spans fifteen texels (gathered).
+        let near: [[i32; 8]; 3] = [
+            [290, 284, 298, 291, 284, 295, 287, 284],
+            [286, 285, 298, 291, 285, 295, 287, 290],
+            [10, 24, 11, 12, 14, 15, 17, 25],
+        ];
+        for (a, b) in [(near[0], near[2]), (near[1], near[0]), (near[2], near[1])] {
+            let want = load4(&px, &[a, a.map(|i| i + 1), b, b.map(|i| i + 1)]);
+            assert_eq!(fetch_pairs(&px, &a, &b), want);
+        }
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: checked just above.
             assert_eq!(unsafe { gather4(&px, &idx) }, want);
             assert_eq!(unsafe { gather_pairs(&px, &a, &b) }, pairs);
+            // SAFETY: checked above.
+            let v = unsafe { std::arch::x86_64::_mm256_loadu_si256(near[2].as_ptr().cast()) };
+            // SAFETY: checked above.
+            assert_eq!(unsafe { span8(v) }, (10, 15));
         } else {
             eprintln!("gathers_read_what_loads_read: no AVX2 here, gather path NOT tested");
         }
