@@ -21,6 +21,7 @@ pub mod command;
 pub mod component;
 pub mod create;
 pub mod dialog;
+pub mod disk;
 mod draw;
 pub mod fields;
 mod gesture;
@@ -191,8 +192,9 @@ pub struct Editor {
     scroll: [usize; 2],
     /// The selection the lists were last scrolled to show.
     revealed: Option<NodeId>,
-    /// Folder the file browser starts in when no file is open.
-    start_dir: PathBuf,
+    /// Where the file browser starts when no file is open and what `~/`
+    /// stands for: the shell says (`set_start_dir`, `set_home`).
+    places: browser::Places,
     pose: Option<(u64, f32, Pose)>,
     /// Bounding sphere of the shown scene, cached like `pose` (handles ask
     /// for it on every mouse move; it walks every vertex).
@@ -256,8 +258,8 @@ impl Editor {
             help: false,
             scroll: [0, 0],
             revealed: None,
-            // The shell passes the working directory (`set_start_dir`).
-            start_dir: PathBuf::from("."),
+            // The shell passes the working directory and $HOME.
+            places: browser::Places::default(),
             pose: None,
             sphere: None,
             autosave: recovery::Autosave::default(),
@@ -386,7 +388,13 @@ impl Editor {
     /// passes the working directory; `.` until then: the editor asks the
     /// process for nothing).
     pub fn set_start_dir(&mut self, dir: &Path) {
-        self.start_dir = dir.to_path_buf();
+        self.places.start = dir.to_path_buf();
+    }
+
+    /// What a typed `~/` in the file browser stands for (`animed edit`
+    /// passes `$HOME`; until then `~/` is an ordinary name).
+    pub fn set_home(&mut self, home: Option<&Path>) {
+        self.places.home = home.map(Path::to_path_buf);
     }
 
     pub fn select(&mut self, id: Option<NodeId>) {
@@ -561,8 +569,9 @@ impl Editor {
             .and_then(|p| p.parent())
             .filter(|p| !p.as_os_str().is_empty())
             .map(Path::to_path_buf)
-            .unwrap_or_else(|| self.start_dir.clone());
-        self.browser = Some(Browser::new(purpose, &dir));
+            .unwrap_or_else(|| self.places.start.clone());
+        let home = self.places.home.as_deref();
+        self.browser = Some(Browser::new(purpose, &dir, home));
         self.browser_then = then;
         self.edit = None;
     }
