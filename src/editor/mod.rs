@@ -31,6 +31,7 @@ mod graph_menu;
 pub mod help;
 pub mod keyedit;
 pub mod keymenu;
+pub mod keypanel;
 pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
@@ -150,6 +151,8 @@ pub struct Editor {
     manip: manip::Manip,
     /// Key strip: selected keys, fold state, clipboard, strip drags.
     keys: keystrip::KeyStrip,
+    /// The key panel (whether "Object" put the node's properties back).
+    key_panel: keypanel::KeyPanel,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
     /// The graph editor (taken out while it handles an event).
@@ -233,6 +236,7 @@ impl Editor {
             pending: None,
             manip: manip::Manip::default(),
             keys: keystrip::KeyStrip::default(),
+            key_panel: keypanel::KeyPanel::default(),
             onion: onion::Onion::default(),
             graph: None,
             graph_shown: false,
