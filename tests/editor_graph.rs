@@ -172,12 +172,19 @@ fn dragging_the_tangent_handle_sets_tension_and_bias_and_the_handle_follows() {
 
 /// A 40-px pull on a default handle loosens it by about half, not to
 /// the limit (the handle's length is a ratio scale: 2x is -0.5, 4x is -1).
-#[test]
-fn a_sideways_pull_on_the_handle_loosens_gently() {
+/// The ball in the graph with the y key at 24 selected: the key's pixel
+/// and its tangent handle's end.
+fn y24_selected() -> (Editor, (f32, f32), (f32, f32)) {
     let mut ed = graph_on_ball();
     run(&mut ed, "click-curve-key translation.y 24");
     let key = ed.graph_point("translation.y", 24.0, false).unwrap();
     let end = ed.graph_point("translation.y", 24.0, true).unwrap();
+    (ed, key, end)
+}
+
+#[test]
+fn a_sideways_pull_on_the_handle_loosens_gently() {
+    let (mut ed, key, end) = y24_selected();
     let len = |p: (f32, f32)| (p.0 - key.0).hypot(p.1 - key.1);
     let ratio = len((end.0 + 40.0, end.1)) / len(end);
     run(&mut ed, "drag-curve-handle translation.y 24 40 0");
@@ -194,10 +201,7 @@ fn a_sideways_pull_on_the_handle_loosens_gently() {
 /// tangent at the mouse did on this flat curve.
 #[test]
 fn a_tilt_of_the_handle_biases_gently() {
-    let mut ed = graph_on_ball();
-    run(&mut ed, "click-curve-key translation.y 24");
-    let key = ed.graph_point("translation.y", 24.0, false).unwrap();
-    let end = ed.graph_point("translation.y", 24.0, true).unwrap();
+    let (mut ed, key, end) = y24_selected();
     let to = (end.0 + 40.0, end.1 - 10.0);
     let angle = |p: (f32, f32)| (key.1 - p.1).atan2(p.0 - key.0);
     let turn = angle(to) - angle(end);

@@ -535,16 +535,18 @@ mod tests {
         }
     }
 
+    /// A pixel 60 % of the way along arrow `i` (and the pivot's pixel).
+    fn on_arrow(c: &HandlesCtx, i: usize) -> ((f32, f32), (f32, f32)) {
+        let p = translate::points(&c.proj, Vec3::ZERO).unwrap();
+        let (o, tip) = (p[0], p[i + 1]);
+        ((o.0 + (tip.0 - o.0) * 0.6, o.1 + (tip.1 - o.1) * 0.6), o)
+    }
+
     #[test]
     fn the_handles_hover_drag_and_record_by_themselves() {
         let mut c = ctx();
         let mut m = Manip::default();
-        let p = translate::points(&c.proj, Vec3::ZERO).unwrap();
-        // 60 % of the way along the x arrow.
-        let on_x = (
-            p[0].0 + (p[1].0 - p[0].0) * 0.6,
-            p[0].1 + (p[1].1 - p[0].1) * 0.6,
-        );
+        let (on_x, _) = on_arrow(&c, 0);
         assert_eq!(m.hit(&c, on_x.0, on_x.1), Some(Handle::Axis(0)));
         assert!(m.handle(&mouse("move", on_x), &c).redraw, "hover lights it");
         assert_eq!(m.hover, Some(Handle::Axis(0)));
@@ -591,11 +593,7 @@ mod tests {
     fn esc_puts_the_node_back_and_a_body_press_waits_for_the_slop() {
         let mut c = ctx();
         let mut m = Manip::default();
-        let p = translate::points(&c.proj, Vec3::ZERO).unwrap();
-        let on_y = (
-            p[0].0 + (p[2].0 - p[0].0) * 0.6,
-            p[0].1 + (p[2].1 - p[0].1) * 0.6,
-        );
+        let (on_y, pivot) = on_arrow(&c, 1);
         m.handle(&mouse("down", on_y), &c);
         m.handle(&mouse("move", (on_y.0, on_y.1 - 20.0)), &c);
         let esc = Event::KeyDown {
@@ -608,8 +606,13 @@ mod tests {
         // A press on the object's own pixels off the handles arms a body
         // drag; it starts only past the slop, where the press was.
         c.on_selection = true;
-        let body = (p[0].0 - 12.0, p[0].1 + 9.0);
-        assert_eq!(m.hit(&c, body.0, body.1), None);
+        // (The object's pixels are the caller's word; this one is on no
+        // handle: a few pixels from the pivot, between the arrows.)
+        let body = (0..16)
+            .map(|k| k as f32 / 16.0 * std::f32::consts::TAU)
+            .map(|a| (pivot.0 + 14.0 * a.cos(), pivot.1 + 14.0 * a.sin()))
+            .find(|p| m.hit(&c, p.0, p.1).is_none())
+            .expect("a pixel near the pivot off the handles");
         assert!(m.handle(&mouse("down", body), &c).consumed);
         assert!(m.armed() && !m.dragging());
         assert!(
