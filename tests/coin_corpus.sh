@@ -86,7 +86,7 @@ fi
 coin_bg_limit() {
   local f=$1 why=()
   zcat -f "$f" 2>/dev/null | grep -qE '(front|back|left|right|top|bottom)Url[[:space:]]*\[?[[:space:]]*"[^"]' \
-    && why+=("loads no texture files (Background panorama urls)")
+    && why+=("draws a Background panorama face white when its texture does not load (this Coin loads no texture files, REFERENCE-RENDERERS.md; animed shows the sky and ground colours where no panorama image loaded)")
   [ "$(zcat -f "$f" 2>/dev/null | grep -cE '(^|[^A-Za-z0-9_])Background[[:space:]]*\{')" -gt 1 ] \
     && why+=("binds the last Background (VRML97 4.6.10 binds the first)")
   zcat -f "$f" 2>/dev/null | grep -qE '(sky|ground)Angle[[:space:]]*\[?[[:space:]]*[-+.0-9]' \
