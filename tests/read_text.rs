@@ -130,3 +130,53 @@ fn text2_labels_do_not_change_the_framing() {
     assert!(a > 1000);
     assert_eq!(a, b);
 }
+
+/// Inventor Text2 is drawn `Font.size` pixels high facing the viewer
+/// whatever the distance and the rotation above it (as Coin's SoText2
+/// bitmaps are): an 'H' 20 pixels in size is about 13 pixels high (cap
+/// height 0.655 em) with the camera 10 or 40 units away, and a 90° turn
+/// of its group leaves it upright.
+#[test]
+fn text2_labels_keep_their_pixel_size_and_face_the_viewer() {
+    let ink = |distance: f32, turn: &str| {
+        let src = format!(
+            "#Inventor V2.1 ascii\nSeparator {{ PerspectiveCamera {{ position 0 0 {distance} }}\n\
+             Cube {{ width 0.1 height 0.1 depth 0.1 }}\n\
+             Separator {{ Translation {{ translation 0.5 0 0 }} {turn}\n\
+             Font {{ size 20 }} Text2 {{ string \"HHHH\" }} }} }}\n"
+        );
+        let l = animed::internals::format::load_bytes(src.as_bytes(), Path::new("t.iv")).unwrap();
+        let f = draw(&l.scene, 160, 120);
+        let label = l
+            .scene
+            .nodes
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| matches!(n.kind, NodeKind::Shape(_)))
+            .map(|(i, _)| i as u32 + 1)
+            .last()
+            .unwrap();
+        let px: Vec<(u32, u32)> = (0..f.height)
+            .flat_map(|y| (0..f.width).map(move |x| (x, y)))
+            .filter(|&(x, y)| f.ids[(y * f.width + x) as usize] == label)
+            .collect();
+        assert!(!px.is_empty(), "label drawn at distance {distance}");
+        let w = px.iter().map(|p| p.0).max().unwrap() - px.iter().map(|p| p.0).min().unwrap() + 1;
+        let h = px.iter().map(|p| p.1).max().unwrap() - px.iter().map(|p| p.1).min().unwrap() + 1;
+        (w, h)
+    };
+    let near = ink(10.0, "");
+    let far = ink(40.0, "");
+    let turned = ink(
+        10.0,
+        "RotationXYZ { axis Z angle 1.5708 } Scale { scaleFactor 3 3 3 }",
+    );
+    assert!((12..=14).contains(&near.1), "{near:?}");
+    assert!(near.0 > 2 * near.1, "{near:?}");
+    for other in [far, turned] {
+        assert!(
+            near.0.abs_diff(other.0) <= 1 && near.1.abs_diff(other.1) <= 1,
+            "{near:?} vs {other:?}"
+        );
+    }
+}

@@ -22,6 +22,7 @@ mod fragment;
 mod frame;
 mod geometry;
 pub mod job;
+mod label;
 mod lanes;
 mod log2_lanes;
 mod prepare;
