@@ -212,8 +212,8 @@ xargs -a "$OUT/files.txt" -d '\n' -P 2 -I{} bash -c 'one "$@"' _ {} >"$OUT/raw.t
 sort -g "$OUT/raw.tsv" >"$OUT/report.tsv"
 
 # The share over every file Coin drew something for; then, as a second
-# figure, without the files tests/coin_known.tsv lists as Coin's own
-# departures from the spec (each with its reason, printed).
+# figure, without the files tests/coin_known.tsv lists as drawn wrong by
+# Coin itself (each with its reason, printed).
 awk -F'\t' '
   FNR == NR { if ($0 !~ /^#/ && NF >= 2) known[$1] = $2; next }
   $1 == "nan" { skipped++; next }
@@ -224,7 +224,7 @@ awk -F'\t' '
     if (skipped) printf " (%d skipped: Coin drew nothing)", skipped
     printf "\n"
     if (kn) {
-      printf "coin_corpus: without the %d failing files where Coin departs from the spec (tests/coin_known.tsv): %d of %d: %.1f%%\n", kn, ok, n - kn, 100 * ok / (n - kn)
+      printf "coin_corpus: without the %d failing files Coin draws wrong (tests/coin_known.tsv): %d of %d: %.1f%%\n", kn, ok, n - kn, 100 * ok / (n - kn)
       printf "%s", kl
     }
     printf "%s", km

@@ -393,7 +393,10 @@ impl Builder {
                     .or_insert_with(|| Rc::new(super::state::colors(c, "point")))
                     .clone()
             }
-            None => Rc::new(Vec::new()),
+            // Inventor's coordinate element starts as one point at the
+            // origin (Coin's SoCoordinateElement default): a PointSet
+            // without Coordinate3 draws it, a LineSet counts it in its box.
+            None => Rc::new(vec![Vec3::ZERO]),
         };
         // Texture coordinates only when a texture actually loads.
         let texture = self.texture(st);

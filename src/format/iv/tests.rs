@@ -142,6 +142,23 @@ fn inherited_switch_values_and_open_primitives() {
     assert!(!solid("Open") && solid("Closed"));
 }
 
+/// Without a Coordinate3 the coordinates are Coin's default, one point at
+/// the origin: a PointSet draws it and a LineSet's bounds hold it (Toolmaker
+/// `newManips.iv` is framed on it in Coin).
+#[test]
+fn shapes_without_coordinates_use_the_origin() {
+    let l = load("#Inventor V2.1 ascii\nSeparator {\n DEF P PointSet {}\n DEF L LineSet {}\n}");
+    let s = &l.scene;
+    let mesh = |n| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => &s.meshes[sh.mesh.0 as usize],
+        _ => panic!(),
+    };
+    assert_eq!(mesh("P").positions, vec![Vec3::ZERO]);
+    assert_eq!(mesh("P").points, vec![0]);
+    assert_eq!(mesh("L").positions, vec![Vec3::ZERO]);
+    assert!(mesh("L").lines.is_empty());
+}
+
 /// Coin culls no primitive, so a closed one seen through its own
 /// transparency or an RGBA texture with see-through texels shows its back
 /// faces (castle `inlined_pixel_textures.wrl`); opaque ones stay culled.
