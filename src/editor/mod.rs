@@ -50,6 +50,7 @@ mod screen;
 pub mod script;
 pub mod search;
 pub mod shell;
+pub mod side_ui;
 mod strip_tips;
 pub mod timeline;
 pub mod tooltip;
@@ -187,10 +188,8 @@ pub struct Editor {
     quit: bool,
     /// The F1 key reference is shown.
     help: bool,
-    /// First visible row of the objects and lights lists.
-    scroll: [usize; 2],
-    /// The selection the lists were last scrolled to show.
-    revealed: Option<NodeId>,
+    /// How far the side panel's lists and properties are scrolled.
+    side: side_ui::Side,
     /// Folder the file browser starts in when no file is open.
     start_dir: PathBuf,
     pose: Option<(u64, f32, Pose)>,
@@ -254,8 +253,7 @@ impl Editor {
             status: Status::default(),
             quit: false,
             help: false,
-            scroll: [0, 0],
-            revealed: None,
+            side: side_ui::Side::default(),
             // The shell passes the working directory (`set_start_dir`).
             start_dir: PathBuf::from("."),
             pose: None,
@@ -493,7 +491,7 @@ impl Editor {
         self.frame = 0.0;
         self.playback = None;
         self.edit = None;
-        self.scroll = [0, 0];
+        self.side = side_ui::Side::default();
         self.scene_rev += 1;
         self.reset_recovery();
         self.frame_all();

@@ -250,6 +250,10 @@ impl Editor {
     /// Writes the recovery copy now; returns where.
     pub fn autosave_now(&mut self) -> Result<PathBuf, String> {
         let path = self.recovery_file();
+        if self.path().is_none() {
+            // Untitled work's view, remembered by its copy (as the clock's).
+            self.remember_view_as(path.clone());
+        }
         let out = autosave(self, path, AutosaveWhy::Now);
         perform(self);
         out

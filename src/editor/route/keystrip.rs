@@ -25,9 +25,6 @@ impl Editor {
         self.keys.selected = keys;
         self.remember_key_selection();
         self.keys.node_panel = false;
-        // The properties section changes size: show the selection's row
-        // in the lists again.
-        self.revealed = None;
     }
 
     /// Notes the key selection for the current animation (nothing for an

@@ -83,6 +83,11 @@ impl Editor {
         // starts at the next change).
         self.autosave.since = Some(now);
         let path = self.recovery_file();
+        if self.path.is_none() {
+            // Untitled work has no file to remember its view by: its copy
+            // is the key, so recovered work comes back as it was seen.
+            self.remember_view_as(path.clone());
+        }
         self.requests.push(Request::Autosave {
             path,
             why: AutosaveWhy::Clock,
@@ -263,6 +268,8 @@ impl Editor {
             },
         );
         self.frame_all();
+        // The view the work was last autosaved with, if remembered.
+        self.recall_view_of(copy.clone());
         // After `replace_scene`'s removal of this session's old copy.
         self.requests.push(Request::TakeOver { copy, mine });
         self.set_status(
