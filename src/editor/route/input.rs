@@ -465,23 +465,8 @@ impl Editor {
             self.camera.zoom(delta);
             return true;
         }
-        let sp = self.side_panel();
-        for (i, r) in [sp.objects, sp.lights].into_iter().enumerate() {
-            if r.contains(x, y) {
-                let n = if i == 0 {
-                    ops::objects(&self.scene).len()
-                } else {
-                    ops::lights(&self.scene).len()
-                };
-                let cap = Self::list_capacity(r);
-                let by = crate::editor::side_ui::wheel_rows(delta);
-                self.side.scroll_list(i, n, cap, by);
-                return true;
-            }
-        }
-        if sp.props.contains(x, y) {
-            self.scroll_props(crate::editor::side_ui::wheel_rows(delta));
-            return true;
+        if let Some(redraw) = self.side_event(&Event::Wheel { delta, x, y, mods }) {
+            return redraw;
         }
         // Over the key rows the wheel scrolls rows that overflow (Ctrl:
         // zooms); elsewhere on the ruler and strip it zooms the frames.
