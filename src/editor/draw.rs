@@ -110,6 +110,9 @@ impl Editor {
             self.draw_widget(p, w);
         }
         self.draw_material_extras(p);
+        for (body, first, shown, total) in self.side_scrolls() {
+            crate::ui::widgets::scroll_bar(p, body, first, shown, total);
+        }
         if let Drag::RowMove {
             node, moved: true, ..
         } = &self.drag

@@ -52,6 +52,7 @@ mod screen;
 pub mod script;
 pub mod search;
 pub mod shell;
+pub mod side_ui;
 mod split;
 mod strip_tips;
 pub mod timeline;
@@ -185,10 +186,8 @@ pub struct Editor {
     quit: bool,
     /// The F1 key reference is shown.
     help: bool,
-    /// First visible row of the objects and lights lists.
-    scroll: [usize; 2],
-    /// The selection the lists were last scrolled to show.
-    revealed: Option<NodeId>,
+    /// How far the side panel's lists and properties are scrolled.
+    side: side_ui::Side,
     /// Where the file browser starts when no file is open and what `~/`
     /// stands for: the shell says (`set_start_dir`, `set_home`).
     places: browser::Places,
@@ -250,8 +249,7 @@ impl Editor {
             status: Status::default(),
             quit: false,
             help: false,
-            scroll: [0, 0],
-            revealed: None,
+            side: side_ui::Side::default(),
             // The shell passes the working directory and $HOME.
             places: browser::Places::default(),
             pose: None,
@@ -488,7 +486,7 @@ impl Editor {
         self.frame = 0.0;
         self.playback = None;
         self.edit = None;
-        self.scroll = [0, 0];
+        self.side = side_ui::Side::default();
         self.scene_rev += 1;
         self.reset_recovery();
         self.frame_all();

@@ -466,15 +466,14 @@ impl Editor {
                     ops::lights(&self.scene).len()
                 };
                 let cap = Self::list_capacity(r);
-                let max = n.saturating_sub(cap);
-                let s = &mut self.scroll[i];
-                *s = if delta > 0.0 {
-                    s.saturating_sub(1)
-                } else {
-                    (*s + 1).min(max)
-                };
+                let by = crate::editor::side_ui::wheel_rows(delta);
+                self.side.scroll_list(i, n, cap, by);
                 return true;
             }
+        }
+        if sp.props.contains(x, y) {
+            self.scroll_props(crate::editor::side_ui::wheel_rows(delta));
+            return true;
         }
         // Over the key rows the wheel scrolls rows that overflow (Ctrl:
         // zooms); elsewhere on the ruler and strip it zooms the frames.

@@ -24,9 +24,6 @@ impl Editor {
         self.keys.selected = keys;
         self.remember_key_selection();
         self.key_panel.node_shown = false;
-        // The properties section changes size: show the selection's row
-        // in the lists again.
-        self.revealed = None;
     }
 
     /// Notes the key selection for the current animation (nothing for an

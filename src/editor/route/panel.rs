@@ -5,6 +5,7 @@ use crate::editor::fields::FieldId;
 use crate::editor::ops::{self, NewLight};
 #[allow(unused_imports)]
 use crate::editor::panel::*;
+use crate::editor::side_ui::{Section, SectionKind};
 use crate::editor::{Editor, Mode};
 use crate::scene::{LightKind, NodeId, NodeKind};
 use crate::ui::layout::{CONTROLS_H, ROW};
@@ -25,24 +26,19 @@ impl Editor {
         }
     }
 
+    /// The side panel's sections: fixed by the window's height alone.
     pub fn side_panel(&self) -> SidePanel {
-        SidePanel::new(
-            self.layout().side,
-            self.section_rows(),
-            [
-                ops::objects(&self.scene).len(),
-                ops::lights(&self.scene).len(),
-            ],
-        )
+        SidePanel::new(self.layout().side)
     }
 
     /// Scrolls the objects and lights lists so the selection's row shows.
     pub(in crate::internals::editor) fn reveal_selection(&mut self) {
         let Some(sel) = self.selection else { return };
-        if self.revealed == Some(sel) {
+        let now = Some((sel, self.layout().side));
+        if self.side.revealed == now {
             return;
         }
-        self.revealed = Some(sel);
+        self.side.revealed = now;
         let sp = self.side_panel();
         let lists: [(Vec<NodeId>, Rect); 2] = [
             (
@@ -56,15 +52,98 @@ impl Editor {
         ];
         for (i, (ids, r)) in lists.iter().enumerate() {
             if let Some(pos) = ids.iter().position(|&id| id == sel) {
-                let cap = Self::list_capacity(*r).max(1);
-                let s = &mut self.scroll[i];
-                if pos < *s {
-                    *s = pos;
-                } else if pos >= *s + cap {
-                    *s = pos + 1 - cap;
-                }
+                self.side.reveal_row(i, pos, Self::list_capacity(*r).max(1));
             }
         }
+    }
+
+    /// What the properties section shows now (its scroll belongs to it).
+    pub(in crate::internals::editor) fn prop_section(&self) -> Section {
+        let kind = if self.material_panel().is_some() {
+            SectionKind::Material
+        } else if self.key_panel_shown() {
+            SectionKind::Keys
+        } else {
+            SectionKind::Node
+        };
+        Section {
+            node: self.selection,
+            kind,
+        }
+    }
+
+    /// Body rows of the properties that do not fit their section.
+    pub(in crate::internals::editor) fn props_hidden(&self) -> usize {
+        (self.section_rows() - self.side_panel().prop_rows_shown()).max(0) as usize
+    }
+
+    /// The properties section (`shown`) and the taller rect its rows are
+    /// laid out in, moved up by the rows scrolled away (`tall`): laying
+    /// out every row and keeping those inside `shown` scrolls the three
+    /// faces (node, key panel, material) alike.
+    pub(in crate::internals::editor) fn props_view(&self) -> (Rect, Rect) {
+        let shown = self.side_panel().props;
+        let first = self
+            .side
+            .props_first(self.prop_section(), self.props_hidden()) as i32;
+        let need = (self.section_rows() + 1) * ROW + 2;
+        let tall = Rect::new(
+            shown.x,
+            shown.y - first * ROW,
+            shown.w,
+            need.max(shown.h + first * ROW),
+        );
+        (shown, tall)
+    }
+
+    /// Moves the properties section by `by` rows (negative: up).
+    pub(in crate::internals::editor) fn scroll_props(&mut self, by: i32) {
+        let (now, hidden) = (self.prop_section(), self.props_hidden());
+        self.side.scroll_props(now, hidden, by);
+    }
+
+    /// Scrolls the properties until a widget `wanted` shows (as a user
+    /// would with the wheel) and returns it; `None` if no scroll shows one.
+    pub fn reveal_widget(&mut self, wanted: impl Fn(&Widget) -> bool) -> Option<Widget> {
+        if let Some(w) = self.widgets().into_iter().find(&wanted) {
+            return Some(w);
+        }
+        let now = self.prop_section();
+        let before = self.side.props_first(now, self.props_hidden());
+        for first in 0..=self.props_hidden() {
+            self.side.set_props_first(now, first);
+            if let Some(w) = self.widgets().into_iter().find(&wanted) {
+                return Some(w);
+            }
+        }
+        self.side.set_props_first(now, before);
+        None
+    }
+
+    /// The side panel's scrolling sections as (body, first row shown,
+    /// rows shown, rows in all), for their scroll bars.
+    pub(in crate::internals::editor) fn side_scrolls(&self) -> [(Rect, usize, usize, usize); 3] {
+        let sp = self.side_panel();
+        let counts = [
+            ops::objects(&self.scene).len(),
+            ops::lights(&self.scene).len(),
+        ];
+        let list = |i: usize, r: Rect| {
+            let cap = Self::list_capacity(r);
+            let first = self.side.lists[i].min(counts[i].saturating_sub(cap));
+            let (_, body) = r.take_top(ROW);
+            (body, first, cap, counts[i])
+        };
+        let (props, _) = self.props_view();
+        let (_, body) = props.take_top(ROW);
+        let hidden = self.props_hidden();
+        let first = self.side.props_first(self.prop_section(), hidden);
+        let shown = sp.prop_rows_shown() as usize;
+        [
+            list(0, sp.objects),
+            list(1, sp.lights),
+            (body, first, shown, shown + hidden),
+        ]
     }
 
     /// Visible rows of a list section.
@@ -81,7 +160,7 @@ impl Editor {
         self.scene_widgets(sp.scene, &mut out);
         self.list_widgets(sp.objects, List::Objects, &mut out);
         self.list_widgets(sp.lights, List::Lights, &mut out);
-        self.prop_widgets(sp.props, &mut out);
+        self.props_widgets(&mut out);
         self.controls_widgets(l.controls, &mut out);
         out
     }
@@ -208,7 +287,7 @@ impl Editor {
         }
         let cap = Self::list_capacity(r);
         let idx = if list == List::Objects { 0 } else { 1 };
-        let first = self.scroll[idx].min(rows.len().saturating_sub(cap));
+        let first = self.side.lists[idx].min(rows.len().saturating_sub(cap));
         for (i, (id, depth)) in rows.iter().skip(first).take(cap).enumerate() {
             let rr = Rect::new(body.x, body.y + i as i32 * ROW, body.w, ROW);
             if list == List::Lights {
@@ -246,6 +325,23 @@ impl Editor {
                 "(none)",
                 true,
             ));
+        }
+    }
+
+    /// The properties section's widgets that show: its header row stays,
+    /// its body rows scroll.
+    fn props_widgets(&self, out: &mut Vec<Widget>) {
+        let (shown, tall) = self.props_view();
+        let mut all = Vec::new();
+        self.prop_widgets(tall, &mut all);
+        let scrolled = shown.y - tall.y;
+        for mut w in all {
+            if w.rect.y < tall.y + ROW {
+                w.rect.y += scrolled;
+                out.push(w);
+            } else if w.rect.y >= shown.y + ROW && w.rect.bottom() <= shown.bottom() + 1 {
+                out.push(w);
+            }
         }
     }
 
