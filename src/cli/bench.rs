@@ -67,6 +67,11 @@ pub fn sections() -> Vec<Section> {
             run: bench_stages,
         },
         Section {
+            name: "split",
+            about: "how the threads share a frame: per-thread band time and the wait at its end, old split beside new",
+            run: bench_split,
+        },
+        Section {
             name: "animation",
             about: "track sampling and whole-scene evaluation (1000 tracks of each kind)",
             run: bench_animation,
@@ -435,6 +440,65 @@ fn bench_stages(args: &Args) -> Result<Vec<String>, String> {
             "{name}: setup {setup:.2} ms, depth pass {raster:.2} ms, shading pass {:.2} ms, resolve {resolve:.2} ms (CPU ms per frame)",
             both - raster
         ));
+    }
+    Ok(out)
+}
+
+/// How `--threads` threads share the bands of a one-layer frame (the
+/// `pixels` scene) and the 100k-triangle frame: per frame, the band time
+/// of the busiest and the least busy thread and how long the first thread
+/// to finish waited for the last (medians over the frames of one run),
+/// for rayon's default split ("runs") and one band per job ("bands"),
+/// measured alternately so both see the same machine.
+fn bench_split(args: &Args) -> Result<Vec<String>, String> {
+    use crate::render::band_trace::{self, Split};
+    let aspect = args.size.0 as f32 / args.size.1 as f32;
+    let scenes = [
+        ("1 layer", bench_scenes::layers(1, aspect)),
+        (
+            "100k triangles",
+            bench_scenes::small_triangles(100_000, aspect),
+        ),
+    ];
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let mut out = Vec::new();
+    for (name, scene) in &scenes {
+        let mut splits: [Vec<Split>; 2] = [Vec::new(), Vec::new()];
+        // Four alternating turns of each split.
+        let turn = Args {
+            seconds: args.seconds / 8.0,
+            ..args.clone()
+        };
+        for _ in 0..4 {
+            for (coarse, got) in [true, false].into_iter().zip(splits.iter_mut()) {
+                band_trace::record(true, coarse);
+                render_scene_time(scene, &turn);
+                let frames = band_trace::take();
+                // The first frame is the warm-up.
+                got.extend(frames.iter().skip(1).filter_map(|f| band_trace::split(f)));
+            }
+        }
+        band_trace::record(false, false);
+        for (what, mut got) in ["runs", "bands"].into_iter().zip(splits) {
+            if got.is_empty() {
+                continue;
+            }
+            let n = got.len();
+            let median = |got: &mut Vec<Split>, f: fn(&Split) -> Duration| {
+                got.sort_by_key(f);
+                ms(f(&got[n / 2]))
+            };
+            let wall = median(&mut got, |s| s.wall);
+            let busiest = median(&mut got, |s| s.busiest);
+            let idlest = median(&mut got, |s| s.idlest);
+            let tail = median(&mut got, |s| s.tail);
+            got.sort_by_key(|s| s.bands);
+            let bands = got[n / 2].bands;
+            out.push(format!(
+                "{name}, {what}: {wall:.2} ms to draw; per thread {busiest:.2} / {idlest:.2} ms of bands ({} / {} bands); the first done waits {tail:.2} ms (medians of {n} frames)",
+                bands.0, bands.1
+            ));
+        }
     }
     Ok(out)
 }

@@ -1,6 +1,9 @@
 //! The shading pass of a tile: after the depth pass has chosen one
 //! triangle per pixel, shade every visible pixel once, eight pixels of a
-//! row at a time in structure-of-arrays lanes ([`V8`]).
+//! row at a time in structure-of-arrays lanes ([`V8`]). Under
+//! multisampling this shades each pixel's first sample (the lanes'
+//! machinery here serves `samples` for the triangles showing only at
+//! other samples, near edges; `shading` runs both).
 //!
 //! A block of eight pixels may show several triangles. Their attributes are
 //! planes over the screen-space barycentrics the depth pass stored
@@ -20,7 +23,7 @@
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
 use super::lanes::Pair;
 use super::prepare::{Item, Prepared, Tri, INV_W};
-use super::simd::{self, Sse8, V8};
+use super::simd::V8;
 use super::surface::shade_lanes;
 use super::texture_lanes::UvIn;
 use glam::Vec3;
@@ -41,7 +44,8 @@ pub const NONE: u32 = u32::MAX;
 pub struct Visible<'a> {
     /// Index into `Prepared::opaque` of the nearest triangle, or [`NONE`].
     pub winner: &'a [u32],
-    /// Screen-space barycentric weights of vertices 1 and 2 at the pixel.
+    /// Screen-space barycentric weights of vertices 1 and 2 at the first
+    /// sample of the pixel (one plane).
     pub b1: &'a [f32],
     pub b2: &'a [f32],
     /// Whether a triangle of a textured item may show in the tile: picks
@@ -56,6 +60,22 @@ pub struct Shaded<'a> {
     pub g: &'a mut [f32],
     pub b: &'a mut [f32],
     pub ids: &'a mut [u32],
+    /// Under multisampling, per block of eight pixels: whether every sample
+    /// of its pixels shows the triangle of the first sample. Such a block's
+    /// colours and ids are kept in the first plane only (the resolve and
+    /// `samples::spread_flat` know).
+    pub flat: &'a mut [bool],
+    /// Working memory of `samples::shade_others`.
+    pub queue: &'a mut Vec<Leftover>,
+}
+
+/// A triangle showing at sample `s` of pixel `i` (tile index) and at no
+/// earlier sample of it: it is shaded there once, for all its samples.
+#[derive(Clone, Copy, Debug)]
+pub struct Leftover {
+    pub i: u16,
+    pub s: u8,
+    pub t: u32,
 }
 
 /// What the shading pass of a tile works with besides its buffers.
@@ -67,68 +87,21 @@ pub struct Pass<'a> {
     pub background: Vec3,
     /// Tile width and height in pixels, samples per pixel.
     pub size: (usize, usize, usize),
+    /// The tile's top-left pixel, and the sample positions (SUBPIXEL units
+    /// from the pixel centre), for weights recomputed at other samples.
+    pub origin: (i32, i32),
+    pub offsets: &'a [(i64, i64)],
 }
-
-/// Shades the visible samples of a tile; samples with no triangle get the
-/// background and id 0.
-pub fn shade_visible(pass: &Pass, vis: &Visible, out: &mut Shaded) {
-    if vis.textured {
-        shade_visible_isa::<true>(pass, vis, out);
-    } else {
-        shade_visible_isa::<false>(pass, vis, out);
-    }
-}
-
-/// The shading loop (with or without the texture steps, `TEX`) on the
-/// widest lanes the CPU has.
-#[inline(always)]
-fn shade_visible_isa<const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
-    #[cfg(target_arch = "x86_64")]
-    if simd::avx512() {
-        // SAFETY: `simd::avx512()` checked that the CPU has AVX-512F/VL
-        // (and so AVX).
-        unsafe { shade_visible_avx512::<TEX>(pass, vis, out) };
-        return;
-    }
-    #[cfg(target_arch = "x86_64")]
-    if simd::avx() {
-        // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { shade_visible_avx::<TEX>(pass, vis, out) };
-        return;
-    }
-    shade_visible_in::<Sse8, TEX>(pass, vis, out);
-}
-
-/// `shade_visible_in` on AVX lanes compiled with the target features
-/// `$features`: the same generic code, so the same bits; only the
-/// registers and encodings the compiler may use differ.
-macro_rules! avx_entry {
-    ($(#[$doc:meta])* $name:ident, $features:literal) => {
-        $(#[$doc])*
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = $features)]
-        unsafe fn $name<const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
-            shade_visible_in::<simd::Avx8, TEX>(pass, vis, out);
-        }
-    };
-}
-
-avx_entry!(
-    /// The AVX path compiled with AVX-512's 32 registers (see `simd::avx512`).
-    shade_visible_avx512,
-    "avx,avx2,avx512f,avx512vl"
-);
-avx_entry!(shade_visible_avx, "avx");
 
 #[inline(always)]
-fn lanes8<T>(s: &[T], i: usize) -> &[T; 8] {
+pub fn lanes8<T>(s: &[T], i: usize) -> &[T; 8] {
     s[i..i + 8]
         .try_into()
         .expect("tile rows are multiples of 8")
 }
 
 #[inline(always)]
-fn lanes8_mut<T>(s: &mut [T], i: usize) -> &mut [T; 8] {
+pub fn lanes8_mut<T>(s: &mut [T], i: usize) -> &mut [T; 8] {
     (&mut s[i..i + 8])
         .try_into()
         .expect("tile rows are multiples of 8")
@@ -152,19 +125,14 @@ pub fn store_masked<V: V8>(dst: &mut [f32; 8], v: V, mask: u32) {
     }
 }
 
+/// Shades the first sample of every pixel of a tile (all of them without
+/// multisampling; `samples::shade_others` does the rest): two neighbouring
+/// blocks of one lit item as a pair, other blocks lit once per item they
+/// show. Samples with no triangle get the background and id 0.
 #[inline(always)]
-fn shade_visible_in<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
-    let Pass {
-        p,
-        eye,
-        background,
-        size: (w, h, ns),
-    } = *pass;
-    let bg = [
-        V::splat(background.x),
-        V::splat(background.y),
-        V::splat(background.z),
-    ];
+pub fn shade_first<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
+    let (p, eye) = (pass.p, pass.eye);
+    let (w, h, _) = pass.size;
     for row in 0..h {
         let mut next = 0;
         for bx in (0..w).step_by(8) {
@@ -172,128 +140,90 @@ fn shade_visible_in<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mu
                 continue;
             }
             let i0 = row * TILE as usize + bx;
-            // Two blocks of one lit item: lit together. Under multisampling
-            // only where every sample of their pixels shows the triangle of
-            // the first sample (inside a surface, away from its edges): the
-            // rounds below would shade each pixel once at its first sample
-            // and give every sample that colour, which is what this does.
             if bx + 8 < w {
                 if let Some(item) = pair_item(p, vis.winner, i0) {
-                    if ns == 1 || samples_agree(vis.winner, i0, ns) {
-                        shade_pair::<V, TEX>(p, item, eye, vis, out, i0);
-                        copy_to_samples(out, i0, ns);
-                        next = bx + 16;
-                        continue;
+                    shade_pair::<V, TEX>(p, item, eye, vis, out, i0);
+                    next = bx + 16;
+                    continue;
+                }
+            }
+            let win = *lanes8(vis.winner, i0);
+            let mut lanes = 0u32;
+            for (k, &t) in win.iter().enumerate() {
+                lanes |= ((t != NONE) as u32) << k;
+            }
+            if lanes != 0xFF {
+                let bg = pass.background;
+                for (dst, c) in [&mut *out.r, &mut *out.g, &mut *out.b]
+                    .into_iter()
+                    .zip([bg.x, bg.y, bg.z])
+                {
+                    V::splat(c).store(lanes8_mut(dst, i0));
+                }
+                let ids = lanes8_mut(out.ids, i0);
+                for (k, id) in ids.iter_mut().enumerate() {
+                    if lanes >> k & 1 == 0 {
+                        *id = 0;
                     }
                 }
             }
-            // Per sample, the lanes still to colour.
-            let mut pending = [0u32; 8];
-            for (s, pend) in pending.iter_mut().enumerate().take(ns) {
-                let j0 = s * PLANE + i0;
-                for (k, &t) in lanes8(vis.winner, j0).iter().enumerate() {
-                    *pend |= ((t != NONE) as u32) << k;
-                }
-                if *pend != 0xFF {
-                    bg[0].store(lanes8_mut(out.r, j0));
-                    bg[1].store(lanes8_mut(out.g, j0));
-                    bg[2].store(lanes8_mut(out.b, j0));
-                    for (k, id) in lanes8_mut(out.ids, j0).iter_mut().enumerate() {
-                        if *pend >> k & 1 == 0 {
-                            *id = 0;
-                        }
-                    }
-                }
+            if lanes == 0 {
+                continue;
             }
-            // Rounds: each lane shades the triangle of its first sample
-            // still pending (at that sample), and the colour goes to every
-            // sample of the lane showing the same triangle. Without
-            // multisampling there is one round.
-            loop {
-                let mut win = [NONE; 8];
-                let mut at_sample = [0usize; 8];
-                let mut todo = 0u32;
-                for k in 0..8 {
-                    if let Some(s) = (0..ns).find(|&s| pending[s] >> k & 1 == 1) {
-                        win[k] = vis.winner[s * PLANE + i0 + k];
-                        at_sample[k] = s;
-                        todo |= 1 << k;
-                    }
-                }
-                if todo == 0 {
-                    break;
-                }
-                let (b1, b2) = if at_sample.iter().all(|&s| s == at_sample[0]) {
-                    let j0 = at_sample[0] * PLANE + i0;
-                    (V::load(lanes8(vis.b1, j0)), V::load(lanes8(vis.b2, j0)))
-                } else {
-                    let g = |v: &[f32]| std::array::from_fn(|k| v[at_sample[k] * PLANE + i0 + k]);
-                    (V::load(&g(vis.b1)), V::load(&g(vis.b2)))
-                };
-                let mut rgb = [[0.0f32; 8]; 3];
-                let mut lane_id = [0u32; 8];
-                let lanes = todo;
-                // One group per item (material + lights) in the block.
-                while todo != 0 {
-                    let item_ix = p.opaque[win[todo.trailing_zeros() as usize] as usize].item;
-                    let mut group = 0u32;
-                    for (k, &t) in win.iter().enumerate() {
-                        if todo >> k & 1 == 1 && p.opaque[t as usize].item == item_ix {
-                            group |= 1 << k;
-                        }
-                    }
-                    todo &= !group;
-                    let item = &p.items[item_ix as usize];
-                    let c = shade_group::<V, TEX>(p, item, eye, &win, group, b1, b2);
-                    for (dst, v) in rgb.iter_mut().zip(c) {
-                        store_masked(dst, v, group);
-                    }
-                    for (k, id) in lane_id.iter_mut().enumerate() {
-                        if group >> k & 1 == 1 {
-                            *id = item.id;
-                        }
-                    }
-                }
-                if ns == 1 {
-                    for (dst, src) in [&mut *out.r, &mut *out.g, &mut *out.b]
-                        .into_iter()
-                        .zip(&rgb)
-                    {
-                        store_masked(lanes8_mut(dst, i0), V::load(src), lanes);
-                    }
-                    let ids = lanes8_mut(out.ids, i0);
-                    for (k, id) in ids.iter_mut().enumerate() {
-                        if lanes >> k & 1 == 1 {
-                            *id = lane_id[k];
-                        }
-                    }
-                    break;
-                }
-                for (s, pend) in pending.iter_mut().enumerate().take(ns) {
-                    let j0 = s * PLANE + i0;
-                    let mut same = 0u32;
-                    for (k, &t) in lanes8(vis.winner, j0).iter().enumerate() {
-                        same |= ((*pend >> k & 1 == 1 && t == win[k]) as u32) << k;
-                    }
-                    if same == 0 {
-                        continue;
-                    }
-                    *pend &= !same;
-                    for (dst, src) in [&mut *out.r, &mut *out.g, &mut *out.b]
-                        .into_iter()
-                        .zip(&rgb)
-                    {
-                        store_masked(lanes8_mut(dst, j0), V::load(src), same);
-                    }
-                    for (k, id) in lanes8_mut(out.ids, j0).iter_mut().enumerate() {
-                        if same >> k & 1 == 1 {
-                            *id = lane_id[k];
-                        }
-                    }
+            let (b1, b2) = (V::load(lanes8(vis.b1, i0)), V::load(lanes8(vis.b2, i0)));
+            let (rgb, lane_id) = shade_mixed::<V, TEX>(p, eye, &win, lanes, b1, b2);
+            for (dst, src) in [&mut *out.r, &mut *out.g, &mut *out.b]
+                .into_iter()
+                .zip(&rgb)
+            {
+                store_masked(lanes8_mut(dst, i0), V::load(src), lanes);
+            }
+            let ids = lanes8_mut(out.ids, i0);
+            for (k, id) in ids.iter_mut().enumerate() {
+                if lanes >> k & 1 == 1 {
+                    *id = lane_id[k];
                 }
             }
         }
     }
+}
+
+/// Colours and ids of the lanes of `lanes`, each showing triangle `win[k]`
+/// at weights (`b1`, `b2`): lit once per item (material + lights) among
+/// them. Lanes outside `lanes` are left zero.
+#[inline(always)]
+pub fn shade_mixed<V: V8, const TEX: bool>(
+    p: &Prepared,
+    eye: Vec3,
+    win: &[u32; 8],
+    lanes: u32,
+    b1: V,
+    b2: V,
+) -> ([[f32; 8]; 3], [u32; 8]) {
+    let mut rgb = [[0.0f32; 8]; 3];
+    let mut lane_id = [0u32; 8];
+    let mut todo = lanes;
+    while todo != 0 {
+        let item_ix = p.opaque[win[todo.trailing_zeros() as usize] as usize].item;
+        let mut group = 0u32;
+        for (k, &t) in win.iter().enumerate() {
+            if todo >> k & 1 == 1 && p.opaque[t as usize].item == item_ix {
+                group |= 1 << k;
+            }
+        }
+        todo &= !group;
+        let item = &p.items[item_ix as usize];
+        let c = shade_group::<V, TEX>(p, item, eye, win, group, b1, b2);
+        for (dst, v) in rgb.iter_mut().zip(c) {
+            store_masked(dst, v, group);
+        }
+        for (k, id) in lane_id.iter_mut().enumerate() {
+            if group >> k & 1 == 1 {
+                *id = item.id;
+            }
+        }
+    }
+    (rgb, lane_id)
 }
 
 /// The next distinct triangle among the lanes of `rest` and the mask of
@@ -411,32 +341,6 @@ fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
     (!p.items[item as usize].unlit).then_some(item)
 }
 
-/// Whether every sample plane shows, in the sixteen pixels at `i0`, the
-/// triangles of the first plane.
-#[inline(always)]
-fn samples_agree(winner: &[u32], i0: usize, ns: usize) -> bool {
-    let first = &winner[i0..i0 + 16];
-    (1..ns).all(|s| &winner[s * PLANE + i0..s * PLANE + i0 + 16] == first)
-}
-
-/// Copies the colours and ids of the sixteen pixels at `i0` from the first
-/// sample plane to the other `ns − 1`.
-#[inline(always)]
-fn copy_to_samples(out: &mut Shaded, i0: usize, ns: usize) {
-    // Fixed-size copies through arrays (`copy_within` becomes a `memmove`
-    // call per row of sixteen).
-    for c in [&mut *out.r, &mut *out.g, &mut *out.b] {
-        let v: [f32; 16] = c[i0..i0 + 16].try_into().expect("16 lanes");
-        for s in 1..ns {
-            c[s * PLANE + i0..s * PLANE + i0 + 16].copy_from_slice(&v);
-        }
-    }
-    let v: [u32; 16] = out.ids[i0..i0 + 16].try_into().expect("16 lanes");
-    for s in 1..ns {
-        out.ids[s * PLANE + i0..s * PLANE + i0 + 16].copy_from_slice(&v);
-    }
-}
-
 /// Shades the sixteen pixels at `i0` (one row, two blocks) that all show
 /// the lit `item` (see [`pair_item`]): attributes and texture coordinates
 /// per block, then the shading sequence once over both as a [`Pair`] —
@@ -541,7 +445,7 @@ mod tests {
     use super::*;
     use crate::render::clip::ATTRS;
     use crate::render::prepare::{planes, SUBPIXEL};
-    use crate::render::simd::Lanes;
+    use crate::render::simd::{Lanes, Sse8};
 
     /// Screen positions, 1/w and texture coordinates of three vertices.
     type Corners = ([(f32, f32); 3], [f32; 3], [[f32; 2]; 3]);

@@ -15,6 +15,7 @@
 //! primitives in scene order, so the bytes never depend on the thread count.
 
 mod background;
+pub mod band_trace;
 pub mod bench_scenes;
 mod clip;
 mod coin_bounds;
@@ -22,11 +23,14 @@ mod fragment;
 mod frame;
 mod geometry;
 pub mod job;
+mod label;
 mod lanes;
 mod log2_lanes;
 mod prepare;
 mod raster;
+mod samples;
 mod shade;
+mod shading;
 mod simd;
 pub mod stages;
 mod surface;
@@ -180,43 +184,59 @@ fn draw(
     // to right straight into its rows of the frame.
     let band = raster::TILE_H as usize * w as usize;
     let background = opts.background;
-    frame
+    let clock = band_trace::frame_start();
+    let bands = frame
         .color
         .par_chunks_mut(band)
         .zip(frame.depth.par_chunks_mut(band))
         .zip(frame.ids.par_chunks_mut(band))
-        .enumerate()
-        .for_each(|(ty, ((color, depth), ids))| {
-            let ty = ty as i32;
-            // Tile buffers are kept per worker thread between bands and
-            // frames (all their contents are reset or overwritten per tile).
-            thread_local! {
-                static SCRATCH: std::cell::RefCell<Option<raster::Scratch>> =
-                    const { std::cell::RefCell::new(None) };
-            }
-            let mut scratch = SCRATCH
-                .with(|s| s.borrow_mut().take())
-                .filter(|s| s.samples() == opts.samples())
-                .unwrap_or_else(|| raster::Scratch::new(opts.samples()));
-            let mut target = raster::Target {
-                color,
-                depth,
-                ids,
-                stride: w as usize,
-                y0: ty * raster::TILE_H,
-            };
-            for tx in 0..tiles_x {
-                let rect = [
-                    tx * raster::TILE,
-                    ty * raster::TILE_H,
-                    ((tx + 1) * raster::TILE).min(w),
-                    ((ty + 1) * raster::TILE_H).min(h),
-                ];
-                let bin = &bins[(ty * tiles_x + tx) as usize];
-                raster::draw_tile(p, bin, rect, background, eye, &mut scratch, &mut target);
-            }
-            SCRATCH.with(|s| *s.borrow_mut() = Some(scratch));
-        });
+        .enumerate();
+    /// A band's index and its rows of the colour, depth and id buffers.
+    type Band<'a> = (usize, ((&'a mut [u32], &'a mut [f32]), &'a mut [u32]));
+    let draw_band = |(ty, ((color, depth), ids)): Band| {
+        let started = clock.map(|_| std::time::Instant::now());
+        let ty = ty as i32;
+        // Tile buffers are kept per worker thread between bands and
+        // frames (all their contents are reset or overwritten per tile).
+        thread_local! {
+            static SCRATCH: std::cell::RefCell<Option<raster::Scratch>> =
+                const { std::cell::RefCell::new(None) };
+        }
+        let mut scratch = SCRATCH
+            .with(|s| s.borrow_mut().take())
+            .filter(|s| s.samples() == opts.samples())
+            .unwrap_or_else(|| raster::Scratch::new(opts.samples()));
+        let mut target = raster::Target {
+            color,
+            depth,
+            ids,
+            stride: w as usize,
+            y0: ty * raster::TILE_H,
+        };
+        for tx in 0..tiles_x {
+            let rect = [
+                tx * raster::TILE,
+                ty * raster::TILE_H,
+                ((tx + 1) * raster::TILE).min(w),
+                ((ty + 1) * raster::TILE_H).min(h),
+            ];
+            let bin = &bins[(ty * tiles_x + tx) as usize];
+            raster::draw_tile(p, bin, rect, background, eye, &mut scratch, &mut target);
+        }
+        SCRATCH.with(|s| *s.borrow_mut() = Some(scratch));
+        if let (Some(frame), Some(started)) = (clock, started) {
+            band_trace::band_done(frame, started);
+        }
+    };
+    if band_trace::coarse() {
+        bands.for_each(draw_band);
+    } else {
+        // One band per job: a thread that runs out of work takes the next
+        // single band, so the threads finish within one band of each other
+        // (rayon's default split hands out runs of up to six consecutive
+        // bands, and the last run decided when the frame was done).
+        bands.with_max_len(1).for_each(draw_band);
+    }
 }
 
 /// Bins the prepared primitives into the `TILE`×`TILE_H` tiles of a `w`×`h` frame

@@ -6,6 +6,7 @@
 use super::background::Painter;
 use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::geometry::Geometry;
+use super::label::label_matrix;
 use super::shade::{ShadeMaterial, WorldLight};
 use super::texture::Sampler;
 use super::{RenderOptions, View};
@@ -86,6 +87,44 @@ pub struct Tri {
 }
 
 impl Tri {
+    /// Twice the signed area in SUBPIXEL² units (positive: see [`Tri`]).
+    #[inline]
+    pub fn area(&self) -> i64 {
+        (self.x[1] - self.x[0]) * (self.y[2] - self.y[0])
+            - (self.y[1] - self.y[0]) * (self.x[2] - self.x[0])
+    }
+
+    /// The edge function opposite vertex `k` at the fixed-point point
+    /// (`px`, `py`), biased by the top-left rule (a point exactly on an
+    /// edge is inside only for a top or a left edge: for this orientation
+    /// horizontal going right, or going up), and its steps per pixel in x
+    /// and y. Exact integers, so the rasteriser stepping it across a tile
+    /// and a lone evaluation at one sample agree to the bit.
+    #[inline]
+    pub fn edge(&self, k: usize, px: i64, py: i64) -> (i64, i64, i64) {
+        let (a, b) = ((k + 1) % 3, (k + 2) % 3);
+        let (dx, dy) = (self.x[b] - self.x[a], self.y[b] - self.y[a]);
+        let top_left = (dy == 0 && dx > 0) || dy < 0;
+        let bias = if top_left { 0 } else { -1 };
+        let e = dx * (py - self.y[a]) - dy * (px - self.x[a]) + bias;
+        (e, -dy * SUBPIXEL, dx * SUBPIXEL)
+    }
+
+    /// The screen-space weights of vertices 1 and 2 at the sample `off`
+    /// (SUBPIXEL units from the centre) of pixel (`x`, `y`): the very bits
+    /// the depth pass computes there (`edge as f32 · (1 / area as f32)`),
+    /// for samples whose weights it does not keep.
+    #[inline]
+    pub fn weights_at(&self, x: i32, y: i32, off: (i64, i64)) -> (f32, f32) {
+        let px = x as i64 * SUBPIXEL + SUBPIXEL / 2 + off.0;
+        let py = y as i64 * SUBPIXEL + SUBPIXEL / 2 + off.1;
+        let inv_area = 1.0 / self.area() as f32;
+        (
+            self.edge(1, px, py).0 as f32 * inv_area,
+            self.edge(2, px, py).0 as f32 * inv_area,
+        )
+    }
+
     /// Perspective-correct attributes at screen-space weights b1, b2 (the
     /// same arithmetic as the shading pass, one lane).
     #[inline]
@@ -236,7 +275,14 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             .get(shape.material.0 as usize)
             .or_else(|| scene.materials.get(shape.material.0 as usize))
             .unwrap_or(&default_material);
-        let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        let mut world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        // An Inventor Text2 faces the viewer at a constant pixel size.
+        if let Some(t) = mesh.text.as_deref().filter(|t| t.units_per_pixel > 0.0) {
+            match label_matrix(world, view, opts.height, t.units_per_pixel) {
+                Some(m) => world = m,
+                None => continue,
+            }
+        }
         // Morphed/skinned shapes draw the pose's deformed vertices.
         let geo = Geometry::of(mesh, pose, node_id, world);
 

@@ -6,9 +6,11 @@
 //! picture stays the same.
 
 use super::clip::ATTRS;
-use super::fragment::{self, store_masked, Pass, Shaded, Visible, NONE};
+use super::fragment::{store_masked, Leftover, Pass, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
+use super::samples;
 use super::shade::shade;
+use super::shading;
 use super::simd::{self, Lanes, Sse8, V8};
 use super::surface;
 use glam::Vec3;
@@ -73,9 +75,11 @@ pub fn sample_offsets(samples: usize) -> &'static [(i64, i64)] {
 
 /// Per-thread working buffers for one tile: every per-sample buffer holds
 /// `samples` planes of `TILE`×`TILE_H` (sample-major), reused from tile to
-/// tile. Depth and winner are reset for every tile; the shading pass writes
-/// every colour and id; barycentrics are read only where the depth pass
-/// wrote them. So reuse never changes a picture.
+/// tile; the barycentrics one plane (the first sample's). Depth and winner
+/// are reset for every tile; the shading pass writes every colour and id
+/// (of a `flat` block, the first plane's) and every `flat` mark;
+/// barycentrics are read only where the depth pass wrote them. So reuse
+/// never changes a picture.
 pub struct Scratch {
     samples: usize,
     r: Vec<f32>,
@@ -90,12 +94,24 @@ pub struct Scratch {
     /// samples it covers and the weights at the first of them.
     cover: Vec<u8>,
     cover_b: Vec<[f32; 2]>,
+    /// Per block of eight pixels under multisampling: kept in the first
+    /// sample plane only (see `samples`).
+    flat: Vec<bool>,
+    /// The shading pass's queue of triangles showing only at later samples.
+    queue: Vec<Leftover>,
 }
 
 impl Scratch {
     /// Samples per pixel these buffers hold.
     pub fn samples(&self) -> usize {
         self.samples
+    }
+
+    /// The shading pass's `flat` marks of the tile's blocks (see
+    /// `samples`), which the resolve reads: the per-stage benchmarks keep
+    /// each tile's between the shading and the resolve stages.
+    pub fn flat_mut(&mut self) -> &mut [bool] {
+        &mut self.flat
     }
 
     pub fn new(samples: usize) -> Scratch {
@@ -108,10 +124,12 @@ impl Scratch {
             depth: vec![1.0; n],
             ids: vec![0; n],
             winner: vec![NONE; n],
-            b1: vec![0.0; n],
-            b2: vec![0.0; n],
+            b1: vec![0.0; PLANE],
+            b2: vec![0.0; PLANE],
             cover: vec![0; if samples > 1 { PLANE } else { 0 }],
             cover_b: vec![[0.0; 2]; if samples > 1 { PLANE } else { 0 }],
+            flat: vec![false; PLANE / 8],
+            queue: Vec::new(),
         }
     }
 }
@@ -148,23 +166,13 @@ impl Edges {
         let mut step_x = [0; 3];
         let mut step_y = [0; 3];
         for k in 0..3 {
-            let (a, b) = ((k + 1) % 3, (k + 2) % 3);
-            let (dx, dy) = (t.x[b] - t.x[a], t.y[b] - t.y[a]);
-            // Top-left rule: pixels exactly on an edge belong to the triangle
-            // only if the edge is a top or a left edge (for this orientation:
-            // horizontal going right, or going up).
-            let top_left = (dy == 0 && dx > 0) || dy < 0;
-            let bias = if top_left { 0 } else { -1 };
-            row[k] = dx * (py - t.y[a]) - dy * (px - t.x[a]) + bias;
-            step_x[k] = -dy * SUBPIXEL;
-            step_y[k] = dx * SUBPIXEL;
+            (row[k], step_x[k], step_y[k]) = t.edge(k, px, py);
         }
-        let area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
         Edges {
             row,
             step_x,
             step_y,
-            inv_area: 1.0 / area as f32,
+            inv_area: 1.0 / t.area() as f32,
         }
     }
 }
@@ -210,7 +218,9 @@ pub fn for_each_pixel_at(
     }
 }
 
-/// The depth pass's buffers, `TILE` pixels per row.
+/// The depth pass's buffers, `TILE` pixels per row; the weights only for
+/// the first sample (`b1`, `b2` are empty for the others: the shading pass
+/// recomputes the few it needs there, `Tri::weights_at`).
 struct DepthBufs<'a> {
     depth: &'a mut [f32],
     winner: &'a mut [u32],
@@ -221,21 +231,28 @@ struct DepthBufs<'a> {
 /// Keeps, per pixel of the tile, the nearest opaque triangle of `bin` (the
 /// first one on ties) with its depth and barycentric weights.
 /// `off` is the sample position (SUBPIXEL units from the pixel centre).
-fn depth_pass(p: &Prepared, bin: &Bin, rect: Rect, off: (i64, i64), bufs: &mut DepthBufs) {
+/// `W`: whether to keep the weights (the first sample).
+fn depth_pass<const W: bool>(
+    p: &Prepared,
+    bin: &Bin,
+    rect: Rect,
+    off: (i64, i64),
+    bufs: &mut DepthBufs,
+) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { depth_pass_avx(p, bin, rect, off, bufs) };
+        unsafe { depth_pass_avx::<W>(p, bin, rect, off, bufs) };
         return;
     }
     for &ti in &bin.opaque {
-        depth_triangle::<Sse8>(&p.opaque[ti as usize], ti, rect, off, bufs);
+        depth_triangle::<Sse8, W>(&p.opaque[ti as usize], ti, rect, off, bufs);
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn depth_pass_avx(
+unsafe fn depth_pass_avx<const W: bool>(
     p: &Prepared,
     bin: &Bin,
     rect: Rect,
@@ -243,7 +260,7 @@ unsafe fn depth_pass_avx(
     bufs: &mut DepthBufs,
 ) {
     for &ti in &bin.opaque {
-        depth_triangle::<simd::Avx8>(&p.opaque[ti as usize], ti, rect, off, bufs);
+        depth_triangle::<simd::Avx8, W>(&p.opaque[ti as usize], ti, rect, off, bufs);
     }
 }
 
@@ -254,7 +271,13 @@ unsafe fn depth_pass_avx(
 /// Weights and depth are computed exactly as [`for_each_pixel`] does, per
 /// pixel, so the blocks change no bit.
 #[inline(always)]
-fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &mut DepthBufs) {
+fn depth_triangle<V: V8, const W: bool>(
+    t: &Tri,
+    ti: u32,
+    rect: Rect,
+    off: (i64, i64),
+    bufs: &mut DepthBufs,
+) {
     let x0 = t.bbox[0].max(rect[0]);
     let y0 = t.bbox[1].max(rect[1]);
     let x1 = t.bbox[2].min(rect[2]);
@@ -271,8 +294,10 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
             if z < bufs.depth[i] && z >= 0.0 {
                 bufs.depth[i] = z;
                 bufs.winner[i] = ti;
-                bufs.b1[i] = w1;
-                bufs.b2[i] = w2;
+                if W {
+                    bufs.b1[i] = w1;
+                    bufs.b2[i] = w2;
+                }
             }
         });
         return;
@@ -341,12 +366,14 @@ fn depth_triangle<V: V8>(t: &Tri, ti: u32, rect: Rect, off: (i64, i64), bufs: &m
                     let m = nearer.bits();
                     if m != 0 {
                         store_masked(depth, z, m);
-                        let b1: &mut [f32; 8] =
-                            (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
-                        store_masked(b1, w1, m);
-                        let b2: &mut [f32; 8] =
-                            (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
-                        store_masked(b2, w2, m);
+                        if W {
+                            let b1: &mut [f32; 8] =
+                                (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                            store_masked(b1, w1, m);
+                            let b2: &mut [f32; 8] =
+                                (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                            store_masked(b2, w2, m);
+                        }
                         for (l, w) in bufs.winner[i0..i0 + 8].iter_mut().enumerate() {
                             if m >> l & 1 == 1 {
                                 *w = ti;
@@ -426,18 +453,17 @@ pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch) {
     winner.fill(NONE);
     for (s, &off) in sample_offsets(ns).iter().enumerate() {
         let plane = s * PLANE..(s + 1) * PLANE;
-        depth_pass(
-            p,
-            bin,
-            rect,
-            off,
-            &mut DepthBufs {
-                depth: &mut depth[plane.clone()],
-                winner: &mut winner[plane.clone()],
-                b1: &mut b1[plane.clone()],
-                b2: &mut b2[plane],
-            },
-        );
+        let mut bufs = DepthBufs {
+            depth: &mut depth[plane.clone()],
+            winner: &mut winner[plane],
+            b1: &mut b1[..if s == 0 { PLANE } else { 0 }],
+            b2: &mut b2[..if s == 0 { PLANE } else { 0 }],
+        };
+        if s == 0 {
+            depth_pass::<true>(p, bin, rect, off, &mut bufs);
+        } else {
+            depth_pass::<false>(p, bin, rect, off, &mut bufs);
+        }
     }
 }
 
@@ -462,6 +488,8 @@ pub fn shade_tile(
         winner,
         b1,
         b2,
+        flat,
+        queue,
         ..
     } = scratch;
     let pass = Pass {
@@ -469,8 +497,10 @@ pub fn shade_tile(
         eye,
         background,
         size: (tw, th, ns),
+        origin: (rect[0], rect[1]),
+        offsets: sample_offsets(ns),
     };
-    fragment::shade_visible(
+    shading::shade_visible(
         &pass,
         &Visible {
             winner,
@@ -478,7 +508,14 @@ pub fn shade_tile(
             b2,
             textured: bin.textured,
         },
-        &mut Shaded { r, g, b, ids },
+        &mut Shaded {
+            r,
+            g,
+            b,
+            ids,
+            flat,
+            queue,
+        },
     );
     if let Some(sky) = &p.sky {
         for s in 0..ns {
@@ -503,6 +540,12 @@ pub fn draw_tile(
     depth_tile(p, bin, rect, scratch);
     shade_tile(p, bin, rect, background, eye, scratch);
     let ns = scratch.samples;
+    if ns > 1 && !(bin.lines.is_empty() && bin.points.is_empty() && bin.transparent.is_empty()) {
+        let Scratch {
+            r, g, b, ids, flat, ..
+        } = scratch;
+        samples::spread_flat([r, g, b], ids, flat, ns);
+    }
     let offsets = sample_offsets(ns);
     let at = |x: i32, y: i32| (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
     let Scratch {
@@ -679,6 +722,7 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
         b,
         depth,
         ids,
+        flat,
         ..
     } = scratch;
     let inv = 1.0 / ns as f32;
@@ -712,13 +756,28 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
             let mut acc = [Sse8::splat(0.0); 3];
             let mut zmin = [f32::INFINITY; 8];
             let mut id = [0u32; 8];
+            if flat[(src + k) / 8] {
+                // Kept in the first plane only (see `samples`): the same
+                // sum, of the first plane `ns` times, and its ids.
+                let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
+                let c = [ld(r), ld(g), ld(b)];
+                for _ in 0..ns {
+                    for (a, c) in acc.iter_mut().zip(c) {
+                        *a = *a + c;
+                    }
+                }
+                id.copy_from_slice(&ids[src + k..src + k + 8]);
+            }
             for s in 0..ns {
                 let j = s * PLANE + src + k;
-                for (a, c) in acc.iter_mut().zip([r, g, b]) {
-                    *a = *a + Sse8::load(c[j..j + 8].try_into().expect("8"));
-                }
                 for (z, d) in zmin.iter_mut().zip(&depth[j..j + 8]) {
                     *z = z.min(*d);
+                }
+                if flat[(src + k) / 8] {
+                    continue;
+                }
+                for (a, c) in acc.iter_mut().zip([r, g, b]) {
+                    *a = *a + Sse8::load(c[j..j + 8].try_into().expect("8"));
                 }
                 for (i, d) in id.iter_mut().zip(&ids[j..j + 8]) {
                     *i = if *i == 0 { *d } else { *i };
@@ -978,6 +1037,22 @@ mod tests {
             proptest::prop_assert!(other.iter().all(|&h| h <= 1));
             proptest::prop_assert_eq!(one, other);
         }
+    }
+
+    /// The shading pass recomputes the weights of samples the depth pass
+    /// keeps none for: they must be its very bits, at every sample.
+    #[test]
+    fn weights_at_a_sample_are_the_stepped_edges_bits() {
+        let t = tri([(2.3, 1.7), (61.1, 9.45), (11.6, 30.9)]);
+        let mut checked = 0;
+        for &off in sample_offsets(4).iter().chain(sample_offsets(8)) {
+            for_each_pixel_at(&t, [0, 0, 64, 32], off, |x, y, w1, w2| {
+                let (v1, v2) = t.weights_at(x, y, off);
+                assert_eq!((v1.to_bits(), v2.to_bits()), (w1.to_bits(), w2.to_bits()));
+                checked += 1;
+            });
+        }
+        assert!(checked > 12 * 500);
     }
 
     #[test]

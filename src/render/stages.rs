@@ -24,6 +24,10 @@ pub struct Stages {
     view: View,
     scratch: Scratch,
     frame: Frame,
+    /// Each tile's `flat` marks from the last shading stage, for the
+    /// resolve (under multisampling it resolves flat blocks from their
+    /// first sample plane only).
+    flats: Vec<Vec<bool>>,
 }
 
 impl Stages {
@@ -38,6 +42,7 @@ impl Stages {
             view: *view,
             scratch: Scratch::new(opts.samples()),
             frame: Frame::new(opts.width, opts.height, opts.background),
+            flats: Vec::new(),
         };
         s.setup(scene, pose);
         s
@@ -78,7 +83,9 @@ impl Stages {
     /// The depth pass and the shading pass of every tile.
     pub fn raster_and_shade(&mut self) {
         let (bg, eye) = (self.opts.background, self.view.eye);
-        for (rect, bin) in self.tiles() {
+        let tiles = self.tiles();
+        self.flats.resize(tiles.len(), Vec::new());
+        for (k, (rect, bin)) in tiles.into_iter().enumerate() {
             raster::depth_tile(&self.prepared, &self.bins[bin], rect, &mut self.scratch);
             raster::shade_tile(
                 &self.prepared,
@@ -88,14 +95,21 @@ impl Stages {
                 eye,
                 &mut self.scratch,
             );
+            let flat = &mut self.flats[k];
+            flat.clear();
+            flat.extend_from_slice(self.scratch.flat_mut());
         }
     }
 
     /// The resolve of every tile (from whatever the tile buffers hold: the
-    /// cost does not depend on the values).
+    /// cost does not depend on the values, only on each tile's `flat` marks,
+    /// which are the tile's own after [`Stages::raster_and_shade`]).
     pub fn resolve(&mut self) {
         let stride = self.opts.width as usize;
-        for (rect, _) in self.tiles() {
+        for (k, (rect, _)) in self.tiles().into_iter().enumerate() {
+            if let Some(flat) = self.flats.get(k) {
+                self.scratch.flat_mut().copy_from_slice(flat);
+            }
             let y0 = rect[1];
             let from = y0 as usize * stride;
             let to = (rect[3] as usize * stride).min(self.frame.color.len());
