@@ -57,6 +57,40 @@ fn script_errors_name_the_line_and_column() {
 }
 
 #[test]
+fn the_status_line_says_which_file_was_opened() {
+    // `animed edit FILE` used to start with an empty status line.
+    let scene = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/editor_stage.wrl");
+    let run = |text: &str| {
+        let script = tmp("opened.txt");
+        std::fs::write(&script, text).unwrap();
+        let o = animed()
+            .arg("edit")
+            .arg(&scene)
+            .arg("--script")
+            .arg(&script)
+            .env("XDG_STATE_HOME", tmp("opened-state"))
+            .output()
+            .unwrap();
+        (
+            o.status.code(),
+            String::from_utf8_lossy(&o.stderr).to_string(),
+            script,
+        )
+    };
+    let opened = format!("expect-status Opened {}\n", scene.display());
+    let (code, err, _) = run(&opened);
+    assert_eq!(code, Some(0), "{err}");
+    // The check can fail: after a key the status says something else.
+    let (code, err, script) = run("key g\nexpect-status Saved\n");
+    assert_eq!(code, Some(1));
+    assert!(
+        err.contains(&format!("{}:2:1: the status line says", script.display()))
+            && err.contains("not 'Saved'"),
+        "{err}"
+    );
+}
+
+#[test]
 fn a_missing_scene_file_is_an_error_not_a_panic() {
     let o = animed()
         .args(["edit", "/nonexistent/scene.wrl", "--screenshot"])

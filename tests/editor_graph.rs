@@ -214,6 +214,18 @@ fn a_tilt_of_the_handle_biases_gently() {
     assert!(b.abs() > 0.1 && b.abs() < 0.5, "a gentle tilt: {b}");
 }
 
+/// Moving the animated Ball with a handle (record off) leaves a change not
+/// yet keyed; editing its keys in the graph drops it, as editing them in
+/// the key strip or the key panel does (one rule for every part).
+#[test]
+fn a_key_drag_in_the_graph_drops_a_change_not_yet_keyed() {
+    let mut ed = graph_on_ball();
+    run(&mut ed, "drag-handle x 30 0");
+    assert!(ed.pending().is_some(), "{}", ed.status().text);
+    run(&mut ed, "drag-curve-key translation.y 24 0 -20");
+    assert!(ed.pending().is_none());
+}
+
 #[test]
 fn alt_on_the_handle_sets_continuity() {
     let mut ed = graph_on_ball();

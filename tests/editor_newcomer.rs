@@ -231,6 +231,175 @@ fn selecting_never_moves_the_viewport_or_the_side_panel() {
     }
 }
 
+/// A named thing in the side panel and its rect (x, y, w, h).
+type Spot = (String, (i32, i32, i32, i32));
+
+/// How many of `spots` are named `name`.
+fn count(spots: &[Spot], name: &str) -> usize {
+    spots.iter().filter(|(n, _)| n == name).count()
+}
+
+/// Where the side panel's fixed things are: the list headers, the
+/// add-light buttons and every visible list row.
+fn side_spots(ed: &Editor) -> Vec<Spot> {
+    use animed::internals::editor::panel::WidgetKind;
+    let side = ed.layout().side;
+    ed.widgets()
+        .into_iter()
+        .filter(|w| side.contains(w.rect.x as f32, w.rect.y as f32))
+        .filter_map(|w| {
+            let name = match &w.kind {
+                WidgetKind::Header(t) if t.starts_with("Objects") => "objects header".into(),
+                WidgetKind::Header(t) if t == "Lights" => "lights header".into(),
+                WidgetKind::Button { label, .. } if label.starts_with('+') => label.clone(),
+                WidgetKind::Row { list, .. } => format!("{list:?} row"),
+                _ => return None,
+            };
+            Some((name, (w.rect.x, w.rect.y, w.rect.w, w.rect.h)))
+        })
+        .collect()
+}
+
+#[test]
+fn the_side_panel_never_moves_when_selection_keys_or_lists_change() {
+    // Issue 17's first problem: the lights list and its +Pt/+Dir/+Spot
+    // buttons moved 16-48 px when the properties grew, so the next click
+    // landed on another row. In the tests' 480x320 window and a big one.
+    for big in [false, true] {
+        let mut ed = if big { big_stage() } else { stage() };
+        let start = side_spots(&ed);
+        assert!(count(&start, "Objects row") >= 2, "{start:?}");
+        assert!(count(&start, "Lights row") >= 2, "{start:?}");
+        let same = |ed: &Editor, step: &str| {
+            let now = side_spots(ed);
+            // Every thing shown at the start is still where it was (a
+            // list may show a row more, never one less or one moved).
+            for s in &start {
+                assert!(now.contains(s), "{step} (big {big}): {s:?} moved: {now:?}");
+            }
+        };
+        // Select the ball from the objects list.
+        let ball = node(&ed, "Ball");
+        let at = find(&ed, &format!("node: NodeId({})", ball.0));
+        click(&mut ed, at);
+        assert_eq!(ed.selection(), Some(ball));
+        same(&ed, "select the ball");
+        // Its first key: the properties gain the `Keys` line.
+        key(&mut ed, Key::Char('k'), Mods::NONE);
+        same(&ed, "first key");
+        // A second key, and the key panel for the first.
+        for _ in 0..12 {
+            key(&mut ed, Key::Right, Mods::NONE);
+        }
+        key(&mut ed, Key::Char('k'), Mods::NONE);
+        same(&ed, "second key");
+        let m = ed
+            .key_marker_at(animed::internals::editor::keystrip::Row::Summary, 0.0)
+            .expect("a key at frame 0");
+        click(&mut ed, m);
+        assert!(
+            ed.widgets()
+                .iter()
+                .any(|w| format!("{:?}", w.kind).contains("ShowNode")),
+            "the key panel is open"
+        );
+        same(&ed, "key panel");
+        // Two more lights (each selected as it comes), then nothing.
+        let at = find(&ed, "Button { label: \"+P");
+        click(&mut ed, at);
+        same(&ed, "add a point light");
+        let at = find(&ed, "Button { label: \"+S");
+        click(&mut ed, at);
+        same(&ed, "add a spot light");
+        key(&mut ed, Key::Escape, Mods::NONE);
+        same(&ed, "Esc");
+        // Rows that no longer fit scroll: the wheel over the lights list
+        // moves its rows, never its header or buttons.
+        let before = side_spots(&ed);
+        let lights = ed.side_panel().lights;
+        let at = ((lights.x + 20) as f32, (lights.bottom() - 4) as f32);
+        ed.handle(Event::Wheel {
+            delta: -1.0,
+            x: at.0,
+            y: at.1,
+            mods: Mods::NONE,
+        });
+        let now = side_spots(&ed);
+        for s in start.iter().filter(|(n, _)| !n.ends_with("row")) {
+            assert!(now.contains(s), "scrolled (big {big}): {s:?} moved");
+        }
+        let shown = count(&before, "Lights row");
+        assert_eq!(count(&now, "Lights row"), shown, "same rows shown");
+    }
+}
+
+#[test]
+fn the_properties_scroll_with_the_wheel_and_keep_their_header() {
+    use animed::internals::editor::panel::WidgetKind;
+    let mut ed = stage();
+    let ball = node(&ed, "Ball");
+    let at = find(&ed, &format!("node: NodeId({})", ball.0));
+    click(&mut ed, at);
+    let has = |ed: &Editor, needle: &str| {
+        ed.widgets()
+            .iter()
+            .any(|w| format!("{:?}", w.kind).contains(needle))
+    };
+    let header = |ed: &Editor| {
+        let top = ed.side_panel().props.y;
+        ed.widgets()
+            .into_iter()
+            .find(|w| matches!(&w.kind, WidgetKind::Header(_)) && w.rect.y == top)
+            .map(|w| (w.rect, format!("{:?}", w.kind)))
+    };
+    // 480x320: four rows show; the draw style row is below them.
+    assert!(has(&ed, "Field(Name)") && !has(&ed, "ObjectStyle"));
+    let top = header(&ed).expect("the properties header");
+    let props = ed.side_panel().props;
+    let over = ((props.x + 20) as f32, (props.bottom() - 4) as f32);
+    let mods = Mods::NONE;
+    ed.handle(Event::Wheel {
+        delta: -1.0,
+        x: over.0,
+        y: over.1,
+        mods,
+    });
+    assert!(has(&ed, "ObjectStyle"), "scrolled one row down");
+    assert!(!has(&ed, "Field(Name)"), "the first row scrolled away");
+    assert_eq!(header(&ed), Some(top), "the header stays");
+    // Scrolling stops at the last row and at the first.
+    for _ in 0..5 {
+        ed.handle(Event::Wheel {
+            delta: -1.0,
+            x: over.0,
+            y: over.1,
+            mods,
+        });
+    }
+    assert!(
+        has(&ed, "text: \"Keys\""),
+        "the last row (the ball's keys) shows"
+    );
+    ed.handle(Event::Wheel {
+        delta: 9.0,
+        x: over.0,
+        y: over.1,
+        mods,
+    });
+    assert!(has(&ed, "Field(Name)") && !has(&ed, "ObjectStyle"));
+    // Another selection starts at its first row.
+    ed.handle(Event::Wheel {
+        delta: -1.0,
+        x: over.0,
+        y: over.1,
+        mods,
+    });
+    let ground = node(&ed, "Ground");
+    let at = find(&ed, &format!("node: NodeId({})", ground.0));
+    click(&mut ed, at);
+    assert!(has(&ed, "Field(Name)"), "Ground's panel starts at the top");
+}
+
 #[test]
 fn the_key_strip_resizes_by_its_edge_and_scrolls_its_rows() {
     let mut ed = stage();

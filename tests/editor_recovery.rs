@@ -163,20 +163,12 @@ fn a_killed_session_is_recovered_and_saved() {
 }
 
 fn key(ed: &mut Editor, k: Key) {
-    shell::handle(
-        ed,
-        Event::KeyDown {
-            key: k,
-            mods: Mods::NONE,
-        },
-    );
-    shell::handle(
-        ed,
-        Event::KeyUp {
-            key: k,
-            mods: Mods::NONE,
-        },
-    );
+    key_with(ed, k, Mods::NONE);
+}
+
+fn key_with(ed: &mut Editor, key: Key, mods: Mods) {
+    shell::handle(ed, Event::KeyDown { key, mods });
+    shell::handle(ed, Event::KeyUp { key, mods });
 }
 
 /// `dir/scene.wrl` plus a newer recovery copy in which the first node
@@ -479,6 +471,51 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
     let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
     assert_eq!(ed.offer_untitled(&copies), 0);
     assert!(ed.dialog().is_none(), "nothing left to offer");
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// Recovered untitled work comes back with the view it was autosaved
+/// with (it came back framed tightly on its objects before), not a fresh
+/// view-all.
+#[test]
+fn recovered_untitled_work_comes_back_with_its_view() {
+    let d = dir("untitled-view");
+    let copies = d.join("animed");
+    let views = d.join("views");
+    let mut ed = Editor::new(Scene::new(), None, SIZE.0, SIZE.1);
+    ed.set_view_memory(Some(views.clone()));
+    assert_eq!(ed.offer_untitled(&copies), 0, "nothing to offer yet");
+    // A box, then the top view zoomed out: work and a view of its own.
+    key_with(&mut ed, Key::Char('a'), Mods::shift());
+    key(&mut ed, Key::Enter);
+    assert_eq!(object_count(ed.scene()), 1);
+    key(&mut ed, Key::Num(7));
+    for _ in 0..3 {
+        shell::handle(
+            &mut ed,
+            Event::Wheel {
+                delta: -1.0,
+                x: 100.0,
+                y: 100.0,
+                mods: Mods::NONE,
+            },
+        );
+    }
+    let seen = *ed.camera();
+    let copy = ed.autosave_now().expect("the copy is written");
+    // The next session recovers the copy.
+    let mut again = Editor::new(Scene::new(), None, SIZE.0, SIZE.1);
+    again.set_view_memory(Some(views.clone()));
+    again.offer_untitled(&copies);
+    assert_ne!(*again.camera(), seen);
+    again.recover_untitled(&copy);
+    assert_eq!(object_count(again.scene()), 1, "the work is back");
+    assert_eq!(*again.camera(), seen, "and the view it was seen with");
+    // Without a remembered view it is framed as before.
+    let mut plain = Editor::new(Scene::new(), None, SIZE.0, SIZE.1);
+    plain.offer_untitled(&copies);
+    plain.recover_untitled(&copy);
+    assert_ne!(*plain.camera(), seen);
     std::fs::remove_dir_all(&d).unwrap();
 }
 

@@ -111,7 +111,9 @@ fn near(a: Quat, b: Quat) -> bool {
 #[test]
 fn joints_are_listed_under_their_skeleton_and_picked_by_their_bones() {
     let (s, [tube, upper, lower, hand]) = arm();
-    let mut ed = Editor::new(s, None, W, H);
+    // Tall enough for the objects list to show the whole arm (it scrolls
+    // in a smaller window).
+    let mut ed = Editor::new(s, None, W, 600);
     // The object list: joints as a tree (each one deeper than its parent).
     let depth = |ed: &Editor, id: NodeId| {
         ed.widgets()

@@ -281,7 +281,7 @@ fn grid_style_and_playback_toggles() {
     );
     // Object style applies to the object's whole subtree.
     ed.select(Some(NodeId(0)));
-    let (x, y) = find(&ed, "ObjectStyle");
+    let (x, y) = find_scrolled(&mut ed, "ObjectStyle");
     click(&mut ed, x, y);
     assert_eq!(
         ed.scene().node(NodeId(1)).style,

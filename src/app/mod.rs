@@ -17,6 +17,9 @@ use std::time::{Duration, Instant};
 /// Poll interval while something moves (playback, drags) and when idle.
 const ACTIVE_POLL: Duration = Duration::from_millis(8);
 const IDLE_POLL: Duration = Duration::from_millis(20);
+/// Poll interval while a frame is being drawn (a quick click lasts
+/// 30-100 ms).
+const POLL_WHILE_DRAWING: Duration = Duration::from_millis(4);
 /// How long after the last input the loop stays in the fast poll.
 const ACTIVE_FOR: Duration = Duration::from_millis(500);
 /// Longest gap between `Tick`s for a screen that wants a clock (autosave).
@@ -57,7 +60,7 @@ impl minifb::InputCallback for Sink {
 
 /// Opens the window and runs the editor (or the viewer) until it quits or
 /// the window closes.
-pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
+pub fn run<S: Screen + Send>(mut ed: S) -> Result<(), String> {
     if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
         return Err(no_display("DISPLAY is not set"));
     }
@@ -65,17 +68,21 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
     let typed = Rc::new(RefCell::new(Typed::default()));
     let mut window =
         open_window("animed", (w as usize, h as usize), &typed).map_err(|e| no_display(&e))?;
-    let mut mods = Mods::NONE;
 
     let start = Instant::now();
     let mut frame = Frame::new(w, h, glam::Vec3::ZERO);
-    let mut size = (w as usize, h as usize);
-    let mut mouse = (-1.0f32, -1.0f32);
-    let mut buttons = [false; 3];
+    let mut input = Polled {
+        size: (w as usize, h as usize),
+        mouse: (-1.0, -1.0),
+        buttons: [false; 3],
+        mods: Mods::NONE,
+    };
     let mut last_input = Instant::now();
     let mut last_tick = Instant::now();
     let mut dirty = true;
     let mut title = String::from("animed");
+    // Input seen while a frame was drawn, handled before the next poll's.
+    let mut pending: Vec<Event> = Vec::new();
 
     while !ed.wants_quit() {
         if !window.is_open() {
@@ -85,75 +92,15 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
             if !ed.close_requested() {
                 break;
             }
-            match open_window(&title, size, &typed) {
+            match open_window(&title, input.size, &typed) {
                 Ok(win) => window = win,
                 Err(_) => break,
             }
-            (mods, buttons, dirty) = (Mods::NONE, [false; 3], true);
+            (input.mods, input.buttons, dirty) = (Mods::NONE, [false; 3], true);
             continue;
         }
-        let mut events = Vec::new();
-        let Typed { inputs } = std::mem::take(&mut *typed.borrow_mut());
-        // Modifier level as of the start of this batch, for mouse events.
-        let mouse_mods = mods;
-        let now_size = window.get_size();
-        if now_size != size && now_size.0 > 0 && now_size.1 > 0 {
-            size = now_size;
-            events.push(Event::Resize {
-                width: size.0 as u32,
-                height: size.1 as u32,
-            });
-        }
-        if let Some((x, y)) = window.get_mouse_pos(MouseMode::Pass) {
-            if (x, y) != mouse {
-                mouse = (x, y);
-                events.push(Event::MouseMove {
-                    x,
-                    y,
-                    mods: mouse_mods,
-                });
-            }
-        }
-        for (i, (mb, b)) in [
-            (minifb::MouseButton::Left, MouseButton::Left),
-            (minifb::MouseButton::Middle, MouseButton::Middle),
-            (minifb::MouseButton::Right, MouseButton::Right),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            let down = window.get_mouse_down(mb);
-            if down != buttons[i] {
-                buttons[i] = down;
-                let (x, y) = mouse;
-                events.push(if down {
-                    Event::MouseDown {
-                        button: b,
-                        x,
-                        y,
-                        mods: mouse_mods,
-                    }
-                } else {
-                    Event::MouseUp {
-                        button: b,
-                        x,
-                        y,
-                        mods: mouse_mods,
-                    }
-                });
-            }
-        }
-        if let Some((_, dy)) = window.get_scroll_wheel() {
-            if dy != 0.0 {
-                events.push(Event::Wheel {
-                    delta: dy.signum() * (dy.abs() / 3.0).clamp(1.0, 5.0),
-                    x: mouse.0,
-                    y: mouse.1,
-                    mods: mouse_mods,
-                });
-            }
-        }
-        typed_events(inputs, &mut mods, &mut events);
+        let mut events = std::mem::take(&mut pending);
+        input.poll(&window, &typed, &mut events);
         if !events.is_empty() {
             last_input = Instant::now();
         }
@@ -178,7 +125,19 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
             title = t;
         }
         if dirty {
-            ed.draw(&mut frame);
+            // The window is polled while the frame is drawn: minifb keeps
+            // only the buttons' state, so a click pressed and released
+            // within one slow frame would otherwise be lost.
+            std::thread::scope(|s| {
+                let drawing = s.spawn(|| ed.draw(&mut frame));
+                while !drawing.is_finished() {
+                    std::thread::sleep(POLL_WHILE_DRAWING);
+                    window.update();
+                    input.poll(&window, &typed, &mut pending);
+                }
+                drawing.join()
+            })
+            .map_err(|_| "drawing the frame failed".to_string())?;
             window
                 .update_with_buffer(&frame.color, frame.width as usize, frame.height as usize)
                 .map_err(|e| format!("cannot show the frame: {e}"))?;
@@ -195,6 +154,70 @@ pub fn run<S: Screen>(mut ed: S) -> Result<(), String> {
         eprintln!("animed: {msg}");
     }
     Ok(())
+}
+
+/// The window input as of the last poll, so each poll turns changes into
+/// events.
+struct Polled {
+    size: (usize, usize),
+    mouse: (f32, f32),
+    buttons: [bool; 3],
+    /// Modifier keys held, from the key callback's edges.
+    mods: Mods,
+}
+
+impl Polled {
+    /// Appends the events since the last poll: a resize, a mouse move,
+    /// button edges, the wheel, then the keys and text typed, in order.
+    fn poll(&mut self, window: &Window, typed: &Rc<RefCell<Typed>>, events: &mut Vec<Event>) {
+        let Typed { inputs } = std::mem::take(&mut *typed.borrow_mut());
+        // Modifier level as of the start of this batch, for mouse events.
+        let mods = self.mods;
+        let now_size = window.get_size();
+        if now_size != self.size && now_size.0 > 0 && now_size.1 > 0 {
+            self.size = now_size;
+            events.push(Event::Resize {
+                width: now_size.0 as u32,
+                height: now_size.1 as u32,
+            });
+        }
+        if let Some((x, y)) = window.get_mouse_pos(MouseMode::Pass) {
+            if (x, y) != self.mouse {
+                self.mouse = (x, y);
+                events.push(Event::MouseMove { x, y, mods });
+            }
+        }
+        for (i, (mb, button)) in [
+            (minifb::MouseButton::Left, MouseButton::Left),
+            (minifb::MouseButton::Middle, MouseButton::Middle),
+            (minifb::MouseButton::Right, MouseButton::Right),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let down = window.get_mouse_down(mb);
+            if down != self.buttons[i] {
+                self.buttons[i] = down;
+                let (x, y) = self.mouse;
+                events.push(if down {
+                    Event::MouseDown { button, x, y, mods }
+                } else {
+                    Event::MouseUp { button, x, y, mods }
+                });
+            }
+        }
+        if let Some((_, dy)) = window.get_scroll_wheel() {
+            if dy != 0.0 {
+                events.push(Event::Wheel {
+                    delta: dy.signum() * (dy.abs() / 3.0).clamp(1.0, 5.0),
+                    x: self.mouse.0,
+                    y: self.mouse.1,
+                    mods,
+                });
+            }
+        }
+        typed_events(inputs, &mut self.mods, events);
+    }
 }
 
 /// The key and text events of one poll's `inputs`, in the order they were

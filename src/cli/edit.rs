@@ -73,6 +73,7 @@ fn make_editor(file: Option<&PathBuf>, (w, h): (u32, u32)) -> Result<Editor, Str
             let mut ed = Editor::new(loaded.scene, Some(path.clone()), w, h);
             // A save onto the file checks nobody changed it since.
             ed.set_disk_stamp(stamp);
+            ed.say_opened(path, loaded.warnings.len());
             // A crash left newer work beside the file: ask.
             ed.check_recovery();
             Ok(ed)

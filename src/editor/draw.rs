@@ -15,8 +15,8 @@ impl Editor {
     /// Draws the editor into `frame`, resizing it to the editor's size.
     pub fn draw(&mut self, frame: &mut Frame) {
         self.graph_follow();
-        if frame.width != self.width || frame.height != self.height {
-            *frame = Frame::new(self.width, self.height, Vec3::ZERO);
+        if frame.width != self.split.width || frame.height != self.split.height {
+            *frame = Frame::new(self.split.width, self.split.height, Vec3::ZERO);
         }
         let l = self.layout();
         self.update_layer();
@@ -41,7 +41,7 @@ impl Editor {
 
     /// Draws into a new frame of the editor's size.
     pub fn render_frame(&mut self) -> Frame {
-        let mut f = Frame::new(self.width, self.height, Vec3::ZERO);
+        let mut f = Frame::new(self.split.width, self.split.height, Vec3::ZERO);
         self.draw(&mut f);
         f
     }
@@ -110,6 +110,7 @@ impl Editor {
             self.draw_widget(p, w);
         }
         self.draw_material_extras(p);
+        self.draw_side(p);
         if let Drag::RowMove {
             node, moved: true, ..
         } = &self.drag
@@ -260,7 +261,7 @@ impl Editor {
             f += minor;
         }
         p.fill_rect(Rect::new(r.x, base, r.w, 1), theme::BORDER);
-        match self.graph_shown {
+        match self.split.graph {
             true => self.draw_graph(p, l),
             false => self.draw_key_strip(p),
         }
@@ -279,7 +280,7 @@ impl Editor {
                 cx,
                 r.y,
                 1,
-                l.ruler.h + if self.graph_shown { 0 } else { l.key_rows.h },
+                l.ruler.h + if self.split.graph { 0 } else { l.key_rows.h },
             ),
             theme::CURSOR,
         );
@@ -299,7 +300,7 @@ impl Editor {
     /// preview range's ends on the ruler.
     fn draw_time_shading(&self, p: &mut Painter, l: &Layout, span: (f32, f32)) {
         let (x0, x1) = l.ruler_span();
-        let rows_h = if self.graph_shown { 0 } else { l.key_rows.h };
+        let rows_h = if self.split.graph { 0 } else { l.key_rows.h };
         let (y, h) = (l.ruler.y, l.ruler.h + rows_h);
         let x_of = |f: f32| l.frame_to_x_in(f, span).clamp(x0, x1);
         let shade = |p: &mut Painter, a: f32, b: f32, alpha: u8| {

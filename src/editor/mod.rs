@@ -52,6 +52,8 @@ mod screen;
 pub mod script;
 pub mod search;
 pub mod shell;
+pub mod side_ui;
+mod split;
 mod strip_tips;
 pub mod timeline;
 pub mod tooltip;
@@ -155,16 +157,9 @@ pub struct Editor {
     key_panel: keypanel::KeyPanel,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
-    /// The graph editor (taken out while it handles an event).
+    /// The graph editor (taken out while it handles an event; created
+    /// when first shown).
     graph: Option<Box<graph::GraphEditor>>,
-    /// It is shown, in the key strip's place.
-    graph_shown: bool,
-    /// Its height (the split with the viewport).
-    graph_height: i32,
-    /// The key strip's height once the user dragged the timeline's top
-    /// edge (`None`: `ui::layout::default_strip_h`). Never follows the
-    /// selection, so selecting does not move the panels.
-    strip_height: Option<i32>,
     /// The strip's zoom/pan and the preview range.
     timeline: timeline::Timeline,
     show_grid: bool,
@@ -172,8 +167,8 @@ pub struct Editor {
     /// Anti-aliasing samples per pixel of the viewport (1, 4, 8); the
     /// window uses 4, headless sessions 1 (see `set_aa`).
     aa: u32,
-    width: u32,
-    height: u32,
+    /// The window's size and split (graph or key strip, dragged heights).
+    split: split::Split,
     mouse: (f32, f32),
     drag: gesture::Drag,
     edit: Option<TextEdit>,
@@ -191,10 +186,8 @@ pub struct Editor {
     quit: bool,
     /// The F1 key reference is shown.
     help: bool,
-    /// First visible row of the objects and lights lists.
-    scroll: [usize; 2],
-    /// The selection the lists were last scrolled to show.
-    revealed: Option<NodeId>,
+    /// How far the side panel's lists and properties are scrolled.
+    side: side_ui::Side,
     /// Where the file browser starts when no file is open and what `~/`
     /// stands for: the shell says (`set_start_dir`, `set_home`).
     places: browser::Places,
@@ -239,15 +232,11 @@ impl Editor {
             key_panel: keypanel::KeyPanel::default(),
             onion: onion::Onion::default(),
             graph: None,
-            graph_shown: false,
-            graph_height: 140,
-            strip_height: None,
             timeline: timeline::Timeline::default(),
             show_grid: true,
             view_style: None,
             aa: 1,
-            width: width.max(1),
-            height: height.max(1),
+            split: split::Split::new(width, height),
             mouse: (-1.0, -1.0),
             drag: gesture::Drag::None,
             edit: None,
@@ -260,8 +249,7 @@ impl Editor {
             status: Status::default(),
             quit: false,
             help: false,
-            scroll: [0, 0],
-            revealed: None,
+            side: side_ui::Side::default(),
             // The shell passes the working directory and $HOME.
             places: browser::Places::default(),
             pose: None,
@@ -330,7 +318,7 @@ impl Editor {
         &self.camera
     }
     pub fn size(&self) -> (u32, u32) {
-        (self.width, self.height)
+        (self.split.width, self.split.height)
     }
     pub fn status(&self) -> &Status {
         &self.status
@@ -378,14 +366,7 @@ impl Editor {
 
     /// Layout of the current window.
     pub fn layout(&self) -> Layout {
-        let (w, h) = (self.width as i32, self.height as i32);
-        match self.graph_shown {
-            true => Layout::with_graph(w, h, self.graph_height),
-            false => {
-                let sh = self.strip_height;
-                Layout::with_strip(w, h, sh.unwrap_or(crate::ui::layout::default_strip_h(h)))
-            }
-        }
+        self.split.layout()
     }
 
     /// Where the file browser starts when no file is open (`animed edit`
@@ -505,7 +486,7 @@ impl Editor {
         self.frame = 0.0;
         self.playback = None;
         self.edit = None;
-        self.scroll = [0, 0];
+        self.side = side_ui::Side::default();
         self.scene_rev += 1;
         self.reset_recovery();
         self.frame_all();

@@ -93,6 +93,8 @@ pub enum Step {
     KeyMarker(super::keystrip::Row, f32, Option<f32>, Mods),
     /// A side panel field by its `FieldId` debug name.
     ClickField(String),
+    /// Fails unless the status line holds this text (scripted checks).
+    ExpectStatus(String),
     /// A node by name, through its list row.
     Select(String),
     /// A handle of the current tool by name, dragged by (dx, dy) pixels.
@@ -128,6 +130,17 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
         // `type` keeps its text verbatim (a '#' in it is text).
         if cmd == "type" {
             out.push((line, Step::Type(rest.to_string())));
+            continue;
+        }
+        if cmd == "expect-status" {
+            let text = rest.trim();
+            if text.is_empty() {
+                return Err(err(
+                    indent + cmd.len() + 2,
+                    "'expect-status' needs the text the status line should hold".into(),
+                ));
+            }
+            out.push((line, Step::ExpectStatus(text.to_string())));
             continue;
         }
         let rest = rest.split('#').next().unwrap_or("");
@@ -301,7 +314,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
                 return Err(err(
                     indent + 1,
                     format!(
-                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field, select, drag-handle, click-curve-key, drag-curve-key, drag-curve-handle)"
+                        "unknown command '{cmd}' (key, type, click, drag, move, wheel, wait-frames, sleep-ms, resize, screenshot, click-key, drag-key, click-field, select, drag-handle, click-curve-key, drag-curve-key, drag-curve-handle, expect-status)"
                     ),
                 ))
             }
@@ -414,6 +427,12 @@ impl Runner {
             }
             Step::Type(t) => {
                 feed(ed, Event::Text(t.clone()));
+            }
+            Step::ExpectStatus(t) => {
+                let now = &ed.status().text;
+                if !now.contains(t.as_str()) {
+                    return Err(format!("the status line says '{now}', not '{t}'"));
+                }
             }
             Step::Move(x, y) => self.move_to(ed, *x, *y, Mods::NONE),
             Step::Click(x, y, button, mods) => {
@@ -535,10 +554,10 @@ impl Runner {
                 self.step(ed, &step)?;
             }
             Step::ClickField(name) => {
+                // A field scrolled out of the properties is scrolled in
+                // first, as a user would with the wheel.
                 let w = ed
-                    .widgets()
-                    .into_iter()
-                    .find(|w| match &w.kind {
+                    .reveal_widget(|w| match &w.kind {
                         super::panel::WidgetKind::Field(id) => {
                             format!("{id:?}").eq_ignore_ascii_case(name)
                         }
@@ -625,7 +644,7 @@ mod tests {
 
     #[test]
     fn parses_every_command() {
-        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\nscreenshot out/a.png\nsleep-ms 5\n";
+        let s = "# header\nkey ctrl+shift+s\ntype a #b\nclick 1 2\ndrag 1 2 3 4 alt+left # orbit\nmove 5 6\nwheel -2\nwheel 1 10 20\nwait-frames 3\nresize 320 240\nscreenshot out/a.png\nsleep-ms 5\nexpect-status  Opened a b.wrl \n";
         let steps = parse(s, Path::new("t.txt")).unwrap();
         let kinds: Vec<Step> = steps.into_iter().map(|(_, s)| s).collect();
         assert_eq!(
@@ -654,6 +673,9 @@ mod tests {
         assert_eq!(kinds[8], Step::Resize(320, 240));
         assert_eq!(kinds[9], Step::Screenshot(PathBuf::from("out/a.png")));
         assert_eq!(kinds[10], Step::SleepMs(5));
+        assert_eq!(kinds[11], Step::ExpectStatus("Opened a b.wrl".into()));
+        let e = parse("key a\n  expect-status\n", Path::new("t.txt")).unwrap_err();
+        assert_eq!((e.line, e.column), (2, 17), "{e}");
     }
 
     #[test]

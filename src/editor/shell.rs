@@ -253,6 +253,10 @@ impl Editor {
         let path = self
             .recovery_file()
             .ok_or("no state folder for a copy of untitled work")?;
+        if self.path().is_none() {
+            // Untitled work's view, remembered by its copy (as the clock's).
+            self.remember_view_as(path.clone());
+        }
         let out = autosave(self, path, AutosaveWhy::Now);
         perform(self);
         out

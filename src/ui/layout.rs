@@ -145,18 +145,31 @@ pub struct SidePanel {
 }
 
 impl SidePanel {
-    /// Splits `side` so the selection's `prop_rows` rows fit and the two
-    /// lists share what is left in proportion to their `rows` (each keeps
-    /// its header and at least one row).
-    pub fn new(side: Rect, prop_rows: i32, rows: [usize; 2]) -> SidePanel {
+    /// Body rows the properties section keeps at most: the key panel with
+    /// four selected keys (its tallest state) fits whole.
+    pub const PROP_ROWS: i32 = 11;
+    /// Rows each list keeps below its header while the panel has room.
+    pub const LIST_ROWS: i32 = 2;
+
+    /// Splits `side` by its height alone, so no section ever moves or
+    /// resizes when the selection, its keys or a list's length change
+    /// (issue 17: a click must land where the user aimed). Each list keeps
+    /// its header and `LIST_ROWS` rows, the properties get the rest up to
+    /// half the rows and at most `PROP_ROWS` body rows, and what the
+    /// properties leave goes to the lists, objects 3 : lights 2. Every
+    /// section scrolls what overflows.
+    pub fn new(side: Rect) -> SidePanel {
         let (scene, rest) = side.take_top(2 * ROW + 2);
-        let min_lists = 2 * (2 * ROW);
-        let props_h = ((prop_rows + 1) * ROW + 2).min((rest.h - min_lists).max(ROW));
+        let rows = rest.h / ROW;
+        let lists_min = 2 * (1 + Self::LIST_ROWS);
+        let prop_rows = (rows - lists_min - 1)
+            .min(rows / 2)
+            .clamp(1, Self::PROP_ROWS);
+        // Header, rows, and the body's two pixels of inset.
+        let props_h = ((prop_rows + 1) * ROW + 2).min(rest.h);
         let (lists, props) = rest.take_top(rest.h - props_h);
-        let free_rows = ((lists.h - 2 * ROW) / ROW).max(2);
-        let (a, b) = (rows[0].max(1) as i32, rows[1].max(1) as i32);
-        let obj_rows = (free_rows * a + (a + b) / 2) / (a + b);
-        let obj_rows = obj_rows.clamp(1, (free_rows - 1).max(1));
+        let free_rows = (lists.h / ROW - 2).max(2);
+        let obj_rows = ((free_rows * 3 + 2) / 5).clamp(1, (free_rows - 1).max(1));
         let obj_h = ((obj_rows + 1) * ROW).min(lists.h);
         let (objects, lights) = lists.take_top(obj_h);
         SidePanel {
@@ -165,6 +178,11 @@ impl SidePanel {
             lights,
             props,
         }
+    }
+
+    /// Body rows of the properties section that show.
+    pub fn prop_rows_shown(&self) -> i32 {
+        ((self.props.h - ROW) / ROW).max(0)
     }
 }
 
@@ -183,9 +201,31 @@ mod tests {
                 l.viewport.w > l.side.w,
                 "{w}x{h}: viewport is the main area"
             );
-            let s = SidePanel::new(l.side, 5, [6, 3]);
+            let s = SidePanel::new(l.side);
             assert!(s.objects.h >= 2 * ROW && s.lights.h >= 2 * ROW);
             assert_eq!(s.scene.h + s.objects.h + s.lights.h + s.props.h, l.side.h);
+        }
+    }
+
+    #[test]
+    fn lists_keep_two_rows_and_properties_their_share_from_the_height_alone() {
+        // The tests' window: both lists keep a header and two rows.
+        let s = SidePanel::new(Layout::with_strip(480, 320, default_strip_h(320)).side);
+        assert!(s.objects.h >= 3 * ROW, "objects {:?}", s.objects);
+        assert!(s.lights.h >= 3 * ROW, "lights {:?}", s.lights);
+        assert_eq!(s.prop_rows_shown(), 4);
+        // A tall window: the properties keep their most, the lists share
+        // the rest 3 : 2.
+        let s = SidePanel::new(Layout::with_strip(1024, 640, default_strip_h(640)).side);
+        assert_eq!(s.prop_rows_shown(), SidePanel::PROP_ROWS);
+        assert!(s.objects.h > s.lights.h && s.lights.h >= 6 * ROW);
+        // Sections follow each other with no gap, whatever the height.
+        for h in (0..600).step_by(7) {
+            let s = SidePanel::new(Rect::new(300, 22, 160, h));
+            assert_eq!(s.objects.y, s.scene.bottom());
+            assert_eq!(s.lights.y, s.objects.bottom());
+            assert_eq!(s.props.y, s.lights.bottom());
+            assert_eq!(s.props.bottom(), 22 + h);
         }
     }
 

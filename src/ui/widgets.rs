@@ -120,3 +120,18 @@ pub fn diamond(p: &mut Painter, c: (f32, f32), r: f32, color: u32) {
     ];
     p.fill_polygon(&pts, color, 255);
 }
+
+/// A thin scroll bar at the right edge of `track` when `total` rows do not
+/// fit: its thumb shows which `shown` rows from `first` are in view, so a
+/// section that scrolls says so.
+pub fn scroll_bar(p: &mut Painter, track: Rect, first: usize, shown: usize, total: usize) {
+    if total <= shown || shown == 0 || track.h < 4 {
+        return;
+    }
+    let x = track.right() - 2;
+    p.fill_rect(Rect::new(x, track.y, 2, track.h), theme::PANEL_DARK);
+    let h = ((track.h as usize * shown) / total).max(3) as i32;
+    let room = track.h - h;
+    let y = track.y + (room as usize * first / (total - shown)) as i32;
+    p.fill_rect(Rect::new(x, y, 2, h), theme::TEXT_DIM);
+}

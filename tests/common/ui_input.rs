@@ -89,9 +89,40 @@ pub fn find(ed: &Editor, needle: &str) -> (f32, f32) {
     )
 }
 
+/// Centre of the widget whose debug text contains `needle`, scrolling the
+/// side panel's properties with the wheel (as a user would) until it shows.
+pub fn find_scrolled(ed: &mut Editor, needle: &str) -> (f32, f32) {
+    let props = ed.side_panel().props;
+    let (x, y) = ((props.x + props.w / 2) as f32, (props.bottom() - 4) as f32);
+    let mods = Mods::NONE;
+    if !ed
+        .widgets()
+        .iter()
+        .any(|w| format!("{:?}", w.kind).contains(needle))
+    {
+        // From the first row down.
+        for _ in 0..3 {
+            let delta = 10.0;
+            shell::handle(ed, Event::Wheel { delta, x, y, mods });
+        }
+    }
+    for _ in 0..32 {
+        if ed
+            .widgets()
+            .iter()
+            .any(|w| format!("{:?}", w.kind).contains(needle))
+        {
+            return find(ed, needle);
+        }
+        let delta = -1.0;
+        shell::handle(ed, Event::Wheel { delta, x, y, mods });
+    }
+    panic!("no widget {needle}, even scrolled")
+}
+
 /// Types `text` into the field whose debug name contains `field`.
 pub fn type_into(ed: &mut Editor, field: &str, text: &str) {
-    let at = find(ed, field);
+    let at = find_scrolled(ed, field);
     click(ed, at);
     assert!(ed.text_edit().is_some(), "{field} starts typing");
     shell::handle(ed, Event::Text(text.into()));

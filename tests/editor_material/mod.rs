@@ -347,6 +347,10 @@ fn an_emissive_map_is_named_in_the_panel() {
         .expect("a shape with the emissive map");
     ed.select(Some(shape));
     run(&mut ed, "key m");
+    // The panel's last row: the wheel over the properties brings it in.
+    let props = ed.side_panel().props;
+    let over = (props.x + props.w / 2, props.bottom() - 4);
+    run(&mut ed, &format!("wheel -4 {} {}", over.0, over.1));
     assert!(has(&ed, "Emissive map: "), "{:?}", shown(&ed));
     // A material without one has no such row.
     let plain = (0..ed.scene().nodes.len() as u32)
@@ -357,6 +361,8 @@ fn an_emissive_map_is_named_in_the_panel() {
         });
     if let Some(p) = plain {
         ed.select(Some(p));
+        run(&mut ed, &format!("wheel -4 {} {}", over.0, over.1));
+        assert!(has(&ed, "Texture"), "scrolled to the panel's end");
         assert!(!has(&ed, "Emissive map: "));
     }
 }

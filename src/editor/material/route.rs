@@ -556,22 +556,25 @@ impl Editor {
         let Some(sh) = self.material_panel() else {
             return;
         };
-        let props = self.side_panel().props;
-        let l = rows(props);
+        // Laid out like the widgets: in the scrolled rows, drawn where
+        // they show.
+        let (props, tall) = self.props_view();
+        let l = rows(tall);
         let Some(m) = self.shown_material(sh.material) else {
             return;
         };
         let bottom = props.bottom() + 1;
+        let top = props.y + ROW;
         for (i, c) in [m.diffuse, m.specular, m.emissive].into_iter().enumerate() {
             let r = l.rows[1 + i];
-            if r.bottom() <= bottom {
+            if r.y >= top && r.bottom() <= bottom {
                 let s = Rect::new(r.x + 3 * CHAR_W + 3, r.y + 4, 8, 8);
                 p.fill_rect(s, super::swatch(c));
                 p.stroke_rect(s.inset(-1), theme::BORDER);
             }
         }
         let t = l.thumb;
-        if t.bottom() > bottom {
+        if t.y < top || t.bottom() > bottom {
             return;
         }
         let img = m.texture.as_ref().and_then(|tx| self.scene.image(tx.image));

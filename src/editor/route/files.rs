@@ -49,6 +49,16 @@ impl Editor {
         }
     }
 
+    /// Says on the status line which file is open and how many warnings
+    /// reading it gave (`animed edit FILE` says it too).
+    pub fn say_opened(&mut self, path: &Path, warnings: usize) {
+        let msg = match warnings {
+            0 => format!("Opened {}", path.display()),
+            n => format!("Opened {} ({n} warnings)", path.display()),
+        };
+        self.set_status(&msg, false);
+    }
+
     /// The shell read `path` for opening: show it in place of the scene.
     pub fn open_done(&mut self, path: &Path, read: Read) -> Result<(), String> {
         let r = read.map(|(scene, n, stamp)| {
@@ -56,11 +66,7 @@ impl Editor {
             self.disk_stamp = stamp;
             self.through = None;
             self.recall_view();
-            let msg = match n {
-                0 => format!("Opened {}", path.display()),
-                _ => format!("Opened {} ({n} warnings)", path.display()),
-            };
-            self.set_status(&msg, false);
+            self.say_opened(path, n);
             self.requests.push(Request::FindRecovery {
                 scene: path.to_path_buf(),
             });

@@ -11,21 +11,21 @@ use crate::ui::{Layout, Painter};
 impl Editor {
     /// The graph editor is shown (in the key strip's place).
     pub fn graph_open(&self) -> bool {
-        self.graph_shown
+        self.split.graph
     }
 
     /// The graph editor's state, while it is shown.
     pub fn graph(&self) -> Option<&GraphEditor> {
-        self.graph.as_deref().filter(|_| self.graph_shown)
+        self.graph.as_deref().filter(|_| self.split.graph)
     }
 
     /// Shows or hides the graph editor (toolbar `Graph`, Shift+F6). Hidden,
     /// it keeps its view and channel switches.
     pub fn toggle_graph(&mut self) {
-        self.graph_shown = !self.graph_shown;
+        self.split.graph = !self.split.graph;
         if self.graph.is_none() {
             let mut g = Box::<GraphEditor>::default();
-            g.height = self.graph_height;
+            g.height = self.split.graph_h;
             self.graph = Some(g);
         }
         self.graph_follow();
@@ -43,7 +43,7 @@ impl Editor {
 
     /// Frames a newly selected object's curves.
     pub(in crate::internals::editor) fn graph_follow(&mut self) {
-        if !self.graph_shown {
+        if !self.split.graph {
             return;
         }
         if let Some(mut g) = self.graph.take() {
@@ -54,7 +54,7 @@ impl Editor {
 
     /// Offers `ev` to the graph: `Some(redraw)` when it took it.
     pub(in crate::internals::editor) fn graph_event(&mut self, ev: &Event) -> Option<bool> {
-        if !self.graph_shown {
+        if !self.split.graph {
             return None;
         }
         let mut g = self.graph.take()?;
@@ -74,7 +74,7 @@ impl Editor {
             (false, true) => self.drag = Drag::None,
             _ => {}
         }
-        self.graph_height = g.height;
+        self.split.graph_h = g.height;
         self.graph = Some(g);
         self.apply_response(r)
     }

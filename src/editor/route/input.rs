@@ -52,12 +52,7 @@ impl Editor {
             return redraw;
         }
         match ev {
-            Event::Resize { width, height } => {
-                let changed = (width.max(1), height.max(1)) != (self.width, self.height);
-                self.width = width.max(1);
-                self.height = height.max(1);
-                changed
-            }
+            Event::Resize { width, height } => self.split.resize(width, height),
             Event::Tick { time } => self.tick(time),
             Event::MouseMove { x, y, mods } => {
                 let tip_gone = self.hover_move(x, y);
@@ -233,10 +228,7 @@ impl Editor {
                 true
             }
             Drag::StripResize { y0, h0 } => {
-                let (w, h) = (self.width as i32, self.height as i32);
-                let want = h0 + (y0 - y).round() as i32;
-                // Kept to what the layout allows, so the edge follows the mouse.
-                self.strip_height = Some(crate::ui::Layout::with_strip(w, h, want).key_rows.h);
+                self.split.drag_strip(h0 + (y0 - y).round() as i32);
                 true
             }
         }
@@ -261,14 +253,14 @@ impl Editor {
             return;
         }
         let l = self.layout();
-        if self.graph_shown && l.key_rows.contains(x, y) {
+        if self.split.graph && l.key_rows.contains(x, y) {
             // A drag it starts becomes the gesture (`graph_event`).
             self.commit_edit();
             self.graph_event(&Event::MouseDown { button, x, y, mods });
             return;
         }
         let edge = l.timeline.y as f32;
-        if !self.graph_shown && button == MouseButton::Left && (y - edge).abs() <= 2.5 {
+        if !self.split.graph && button == MouseButton::Left && (y - edge).abs() <= 2.5 {
             // The timeline's top edge: resize the key strip.
             self.commit_edit();
             self.drag = Drag::StripResize {
@@ -457,7 +449,7 @@ impl Editor {
             return false;
         }
         let l = self.layout();
-        if self.graph_shown && l.key_rows.contains(x, y) {
+        if self.split.graph && l.key_rows.contains(x, y) {
             let ev = Event::Wheel { delta, x, y, mods };
             return self.graph_event(&ev).unwrap_or(false);
         }
@@ -465,24 +457,8 @@ impl Editor {
             self.camera.zoom(delta);
             return true;
         }
-        let sp = self.side_panel();
-        for (i, r) in [sp.objects, sp.lights].into_iter().enumerate() {
-            if r.contains(x, y) {
-                let n = if i == 0 {
-                    ops::objects(&self.scene).len()
-                } else {
-                    ops::lights(&self.scene).len()
-                };
-                let cap = Self::list_capacity(r);
-                let max = n.saturating_sub(cap);
-                let s = &mut self.scroll[i];
-                *s = if delta > 0.0 {
-                    s.saturating_sub(1)
-                } else {
-                    (*s + 1).min(max)
-                };
-                return true;
-            }
+        if let Some(redraw) = self.side_event(&Event::Wheel { delta, x, y, mods }) {
+            return redraw;
         }
         // Over the key rows the wheel scrolls rows that overflow (Ctrl:
         // zooms); elsewhere on the ruler and strip it zooms the frames.

@@ -14,7 +14,10 @@ impl Editor {
     pub(in crate::internals::editor) fn apply_response(&mut self, r: Response) -> Option<bool> {
         for i in r.intents {
             match i {
+                // Keys edited (strip, graph, key panel): a change not yet
+                // keyed is dropped, whichever part edits them.
                 Intent::Preview(after) => {
+                    self.pending = None;
                     let before = Box::new(self.scene.animation.clone());
                     self.preview(&Command::SetAnimation {
                         before,
@@ -26,6 +29,7 @@ impl Editor {
                     before,
                     after,
                 } => {
+                    self.pending = None;
                     self.scene.animation = after.clone();
                     self.push_applied(
                         &label,

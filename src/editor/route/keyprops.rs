@@ -4,7 +4,7 @@
 //! key strip and graph editor.
 
 use crate::anim::Animation;
-use crate::editor::component::{Intent, Response};
+use crate::editor::component::Response;
 use crate::editor::fields::FieldId;
 use crate::editor::keypanel::{KeyEvent, KeyPanelCtx};
 use crate::editor::keyprops::{KeyAction, KeyField};
@@ -23,17 +23,12 @@ impl Editor {
         }
     }
 
-    /// Hands `ev` to the key panel and applies its answer (a key edit drops
-    /// a change not yet keyed, as every key edit does). Whether it was the
-    /// panel's.
+    /// Hands `ev` to the key panel and applies its answer. Whether it was
+    /// the panel's.
     fn key_panel_event(&mut self, ev: KeyEvent) -> bool {
         let mut panel = self.key_panel;
         let r: Response = panel.handle(ev, &self.key_panel_ctx());
         self.key_panel = panel;
-        let edits = |i: &Intent| matches!(i, Intent::Preview(_) | Intent::Commit { .. });
-        if r.intents.iter().any(edits) {
-            self.pending = None;
-        }
         self.apply_response(r).is_some()
     }
 

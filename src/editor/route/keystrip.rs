@@ -2,7 +2,6 @@
 //! context it sees, routing events to it and applying what it returns,
 //! the key selection's memory across undo, and the strip's key commands.
 
-use crate::editor::component::Intent;
 use crate::editor::gesture::Drag;
 use crate::editor::keyedit::copy;
 #[allow(unused_imports)]
@@ -25,9 +24,6 @@ impl Editor {
         self.keys.selected = keys;
         self.remember_key_selection();
         self.key_panel.node_shown = false;
-        // The properties section changes size: show the selection's row
-        // in the lists again.
-        self.revealed = None;
     }
 
     /// Notes the key selection for the current animation (nothing for an
@@ -162,10 +158,6 @@ impl Editor {
             (true, false) => self.drag = Drag::Keys,
             (false, true) => self.drag = Drag::None,
             _ => {}
-        }
-        if r.intents.iter().any(|i| matches!(i, Intent::Preview(_))) {
-            // Keys moving: a change not yet keyed is dropped.
-            self.pending = None;
         }
         self.apply_response(r)
     }

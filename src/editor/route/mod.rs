@@ -18,5 +18,6 @@ mod onion;
 mod panel;
 mod record;
 mod recovery;
+mod side;
 mod timeline;
 mod views;

@@ -1,15 +1,17 @@
-//! The editor's side of `panel`: routes events to it and applies what it returns.
+//! The editor's side of `panel`: the main window's widgets (toolbar, the
+//! scene section, the properties' faces the side panel places, the bottom
+//! bar) and finding the widget under the mouse.
 
 use crate::editor::browser::Browser;
 use crate::editor::fields::FieldId;
-use crate::editor::ops::{self, NewLight};
+use crate::editor::ops;
 #[allow(unused_imports)]
 use crate::editor::panel::*;
 use crate::editor::{Editor, Mode};
-use crate::scene::{LightKind, NodeId, NodeKind};
+use crate::scene::{LightKind, NodeKind};
 use crate::ui::layout::{CONTROLS_H, ROW};
 use crate::ui::text::{self, CHAR_W};
-use crate::ui::{Rect, SidePanel};
+use crate::ui::Rect;
 
 impl Editor {
     /// Property rows the selection needs (for the side panel split).
@@ -25,63 +27,13 @@ impl Editor {
         }
     }
 
-    pub fn side_panel(&self) -> SidePanel {
-        SidePanel::new(
-            self.layout().side,
-            self.section_rows(),
-            [
-                ops::objects(&self.scene).len(),
-                ops::lights(&self.scene).len(),
-            ],
-        )
-    }
-
-    /// Scrolls the objects and lights lists so the selection's row shows.
-    pub(in crate::internals::editor) fn reveal_selection(&mut self) {
-        let Some(sel) = self.selection else { return };
-        if self.revealed == Some(sel) {
-            return;
-        }
-        self.revealed = Some(sel);
-        let sp = self.side_panel();
-        let lists: [(Vec<NodeId>, Rect); 2] = [
-            (
-                ops::objects(&self.scene)
-                    .into_iter()
-                    .map(|(id, _)| id)
-                    .collect(),
-                sp.objects,
-            ),
-            (ops::lights(&self.scene), sp.lights),
-        ];
-        for (i, (ids, r)) in lists.iter().enumerate() {
-            if let Some(pos) = ids.iter().position(|&id| id == sel) {
-                let cap = Self::list_capacity(*r).max(1);
-                let s = &mut self.scroll[i];
-                if pos < *s {
-                    *s = pos;
-                } else if pos >= *s + cap {
-                    *s = pos + 1 - cap;
-                }
-            }
-        }
-    }
-
-    /// Visible rows of a list section.
-    pub(in crate::internals::editor) fn list_capacity(r: Rect) -> usize {
-        ((r.h - ROW).max(0) / ROW) as usize
-    }
-
     /// All widgets of the main window (not the modal ones).
     pub fn widgets(&self) -> Vec<Widget> {
         let l = self.layout();
         let mut out = Vec::new();
         self.toolbar_widgets(l.toolbar, &mut out);
-        let sp = self.side_panel();
-        self.scene_widgets(sp.scene, &mut out);
-        self.list_widgets(sp.objects, List::Objects, &mut out);
-        self.list_widgets(sp.lights, List::Lights, &mut out);
-        self.prop_widgets(sp.props, &mut out);
+        self.scene_widgets(self.side_panel().scene, &mut out);
+        self.side_widgets(&mut out);
         self.controls_widgets(l.controls, &mut out);
         out
     }
@@ -153,100 +105,6 @@ impl Editor {
             4 * CHAR_W,
             &[FieldId::Duration],
         );
-    }
-
-    pub(in crate::internals::editor) fn list_widgets(
-        &self,
-        r: Rect,
-        list: List,
-        out: &mut Vec<Widget>,
-    ) {
-        let (h, body) = r.take_top(ROW);
-        let rows: Vec<(NodeId, usize)> = match list {
-            List::Objects => ops::objects(&self.scene),
-            List::Lights => ops::lights(&self.scene)
-                .into_iter()
-                .map(|id| (id, 0))
-                .collect(),
-        };
-        let title = match list {
-            List::Objects => format!("Objects ({})", rows.len()),
-            List::Lights => "Lights".to_string(),
-        };
-        out.push(w(h, WidgetKind::Header(title)));
-        if list == List::Lights {
-            // Add-light buttons at the right of the header; one-letter
-            // labels when the panel is narrow.
-            let long = [
-                ("+Spot", NewLight::Spot),
-                ("+Pt", NewLight::Point),
-                ("+Dir", NewLight::Directional),
-            ];
-            let short = [
-                ("+S", NewLight::Spot),
-                ("+P", NewLight::Point),
-                ("+D", NewLight::Directional),
-            ];
-            let need: i32 = long.iter().map(|(l, _)| text::width(l) + 5).sum();
-            let items = if h.w - text::width("Lights") - 8 >= need {
-                long
-            } else {
-                short
-            };
-            let mut x = h.right() - 2;
-            for (label, which) in items {
-                let bw = text::width(label) + 4;
-                x -= bw;
-                out.push(button(
-                    Rect::new(x, h.y + 1, bw, h.h - 2),
-                    label,
-                    Action::AddLight(which),
-                    false,
-                ));
-                x -= 1;
-            }
-        }
-        let cap = Self::list_capacity(r);
-        let idx = if list == List::Objects { 0 } else { 1 };
-        let first = self.scroll[idx].min(rows.len().saturating_sub(cap));
-        for (i, (id, depth)) in rows.iter().skip(first).take(cap).enumerate() {
-            let rr = Rect::new(body.x, body.y + i as i32 * ROW, body.w, ROW);
-            if list == List::Lights {
-                let (main, chk) = rr.take_left(rr.w - ROW - 2);
-                out.push(w(
-                    main,
-                    WidgetKind::Row {
-                        node: *id,
-                        depth: *depth,
-                        list,
-                    },
-                ));
-                let on = self.scene.node(*id).light().is_some_and(|l| l.on);
-                out.push(w(
-                    chk,
-                    WidgetKind::Check {
-                        action: Action::ToggleLight(*id),
-                        on,
-                    },
-                ));
-            } else {
-                out.push(w(
-                    rr,
-                    WidgetKind::Row {
-                        node: *id,
-                        depth: *depth,
-                        list,
-                    },
-                ));
-            }
-        }
-        if rows.is_empty() && body.h >= ROW {
-            out.push(label(
-                Rect::new(body.x + 4, body.y, body.w - 4, ROW),
-                "(none)",
-                true,
-            ));
-        }
     }
 
     pub(in crate::internals::editor) fn prop_widgets(&self, r: Rect, out: &mut Vec<Widget>) {

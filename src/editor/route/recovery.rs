@@ -90,6 +90,11 @@ impl Editor {
         let Some(path) = self.recovery_file() else {
             return false;
         };
+        if self.path.is_none() {
+            // Untitled work has no file to remember its view by: its copy
+            // is the key, so recovered work comes back as it was seen.
+            self.remember_view_as(path.clone());
+        }
         self.requests.push(Request::Autosave {
             path,
             why: AutosaveWhy::Clock,
@@ -269,6 +274,8 @@ impl Editor {
             },
         );
         self.frame_all();
+        // The view the work was last autosaved with, if remembered.
+        self.recall_view_of(copy.clone());
         // After `replace_scene`'s removal of this session's old copy.
         self.requests.push(Request::TakeOver { copy, mine });
         self.set_status(

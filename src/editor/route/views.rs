@@ -100,7 +100,14 @@ impl Editor {
     /// Asks for the remembered view of the open file, if any (the shell
     /// reads the memory and answers with `view_recalled`).
     pub(in crate::internals::editor) fn recall_view(&mut self) {
-        let (Some(mem), Some(key)) = (self.view_memory.clone(), self.view_key()) else {
+        if let Some(key) = self.view_key() {
+            self.recall_view_of(key);
+        }
+    }
+
+    /// Asks for the view remembered under `key`.
+    pub(in crate::internals::editor) fn recall_view_of(&mut self, key: PathBuf) {
+        let Some(mem) = self.view_memory.clone() else {
             return;
         };
         self.requests.push(Request::RecallView { memory: mem, key });
@@ -108,7 +115,16 @@ impl Editor {
 
     /// Asks to remember the view for the open file (after saves, at quit).
     pub fn remember_view(&mut self) {
-        let (Some(mem), Some(key)) = (self.view_memory.clone(), self.view_key()) else {
+        if let Some(key) = self.view_key() {
+            self.remember_view_as(key);
+        }
+    }
+
+    /// Asks to remember the view under `key` (a file's absolute path;
+    /// untitled work's recovery copy, so recovered work comes back as it
+    /// was seen).
+    pub(in crate::internals::editor) fn remember_view_as(&mut self, key: PathBuf) {
+        let Some(mem) = self.view_memory.clone() else {
             return;
         };
         let memo = Memo {
