@@ -374,9 +374,17 @@ fn depth_triangle<V: V8, const W: bool>(
                                 (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
                             store_masked(b2, w2, m);
                         }
-                        for (l, w) in bufs.winner[i0..i0 + 8].iter_mut().enumerate() {
-                            if m >> l & 1 == 1 {
-                                *w = ti;
+                        let winner: &mut [u32; 8] =
+                            (&mut bufs.winner[i0..i0 + 8]).try_into().expect("8 lanes");
+                        if m == 0xFF {
+                            // Covered and nearer in all eight (inside a
+                            // triangle): one store, not eight tests.
+                            *winner = [ti; 8];
+                        } else {
+                            for (l, w) in winner.iter_mut().enumerate() {
+                                if m >> l & 1 == 1 {
+                                    *w = ti;
+                                }
                             }
                         }
                     }
