@@ -408,7 +408,7 @@ fn uv_in<V: V8>(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V, s: V) ->
     let mut first = true;
     while rest != 0 {
         let (t, mask) = next_tri(p, win, &mut rest);
-        let g = t.gradients();
+        let g = t.grad;
         let vals = [
             plane(t, A_UV, b1, b2),
             plane(t, A_UV + 1, b1, b2),
@@ -446,6 +446,7 @@ mod tests {
     use crate::render::clip::ATTRS;
     use crate::render::prepare::{planes, SUBPIXEL};
     use crate::render::simd::{Lanes, Sse8};
+    use crate::render::tri_gradients::Gradients;
 
     /// Screen positions, 1/w and texture coordinates of three vertices.
     type Corners = ([(f32, f32); 3], [f32; 3], [[f32; 2]; 3]);
@@ -463,7 +464,7 @@ mod tests {
         }
         let (base, d1, d2) = planes(&attr, &inv_w);
         let fx = |v: f32| (v * SUBPIXEL as f32) as i64;
-        let tri = Tri {
+        let mut tri = Tri {
             x: xy.map(|p| fx(p.0)),
             y: xy.map(|p| fx(p.1)),
             z: [0.5; 3],
@@ -472,7 +473,9 @@ mod tests {
             d2,
             item: 0,
             bbox: [0, 0, 64, 64],
+            grad: Gradients::default(),
         };
+        tri.grad = Gradients::of(&tri.x, &tri.y, &tri.d1, &tri.d2);
         let mut p = Prepared::default();
         p.opaque.push(tri);
         (p, (xy, inv_w, uv))

@@ -35,8 +35,10 @@ pub mod stages;
 mod surface;
 mod texel_block;
 mod texel_fetch;
+mod texel_filter;
 mod texture;
 mod texture_lanes;
+mod tri_gradients;
 mod view;
 
 pub use frame::{pack_rgb, Frame};

@@ -8,6 +8,7 @@ use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::geometry::Geometry;
 use super::shade::{ShadeMaterial, WorldLight};
 use super::texture::Sampler;
+use super::tri_gradients::Gradients;
 use super::{RenderOptions, View};
 use crate::anim::Pose;
 use crate::scene::{Material, Mesh, NodeId, NodeKind, RenderStyle, Scene};
@@ -83,6 +84,9 @@ pub struct Tri {
     pub item: u32,
     /// Pixel bounding box, inclusive min, exclusive max, clamped to the frame.
     pub bbox: [i32; 4],
+    /// The texture planes' screen gradients, set for textured items only
+    /// (zero otherwise: untextured triangles never pay the division).
+    pub grad: Gradients,
 }
 
 impl Tri {
@@ -322,7 +326,15 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
                 } else {
                     &mut out.opaque
                 };
+                let start = dest.len();
                 setup_triangles(mesh, &verts, item, &screen, opts, &mut out.chunks, dest);
+                if texture.is_some() || emissive.is_some() {
+                    dest[start..].par_chunks_mut(4096).for_each(|c| {
+                        for t in c {
+                            t.grad = Gradients::of(&t.x, &t.y, &t.d1, &t.d2);
+                        }
+                    });
+                }
                 push_lines(&mut out.lines, &mesh.lines, &verts, stroke, &screen);
                 push_points(&mut out.points, &mesh.points, &verts, stroke, &screen);
             }
@@ -588,6 +600,7 @@ fn screen_triangle(
         d2,
         item,
         bbox,
+        grad: Gradients::default(),
     })
 }
 

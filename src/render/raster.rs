@@ -958,6 +958,7 @@ mod tests {
             d2,
             item: 0,
             bbox: [0, 0, 64, 64],
+            grad: Default::default(),
         };
         let area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
         if area < 0 {

@@ -94,20 +94,6 @@ mod imp {
                 F4(_mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi)))
             }
         }
-        /// Four RGBA8 words as R, G, B, A lanes (0..=255, exact).
-        #[inline(always)]
-        pub fn unpack_rgba8(w: &[u32; 4]) -> [F4; 4] {
-            unsafe {
-                let v = _mm_loadu_si128(w.as_ptr().cast());
-                let m = _mm_set1_epi32(0xFF);
-                [
-                    F4(_mm_cvtepi32_ps(_mm_and_si128(v, m))),
-                    F4(_mm_cvtepi32_ps(_mm_and_si128(_mm_srli_epi32::<8>(v), m))),
-                    F4(_mm_cvtepi32_ps(_mm_and_si128(_mm_srli_epi32::<16>(v), m))),
-                    F4(_mm_cvtepi32_ps(_mm_srli_epi32::<24>(v))),
-                ]
-            }
-        }
         #[inline(always)]
         pub fn gt(self, o: F4) -> M4 {
             unsafe { M4(_mm_cmpgt_ps(self.0, o.0)) }
@@ -208,9 +194,6 @@ mod imp {
             F4(std::array::from_fn(|k| {
                 (e + (first + k as i64) * step) as f32
             }))
-        }
-        pub fn unpack_rgba8(w: &[u32; 4]) -> [F4; 4] {
-            std::array::from_fn(|c| F4(w.map(|v| (v >> (8 * c) & 0xFF) as f32)))
         }
         pub fn sqrt(self) -> F4 {
             F4(self.0.map(f32::sqrt))
@@ -315,9 +298,6 @@ pub trait V8: Lanes {
     /// Each lane truncated towards zero to an i32 (lanes must lie within
     /// i32; exactly what `as i32` gives there).
     fn trunc_i32(self) -> [i32; 8];
-    /// Eight RGBA8 words (R in the low byte) as four channel lanes of
-    /// 0.0..=255.0 (exact conversions).
-    fn unpack_rgba8(words: &[u32; 8]) -> [Self; 4];
 
     /// Lane-wise `f32::floor` for finite lanes, bit for bit (−0 stays −0;
     /// |x| ≥ 2²³ is already whole). Built from truncation, so it needs no
@@ -438,12 +418,6 @@ impl V8 for Sse8 {
     #[inline(always)]
     fn from_edge(e: i64, step: i64) -> Self {
         Sse8(F4::from_edge(e, step, 0), F4::from_edge(e, step, 4))
-    }
-    #[inline(always)]
-    fn unpack_rgba8(words: &[u32; 8]) -> [Self; 4] {
-        let lo = F4::unpack_rgba8(words[..4].try_into().expect("4"));
-        let hi = F4::unpack_rgba8(words[4..].try_into().expect("4"));
-        std::array::from_fn(|c| Sse8(lo[c], hi[c]))
     }
 }
 
@@ -587,20 +561,13 @@ mod avx_lanes {
                 Avx8(_mm256_set_m128(_mm256_cvtpd_ps(hi), _mm256_cvtpd_ps(lo)))
             }
         }
+        /// `f32::floor` by ROUNDPS (AVX has it; SSE2 does not): the same
+        /// bits as the default's truncation steps, in one instruction (the
+        /// texture sampler floors six lanes' worth per block).
         #[inline(always)]
-        fn unpack_rgba8(words: &[u32; 8]) -> [Self; 4] {
-            // Integer shifts on 256 bits need AVX2: unpack two halves.
-            let lo = F4::unpack_rgba8(words[..4].try_into().expect("4"));
-            let hi = F4::unpack_rgba8(words[4..].try_into().expect("4"));
-            // SAFETY: as above (no closure: it would lose the AVX feature).
-            unsafe {
-                [
-                    Avx8(_mm256_set_m128(hi[0].0, lo[0].0)),
-                    Avx8(_mm256_set_m128(hi[1].0, lo[1].0)),
-                    Avx8(_mm256_set_m128(hi[2].0, lo[2].0)),
-                    Avx8(_mm256_set_m128(hi[3].0, lo[3].0)),
-                ]
-            }
+        fn floor(self) -> Self {
+            const DOWN: i32 = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
+            unsafe { Avx8(_mm256_round_ps::<DOWN>(self.0)) }
         }
     }
 
@@ -661,6 +628,11 @@ pub fn avx() -> bool {
 mod tests {
     use super::*;
 
+    /// Lanes around the ends of the range where floor needs no work.
+    const BIG: [f32; 8] = [
+        -1e9, 1e9, -8388607.5, 8388607.5, -0.5, 0.5, -1.0, 16777215.0,
+    ];
+
     fn eight_lane_ops<V: V8>() -> Vec<[f32; 8]> {
         let a = V::load(&[1.5, -2.25, 3.0e-3, 7.0, 0.1, 1e-30, -0.0, 3.0]);
         let b = V::load(&[0.3, 4.0, -1.0e5, 7.0, 0.7, 3.0, 2.0, 9.0]);
@@ -679,6 +651,7 @@ mod tests {
             V::load(&a.trunc_i32().map(|i| i as f32)),
             a.floor(),
             (b * V::splat(1e-3)).floor(),
+            V::load(&BIG).floor(),
         ] {
             let mut o = [0.0; 8];
             v.store(&mut o);
@@ -701,12 +674,8 @@ mod tests {
         assert_eq!(sse[11].map(f32::to_bits), floors(a));
         let b = [0.3f32, 4.0, -1.0e5, 7.0, 0.7, 3.0, 2.0, 9.0].map(|x| x * 1e-3);
         assert_eq!(sse[12].map(f32::to_bits), floors(b));
-        let big = [
-            -1e9f32, 1e9, -8388607.5, 8388607.5, -0.5, 0.5, -1.0, 16777215.0,
-        ];
+        assert_eq!(sse[13].map(f32::to_bits), floors(BIG));
         let mut o = [0.0; 8];
-        Sse8::load(&big).floor().store(&mut o);
-        assert_eq!(o.map(f32::to_bits), floors(big));
         for (e, st) in [
             (0i64, 1i64),
             (-5, 3),
@@ -716,21 +685,6 @@ mod tests {
         ] {
             Sse8::from_edge(e, st).store(&mut o);
             assert_eq!(o, std::array::from_fn(|k| (e + k as i64 * st) as f32));
-        }
-        let words = [
-            0x8040_20FFu32,
-            0,
-            u32::MAX,
-            0x0102_0304,
-            7,
-            8,
-            9,
-            0xFF00_0000,
-        ];
-        let px = Sse8::unpack_rgba8(&words);
-        for (c, lane) in px.iter().enumerate() {
-            lane.store(&mut o);
-            assert_eq!(o, words.map(|w| (w >> (8 * c) & 0xFF) as f32));
         }
         // MAXPS/MINPS semantics: the second operand on NaN.
         let nan = Lanes::max(Sse8::splat(f32::NAN), Sse8::splat(2.0));

@@ -13,7 +13,7 @@
 
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
 use super::lanes::Blocks;
-use super::prepare::{Item, Tri, INV_W, SUBPIXEL};
+use super::prepare::{Item, Tri, INV_W};
 use super::shade::{shade, shade8};
 use super::simd::V8;
 use super::texture_lanes::UvIn;
@@ -103,7 +103,7 @@ pub fn shade_textured(item: &Item, t: &Tri, b1: f32, b2: f32, eye: Vec3) -> (Vec
     let plane = |j: usize| t.base[j] + b1 * t.d1[j] + b2 * t.d2[j];
     let inv_q = 1.0 / plane(INV_W);
     let (u, v) = (a[A_UV], a[A_UV + 1]);
-    let g = t.gradients();
+    let g = t.grad;
     let ddx = Vec2::new(
         (g.uv[0][0] - u * g.q[0]) * inv_q,
         (g.uv[1][0] - v * g.q[0]) * inv_q,
@@ -138,41 +138,5 @@ pub fn shade_textured(item: &Item, t: &Tri, b1: f32, b2: f32, eye: Vec3) -> (Vec
             (c, s.masked(alpha))
         }
         _ => (lit, alpha),
-    }
-}
-
-/// Screen-space gradients of a triangle's planes, per pixel step.
-pub struct Gradients {
-    /// ∂(u/w)/∂x, ∂(u/w)/∂y; then the same for v/w.
-    pub uv: [[f32; 2]; 2],
-    /// ∂(1/w)/∂x, ∂(1/w)/∂y.
-    pub q: [f32; 2],
-}
-
-impl Tri {
-    /// Gradients of the texture planes and of 1/w: the barycentric weight
-    /// of vertex k is its edge function over twice the area, so its step
-    /// per pixel is the edge's (fixed-point) delta over the area.
-    pub fn gradients(&self) -> Gradients {
-        let area = (self.x[1] - self.x[0]) * (self.y[2] - self.y[0])
-            - (self.y[1] - self.y[0]) * (self.x[2] - self.x[0]);
-        let inv = SUBPIXEL as f32 / area as f32;
-        // b1: edge from vertex 2 to 0; b2: edge from vertex 0 to 1.
-        let db1 = [
-            -((self.y[0] - self.y[2]) as f32) * inv,
-            (self.x[0] - self.x[2]) as f32 * inv,
-        ];
-        let db2 = [
-            -((self.y[1] - self.y[0]) as f32) * inv,
-            (self.x[1] - self.x[0]) as f32 * inv,
-        ];
-        let grad = |j: usize, axis: usize| self.d1[j] * db1[axis] + self.d2[j] * db2[axis];
-        Gradients {
-            uv: [
-                [grad(A_UV, 0), grad(A_UV, 1)],
-                [grad(A_UV + 1, 0), grad(A_UV + 1, 1)],
-            ],
-            q: [grad(INV_W, 0), grad(INV_W, 1)],
-        }
     }
 }

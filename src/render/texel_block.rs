@@ -13,14 +13,15 @@
 //! operation, so the bits do not change.
 
 use super::simd::{Lanes, V8};
-use super::texel_fetch::fetch4;
+use super::texel_fetch::{fetch4, fetch_pairs};
+use super::texel_filter::{bilerp, UNIT};
 use super::texture::Sampler;
 use crate::scene::{MipLevel, Wrap};
 
-/// The filtered alpha of four texels of alpha 255: 255 + (255 − 255)·f
-/// is 255 for any finite f, then × (1/255) (const arithmetic is IEEE
+/// The filtered alpha of four texels of alpha 255: `bilerp` gives
+/// 255·256 for any weights, then × [`UNIT`] (const arithmetic is IEEE
 /// f32, the same as at run time). Blending two levels of it gives it again.
-const OPAQUE: f32 = 255.0 * (1.0 / 255.0);
+const OPAQUE: f32 = (255.0 * 256.0) * UNIT;
 
 /// Largest level (in texels) whose addresses stay exact in f32 lanes.
 const EXACT_TEXELS: u64 = 1 << 24;
@@ -97,13 +98,16 @@ impl Sampler {
         // Texel addresses: whole numbers below 2²⁴ (the caller checked the
         // level's size), so every product and sum here is exact.
         let (ra, rb) = (f.ya * w, f.yb * w);
-        let idx = [
-            (ra + f.xa).trunc_i32(),
-            (ra + f.xb).trunc_i32(),
-            (rb + f.xa).trunc_i32(),
-            (rb + f.xb).trunc_i32(),
-        ];
-        filter(&fetch4(level.pixels(), &idx), f.fx, f.fy, !self.opaque())
+        let (a, b) = ((ra + f.xa).trunc_i32(), (rb + f.xa).trunc_i32());
+        // Right texels next to the left ones in every lane (the block
+        // crosses no wrap seam or clamped edge): fetched as pairs.
+        let corners = if (f.xb - f.xa).eq(V::splat(1.0)).bits() == 0xFF {
+            fetch_pairs(level.pixels(), &a, &b)
+        } else {
+            let idx = [a, (ra + f.xb).trunc_i32(), b, (rb + f.xb).trunc_i32()];
+            fetch4(level.pixels(), &idx)
+        };
+        filter(&corners, f.fx, f.fy, !self.opaque())
     }
 }
 
@@ -147,24 +151,40 @@ impl Sampler {
 
 /// The bilinear blend of the four corners' RGBA8 words (top left, top
 /// right, bottom left, bottom right) by the fractions `fx`, `fy`, as R, G,
-/// B, A in 0..1: `Sampler::bilinear`'s arithmetic on lanes. Without
-/// `alpha` (an image whose texels are all opaque) the alpha lanes are that
-/// arithmetic's result for four 255s, [`OPAQUE`], without doing it.
+/// B, A in 0..1: `Sampler::bilinear`'s fixed-point filter
+/// (`texel_filter`), its weights rounded by the same f32 steps as
+/// `texel_filter::weight`. Without `alpha` (an image whose texels are all
+/// opaque) the alpha lanes are that filter's result for four 255s,
+/// [`OPAQUE`], without converting it.
+// Lane k of four corner arrays at once: an index loop reads best.
+#[allow(clippy::needless_range_loop)]
 #[inline(always)]
 pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V, alpha: bool) -> [V; 4] {
-    let c00 = V::unpack_rgba8(&corner[0]);
-    let c10 = V::unpack_rgba8(&corner[1]);
-    let c01 = V::unpack_rgba8(&corner[2]);
-    let c11 = V::unpack_rgba8(&corner[3]);
-    let scale = V::splat(1.0 / 255.0);
-    let mut out = c00;
-    out[3] = V::splat(OPAQUE);
-    for c in 0..(if alpha { 4 } else { 3 }) {
-        let top = c00[c] + (c10[c] - c00[c]) * fx;
-        let bottom = c01[c] + (c11[c] - c01[c]) * fx;
-        out[c] = (top + (bottom - top) * fy) * scale;
+    let (scale, half) = (V::splat(256.0), V::splat(0.5));
+    let wx = (fx * scale + half).trunc_i32();
+    let wy = (fy * scale + half).trunc_i32();
+    // Integer lanes (LLVM vectorises these loops with the caller's
+    // instruction set).
+    let mut ch = [[0.0f32; 8]; 4];
+    for k in 0..8 {
+        let c = [corner[0][k], corner[1][k], corner[2][k], corner[3][k]];
+        let [rb, ga] = bilerp(c, wx[k] as u32, wy[k] as u32);
+        ch[0][k] = (rb & 0xFFFF) as f32;
+        ch[1][k] = (ga & 0xFFFF) as f32;
+        ch[2][k] = (rb >> 16) as f32;
+        ch[3][k] = (ga >> 16) as f32;
     }
-    out
+    let unit = V::splat(UNIT);
+    [
+        V::load(&ch[0]) * unit,
+        V::load(&ch[1]) * unit,
+        V::load(&ch[2]) * unit,
+        if alpha {
+            V::load(&ch[3]) * unit
+        } else {
+            V::splat(OPAQUE)
+        },
+    ]
 }
 
 /// A mask of the finite lanes.

@@ -1,6 +1,6 @@
 //! Fetching the four bilinear corners of eight lanes from one mip level:
-//! one AVX2 gather per corner where the CPU has it, one load per lane
-//! otherwise.
+//! one AVX2 gather per corner (or per row of texel pairs) where the CPU
+//! has it, one load per lane otherwise.
 //!
 //! Why a file of its own: the gather needs AVX2, which the rest of the
 //! shading pass does not assume (its AVX path runs on AVX-only CPUs too),
@@ -20,6 +20,22 @@ pub fn fetch4(px: &[[u8; 4]], idx: &[[i32; 8]; 4]) -> [[u32; 8]; 4] {
         return unsafe { gather4(px, idx) };
     }
     load4(px, idx)
+}
+
+/// [`fetch4`] for blocks whose right texels follow their left ones in
+/// memory (every lane's right column is its left column + 1: no wrap seam
+/// and no clamped edge in the block): `a[k]` and `b[k]` are lane k's top
+/// and bottom left texel indices. With AVX2 each row is two 64-bit gathers
+/// (a texel and its right neighbour in one element) instead of two 32-bit
+/// gathers of eight: half the gathered elements, the same words.
+#[inline(always)]
+pub fn fetch_pairs(px: &[[u8; 4]], a: &[i32; 8], b: &[i32; 8]) -> [[u32; 8]; 4] {
+    #[cfg(target_arch = "x86_64")]
+    if gathers() && px.len() >= 2 {
+        // SAFETY: `gathers()` checked that the CPU has AVX2.
+        return unsafe { gather_pairs(px, a, b) };
+    }
+    load4(px, &[*a, a.map(|i| i + 1), *b, b.map(|i| i + 1)])
 }
 
 /// Whether gathers may run: the CPU has AVX2 and `ANIMED_SIMD` does not
@@ -75,11 +91,46 @@ fn gather4(px: &[[u8; 4]], idx: &[[i32; 8]; 4]) -> [[u32; 8]; 4] {
     out
 }
 
+/// Two `vpgatherdq` per row, each fetching four lanes' texel pairs; then
+/// the pairs are split into left and right texels in lane order. Every
+/// index is first clamped (as unsigned) to the last but one texel, so no
+/// 8-byte read can leave `px` (callers guarantee `px.len() ≥ 2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn gather_pairs(px: &[[u8; 4]], a: &[i32; 8], b: &[i32; 8]) -> [[u32; 8]; 4] {
+    use std::arch::x86_64::*;
+    let last = _mm_set1_epi32(px.len().saturating_sub(2) as i32);
+    let base = px.as_ptr().cast::<i64>();
+    let mut out = [[0u32; 8]; 4];
+    for (row, i) in [a, b].into_iter().enumerate() {
+        // SAFETY: `i` is 8 × 4 bytes and each `out` row 8 × 4 bytes; every
+        // gathered index is ≤ px.len() − 2 after the unsigned min, with
+        // scale 4 (bytes per texel) each 8-byte read lies inside `px`.
+        unsafe {
+            let lo = _mm_min_epu32(_mm_loadu_si128(i.as_ptr().cast()), last);
+            let hi = _mm_min_epu32(_mm_loadu_si128(i.as_ptr().add(4).cast()), last);
+            // Dwords: g0 = L0 R0 L1 R1 | L2 R2 L3 R3, g1 the same for 4..8.
+            let g0 = _mm256_castsi256_ps(_mm256_i32gather_epi64::<4>(base, lo));
+            let g1 = _mm256_castsi256_ps(_mm256_i32gather_epi64::<4>(base, hi));
+            // Evens (left) and odds (right): L0 L1 L4 L5 | L2 L3 L6 L7,
+            // then the middle quadwords swapped into lane order.
+            let left = _mm256_shuffle_ps::<0b10_00_10_00>(g0, g1);
+            let right = _mm256_shuffle_ps::<0b11_01_11_01>(g0, g1);
+            let left = _mm256_permute4x64_epi64::<0b11_01_10_00>(_mm256_castps_si256(left));
+            let right = _mm256_permute4x64_epi64::<0b11_01_10_00>(_mm256_castps_si256(right));
+            _mm256_storeu_si256(out[2 * row].as_mut_ptr().cast(), left);
+            _mm256_storeu_si256(out[2 * row + 1].as_mut_ptr().cast(), right);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// Gathers and loads read the same words, for every corner and lane.
+    /// Gathers and loads read the same words, for every corner and lane,
+    /// by corners and by pairs.
     #[test]
     fn gathers_read_what_loads_read() {
         let px: Vec<[u8; 4]> = (0..300u32)
@@ -90,10 +141,20 @@ mod tests {
         let want = load4(&px, &idx);
         assert_eq!(fetch4(&px, &idx), want);
         assert_eq!(want[1][2], u32::from_le_bytes(px[97 + 82]));
+        // Pairs: right corners one texel after the left ones, including
+        // the last pair of the level.
+        let (a, b): ([i32; 8], [i32; 8]) = (
+            std::array::from_fn(|k| ((k * 37) % 299) as i32),
+            std::array::from_fn(|k| [298, 0, 5, 150, 297, 1, 2, 3][k]),
+        );
+        let pairs = load4(&px, &[a, a.map(|i| i + 1), b, b.map(|i| i + 1)]);
+        assert_eq!(fetch_pairs(&px, &a, &b), pairs);
+        assert_eq!(pairs[3][0], u32::from_le_bytes(px[299]));
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: checked just above.
             assert_eq!(unsafe { gather4(&px, &idx) }, want);
+            assert_eq!(unsafe { gather_pairs(&px, &a, &b) }, pairs);
         } else {
             eprintln!("gathers_read_what_loads_read: no AVX2 here, gather path NOT tested");
         }

@@ -5,14 +5,17 @@
 //! the larger of the two screen-axis footprints in texels, as in the OpenGL
 //! 1.x specification §3.8.5). Texture coordinates follow VRML: (0, 0) is
 //! the image's lower-left corner, s to the right, t up. Repeat wraps the
-//! texel index, clamp clamps it (OpenGL `CLAMP_TO_EDGE`).
+//! texel index, clamp clamps it (OpenGL `CLAMP_TO_EDGE`). Within a level
+//! the four texels blend in fixed point with 8-bit sub-texel weights
+//! (`texel_filter`, as GPUs do); the level blend is f32.
 //!
 //! Combining follows [`TextureModel`]: the VRML97 rules of ISO/IEC 14772-1
 //! §4.14.3 (table 4.5) and the OpenGL texture environment functions that
 //! Inventor's MODULATE/DECAL/BLEND name (OpenGL 1.1 table 3.18).
-//! Everything is plain f32 arithmetic with no fused operations, so results
-//! are the same on every machine and for any thread count.
+//! Everything else is plain f32 arithmetic with no fused operations, so
+//! results are the same on every machine and for any thread count.
 
+use super::texel_filter::{bilerp, channels, weight};
 use crate::scene::{Filter, Image, MipLevel, MipMode, Texture, TextureModel, Wrap};
 use glam::{Affine2, Vec2, Vec3, Vec4};
 
@@ -223,7 +226,8 @@ impl Sampler {
         Vec4::new(p[0] as f32, p[1] as f32, p[2] as f32, p[3] as f32) * (1.0 / 255.0)
     }
 
-    /// Bilinear filtering in one level (texel centres at half-integers).
+    /// Bilinear filtering in one level (texel centres at half-integers),
+    /// in fixed point (see `texel_filter`).
     fn bilinear(&self, level: &MipLevel, st: Vec2) -> Vec4 {
         let (w, h) = (level.width() as i64, level.height() as i64);
         let s = if st.x.is_finite() { st.x } else { 0.0 };
@@ -264,13 +268,16 @@ impl Sampler {
         let xs = [wrap(x0, w, self.wrap_s), wrap(x0 + 1, w, self.wrap_s)];
         let ys = [wrap(y0, h, self.wrap_t), wrap(y0 + 1, h, self.wrap_t)];
         let px = level.pixels();
-        let at = |x: usize, y: usize| {
-            let p = px[y * w as usize + x];
-            Vec4::new(p[0] as f32, p[1] as f32, p[2] as f32, p[3] as f32)
-        };
-        let top = at(xs[0], ys[0]) + (at(xs[1], ys[0]) - at(xs[0], ys[0])) * fx;
-        let bottom = at(xs[0], ys[1]) + (at(xs[1], ys[1]) - at(xs[0], ys[1])) * fx;
-        (top + (bottom - top) * fy) * (1.0 / 255.0)
+        let at = |x: usize, y: usize| u32::from_le_bytes(px[y * w as usize + x]);
+        let corners = [
+            at(xs[0], ys[0]),
+            at(xs[1], ys[0]),
+            at(xs[0], ys[1]),
+            at(xs[1], ys[1]),
+        ];
+        let [rb, ga] = bilerp(corners, weight(fx), weight(fy));
+        let ((r, b), (g, a)) = (channels(rb), channels(ga));
+        Vec4::new(r, g, b, a)
     }
 
     /// The diffuse colour and alpha lighting starts from, given a texel and
@@ -407,9 +414,11 @@ mod tests {
         assert_eq!(red, Vec4::new(1.0, 0.0, 0.0, 1.0));
         let blue = s.sample(Vec2::new(0.25, 0.25), 0.0);
         assert_eq!(blue, Vec4::new(0.0, 0.0, 1.0, 1.0));
-        // Half-way between red and green texel centres.
+        // Half-way between red and green texel centres: weight 128/256,
+        // and 127.5 rounds to 128 in the 8-bit horizontal pass.
         let mid = s.sample(Vec2::new(0.5, 0.75), 0.0);
-        assert!((mid - Vec4::new(0.5, 0.5, 0.0, 1.0)).abs().max_element() < 1e-6);
+        let half = 128.0 / 255.0;
+        assert!((mid - Vec4::new(half, half, 0.0, 1.0)).abs().max_element() < 1e-6);
     }
 
     #[test]
@@ -423,7 +432,7 @@ mod tests {
         let mut t = tex();
         let rep = Sampler::new(&t, &img);
         // s = 0 lies between the last and first texel when repeating.
-        assert!((rep.sample(Vec2::new(0.0, 0.5), 0.0).x - 0.5).abs() < 1e-6);
+        assert!((rep.sample(Vec2::new(0.0, 0.5), 0.0).x - 128.0 / 255.0).abs() < 1e-6);
         assert_eq!(rep.sample(Vec2::new(3.25, 0.5), 0.0).x, 0.0);
         t.wrap_s = Wrap::Clamp;
         let cl = Sampler::new(&t, &img);

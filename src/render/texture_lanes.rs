@@ -8,7 +8,8 @@
 //! [`V8`] lanes, the level of detail's `log2f` too (`log2_lanes`: libm's
 //! bits); only what is per lane by nature stays scalar: choosing the mip
 //! level and fetching the texels. Every lane
-//! does the same IEEE operations in the same order as `texel` →
+//! does the same operations (IEEE f32, then `texel_filter`'s integer
+//! filter) in the same order as `texel` →
 //! `sample` → `bilinear`, so the picture does not change.
 //!
 //! Lanes the fast path does not cover fall back to `texel` lane by lane: a
