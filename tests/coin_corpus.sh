@@ -53,7 +53,7 @@ if [ -z "${ANIMED:-}" ]; then
   cargo build --quiet || exit 1
   ANIMED=${CARGO_TARGET_DIR:-$ROOT/target}/debug/animed
 fi
-export ANIMED SHARED OUT W H BG
+export ANIMED SHARED OUT W H BG ROOT
 rm -rf "$OUT"
 mkdir -p "$OUT/pairs" "$OUT/tmp"
 
@@ -80,23 +80,82 @@ if [ ! -s "$OUT/files.txt" ]; then
   exit 2
 fi
 
-# One file: prints "score<TAB>path<TAB>note". A file with its own
-# Background (Coin draws it whatever --bg says) is rendered with it on both
-# sides and scored pixel by pixel: the share of pixels whose colours differ
-# by at most 12% (ImageMagick fuzz), "bg" in the note.
+# Why a file's own Background cannot be compared with Coin's, or "": each
+# reason is a documented Coin limit, found in the file's text, printed in the
+# report next to the figures it excuses.
+coin_bg_limit() {
+  local f=$1 why=()
+  zcat -f "$f" 2>/dev/null | grep -qE '(front|back|left|right|top|bottom)Url[[:space:]]*\[?[[:space:]]*"[^"]' \
+    && why+=("draws a Background panorama face white when its texture does not load (this Coin loads no texture files, REFERENCE-RENDERERS.md; animed shows the sky and ground colours where no panorama image loaded)")
+  [ "$(zcat -f "$f" 2>/dev/null | grep -cE '(^|[^A-Za-z0-9_])Background[[:space:]]*\{')" -gt 1 ] \
+    && why+=("binds the last Background (VRML97 4.6.10 binds the first)")
+  zcat -f "$f" 2>/dev/null | grep -qE '(sky|ground)Angle[[:space:]]*\[?[[:space:]]*[-+.0-9]' \
+    && why+=("Gouraud-shades its gradient sphere on a coarse tessellation (VRML97 6.5 interpolates by angle, as animed and view3dscene draw it)")
+  local IFS=';'
+  [ ${#why[@]} -gt 0 ] && echo "Coin limit: ${why[*]}"
+}
+export -f coin_bg_limit
+
+# Both pictures to black (background) and white (everything else): first
+# everything that is not the --bg colour turns white (so black objects
+# count), then the --bg colour turns black.
+masks() {
+  local hex p
+  hex=$(awk -F, '{printf "#%02x%02x%02x", $1*255+0.5, $2*255+0.5, $3*255+0.5}' <<<"$BG")
+  for p in "$@"; do
+    /usr/bin/convert "$p" -alpha off -fuzz 3% -fill white +opaque "$hex" -fill black -opaque "$hex" \
+      -colorspace Gray -threshold 50% "$p.mask.png"
+  done
+}
+export -f masks
+
+# Prints the silhouette IoU of two pictures rendered with --bg.
+iou_of() {
+  local inter union
+  masks "$1" "$2"
+  inter=$(/usr/bin/convert "$1.mask.png" "$2.mask.png" -compose multiply -composite -format '%[fx:mean*w*h]' info:)
+  union=$(/usr/bin/convert "$1.mask.png" "$2.mask.png" -compose lighten -composite -format '%[fx:mean*w*h]' info:)
+  awk -v i="$inter" -v u="$union" 'BEGIN { if (u == 0) print "nan"; else printf "%.4f", i / u }'
+}
+export -f iou_of
+
+# Coin's render of $1 into $2 with coin_render.py's arguments after them;
+# with NOBG=1 through tests/coin_render_nobg.py (Backgrounds removed).
+coin() {
+  local f=$1 out=$2 tool=("$SHARED/tools/coin_render.py")
+  shift 2
+  [ "${NOBG:-0}" = 1 ] && tool=("$ROOT/tests/coin_render_nobg.py" "$SHARED/tools/coin_render.py")
+  (cd "$(dirname "$f")" && timeout 60 env LD_PRELOAD=/usr/lib/x86_64-linux-gnu/libGL.so.1 \
+    /usr/bin/python3 "${tool[@]}" "$f" "$out" $W $H --time 0 --headlight auto "$@")
+}
+export -f coin
+
+# One file: prints "score<TAB>path<TAB>note".
+#
+# A file without a Background of its own is drawn on the --bg colour by both
+# and scored by silhouette IoU.
+#
+# A file with its own Background (Coin draws it whatever --bg says) is drawn
+# twice by each: without the Background (Coin through coin_render_nobg.py,
+# animed with --bg, which overrides it) for the silhouette IoU, and with it
+# for the Background itself, compared pixel by pixel where both pictures
+# show background (tests/coin_bg_compare.py: within 12 %, allowing Coin's
+# Gouraud gradient bands to sit up to H/16 pixels away). Its score is the
+# smaller of the two, or the IoU alone when the Background differs for a
+# documented Coin limit (coin_bg_limit, printed in the note). The note keeps
+# the old score (whole pictures within 12 %, until session 8) beside the new
+# figures: "bg iou=… bg_px=strict/shifted(n) old=…".
 one() {
-  local rel=$1 name tmp a b hex inter union iou note="" own_bg=0 bgargs
+  local rel=$1 f name tmp a b iou note="" own_bg=0 bgargs=(--bg "$BG")
+  f=$SHARED/corpus/$rel
   # zgrep: gzipped files (.wrl.gz) hold Backgrounds too.
-  zgrep -q 'Background' "$SHARED/corpus/$rel" 2>/dev/null && own_bg=1
-  if [ $own_bg = 1 ]; then bgargs=(); else bgargs=(--bg "$BG"); fi
+  zgrep -q 'Background' "$f" 2>/dev/null && own_bg=1
   name=$(tr '/ ' '__' <<<"$rel")
   tmp=$OUT/tmp/$name
   a=$tmp.coin.png
   b=$tmp.animed.png
-  (cd "$(dirname "$SHARED/corpus/$rel")" && timeout 60 env LD_PRELOAD=/usr/lib/x86_64-linux-gnu/libGL.so.1 \
-    /usr/bin/python3 "$SHARED/tools/coin_render.py" "$SHARED/corpus/$rel" "$a" $W $H \
-    --time 0 "${bgargs[@]}" --headlight auto) >"$tmp.coin.log" 2>&1
-  timeout 60 "$ANIMED" render "$SHARED/corpus/$rel" --time 0 --size ${W}x${H} "${bgargs[@]}" \
+  NOBG=$own_bg coin "$f" "$a" "${bgargs[@]}" >"$tmp.coin.log" 2>&1
+  timeout 60 "$ANIMED" render "$f" --time 0 --size ${W}x${H} "${bgargs[@]}" \
     --headlight auto -o "$b" >"$tmp.animed.log" 2>&1 || note="animed failed: $(tail -1 "$tmp.animed.log")"
   if [ ! -s "$a" ]; then
     printf 'nan\t%s\tCoin wrote no picture\n' "$rel"
@@ -106,39 +165,70 @@ one() {
     printf '0\t%s\t%s\n' "$rel" "${note:-animed wrote no picture}"
     return
   fi
-  /usr/bin/convert "$a" "$b" +append "$OUT/pairs/$name.png"
-  if [ $own_bg = 1 ]; then
-    local differ
-    differ=$(/usr/bin/compare -metric AE -fuzz 12% "$a" "$b" null: 2>&1 | sed -E 's/^([0-9.e+]+).*/\1/')
-    awk -v d="$differ" -v n=$((W * H)) -v rel="$rel" 'BEGIN { printf "%.4f\t%s\tbg\n", 1 - d / n, rel }'
+  iou=$(iou_of "$a" "$b")
+  if [ "$iou" = nan ]; then
+    printf 'nan\t%s\tCoin drew nothing at time 0\n' "$rel"
     return
   fi
-  hex=$(awk -F, '{printf "#%02x%02x%02x", $1*255+0.5, $2*255+0.5, $3*255+0.5}' <<<"$BG")
-  for p in "$a" "$b"; do
-    # Everything that is not the background turns white first (so black
-    # objects count), then the background turns black.
-    /usr/bin/convert "$p" -alpha off -fuzz 3% -fill white +opaque "$hex" -fill black -opaque "$hex" \
-      -colorspace Gray -threshold 50% "$p.mask.png"
-  done
-  inter=$(/usr/bin/convert "$a.mask.png" "$b.mask.png" -compose multiply -composite -format '%[fx:mean*w*h]' info:)
-  union=$(/usr/bin/convert "$a.mask.png" "$b.mask.png" -compose lighten -composite -format '%[fx:mean*w*h]' info:)
-  iou=$(awk -v i="$inter" -v u="$union" 'BEGIN { if (u == 0) print "nan"; else printf "%.4f", i / u }')
-  [ "$iou" = nan ] && note="Coin drew nothing at time 0"
-  printf '%s\t%s\t%s\n' "$iou" "$rel" "$note"
+  if [ $own_bg = 0 ]; then
+    /usr/bin/convert "$a" "$b" +append "$OUT/pairs/$name.png"
+    printf '%s\t%s\t%s\n' "$iou" "$rel" "$note"
+    return
+  fi
+  # The file's own Background, on both sides.
+  local ab=$tmp.coin-bg.png bb=$tmp.animed-bg.png old cmp strict shifted n limit score
+  coin "$f" "$ab" >"$tmp.coin-bg.log" 2>&1
+  timeout 60 "$ANIMED" render "$f" --time 0 --size ${W}x${H} --headlight auto -o "$bb" \
+    >"$tmp.animed-bg.log" 2>&1
+  if [ ! -s "$ab" ] || [ ! -s "$bb" ]; then
+    printf '0\t%s\tbg: no picture with the Background (see %s.*-bg.log)\n' "$rel" "$tmp"
+    return
+  fi
+  /usr/bin/convert \( "$ab" "$bb" +append \) \( "$a" "$b" +append \) -append "$OUT/pairs/$name.png"
+  old=$(/usr/bin/compare -metric AE -fuzz 12% "$ab" "$bb" null: 2>&1 | sed -E 's/^([0-9.e+]+).*/\1/')
+  old=$(awk -v d="$old" -v n=$((W * H)) 'BEGIN { printf "%.4f", 1 - d / n }')
+  cmp=$(/usr/bin/python3 "$ROOT/tests/coin_bg_compare.py" "$ab" "$bb" "$a.mask.png" "$b.mask.png" $W $H) \
+    || cmp="nan nan 0"
+  read -r strict shifted n <<<"$cmp"
+  limit=$(coin_bg_limit "$f")
+  note="bg iou=$iou bg_px=$strict/$shifted($n) old=$old"
+  if [ "$n" = 0 ]; then
+    score=$iou
+    note="$note; no background pixel to compare"
+  elif awk -v s="$shifted" 'BEGIN { exit !(s >= 0.95) }'; then
+    score=$iou
+  elif [ -n "$limit" ]; then
+    score=$iou
+    note="$note; Background not counted: $limit"
+  else
+    score=$(awk -v i="$iou" -v s="$shifted" 'BEGIN { printf "%.4f", (s < i ? s : i) }')
+    note="$note; Background differs"
+  fi
+  printf '%s\t%s\t%s\n' "$score" "$rel" "$note"
 }
 export -f one
 
 xargs -a "$OUT/files.txt" -d '\n' -P 2 -I{} bash -c 'one "$@"' _ {} >"$OUT/raw.tsv"
 sort -g "$OUT/raw.tsv" >"$OUT/report.tsv"
 
+# The share over every file Coin drew something for; then, as a second
+# figure, without the files tests/coin_known.tsv lists as Coin's own
+# departures from the spec (each with its reason, printed).
 awk -F'\t' '
+  FNR == NR { if ($0 !~ /^#/ && NF >= 2) known[$1] = $2; next }
   $1 == "nan" { skipped++; next }
-  { n++; if ($1 >= 0.95) ok++ }
+  { n++; if ($1 >= 0.95) ok++; else if ($2 in known) { kn++; kl = kl sprintf("  %s (%s): %s\n", $2, $1, known[$2]) } }
+  ($2 in known) && $1 != "nan" && $1 >= 0.95 { km = km sprintf("  %s now matches (%s): take it out of tests/coin_known.tsv\n", $2, $1) }
   END {
     printf "coin_corpus: %d of %d files match Coin (silhouette IoU >= 0.95): %.1f%%", ok, n, n ? 100 * ok / n : 0
     if (skipped) printf " (%d skipped: Coin drew nothing)", skipped
     printf "\n"
-  }' "$OUT/report.tsv" | tee "$OUT/summary.txt"
+    if (kn) {
+      printf "coin_corpus: without the %d failing files where Coin departs from the spec (tests/coin_known.tsv): %d of %d: %.1f%%\n", kn, ok, n - kn, 100 * ok / (n - kn)
+      printf "%s", kl
+    }
+    printf "%s", km
+  }' "$ROOT/tests/coin_known.tsv" "$OUT/report.tsv" | tee "$OUT/summary.txt"
 echo "coin_corpus: worst files (IoU, path, note) — all in $OUT/report.tsv, pictures in $OUT/pairs/:"
 if [ -n "$FILES" ]; then
   cat "$OUT/report.tsv"

@@ -638,7 +638,7 @@ fn the_view_is_remembered_per_file_not_in_the_scene() {
     animed::internals::editor::shell::perform(&mut other);
     assert_eq!(other.preview_range(), None);
     assert_eq!(other.time_span().0, 0.0);
-    let memo = animed::internals::editor::views::recall(&mem, &file).unwrap();
+    let memo = animed::internals::editor::disk::recall(&mem, &file).unwrap();
     assert_eq!(memo.preview, Some((5.0, 50.0)));
     assert_eq!(memo.zoom, Some(zoom));
     std::fs::remove_dir_all(&d).unwrap();

@@ -523,7 +523,9 @@ fn the_editor_asks_for_file_work_and_the_shell_does_it() {
     assert!(ed.is_dirty());
     ed.handle(Event::Tick { time: 10.0 });
     ed.handle(Event::Tick { time: 11.5 });
-    let copy = ed.recovery_file();
+    let copy = ed
+        .recovery_file()
+        .expect("a saved scene has a copy beside it");
     assert!(ed.requests().contains(&Request::Autosave {
         path: copy.clone(),
         why: AutosaveWhy::Clock

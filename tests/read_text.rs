@@ -35,6 +35,23 @@ fn draw(scene: &Scene, w: u32, h: u32) -> Frame {
     render_at(scene, &spec, 0.0).expect("renders")
 }
 
+/// Object ids (node index + 1) of the scene's shapes, in node order.
+fn shape_ids(scene: &Scene) -> Vec<u32> {
+    scene
+        .nodes
+        .iter()
+        .enumerate()
+        .filter(|(_, n)| matches!(n.kind, NodeKind::Shape(_)))
+        .map(|(i, _)| i as u32 + 1)
+        .collect()
+}
+
+/// Inventor source read and drawn at 160×120, with its shapes' ids.
+fn draw_iv(src: &str) -> (Frame, Vec<u32>) {
+    let l = animed::internals::format::load_bytes(src.as_bytes(), Path::new("t.iv")).unwrap();
+    (draw(&l.scene, 160, 120), shape_ids(&l.scene))
+}
+
 /// SERIF / SANS / TYPEWRITER in PLAIN, BOLD, ITALIC, BOLDITALIC, each line
 /// centred on x = 0 (justify MIDDLE); '8', 'O', '&', '@' show the holes.
 #[test]
@@ -72,13 +89,7 @@ fn golden_ascii_text_corpus_file() {
 fn text_is_framed_and_picked() {
     let s = load("styles.wrl");
     let f = draw(&s, 160, 120);
-    let shapes: Vec<u32> = s
-        .nodes
-        .iter()
-        .enumerate()
-        .filter(|(_, n)| matches!(n.kind, NodeKind::Shape(_)))
-        .map(|(i, _)| i as u32 + 1)
-        .collect();
+    let shapes = shape_ids(&s);
     assert_eq!(shapes.len(), 4);
     for id in &shapes {
         let n = f.ids.iter().filter(|i| *i == id).count();
@@ -115,18 +126,51 @@ fn text2_labels_do_not_change_the_framing() {
                 Text2 { string \"a long label that reaches far to the right\" } }\n";
     let without = "#Inventor V2.1 ascii\nSeparator { Cube {} }\n";
     let cube_pixels = |src: &str| {
-        let l = animed::internals::format::load_bytes(src.as_bytes(), Path::new("t.iv")).unwrap();
-        let f = draw(&l.scene, 160, 120);
-        let cube = l
-            .scene
-            .nodes
-            .iter()
-            .position(|n| matches!(n.kind, NodeKind::Shape(_)))
-            .unwrap() as u32
-            + 1;
-        f.ids.iter().filter(|&&i| i == cube).count()
+        let (f, shapes) = draw_iv(src);
+        f.ids.iter().filter(|&&i| i == shapes[0]).count()
     };
     let (a, b) = (cube_pixels(with), cube_pixels(without));
     assert!(a > 1000);
     assert_eq!(a, b);
+}
+
+/// Inventor Text2 is drawn `Font.size` pixels high facing the viewer
+/// whatever the distance and the rotation above it (as Coin's SoText2
+/// bitmaps are): an 'H' 20 pixels in size is about 13 pixels high (cap
+/// height 0.655 em) with the camera 10 or 40 units away, and a 90° turn
+/// of its group leaves it upright.
+#[test]
+fn text2_labels_keep_their_pixel_size_and_face_the_viewer() {
+    let ink = |distance: f32, turn: &str| {
+        let src = format!(
+            "#Inventor V2.1 ascii\nSeparator {{ PerspectiveCamera {{ position 0 0 {distance} }}\n\
+             Cube {{ width 0.1 height 0.1 depth 0.1 }}\n\
+             Separator {{ Translation {{ translation 0.5 0 0 }} {turn}\n\
+             Font {{ size 20 }} Text2 {{ string \"HHHH\" }} }} }}\n"
+        );
+        let (f, shapes) = draw_iv(&src);
+        let label = *shapes.last().unwrap();
+        let px: Vec<(u32, u32)> = (0..f.height)
+            .flat_map(|y| (0..f.width).map(move |x| (x, y)))
+            .filter(|&(x, y)| f.ids[(y * f.width + x) as usize] == label)
+            .collect();
+        assert!(!px.is_empty(), "label drawn at distance {distance}");
+        let w = px.iter().map(|p| p.0).max().unwrap() - px.iter().map(|p| p.0).min().unwrap() + 1;
+        let h = px.iter().map(|p| p.1).max().unwrap() - px.iter().map(|p| p.1).min().unwrap() + 1;
+        (w, h)
+    };
+    let near = ink(10.0, "");
+    let far = ink(40.0, "");
+    let turned = ink(
+        10.0,
+        "RotationXYZ { axis Z angle 1.5708 } Scale { scaleFactor 3 3 3 }",
+    );
+    assert!((12..=14).contains(&near.1), "{near:?}");
+    assert!(near.0 > 2 * near.1, "{near:?}");
+    for other in [far, turned] {
+        assert!(
+            near.0.abs_diff(other.0) <= 1 && near.1.abs_diff(other.1) <= 1,
+            "{near:?} vs {other:?}"
+        );
+    }
 }

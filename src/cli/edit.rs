@@ -84,10 +84,7 @@ pub fn run(args: Args) -> i32 {
     let made = autosave_interval(args.autosave_secs).and_then(|secs| {
         let mut ed = make_editor(args.file.as_ref(), args.size)?;
         ed.set_autosave_interval(secs);
-        if let Ok(dir) = std::env::current_dir() {
-            // The file browser starts here when no file is open.
-            ed.set_start_dir(&dir);
-        }
+        tell_places(&mut ed);
         Ok(ed)
     });
     let mut ed = match made {
@@ -99,7 +96,7 @@ pub fn run(args: Args) -> i32 {
     };
     if args.script.is_none() && args.screenshot.is_none() {
         // Untitled work a crash left behind is offered like a file's.
-        ed.offer_untitled(&crate::editor::recovery::state_dir());
+        ed.offer_untitled(&crate::editor::disk::state_dir());
         ed.set_view_memory(Some(view_memory()));
         ed.set_aa(args.aa.unwrap_or(WINDOW_AA));
         return window(ed);
@@ -131,6 +128,18 @@ pub fn run(args: Args) -> i32 {
     0
 }
 
+/// What the shell tells the editor about this process, which the editor
+/// never reads itself: the working directory (the file browser starts
+/// there when no file is open), `$HOME` (a typed `~/`) and the state
+/// folder (copies of untitled work, `disk::state_dir`).
+pub fn tell_places(ed: &mut Editor) {
+    if let Ok(dir) = std::env::current_dir() {
+        ed.set_start_dir(&dir);
+    }
+    ed.set_home(crate::editor::disk::home().as_deref());
+    ed.set_state_dir(&crate::editor::disk::state_dir());
+}
+
 /// Anti-aliasing samples per pixel of the editor window by default.
 pub const WINDOW_AA: u32 = 4;
 
@@ -147,6 +156,7 @@ fn window(ed: Editor) -> i32 {
 /// `animed` with no arguments: the editor on the bundled demo scene.
 pub fn run_default() -> i32 {
     let mut ed = Editor::with_demo(1024, 640);
+    tell_places(&mut ed);
     match autosave_interval(None) {
         Ok(secs) => ed.set_autosave_interval(secs),
         Err(msg) => {
@@ -154,7 +164,7 @@ pub fn run_default() -> i32 {
             return 1;
         }
     }
-    ed.offer_untitled(&crate::editor::recovery::state_dir());
+    ed.offer_untitled(&crate::editor::disk::state_dir());
     ed.set_view_memory(Some(view_memory()));
     ed.set_aa(WINDOW_AA);
     window(ed)
@@ -162,7 +172,7 @@ pub fn run_default() -> i32 {
 
 /// Where the window's editor remembers each file's view.
 pub fn view_memory() -> std::path::PathBuf {
-    crate::editor::recovery::state_dir().join("views")
+    crate::editor::disk::state_dir().join("views")
 }
 
 #[cfg(test)]

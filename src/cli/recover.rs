@@ -2,7 +2,8 @@
 //! never saved (crashed, killed, closed), as the editor offers them at
 //! start; list them, write one out, or open one in the editor.
 
-use crate::editor::recovery::{session_lines, state_dir, untitled_sessions};
+use crate::editor::disk::{state_dir, untitled_sessions};
+use crate::editor::recovery::session_lines;
 use std::path::PathBuf;
 use std::time::SystemTime;
 
@@ -68,6 +69,7 @@ pub fn run(args: Args) -> i32 {
         }
         None => {
             let mut ed = crate::editor::Editor::new(crate::scene::Scene::new(), None, 1024, 640);
+            super::edit::tell_places(&mut ed);
             ed.recover_untitled(&s.path);
             ed.set_view_memory(Some(super::edit::view_memory()));
             ed.set_aa(super::edit::WINDOW_AA);

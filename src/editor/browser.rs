@@ -96,6 +96,25 @@ pub fn is_image_file(name: &str) -> bool {
     .any(|e| l.ends_with(e))
 }
 
+/// Where the shell says paths start (the editor reads no environment):
+/// the folder the browser opens in when no file is open (`animed edit`'s
+/// working directory; `.` until told) and `$HOME`, which a typed `~/`
+/// stands for (`None`: `~/` is an ordinary name).
+#[derive(Clone, Debug)]
+pub struct Places {
+    pub start: PathBuf,
+    pub home: Option<PathBuf>,
+}
+
+impl Default for Places {
+    fn default() -> Self {
+        Places {
+            start: PathBuf::from("."),
+            home: None,
+        }
+    }
+}
+
 /// Browser state.
 #[derive(Clone, Debug)]
 pub struct Browser {
@@ -112,10 +131,13 @@ pub struct Browser {
     pub message: Option<String>,
     /// What it waits to have read (the editor hands it to the shell).
     pub asks: Option<Ask>,
+    /// What a typed `~/` stands for (`Places::home`).
+    pub home: Option<PathBuf>,
 }
 
 impl Browser {
-    pub fn new(purpose: Purpose, dir: &Path) -> Browser {
+    /// A browser showing `dir`; `home` is what `~/` stands for.
+    pub fn new(purpose: Purpose, dir: &Path, home: Option<&Path>) -> Browser {
         let mut b = Browser {
             purpose,
             dir: dir.to_path_buf(),
@@ -125,6 +147,7 @@ impl Browser {
             scroll: 0,
             message: None,
             asks: None,
+            home: home.map(Path::to_path_buf),
         };
         b.enter(dir);
         b
@@ -175,7 +198,7 @@ impl Browser {
     pub fn resolved(&self) -> PathBuf {
         let t = restart_at_root(self.input.trim());
         if t.contains('/') {
-            expand_home(t)
+            self.expand_home(t)
         } else {
             self.dir.join(t)
         }
@@ -221,10 +244,18 @@ impl Browser {
         }
     }
 
+    /// `~/…` in the home folder the shell gave; anything else as typed.
+    fn expand_home(&self, s: &str) -> PathBuf {
+        match (s.strip_prefix("~/"), &self.home) {
+            (Some(rest), Some(home)) => home.join(rest),
+            _ => PathBuf::from(s),
+        }
+    }
+
     /// The folder the typed path's last part is in.
     fn typed_folder(&self) -> PathBuf {
         match self.input.rfind('/') {
-            Some(i) => expand_home(&self.input[..=i]),
+            Some(i) => self.expand_home(&self.input[..=i]),
             None => self.dir.clone(),
         }
     }
@@ -319,15 +350,6 @@ fn with_slash(p: &Path) -> String {
     }
 }
 
-fn expand_home(s: &str) -> PathBuf {
-    if let Some(rest) = s.strip_prefix("~/") {
-        if let Some(home) = std::env::var_os("HOME") {
-            return PathBuf::from(home).join(rest);
-        }
-    }
-    PathBuf::from(s)
-}
-
 /// Removes `.` and resolves `..` textually (no symlink lookups).
 fn normalize(p: &Path) -> PathBuf {
     let mut out = PathBuf::new();
@@ -380,7 +402,7 @@ pub(crate) mod tests {
         assert_eq!(restart_at_root("/home/u/~/a.wrl"), "~/a.wrl");
         assert_eq!(restart_at_root("/home/u/a.wrl"), "/home/u/a.wrl");
         let dir = std::env::temp_dir();
-        let mut b = Browser::new(Purpose::Open, &dir);
+        let mut b = Browser::new(Purpose::Open, &dir, None);
         assert!(
             b.entries.is_empty(),
             "nothing is read before the shell answers"
@@ -390,6 +412,18 @@ pub(crate) mod tests {
         b.type_text("/tmp/x.wrl");
         assert_eq!(b.input, "/tmp/x.wrl");
         assert_eq!(b.resolved(), PathBuf::from("/tmp/x.wrl"));
+    }
+
+    #[test]
+    fn a_typed_home_is_the_one_the_shell_gave() {
+        let mut b = Browser::new(Purpose::Open, Path::new("/d"), Some(Path::new("/u")));
+        b.type_text("~/m/a.wrl");
+        assert_eq!(b.resolved(), PathBuf::from("/u/m/a.wrl"));
+        b.complete();
+        assert_eq!(b.asks, Some(Ask::Complete(PathBuf::from("/u/m/"))));
+        let mut b = Browser::new(Purpose::Open, Path::new("/d"), None);
+        b.type_text("~/a.wrl");
+        assert_eq!(b.resolved(), PathBuf::from("~/a.wrl"), "no home given");
     }
 
     /// A small folder tree; `tag` keeps parallel tests apart.
@@ -408,7 +442,7 @@ pub(crate) mod tests {
     #[test]
     fn lists_folders_then_known_files() {
         let d = tree("list");
-        let mut b = Browser::new(Purpose::Open, &d);
+        let mut b = Browser::new(Purpose::Open, &d, None);
         assert_eq!(b.asks, Some(Ask::Enter(d.clone())));
         settle(&mut b);
         let names: Vec<_> = b.entries.iter().map(|e| e.name.as_str()).collect();
@@ -438,7 +472,7 @@ pub(crate) mod tests {
     #[test]
     fn tab_completes_common_prefix_then_unique() {
         let d = tree("complete");
-        let mut b = Browser::new(Purpose::Open, &d);
+        let mut b = Browser::new(Purpose::Open, &d, None);
         settle(&mut b);
         b.input = format!("{}/wa", d.display());
         b.complete();

@@ -256,7 +256,7 @@ mod tests {
         std::fs::create_dir_all(d.join("models")).unwrap();
         std::fs::write(d.join("models/walk.wrl"), b"x").unwrap();
         let r = Rect::new(0, 0, 400, 300);
-        let mut b = Browser::new(Purpose::Open, &d);
+        let mut b = Browser::new(Purpose::Open, &d, None);
         settle(&mut b);
         let models = b.entries.iter().position(|e| e.name == "models").unwrap();
         assert_eq!(

@@ -6,8 +6,9 @@
 //! returning its side effects is the model).
 
 use crate::anim::Animation;
+use crate::anim::Property;
 use crate::editor::keystrip::KeyRef;
-use crate::scene::NodeId;
+use crate::scene::{Node, NodeId};
 
 /// What the keys components (key strip, graph editor) see of the editor
 /// alike: the animation, the selected object and its name, the current
@@ -37,6 +38,9 @@ pub enum Intent {
     },
     /// Make these the selected keys (the key strip and key panel follow).
     SelectKeys(Vec<KeyRef>),
+    /// Show these keys selected while a drag previews them (they moved),
+    /// without remembering the selection for undo as `SelectKeys` does.
+    ShowKeys(Vec<KeyRef>),
     /// Go to this frame.
     Seek(f32),
     /// A line for the status bar (true: an error).
@@ -44,6 +48,27 @@ pub enum Intent {
     /// A right click at this window point: open the keys' context menu
     /// there (`keymenu.rs`).
     ContextMenu((f32, f32)),
+    /// Stop playback (a drag starts).
+    StopPlayback,
+    /// Show node `id` as `node` while a drag changes `property`: a live
+    /// preview, kept over its tracks as a change not yet keyed.
+    ShowNode {
+        id: NodeId,
+        property: Property,
+        node: Box<Node>,
+    },
+    /// Put node `id` back as `node` (the drag's previews go; nothing is
+    /// recorded).
+    PutBack { id: NodeId, node: Box<Node> },
+    /// Record `before` → `after` of node `id` as one undo step (in record
+    /// mode with a key on `property`).
+    RecordNode {
+        label: String,
+        id: NodeId,
+        before: Box<Node>,
+        after: Box<Node>,
+        property: Property,
+    },
 }
 
 /// A component's answer to one event.

@@ -6,7 +6,6 @@
 //! Routing lives in `route/input.rs`.
 
 use super::fields::FieldId;
-use super::manip::{Handle, HandleDrag};
 use super::rig::state::IkDrag;
 use crate::scene::{Node, NodeId, Settings};
 
@@ -15,8 +14,9 @@ use crate::scene::{Node, NodeId, Settings};
 pub(super) enum Drag {
     #[default]
     None,
-    /// A handle of the current tool (`manip/`): the node at press.
-    Handle(Box<HandleDrag>),
+    /// A handle of the current tool took the press; the handles
+    /// (`manip/handles.rs`) keep their own drag state.
+    Handle,
     /// The key strip took the press (keys moved or a selection box); it
     /// keeps its own drag state.
     Keys,
@@ -40,11 +40,12 @@ pub(super) enum Drag {
     /// Dragging the current-frame cursor on the ruler.
     Seek,
     /// Pressed in the viewport in select mode; selects on release. On the
-    /// selection (`armed`: its body, or inside the rotate rings) a move
-    /// past the slop turns it into that handle's drag instead.
+    /// selection (`armed`: its body, or inside the rotate rings; the
+    /// handles hold which) a move past the slop turns it into that
+    /// handle's drag instead.
     Pick {
         at: (f32, f32),
-        armed: Option<Handle>,
+        armed: bool,
     },
     /// Pressed on an object list row: a drag drops it onto another row
     /// (parent) or onto the list's empty space (top level).
@@ -86,17 +87,6 @@ impl Drag {
                 None
             }
         }
-    }
-
-    /// The handle drag, if it is the gesture (which then ends).
-    pub(super) fn take_handle(&mut self) -> Option<Box<HandleDrag>> {
-        self.take_if(|d| {
-            if let Drag::Handle(h) = d {
-                Ok(h)
-            } else {
-                Err(d)
-            }
-        })
     }
 
     /// The IK drag, if it is the gesture (which then ends).

@@ -1,7 +1,7 @@
-//! The key properties panel: frame, value, interpolation, tension,
-//! continuity, bias and ease of the selected keys, shown in the side
-//! panel's properties section while keys are selected (its "Object" button
-//! shows the node's properties again, their "Keys" button comes back).
+//! The key panel's rules: which number each field shows of a key, and how
+//! an edit changes the selected keys (frame, value, interpolation,
+//! tension, continuity, bias, ease, the track's repeat mode, on/off). The
+//! panel itself (its state, widgets and answers) is `keypanel.rs`.
 //!
 //! Editing T, C or B of a step or linear key switches it to TCB (they
 //! shape nothing else). Values show the *primary* key (the first selected); an edit sets the
@@ -14,7 +14,7 @@ pub use super::fields::KeyField;
 use super::fields::{euler_degrees, from_euler_degrees};
 use super::keyedit::retime;
 use super::keystrip::KeyRef;
-use crate::anim::{Animation, Interp, Key, Value};
+use crate::anim::{Animation, Interp, Key, Repeat, Value};
 
 /// Buttons of the key panel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -128,4 +128,71 @@ pub fn set_field(
         track.insert_key(new).map_err(|e| e.to_string())?;
     }
     Ok((out, keys.to_vec()))
+}
+
+/// `anim` with every selected key's parameters changed by `f` (ranges
+/// stay in bounds, so setting them cannot fail).
+fn with_params(
+    anim: &Animation,
+    keys: &[KeyRef],
+    f: impl Fn(&mut crate::anim::KeyParams),
+) -> Animation {
+    let mut out = anim.clone();
+    for k in keys {
+        if let Some(t) = out.track_mut(k.target()) {
+            if let Some(idx) = t.key_index_at(k.frame) {
+                if let Some(mut p) = t.key_params(idx) {
+                    f(&mut p);
+                    let _ = t.set_key_params(idx, p);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The selected keys' segments with interpolation `i`.
+pub fn with_interp(anim: &Animation, keys: &[KeyRef], i: Interp) -> Animation {
+    with_params(anim, keys, |p| p.interp = i)
+}
+
+/// The selected keys with ease `e` (in, out, both or none).
+pub fn with_ease(anim: &Animation, keys: &[KeyRef], e: super::keyedit::Ease) -> Animation {
+    with_params(anim, keys, |p| e.apply(p))
+}
+
+/// The selected keys' tracks with repeat mode `r`, and the line saying so.
+pub fn with_repeat(anim: &Animation, keys: &[KeyRef], r: Repeat) -> (Animation, &'static str) {
+    let mut out = anim.clone();
+    for k in keys {
+        if let Some(t) = out.track_mut(k.target()) {
+            t.repeat = r;
+        }
+    }
+    let label = match r {
+        Repeat::Constant => "Track holds its end values",
+        Repeat::Loop => "Track loops its keys",
+    };
+    (out, label)
+}
+
+/// The primary key's property's selected on/off keys flipped (from the
+/// primary's value), and whether they were on; `None` unless the primary
+/// is an on/off key.
+pub fn toggled(anim: &Animation, keys: &[KeyRef]) -> Option<(Animation, bool)> {
+    let p = keys.first()?;
+    let Value::Bool(b) = p.get(anim)?.value else {
+        return None;
+    };
+    let mut out = anim.clone();
+    for k in keys.iter().filter(|k| k.property == p.property) {
+        let Some(key) = k.get(&out) else { continue };
+        if let Some(t) = out.track_mut(k.target()) {
+            let _ = t.insert_key(Key {
+                value: Value::Bool(!b),
+                ..key
+            });
+        }
+    }
+    Some((out, b))
 }

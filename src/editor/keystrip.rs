@@ -96,9 +96,6 @@ pub(super) struct Clipboard {
 pub struct KeyStrip {
     pub(super) selected: Vec<KeyRef>,
     pub collapsed: bool,
-    /// Show the node's properties instead of the key panel while keys are
-    /// selected.
-    pub node_panel: bool,
     pub(super) clipboard: Clipboard,
     /// Recent (animation, key selection) pairs, newest last: undo and redo
     /// bring back the selection that went with the animation they restore.

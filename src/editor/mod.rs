@@ -21,6 +21,7 @@ pub mod command;
 pub mod component;
 pub mod create;
 pub mod dialog;
+pub mod disk;
 mod draw;
 pub mod fields;
 mod gesture;
@@ -30,6 +31,7 @@ mod graph_menu;
 pub mod help;
 pub mod keyedit;
 pub mod keymenu;
+pub mod keypanel;
 pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
@@ -149,6 +151,8 @@ pub struct Editor {
     manip: manip::Manip,
     /// Key strip: selected keys, fold state, clipboard, strip drags.
     keys: keystrip::KeyStrip,
+    /// The key panel (whether "Object" put the node's properties back).
+    key_panel: keypanel::KeyPanel,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
     /// The graph editor (taken out while it handles an event).
@@ -191,8 +195,9 @@ pub struct Editor {
     scroll: [usize; 2],
     /// The selection the lists were last scrolled to show.
     revealed: Option<NodeId>,
-    /// Folder the file browser starts in when no file is open.
-    start_dir: PathBuf,
+    /// Where the file browser starts when no file is open and what `~/`
+    /// stands for: the shell says (`set_start_dir`, `set_home`).
+    places: browser::Places,
     pose: Option<(u64, f32, Pose)>,
     /// Bounding sphere of the shown scene, cached like `pose` (handles ask
     /// for it on every mouse move; it walks every vertex).
@@ -231,6 +236,7 @@ impl Editor {
             pending: None,
             manip: manip::Manip::default(),
             keys: keystrip::KeyStrip::default(),
+            key_panel: keypanel::KeyPanel::default(),
             onion: onion::Onion::default(),
             graph: None,
             graph_shown: false,
@@ -256,8 +262,8 @@ impl Editor {
             help: false,
             scroll: [0, 0],
             revealed: None,
-            // The shell passes the working directory (`set_start_dir`).
-            start_dir: PathBuf::from("."),
+            // The shell passes the working directory and $HOME.
+            places: browser::Places::default(),
             pose: None,
             sphere: None,
             autosave: recovery::Autosave::default(),
@@ -386,7 +392,13 @@ impl Editor {
     /// passes the working directory; `.` until then: the editor asks the
     /// process for nothing).
     pub fn set_start_dir(&mut self, dir: &Path) {
-        self.start_dir = dir.to_path_buf();
+        self.places.start = dir.to_path_buf();
+    }
+
+    /// What a typed `~/` in the file browser stands for (`animed edit`
+    /// passes `$HOME`; until then `~/` is an ordinary name).
+    pub fn set_home(&mut self, home: Option<&Path>) {
+        self.places.home = home.map(Path::to_path_buf);
     }
 
     pub fn select(&mut self, id: Option<NodeId>) {
@@ -561,8 +573,9 @@ impl Editor {
             .and_then(|p| p.parent())
             .filter(|p| !p.as_os_str().is_empty())
             .map(Path::to_path_buf)
-            .unwrap_or_else(|| self.start_dir.clone());
-        self.browser = Some(Browser::new(purpose, &dir));
+            .unwrap_or_else(|| self.places.start.clone());
+        let home = self.places.home.as_deref();
+        self.browser = Some(Browser::new(purpose, &dir, home));
         self.browser_then = then;
         self.edit = None;
     }

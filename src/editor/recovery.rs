@@ -15,10 +15,12 @@
 //!   is only deleted by "Discard copy" or by saving over its scene.
 //! * Time comes from `Event::Tick`s: the window loop sends one at least
 //!   every second, scripts with `wait-frames` / `sleep-ms`.
-//! * Who touches the disk: only the shell (`shell.rs`) and `animed
-//!   recover` call the reading and writing helpers here (`newer_copy`,
-//!   `untitled_sessions`, `write`); the editor asks for them with
-//!   `request::Request`s.
+//! * Who touches the disk: nobody here. These are the rules (names, which
+//!   copy is worth offering, the order of sessions, how times read, the
+//!   autosave clock); the shell's `disk.rs` reads folders, file times,
+//!   `/proc` and the environment with them, for the shell (`shell.rs`) and
+//!   `animed recover`. The editor asks for that work with
+//!   `request::Request`s, and the shell tells it the state folder.
 
 use crate::input::{Event, MouseButton};
 use std::path::{Path, PathBuf};
@@ -44,22 +46,18 @@ pub fn recovery_path(scene: &Path) -> PathBuf {
     }
 }
 
-/// Folder for copies of untitled scenes: `$XDG_STATE_HOME/animed`, else
-/// `~/.local/state/animed`, else the system's temporary folder.
-pub fn state_dir() -> PathBuf {
-    let abs = |v: Option<std::ffi::OsString>| v.map(PathBuf::from).filter(|p| p.is_absolute());
-    if let Some(d) = abs(std::env::var_os("XDG_STATE_HOME")) {
+/// Folder for copies of untitled scenes, from the environment's values
+/// (the shell reads them, `disk::state_dir`): `$XDG_STATE_HOME/animed`,
+/// else `$HOME/.local/state/animed`, else `animed` in the temporary
+/// folder `tmp`. Relative values are ignored, as the XDG spec says.
+pub fn state_dir_from(xdg_state_home: Option<&Path>, home: Option<&Path>, tmp: &Path) -> PathBuf {
+    if let Some(d) = xdg_state_home.filter(|p| p.is_absolute()) {
         return d.join("animed");
     }
-    if let Some(h) = abs(std::env::var_os("HOME")) {
+    if let Some(h) = home.filter(|p| p.is_absolute()) {
         return h.join(".local/state/animed");
     }
-    std::env::temp_dir().join("animed")
-}
-
-/// The recovery copy of this process's untitled scene.
-pub fn untitled_path() -> PathBuf {
-    untitled_in(&state_dir())
+    tmp.join("animed")
 }
 
 /// This process's untitled copy in `dir`.
@@ -67,15 +65,10 @@ pub fn untitled_in(dir: &Path) -> PathBuf {
     dir.join(format!("untitled-{}{SUFFIX}", std::process::id()))
 }
 
-/// The recovery copy beside `scene` and when it was written, if it exists
-/// and is newer than the scene file (or the scene file is gone).
-pub fn newer_copy(scene: &Path) -> Option<(PathBuf, SystemTime)> {
-    let r = recovery_path(scene);
-    let copy = std::fs::metadata(&r).and_then(|m| m.modified()).ok()?;
-    match std::fs::metadata(scene).and_then(|m| m.modified()) {
-        Ok(saved) if saved >= copy => None,
-        _ => Some((r, copy)),
-    }
+/// Whether a recovery copy written at `copy` is worth offering over its
+/// scene last modified at `scene` (`None`: the scene file is gone).
+pub fn copy_is_newer(copy: SystemTime, scene: Option<SystemTime>) -> bool {
+    scene.is_none_or(|saved| saved < copy)
 }
 
 /// One untitled session's recovery copy left by an editor that is gone
@@ -110,50 +103,16 @@ pub fn untitled_pid(path: &Path) -> Option<u32> {
         .ok()
 }
 
-/// Whether the editor that writes copies under `pid` still runs: this
-/// process, or a live process named animed (Linux `/proc`; elsewhere
-/// every other copy counts as left behind). A killed editor nobody has
-/// reaped yet (a zombie, state `Z`) is gone.
-pub fn session_alive(pid: u32) -> bool {
-    if pid == std::process::id() {
-        return true;
-    }
-    let named = std::fs::read_to_string(format!("/proc/{pid}/comm"))
-        .is_ok_and(|c| c.trim_end().starts_with("animed"));
-    named && !is_zombie(&std::fs::read_to_string(format!("/proc/{pid}/stat")).unwrap_or_default())
-}
-
 /// `/proc/PID/stat` text of a zombie: the state after the name's `)` is Z.
-fn is_zombie(stat: &str) -> bool {
+pub fn is_zombie(stat: &str) -> bool {
     stat.rfind(')')
         .and_then(|i| stat[i + 1..].split_whitespace().next())
         .is_some_and(|s| s == "Z")
 }
 
-/// Every untitled recovery copy in `dir` whose editor is gone, newest
-/// first. Each copy is loaded once to count its objects.
-pub fn untitled_sessions(dir: &Path) -> Vec<Session> {
-    let Ok(rd) = std::fs::read_dir(dir) else {
-        return Vec::new();
-    };
-    let mut out: Vec<Session> = rd
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| untitled_pid(p).is_some_and(|pid| !session_alive(pid)))
-        .filter_map(|path| {
-            let written = std::fs::metadata(&path).and_then(|m| m.modified()).ok()?;
-            let objects = crate::format::load(&path)
-                .ok()
-                .map(|l| super::ops::objects(&l.scene).len());
-            Some(Session {
-                path,
-                written,
-                objects,
-            })
-        })
-        .collect();
-    out.sort_by(|a, b| b.written.cmp(&a.written).then(a.path.cmp(&b.path)));
-    out
+/// Sorts sessions newest first (ties by path, so the order is stable).
+pub fn newest_first(sessions: &mut [Session]) {
+    sessions.sort_by(|a, b| b.written.cmp(&a.written).then(a.path.cmp(&b.path)));
 }
 
 /// The lines `animed recover --list` prints and the start-up dialog shows:
@@ -164,16 +123,6 @@ pub fn session_lines(sessions: &[Session], now: SystemTime) -> Vec<String> {
         .enumerate()
         .map(|(i, s)| format!("{}  {}", i + 1, s.describe(now)))
         .collect()
-}
-
-/// Writes `scene` as a recovery copy (VRML97 with the key note, atomically).
-pub fn write(scene: &crate::scene::Scene, path: &Path) -> Result<(), String> {
-    if let Some(d) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(d).map_err(|e| format!("{}: {e}", d.display()))?;
-    }
-    crate::format::save(scene, path, &crate::format::WriteOptions::default())
-        .map(|_| ())
-        .map_err(|e| e.to_string())
 }
 
 /// "2026-11-22 02:31 UTC, 3 min ago" for `t` seen at `now`.
@@ -237,8 +186,9 @@ pub struct Autosave {
     /// dialog points at.
     pub(super) untitled: Vec<Session>,
     pub(super) chosen: usize,
-    /// Folder of untitled copies when not `state_dir()` (the one offered
-    /// from at start).
+    /// Folder of untitled copies: the shell's state folder
+    /// (`Editor::set_state_dir`) or the one sessions were offered from;
+    /// `None`: untitled work gets no copy.
     pub(super) dir: Option<PathBuf>,
     /// How long the last autosave took, in milliseconds.
     pub(super) last_ms: Option<f64>,
@@ -305,6 +255,40 @@ mod tests {
         assert!(!is_zombie("833 (animed) S 1 833 833 0 -1"));
         assert!(!is_zombie("833 (a) b) R 1"));
         assert!(!is_zombie(""));
-        assert!(session_alive(std::process::id()));
+    }
+
+    #[test]
+    fn the_state_folder_follows_xdg_then_home_then_tmp() {
+        let (x, h, t) = (Path::new("/x"), Path::new("/h"), Path::new("/t"));
+        assert_eq!(state_dir_from(Some(x), Some(h), t), x.join("animed"));
+        assert_eq!(
+            state_dir_from(Some(Path::new("rel")), Some(h), t),
+            h.join(".local/state/animed"),
+            "a relative XDG_STATE_HOME is ignored"
+        );
+        assert_eq!(state_dir_from(None, None, t), t.join("animed"));
+        assert_eq!(
+            untitled_pid(&untitled_in(x)),
+            Some(std::process::id()),
+            "the name carries the pid"
+        );
+    }
+
+    #[test]
+    fn only_a_copy_newer_than_its_scene_is_worth_offering() {
+        let t = SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(1000);
+        let later = t + std::time::Duration::from_secs(1);
+        assert!(copy_is_newer(later, Some(t)));
+        assert!(!copy_is_newer(t, Some(t)), "saved at the copy's time");
+        assert!(!copy_is_newer(t, Some(later)));
+        assert!(copy_is_newer(t, None), "the scene file is gone");
+        let s = |p: &str, secs| Session {
+            path: PathBuf::from(p),
+            written: SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(secs),
+            objects: None,
+        };
+        let mut v = vec![s("b", 5), s("a", 9), s("a", 5)];
+        newest_first(&mut v);
+        assert_eq!(v, vec![s("a", 9), s("a", 5), s("b", 5)]);
     }
 }

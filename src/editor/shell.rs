@@ -10,9 +10,10 @@
 //! `*_done` method an event's request would.
 
 use super::browser::{Ask, Entry, Found, Purpose};
-use super::recovery::{self, Session};
+use super::disk;
+use super::recovery::Session;
 use super::request::{AutosaveWhy, Read, Request};
-use super::{views, Editor};
+use super::Editor;
 use crate::format::export::atomic::{EditLock, Stamp};
 use crate::scene::Scene;
 use std::path::{Path, PathBuf};
@@ -66,7 +67,7 @@ fn perform_one(ed: &mut Editor, r: Request) {
         }
         Request::Remove(p) => remove(&p),
         Request::FindRecovery { scene } => {
-            if let Some((copy, when)) = recovery::newer_copy(&scene) {
+            if let Some((copy, when)) = disk::newer_copy(&scene) {
                 ed.recovery_found(&scene, copy, when, SystemTime::now());
             }
         }
@@ -93,7 +94,7 @@ fn perform_one(ed: &mut Editor, r: Request) {
             ed.texture_read(&path, material, r);
         }
         Request::RecallView { memory, key } => {
-            if let Some(m) = views::recall(&memory, &key) {
+            if let Some(m) = disk::recall(&memory, &key) {
                 ed.view_recalled(m);
             }
         }
@@ -102,7 +103,7 @@ fn perform_one(ed: &mut Editor, r: Request) {
             ed.browser_found(ask, found);
         }
         Request::RememberView { memory, key, memo } => {
-            if let Err(e) = views::remember(&memory, &key, &memo) {
+            if let Err(e) = disk::remember(&memory, &key, &memo) {
                 ed.file_error(&format!("cannot remember the view: {e}"));
             }
         }
@@ -173,7 +174,7 @@ fn list(dir: &Path, purpose: Purpose) -> Result<Vec<Entry>, String> {
 fn autosave(ed: &mut Editor, path: PathBuf, why: AutosaveWhy) -> Result<PathBuf, String> {
     let rev = ed.history().revision();
     let t0 = Instant::now();
-    let r = recovery::write(ed.scene(), &path).map(|()| t0.elapsed().as_secs_f64() * 1e3);
+    let r = disk::write(ed.scene(), &path).map(|()| t0.elapsed().as_secs_f64() * 1e3);
     let out = r.clone().map(|_| path.clone());
     ed.autosave_done(path, why, r, rev);
     out
@@ -249,7 +250,9 @@ impl Editor {
 
     /// Writes the recovery copy now; returns where.
     pub fn autosave_now(&mut self) -> Result<PathBuf, String> {
-        let path = self.recovery_file();
+        let path = self
+            .recovery_file()
+            .ok_or("no state folder for a copy of untitled work")?;
         let out = autosave(self, path, AutosaveWhy::Now);
         perform(self);
         out
@@ -266,14 +269,14 @@ impl Editor {
     }
 
     /// At start: when untitled sessions left recovery copies in `dir` (the
-    /// state folder, see `recovery::state_dir`), lists them newest first
+    /// state folder, see `disk::state_dir`), lists them newest first
     /// in the recovery dialog (unless another question is open). Returns
     /// how many were offered.
     pub fn offer_untitled(&mut self, dir: &Path) -> usize {
         if self.dialog().is_some() {
             return 0;
         }
-        let list: Vec<Session> = recovery::untitled_sessions(dir);
+        let list: Vec<Session> = disk::untitled_sessions(dir);
         let n = self.offer_sessions(dir, list, SystemTime::now());
         perform(self);
         n
@@ -284,7 +287,8 @@ impl Editor {
     /// unsaved and keeps being autosaved). The copy becomes this session's
     /// own, so a save or a clean quit deletes it.
     pub fn recover_untitled(&mut self, copy: &Path) {
-        let mine = self.untitled_file();
+        // Without a state folder the copy is taken over where it is.
+        let mine = self.untitled_file().unwrap_or_else(|| copy.to_path_buf());
         perform_one(
             self,
             Request::RecoverUntitled {

@@ -2,11 +2,13 @@
 //! orthographic/perspective; 0 to look through the scene's camera and
 //! back) and the per-file memory of the view. The view is an editor
 //! setting, never written into the scene: it is kept in a small text file
-//! in the state folder, one line per scene file.
+//! in the state folder, one line per scene file. These are the rules (the
+//! lines, on text); reading and writing the file is the shell's
+//! (`disk.rs`).
 
 use crate::input::OrbitCamera;
 use std::f32::consts::{FRAC_PI_2, PI};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// A view command (the View menu's items and the numpad keys).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -180,9 +182,9 @@ fn parse(rest: &str) -> Option<Memo> {
     Some(memo)
 }
 
-/// The remembered view of `scene` (an absolute path) in `memory`.
-pub fn recall(memory: &Path, scene: &Path) -> Option<Memo> {
-    let text = std::fs::read_to_string(memory).ok()?;
+/// The remembered view of `scene` (an absolute path) in the memory's
+/// `text` (the newest line wins).
+pub fn recall_in(text: &str, scene: &Path) -> Option<Memo> {
     let key = scene.display().to_string();
     text.lines()
         .rev()
@@ -190,10 +192,10 @@ pub fn recall(memory: &Path, scene: &Path) -> Option<Memo> {
         .and_then(parse)
 }
 
-/// Remembers `memo` for `scene`, replacing its older line.
-pub fn remember(memory: &Path, scene: &Path, memo: &Memo) -> Result<(), String> {
+/// The memory's text after remembering `memo` for `scene` in `old`: its
+/// older line goes, the new one is last, at most [`KEEP`] lines stay.
+pub fn remember_in(old: &str, scene: &Path, memo: &Memo) -> String {
     let key = scene.display().to_string();
-    let old = std::fs::read_to_string(memory).unwrap_or_default();
     let mut lines: Vec<&str> = old
         .lines()
         .filter(|l| l.split_once('\t').is_some_and(|(p, _)| p != key))
@@ -206,12 +208,7 @@ pub fn remember(memory: &Path, scene: &Path, memo: &Memo) -> Result<(), String> 
     }
     text += &line_of(scene, memo);
     text.push('\n');
-    if let Some(d) = memory.parent() {
-        std::fs::create_dir_all(d).map_err(|e| format!("{}: {e}", d.display()))?;
-    }
-    let tmp: PathBuf = memory.with_extension("tmp");
-    std::fs::write(&tmp, text).map_err(|e| format!("{}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, memory).map_err(|e| format!("{}: {e}", memory.display()))
+    text
 }
 
 #[cfg(test)]
@@ -228,12 +225,9 @@ mod tests {
 
     #[test]
     fn views_are_remembered_per_file() {
-        let d = std::env::temp_dir().join(format!("animed-views-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&d);
-        let mem = d.join("views");
         let a = Path::new("/x/a.wrl");
         let b = Path::new("/x/b wrl.iv");
-        assert_eq!(recall(&mem, a), None);
+        assert_eq!(recall_in("", a), None);
         let ca = Memo {
             camera: OrbitCamera {
                 yaw: 1.25,
@@ -251,14 +245,21 @@ mod tests {
             zoom: None,
             preview: None,
         };
-        remember(&mem, a, &ca).unwrap();
-        remember(&mem, b, &cb).unwrap();
-        remember(&mem, a, &ca).unwrap();
-        assert_eq!(recall(&mem, a), Some(ca));
-        assert_eq!(recall(&mem, b), Some(cb));
-        let text = std::fs::read_to_string(&mem).unwrap();
+        let mut text = remember_in("", a, &ca);
+        text = remember_in(&text, b, &cb);
+        text = remember_in(&text, a, &ca);
+        assert_eq!(recall_in(&text, a), Some(ca));
+        assert_eq!(recall_in(&text, b), Some(cb));
         assert_eq!(text.lines().count(), 2, "one line per file: {text}");
-        std::fs::remove_dir_all(&d).unwrap();
+        assert!(text.lines().last().unwrap().starts_with("/x/a.wrl\t"));
+        // At most KEEP lines: the oldest go first.
+        let mut many = String::new();
+        for i in 0..KEEP + 5 {
+            many = remember_in(&many, Path::new(&format!("/f{i}.wrl")), &cb);
+        }
+        assert_eq!(many.lines().count(), KEEP);
+        assert_eq!(recall_in(&many, Path::new("/f4.wrl")), None);
+        assert_eq!(recall_in(&many, Path::new("/f5.wrl")), Some(cb));
     }
 
     #[test]

@@ -23,6 +23,7 @@ mod fragment;
 mod frame;
 mod geometry;
 pub mod job;
+mod label;
 mod lanes;
 mod log2_lanes;
 mod prepare;

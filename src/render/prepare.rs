@@ -6,6 +6,7 @@
 use super::background::Painter;
 use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::geometry::Geometry;
+use super::label::label_matrix;
 use super::shade::{ShadeMaterial, WorldLight};
 use super::texture::Sampler;
 use super::tri_gradients::Gradients;
@@ -278,7 +279,14 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             .get(shape.material.0 as usize)
             .or_else(|| scene.materials.get(shape.material.0 as usize))
             .unwrap_or(&default_material);
-        let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        let mut world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
+        // An Inventor Text2 faces the viewer at a constant pixel size.
+        if let Some(t) = mesh.text.as_deref().filter(|t| t.units_per_pixel > 0.0) {
+            match label_matrix(world, view, opts.height, t.units_per_pixel) {
+                Some(m) => world = m,
+                None => continue,
+            }
+        }
         // Morphed/skinned shapes draw the pose's deformed vertices.
         let geo = Geometry::of(mesh, pose, node_id, world);
 

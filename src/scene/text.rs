@@ -34,7 +34,8 @@ pub enum TextKind {
     Text,
     /// VRML 1.0 `AsciiText`.
     AsciiText,
-    /// Inventor `Text2` (screen-aligned in Inventor; drawn flat here).
+    /// Inventor `Text2`: screen-aligned at a constant pixel size (see
+    /// `TextSpec::units_per_pixel`).
     Text2,
     /// Inventor `Text3` with its parts (front, sides, back) and the depth
     /// its sides are extruded to.
@@ -69,6 +70,10 @@ pub struct TextSpec {
     pub length: Vec<f32>,
     /// When > 0, lines longer than this are compressed to it.
     pub max_extent: f32,
+    /// For an Inventor `Text2` (`size` in pixels): local units of the built
+    /// mesh per pixel, so the renderer can draw the label `size` pixels
+    /// high facing the viewer (`render/label.rs`). 0 for every other text.
+    pub units_per_pixel: f32,
 }
 
 impl Default for TextSpec {
@@ -89,6 +94,7 @@ impl Default for TextSpec {
             top_to_bottom: true,
             length: Vec::new(),
             max_extent: 0.0,
+            units_per_pixel: 0.0,
         }
     }
 }

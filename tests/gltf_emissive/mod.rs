@@ -1,8 +1,9 @@
 //! glTF emissive maps (issue 14 item 2: "emissive and its texture"):
 //! `tests/data/gltf/emissive.gltf` (made by `make.py`) read into the
 //! material's emissive slot with its sampler, texture transform and
-//! texture coordinate set; KHR_materials_unlit's base colour texture drawn
-//! through the same slot; written back as `emissiveTexture` in .gltf and
+//! texture coordinate set; KHR_materials_unlit read as an unlit material
+//! (its base colour texture multiplying the base colour, vertex colours
+//! drawn as they are, lights ignored); written back as `emissiveTexture` in .gltf and
 //! .glb; and the ways a file can get it wrong, each a warning naming its
 //! JSON pointer. The picture is `render_textures::gltf_emissive_maps`.
 
@@ -67,14 +68,16 @@ fn emissive_textures_are_read_with_sampler_transform_and_factor() {
     let e = lit.emissive;
     let want = animed::internals::format::gltf::srgb_from_linear(Vec3::new(0.2, 0.6, 1.0));
     assert!((e - want).abs().max_element() < 1e-6, "{e} vs {want}");
-    // Unlit: base colour × base texture is the unlit colour, so the base
-    // texture is also the emissive map; diffuse stays black.
+    // Unlit: lighting off; base colour × base texture is the unlit colour
+    // (the texture multiplies it), no emissive map; diffuse stays black.
     let unlit = material(s, "Unlit");
+    assert!(unlit.unlit);
     assert_eq!(unlit.diffuse, Vec3::ZERO);
     assert_eq!(
-        unlit.texture.as_ref().map(|t| t.image),
-        unlit.emissive_texture.as_ref().map(|t| t.image)
+        unlit.texture.as_ref().map(|t| t.model),
+        Some(TextureModel::MultiplyDiffuse)
     );
+    assert!(unlit.emissive_texture.is_none());
 }
 
 #[test]
@@ -89,7 +92,9 @@ fn emissive_maps_survive_gltf_and_glb_round_trips() {
         let b = format::load(&out).unwrap();
         assert!(b.warnings.is_empty(), "{:?}", b.warnings);
         let b = b.scene;
-        for name in ["Glow", "Lit", "Unlit"] {
+        let (ua, ub) = (material(&a, "Unlit"), material(&b, "Unlit"));
+        assert!(ub.unlit && ub.emissive == ua.emissive && ub.texture.is_some());
+        for name in ["Glow", "Lit"] {
             let (ma, mb) = (material(&a, name), material(&b, name));
             assert_eq!(ma.emissive, mb.emissive, "{name}");
             assert_eq!(ma.diffuse, mb.diffuse, "{name}");
@@ -163,5 +168,56 @@ fn wrong_texcoord_sets_and_missing_images_are_warnings_with_json_pointers() {
         "/images/0: cannot read texture 'image0'",
     );
     assert!(material(&s, "Glow").emissive_texture.is_none());
-    assert!(material(&s, "Unlit").emissive_texture.is_none());
+    assert!(material(&s, "Unlit").texture.is_none());
+}
+
+/// KHR_materials_unlit with COLOR_0 from a file animed did not write (no
+/// `extras`): the vertex colours are the colour, lights or not — they were
+/// lit and had the base colour added as emission before. A VRML97 face
+/// set without Material but with a Color node is the same thing, so it
+/// makes the file; through .glb with extras it stays unlit too.
+#[test]
+fn unlit_vertex_colours_are_drawn_as_they_are() {
+    use animed::internals::render::job::{render_at, FrameSpec, Headlight};
+    let wrl = "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet {\n  coord Coordinate { point [-1 -1 0, 1 -1 0, 1 1 0, -1 1 0] }\n  coordIndex [0 1 2 3 -1]\n  color Color { color [0.2 0.6 0.4, 0.2 0.6 0.4, 0.2 0.6 0.4, 0.2 0.6 0.4] }\n} }\n";
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("gltf_unlit_colours");
+    std::fs::create_dir_all(&dir).unwrap();
+    let a = load_bytes(wrl.as_bytes(), &dir.join("quad.wrl"))
+        .unwrap()
+        .scene;
+    let gltf = dir.join("quad.gltf");
+    format::save(&a, &gltf, &WriteOptions::default()).unwrap();
+    let mut doc: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&gltf).unwrap()).unwrap();
+    assert!(doc["materials"][0]["extensions"]["KHR_materials_unlit"].is_object());
+    assert_eq!(doc["materials"][0]["extras"]["animed"]["unlit"], true);
+    doc["materials"][0]
+        .as_object_mut()
+        .unwrap()
+        .remove("extras");
+    let foreign = load_bytes(&serde_json::to_vec(&doc).unwrap(), &gltf)
+        .unwrap()
+        .scene;
+    let glb = dir.join("quad.glb");
+    format::save(&a, &glb, &WriteOptions::default()).unwrap();
+    let own = format::load(&glb).unwrap().scene;
+    for (tag, s) in [("foreign .gltf", &foreign), ("animed .glb", &own)] {
+        assert!(s.materials.iter().all(|m| m.unlit), "{tag}: not unlit");
+        for headlight in [Headlight::On, Headlight::Off] {
+            let spec = FrameSpec {
+                width: 64,
+                height: 48,
+                headlight,
+                ..FrameSpec::default()
+            };
+            let f = render_at(s, &spec, 0.0).unwrap();
+            let c = f.color[24 * 64 + 32];
+            let got = [(c >> 16) & 255, (c >> 8) & 255, c & 255].map(|v| v as i32);
+            let want = [51, 153, 102];
+            assert!(
+                got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1),
+                "{tag}, headlight {headlight:?}: {got:?} vs {want:?}"
+            );
+        }
+    }
 }

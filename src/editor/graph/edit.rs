@@ -111,17 +111,24 @@ impl Chords {
         }
     }
 
-    /// The bias that makes the slope `s` at tension and continuity of
-    /// `tcb` (the tangent is linear in bias), clamped to [-1, 1]; `None`
-    /// where bias does nothing (an end key, or equal chords' slopes).
-    pub fn bias_for(&self, tcb: Tcb, s: f32) -> Option<f32> {
+    /// The bias after turning the tangent handle by `turn` radians (up,
+    /// counter-clockwise on screen, is positive) from bias `from`, at the
+    /// tension and continuity of `tcb`: [`TURN_PER_BIAS`] per unit, in the
+    /// direction that steepens the curve the way the handle turned;
+    /// clamped to [-1, 1]. An angle scale, as tension's length is a ratio
+    /// scale: solving the bias that points the tangent at the mouse made
+    /// a flat curve span its whole bias range in a few degrees (a 10-px
+    /// tilt over a 40-px pull hit 1). `None` where bias does nothing (an
+    /// end key, or equal chords' slopes).
+    pub fn bias_turned(&self, tcb: Tcb, from: f32, turn: f32) -> Option<f32> {
         self.before?;
         let at = |bias| self.slope(Tcb { bias, ..tcb });
         let (lo, hi) = (at(-1.0)?, at(1.0)?);
-        if (hi - lo).abs() < 1e-6 || !s.is_finite() {
+        if (hi - lo).abs() < 1e-6 || !turn.is_finite() {
             return None;
         }
-        Some((-1.0 + 2.0 * (s - lo) / (hi - lo)).clamp(-1.0, 1.0))
+        let steeper = (hi - lo).signum();
+        Some((from + steeper * turn / TURN_PER_BIAS).clamp(-1.0, 1.0))
     }
 }
 
@@ -155,6 +162,10 @@ pub fn handle_len(t: f32) -> f32 {
 pub fn tension_for_len(len: f32) -> f32 {
     (-(len.max(1e-3) / HANDLE_PX).ln() / LOOSEN.ln()).clamp(-1.0, 1.0)
 }
+
+/// Handle turn per unit of bias: 45°, so tilting a handle from bias 0 to
+/// either end takes an eighth of a turn, however flat the curve is.
+pub const TURN_PER_BIAS: f32 = std::f32::consts::FRAC_PI_4;
 
 /// The length ratio between tension 0 and tension -1 (or 1 and 0).
 const LOOSEN: f32 = 4.0;
@@ -206,23 +217,36 @@ mod tests {
     }
 
     #[test]
-    fn bias_solves_back_to_the_slope_it_was_given() {
+    fn bias_turns_with_the_handle_on_an_angle_scale() {
         let keys = [(0.0, 0.0), (10.0, 2.0), (30.0, -1.0)];
         let c = Chords::at(&keys, 1);
-        for bias in [-0.8f32, -0.2, 0.0, 0.5, 0.9] {
-            let tcb = Tcb {
-                tension: 0.3,
-                continuity: 0.0,
-                bias,
-            };
-            let s = c.slope(tcb).unwrap();
-            let b = c.bias_for(tcb, s).unwrap();
-            assert!((b - bias).abs() < 1e-4, "{bias} -> {s} -> {b}");
-        }
+        let tcb = Tcb {
+            tension: 0.3,
+            ..Tcb::default()
+        };
+        // Which way bias steepens this key's outgoing slope.
+        let up = c.slope(Tcb { bias: 1.0, ..tcb }).unwrap() > c.slope(tcb).unwrap();
+        let sign = if up { 1.0 } else { -1.0 };
+        let q = TURN_PER_BIAS;
+        assert!((c.bias_turned(tcb, 0.0, q / 2.0).unwrap() - sign * 0.5).abs() < 1e-6);
+        assert!((c.bias_turned(tcb, 0.5, -q).unwrap() - (0.5 - sign)).abs() < 1e-6);
+        assert_eq!(c.bias_turned(tcb, 0.0, 10.0 * q).unwrap(), sign, "clamped");
+        assert_eq!(
+            c.bias_turned(tcb, 0.2, 0.0),
+            Some(0.2),
+            "no turn, no change"
+        );
+        // A 10-px tilt over a 40-px pull: about 0.31, not the limit.
+        let b = c.bias_turned(tcb, 0.0, 10.0f32.atan2(40.0)).unwrap();
+        assert!((b.abs() - 0.312).abs() < 0.01, "{b}");
+        assert_eq!(
+            Chords::at(&keys, 0).bias_turned(tcb, 0.0, 0.3),
+            None,
+            "end key"
+        );
         // Catmull-Rom with uneven spacing: (P2 - P0)/(t2 - t0) per frame.
         let s = Chords::at(&keys, 1).slope(Tcb::default()).unwrap();
         assert!((s - (-1.0 - 0.0) / 30.0).abs() < 1e-5, "{s}");
-        assert_eq!(Chords::at(&keys, 0).bias_for(Tcb::default(), 1.0), None);
     }
 
     #[test]

@@ -644,8 +644,13 @@ impl GraphEditor {
                         .find(|s| s.ch == key.ch)
                         .map(|s| s.scale)
                         .unwrap_or(1.0);
-                    let slope = (-dy / (sy * scale)) / (dx / sx);
-                    if let Some(b) = chords.bias_for(new, slope) {
+                    // Bias follows the handle's turn since the grab, on an
+                    // angle scale (`edit::TURN_PER_BIAS`); screen up is
+                    // up the curve unless the channel's scale flips it.
+                    let flip = (sy * scale / sx).signum();
+                    let angle = |dx: f32, dy: f32| (-dy * flip).atan2(dx);
+                    let turn = angle(dx, dy) - angle((start.0 - p.0).max(1.0), start.1 - p.1);
+                    if let Some(b) = chords.bias_turned(new, tcb.bias, turn) {
                         new.bias = b;
                     }
                 }

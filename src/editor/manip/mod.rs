@@ -2,8 +2,9 @@
 //! arrows and plane squares (`translate`), rotate rings (`rotate`), scale
 //! boxes (`scale`), and dragging the object's body in the view plane
 //! (`body`). With the rotate tool a drag inside the rings (not on a ring
-//! or the body) turns freely (trackball). This file holds the tool choice, hover and drag state, and
-//! dispatches mouse events to the kind under the mouse.
+//! or the body) turns freely (trackball). This file holds the tool choice,
+//! hover and drag state; `handles.rs` is the component that hit-tests,
+//! drags and draws them; `aim.rs` names handles for scripts.
 //!
 //! Tools: W move, E rotate, T scale (R is record mode), or the toolbar's
 //! Mov / Rot / Scl buttons. Ctrl snaps: grid step, 15°, 0.1. Esc cancels.
@@ -12,9 +13,10 @@
 //! change (shown over its tracks); the release records one command, with a
 //! key in record mode on the changed property.
 
-pub(super) mod aim;
+pub mod aim;
 pub(super) mod body;
 pub mod geom;
+pub mod handles;
 pub mod rotate;
 pub mod scale;
 pub mod translate;
@@ -43,6 +45,9 @@ pub enum Tool {
 }
 
 impl Tool {
+    /// Every tool, in the order `HandlesCtx::targets` holds them.
+    pub const ALL: [Tool; 3] = [Tool::Translate, Tool::Rotate, Tool::Scale];
+
     /// Name shown in the viewport label.
     pub fn name(self) -> &'static str {
         match self {
@@ -95,17 +100,21 @@ impl Handle {
     }
 }
 
-/// Tool and hover state of the handles (a drag is the editor's gesture,
-/// `gesture::Drag::Handle`).
+/// The handles' state: tool, hover, and the drag they run (the editor's
+/// gesture is then `gesture::Drag::Handle`), or a press on the selection
+/// armed to become one (`handles.rs`).
 #[derive(Clone, Debug, Default)]
 pub struct Manip {
     pub tool: Tool,
     pub hover: Option<Handle>,
+    pub(super) drag: Option<HandleDrag>,
+    /// Where the press was and the handle it becomes past the slop.
+    pub(super) armed: Option<((f32, f32), Handle)>,
 }
 
 /// What the handles of a tool act on.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Target {
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Target {
     pub(super) id: NodeId,
     pub(super) property: Property,
     /// The fixed point of the change, in world space.

@@ -39,8 +39,9 @@ impl Editor {
                     .map(Path::to_path_buf)
             })
             .filter(|p| !p.as_os_str().is_empty())
-            .unwrap_or_else(|| self.start_dir.clone());
-        self.browser = Some(Browser::new(Purpose::Texture, &dir));
+            .unwrap_or_else(|| self.places.start.clone());
+        let home = self.places.home.as_deref();
+        self.browser = Some(Browser::new(Purpose::Texture, &dir, home));
         self.browser_then = None;
         self.set_status(
             "Choose an image (PNG, JPEG, GIF, BMP, SGI) for the texture; Esc cancels",

@@ -123,9 +123,11 @@ impl Editor {
                 self.autosave.untitled.clear();
                 self.autosave.offer = None;
                 self.dialog = None;
-                let mine = self.untitled_file();
-                self.requests
-                    .push(Request::RecoverUntitled { copy: s.path, mine });
+                // Offered sessions came from the state folder: it is set.
+                if let Some(mine) = self.untitled_file() {
+                    self.requests
+                        .push(Request::RecoverUntitled { copy: s.path, mine });
+                }
             }
             Answer::Discard => {
                 let s = self.autosave.untitled.remove(i);

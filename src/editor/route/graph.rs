@@ -2,8 +2,6 @@
 //! strip's place), the context it sees, routing events to it and applying
 //! the intents it returns.
 
-use crate::editor::command::Command;
-use crate::editor::component::{Intent, Response};
 use crate::editor::gesture::Drag;
 use crate::editor::graph::{Ctx, GraphEditor};
 use crate::editor::Editor;
@@ -79,43 +77,6 @@ impl Editor {
         self.graph_height = g.height;
         self.graph = Some(g);
         self.apply_response(r)
-    }
-
-    /// Applies a component's intents; `Some(redraw)` when it took the event.
-    pub(in crate::internals::editor) fn apply_response(&mut self, r: Response) -> Option<bool> {
-        for i in r.intents {
-            match i {
-                Intent::Preview(after) => {
-                    let before = Box::new(self.scene.animation.clone());
-                    self.preview(&Command::SetAnimation {
-                        before,
-                        after: Box::new(after),
-                    });
-                }
-                Intent::Commit {
-                    label,
-                    before,
-                    after,
-                } => {
-                    self.scene.animation = after.clone();
-                    self.push_applied(
-                        &label,
-                        Command::SetAnimation {
-                            before: Box::new(before),
-                            after: Box::new(after),
-                        },
-                    );
-                }
-                Intent::SelectKeys(keys) => self.set_key_selection(keys),
-                Intent::Seek(f) => {
-                    self.stop_playback();
-                    self.frame = f;
-                }
-                Intent::Status(s, error) => self.set_status(&s, error),
-                Intent::ContextMenu(at) => self.open_graph_menu(at),
-            }
-        }
-        r.consumed.then_some(r.redraw)
     }
 
     /// Shift+F6 and the toolbar button.

@@ -144,14 +144,16 @@ impl Editor {
             Drag::Keys => self.strip_event(&Event::MouseMove { x, y, mods }),
             // A handle drag, a pick about to become one, or hover over
             // the handles.
-            Drag::Handle(_) | Drag::Pick { .. } | Drag::None => self.handles_move(x, y, mods),
+            Drag::Handle | Drag::Pick { armed: true, .. } | Drag::None => {
+                self.handles_move(x, y, mods)
+            }
             _ => None,
         };
         if let Some(redraw) = part {
             return redraw;
         }
         match self.drag.clone() {
-            Drag::Handle(_) | Drag::Keys | Drag::Ik(_) | Drag::Graph => false,
+            Drag::Handle | Drag::Keys | Drag::Ik(_) | Drag::Graph => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -289,7 +291,7 @@ impl Editor {
                 (MouseButton::Left, Mode::View) => Drag::Orbit { last: (x, y) },
                 (MouseButton::Left, Mode::Select) => Drag::Pick {
                     at: (x, y),
-                    armed: None,
+                    armed: false,
                 },
                 (MouseButton::Right, _) => Drag::Context {
                     at: (x, y),
@@ -393,10 +395,11 @@ impl Editor {
                 self.ik_release();
                 return;
             }
-            Drag::Handle(_) => {
+            Drag::Handle => {
                 self.handles_release();
                 return;
             }
+            Drag::Pick { armed: true, .. } => self.handles_disarm(),
             Drag::Keys => {
                 self.strip_event(&Event::MouseUp { button, x, y, mods });
                 return;
@@ -1027,7 +1030,7 @@ impl Editor {
             Action::Delete => self.delete_selection(),
             Action::Rename => {
                 if let Some(sel) = self.selection {
-                    self.keys.node_panel = true;
+                    self.key_panel.node_shown = true;
                     let name = self.scene.node(sel).name.clone();
                     self.edit = Some(TextEdit {
                         field: FieldId::Name,

@@ -24,7 +24,7 @@ impl Editor {
     pub(in crate::internals::editor) fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
         self.keys.selected = keys;
         self.remember_key_selection();
-        self.keys.node_panel = false;
+        self.key_panel.node_shown = false;
         // The properties section changes size: show the selection's row
         // in the lists again.
         self.revealed = None;

@@ -2,12 +2,14 @@
 //! apply what they return. Nothing outside this folder imports it, so the
 //! parts below never depend on the editor that holds them.
 
+mod aim;
 mod browser;
 mod create;
 mod dialog;
 mod files;
 mod graph;
 mod input;
+mod intents;
 mod keyedit;
 mod keyprops;
 mod keystrip;

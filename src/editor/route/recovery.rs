@@ -20,20 +20,25 @@ impl Editor {
         self.is_dirty() || self.autosave.written.is_some()
     }
 
-    /// Where this session's recovery copy goes.
-    pub fn recovery_file(&self) -> PathBuf {
+    /// The folder where untitled work is autosaved (the shell's state
+    /// folder, `disk::state_dir`): the editor never reads the environment.
+    /// Without one, untitled work gets no recovery copy.
+    pub fn set_state_dir(&mut self, dir: &Path) {
+        self.autosave.dir = Some(dir.to_path_buf());
+    }
+
+    /// Where this session's recovery copy goes (`None`: untitled work and
+    /// no state folder given).
+    pub fn recovery_file(&self) -> Option<PathBuf> {
         match &self.path {
-            Some(p) => recovery_path(p),
+            Some(p) => Some(recovery_path(p)),
             None => self.untitled_file(),
         }
     }
 
     /// Where this session's untitled work is autosaved.
-    pub(in crate::internals::editor) fn untitled_file(&self) -> PathBuf {
-        match &self.autosave.dir {
-            Some(d) => untitled_in(d),
-            None => untitled_path(),
-        }
+    pub(in crate::internals::editor) fn untitled_file(&self) -> Option<PathBuf> {
+        self.autosave.dir.as_deref().map(untitled_in)
     }
 
     /// The recovery copy this session wrote, if it still stands.
@@ -82,7 +87,9 @@ impl Editor {
         // Waits another interval if the write fails (on success the wait
         // starts at the next change).
         self.autosave.since = Some(now);
-        let path = self.recovery_file();
+        let Some(path) = self.recovery_file() else {
+            return false;
+        };
         self.requests.push(Request::Autosave {
             path,
             why: AutosaveWhy::Clock,
@@ -139,8 +146,7 @@ impl Editor {
     /// of both names are out of date.
     pub(in crate::internals::editor) fn saved_recovery(&mut self, old: Option<&Path>) {
         self.forget_recovery();
-        if old.is_none() {
-            let p = self.untitled_file();
+        if let Some(p) = self.untitled_file().filter(|_| old.is_none()) {
             self.requests.push(Request::Remove(p));
         }
         if let Some(p) = &self.path {
@@ -349,12 +355,19 @@ mod tests {
             recovery_path(Path::new("a.iv")),
             PathBuf::from(".a.iv.animed-recovery.wrl")
         );
-        let u = untitled_path();
-        assert!(u.is_absolute(), "{}", u.display());
-        assert!(u.to_string_lossy().ends_with(&format!(
-            "untitled-{}.animed-recovery.wrl",
-            std::process::id()
-        )));
+        // Untitled work goes to the state folder the shell gives, and
+        // nowhere without one (the editor reads no environment).
+        let mut ed = Editor::new(boxes(), None, 320, 240);
+        assert_eq!(ed.recovery_file(), None);
+        ed.set_state_dir(Path::new("/state/animed"));
+        let u = ed.recovery_file().unwrap();
+        assert_eq!(
+            u,
+            Path::new("/state/animed").join(format!(
+                "untitled-{}.animed-recovery.wrl",
+                std::process::id()
+            ))
+        );
     }
 
     #[test]
@@ -362,7 +375,7 @@ mod tests {
         let d = tmp_dir("newer");
         let scene = d.join("s.wrl");
         std::fs::write(&scene, "#VRML V2.0 utf8\n").unwrap();
-        assert_eq!(newer_copy(&scene), None, "no copy");
+        assert_eq!(crate::editor::disk::newer_copy(&scene), None, "no copy");
         let copy = recovery_path(&scene);
         std::fs::write(&copy, "#VRML V2.0 utf8\n").unwrap();
         let now = SystemTime::now();
@@ -372,13 +385,16 @@ mod tests {
         };
         set(&scene, now - Duration::from_secs(60));
         set(&copy, now);
-        assert_eq!(newer_copy(&scene).map(|c| c.0), Some(copy.clone()));
+        assert_eq!(
+            crate::editor::disk::newer_copy(&scene).map(|c| c.0),
+            Some(copy.clone())
+        );
         // Saved after the copy: the copy is stale.
         set(&scene, now + Duration::from_secs(1));
-        assert_eq!(newer_copy(&scene), None);
+        assert_eq!(crate::editor::disk::newer_copy(&scene), None);
         // The scene file is gone: the copy is all there is.
         std::fs::remove_file(&scene).unwrap();
-        assert!(newer_copy(&scene).is_some());
+        assert!(crate::editor::disk::newer_copy(&scene).is_some());
         std::fs::remove_dir_all(&d).unwrap();
     }
 

@@ -30,11 +30,12 @@
 //! * transparency = 1 − alpha for alphaMode BLEND; MASK shows the material
 //!   opaque when alpha ≥ alphaCutoff and fully transparent below; OPAQUE
 //!   ignores alpha (§3.9.4);
-//! * KHR_materials_unlit: diffuse and specular black, emissive = the base
-//!   colour, which is exactly an unlit surface in the VRML lighting model;
-//!   its base colour texture is then the emissive map too (the reader),
-//!   and its emissive factor and texture are ignored, as the extension
-//!   says;
+//! * KHR_materials_unlit: an unlit material (`Material::unlit`, lighting
+//!   off as for a VRML97 Shape without Material) whose colour is the base
+//!   colour (kept as the emissive colour, diffuse and specular black), or
+//!   the vertex colours (COLOR_0 × base colour, see `mesh.rs`) where the
+//!   primitive has them; its base colour texture multiplies that colour;
+//!   its emissive factor and texture are ignored, as the extension says;
 //! * a primitive without a material gets animed's (VRML97) default
 //!   material rather than glTF's white rough metal, which renders black
 //!   without an environment.
@@ -214,7 +215,7 @@ pub fn phong_from_extras(m: &gltf::Material, read: &Pbr) -> Option<Material> {
         transparency: f("transparency")?,
         texture: slot(m.pbr_metallic_roughness().base_color_texture().is_some()),
         emissive_texture: slot(m.emissive_texture().is_some()),
-        unlit: false,
+        unlit: a.get("unlit").and_then(|u| u.as_bool()).unwrap_or(false),
     };
     let mut want = pbr_from_phong(&phong);
     want.name = read.name.clone();
@@ -275,7 +276,7 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
             transparency,
             texture: None,
             emissive_texture: None,
-            unlit: false,
+            unlit: true,
         };
     }
     let metallic = p.metallic.clamp(0.0, 1.0);
@@ -302,7 +303,9 @@ pub fn phong_from_pbr(p: &Pbr) -> Material {
 /// colour is written unlit (KHR_materials_unlit) with that colour —
 /// unless its only texture is an emissive map, which unlit glTF cannot
 /// say without changing the texture's role (then it stays lit, with black
-/// base colour, and the map is its emissiveTexture).
+/// base colour, and the map is its emissiveTexture); an unlit material
+/// (lighting off) is written unlit with its emissive colour, the colour it
+/// draws without vertex colours.
 /// Transparency becomes alpha with alphaMode BLEND.
 pub fn pbr_from_phong(m: &Material) -> Pbr {
     use gltf::material::AlphaMode;
@@ -313,10 +316,11 @@ pub fn pbr_from_phong(m: &Material) -> Pbr {
         AlphaMode::Opaque
     };
     let only_emissive_map = m.texture.is_none() && m.emissive_texture.is_some();
-    if m.diffuse == Vec3::ZERO
-        && m.specular == Vec3::ZERO
-        && m.emissive != Vec3::ZERO
-        && !only_emissive_map
+    if m.unlit
+        || (m.diffuse == Vec3::ZERO
+            && m.specular == Vec3::ZERO
+            && m.emissive != Vec3::ZERO
+            && !only_emissive_map)
     {
         let c = linear_exact(m.emissive);
         return Pbr {

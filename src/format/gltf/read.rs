@@ -360,9 +360,8 @@ impl<'a> Builder<'a, '_> {
     }
 
     /// The emissive map of material `i` and its TEXCOORD set (§3.9.3):
-    /// its emissiveTexture, or for KHR_materials_unlit (whose base colour
-    /// is drawn as our emissive colour, see `material.rs`) the base colour
-    /// texture. Meshes keep one coordinate set, so an emissive texture
+    /// its emissiveTexture; none for KHR_materials_unlit, which ignores it
+    /// (the unlit colour is base colour × base colour texture). Meshes keep one coordinate set, so an emissive texture
     /// reading another set than the base colour texture is left out with
     /// a warning at its JSON pointer.
     fn emissive_texture(
@@ -373,9 +372,7 @@ impl<'a> Builder<'a, '_> {
         base: Option<&(crate::scene::Texture, u32)>,
     ) -> Option<(crate::scene::Texture, u32)> {
         if pbr.unlit {
-            // The unlit colour is baseColorFactor × baseColorTexture; the
-            // base slot stays for the texture's alpha.
-            return base.cloned();
+            return None;
         }
         let (t, set) = texture::emissive_texture(m, &self.images)?;
         match base {

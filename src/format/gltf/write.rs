@@ -176,16 +176,21 @@ fn put_transform(node: &mut Map<String, Json>, t: &Transform) {
     }
 }
 
-/// The exact Phong values, for `extras.animed` of a material.
+/// The exact Phong values, for `extras.animed` of a material (`unlit`
+/// only when lighting is off, so lit materials keep their bytes).
 fn phong_extras(m: &Material) -> Json {
-    json!({
+    let mut extras = json!({
         "diffuse": nums(&m.diffuse.to_array()),
         "ambientIntensity": num(m.ambient_intensity),
         "specular": nums(&m.specular.to_array()),
         "emissive": nums(&m.emissive.to_array()),
         "shininess": num(m.shininess),
         "transparency": num(m.transparency),
-    })
+    });
+    if m.unlit {
+        extras["unlit"] = json!(true);
+    }
+    extras
 }
 
 fn material_json(

@@ -456,6 +456,16 @@ impl Builder {
             } else {
                 self.material(st, texture)
             };
+        // Coin culls no primitive: a closed one is drawn culled only because
+        // its back faces cannot show; through a see-through material or
+        // texture they do, so such a primitive is two-sided.
+        if matches!(n.kind.as_str(), "Cube" | "Cone" | "Sphere" | "Cylinder")
+            && self.see_through(material)
+        {
+            if let Some(m) = self.scene.meshes.get_mut(mesh.0 as usize) {
+                m.solid = false;
+            }
+        }
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
         (node.style, node.line_width, node.point_size) = (st.style, st.line_width, st.point_size);
         self.add(n.pos, cur, node);
@@ -568,12 +578,35 @@ impl Builder {
         let mesh = self.scene.add_mesh(m);
         // Text carries no texture coordinates: drawn untextured.
         let material = self.material(st, None);
+        // Coin culls no primitive: a closed one is drawn culled only because
+        // its back faces cannot show; through a see-through material or
+        // texture they do, so such a primitive is two-sided.
+        if matches!(n.kind.as_str(), "Cube" | "Cone" | "Sphere" | "Cylinder")
+            && self.see_through(material)
+        {
+            if let Some(m) = self.scene.meshes.get_mut(mesh.0 as usize) {
+                m.solid = false;
+            }
+        }
         let mut node = Node::new(name, NodeKind::Shape(Shape { mesh, material }));
         (node.style, node.line_width, node.point_size) = (st.style, st.line_width, st.point_size);
         self.add(n.pos, cur, node);
     }
 
     /// The scene material for the state's first material values.
+    /// Whether a shape drawn with `material` lets its back faces show: some
+    /// transparency, or a texture with a see-through texel.
+    fn see_through(&self, material: MaterialId) -> bool {
+        let Some(m) = self.scene.materials.get(material.0 as usize) else {
+            return false;
+        };
+        m.transparency > 0.0
+            || m.texture
+                .as_ref()
+                .and_then(|t| self.scene.image(t.image))
+                .is_some_and(|i| i.has_alpha())
+    }
+
     fn material(&mut self, st: &State, texture: Option<Texture>) -> MaterialId {
         let key = (
             State::ptr(&st.material),

@@ -142,6 +142,23 @@ fn inherited_switch_values_and_open_primitives() {
     assert!(!solid("Open") && solid("Closed"));
 }
 
+/// Coin culls no primitive, so a closed one seen through its own
+/// transparency or an RGBA texture with see-through texels shows its back
+/// faces (castle `inlined_pixel_textures.wrl`); opaque ones stay culled.
+#[test]
+fn see_through_primitives_are_two_sided() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF Opaque Sphere {}\n Separator { Material { transparency 0.5 } DEF Glass Sphere {} }\n Separator { Texture2 { image 1 2 4 0xFF0000FF 0x00FF0080 } DEF Holes Cube {} }\n Separator { Texture2 { image 1 2 3 0xFF0000 0x00FF00 } DEF Painted Cube {} }\n}",
+    );
+    let s = &l.scene;
+    let solid = |n| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].solid,
+        _ => panic!(),
+    };
+    assert!(solid("Opaque") && solid("Painted"));
+    assert!(!solid("Glass") && !solid("Holes"));
+}
+
 #[test]
 fn indexed_face_set_with_per_face_materials_and_clockwise_hints() {
     let l = load(

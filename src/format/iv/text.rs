@@ -156,8 +156,9 @@ pub const TEXT2_VIEW_PIXELS: f32 = 240.0;
 
 /// Gives every Text2 its size in scene units: `size` pixels of a view in
 /// which the rest of the scene's bounding box (diagonal) spans
-/// [`TEXT2_VIEW_PIXELS`]. Inventor draws Text2 at a constant pixel size
-/// facing the viewer; a static mesh can only approximate that.
+/// [`TEXT2_VIEW_PIXELS`] — the size writers and the editor see. The
+/// renderer draws it at a constant pixel size facing the viewer, as
+/// Inventor does, through the `units_per_pixel` kept on its spec.
 pub fn size_text2(scene: &mut Scene) {
     let text2 = |m: &Mesh| matches!(m.text.as_deref(), Some(t) if t.kind == TextKind::Text2);
     if !scene.meshes.iter().any(text2) {
@@ -209,9 +210,11 @@ pub fn size_text2(scene: &mut Scene) {
             .max(w.y_axis.truncate().length());
         let m = &mut scene.meshes[mesh.0 as usize];
         let Some(spec) = m.text.take() else { continue };
+        let mut spec = spec;
         let mut drawn = (*spec).clone();
         if scale > 0.0 && scale.is_finite() {
             drawn.size = spec.size * per_pixel / scale;
+            spec.units_per_pixel = per_pixel / scale;
         }
         // The budget was asked for the same glyphs at the first build.
         if let Ok(mut built) = text_mesh(&drawn, true) {
@@ -310,11 +313,14 @@ mod tests {
         );
         let m = text_meshes(&l.scene);
         // The cube's diagonal (24·√2 ≈ 33.9) spans 240 pixels, so 10-pixel
-        // text is about 1.41 units high (an 'M' is 0.73 em).
+        // text is about 1.41 units high (an 'M' is 0.655 em).
         let (lo, hi) = m[0].bounds().unwrap();
         let h = hi.y - lo.y;
-        assert!((h - 0.729 * 33.94 / 24.0).abs() < 0.05, "{h}");
-        assert_eq!(m[0].text.as_ref().unwrap().size, 10.0);
+        assert!((h - 0.655 * 33.94 / 24.0).abs() < 0.05, "{h}");
+        let spec = m[0].text.as_ref().unwrap();
+        assert_eq!(spec.size, 10.0);
+        // The renderer draws it 10 pixels high through this scale.
+        assert!((spec.units_per_pixel - 33.94 / 240.0).abs() < 1e-3);
     }
 
     #[test]

@@ -1,7 +1,10 @@
-//! The embedded fonts: DejaVu Sans, Serif and Sans Mono in four styles each
-//! (`assets/fonts/`, Bitstream Vera licence, subset to Latin, Greek and
-//! Cyrillic without hinting — see `assets/fonts/README.md`), read with
-//! ttf-parser.
+//! The embedded fonts: Liberation Serif, Sans and Mono 2.1.5 in four styles
+//! each, renamed "Animed Metric …" (`assets/fonts/`, SIL OFL 1.1, subset to
+//! Latin, Greek and Cyrillic without hinting — see `assets/fonts/README.md`),
+//! read with ttf-parser. Why these: their advance widths equal Times, Arial
+//! and Courier's, the metrics of the Nimbus faces Coin gets from fontconfig
+//! for SERIF/SANS/TYPEWRITER and Inventor's Times/Helvetica/Courier, so text
+//! lines are as long as Coin's and view-all frames text-heavy files alike.
 //!
 //! Only what layout needs leaves this file: advances, kerning, the ascent
 //! and descent, and a glyph's outline in em units (1 = the font size).
@@ -17,44 +20,44 @@ macro_rules! font {
 
 /// [regular, bold, italic, bold italic] per family.
 static SERIF: [&[u8]; 4] = [
-    font!("DejaVuSerif.ttf"),
-    font!("DejaVuSerif-Bold.ttf"),
-    font!("DejaVuSerif-Italic.ttf"),
-    font!("DejaVuSerif-BoldItalic.ttf"),
+    font!("AnimedMetricSerif-Regular.ttf"),
+    font!("AnimedMetricSerif-Bold.ttf"),
+    font!("AnimedMetricSerif-Italic.ttf"),
+    font!("AnimedMetricSerif-BoldItalic.ttf"),
 ];
 static SANS: [&[u8]; 4] = [
-    font!("DejaVuSans.ttf"),
-    font!("DejaVuSans-Bold.ttf"),
-    font!("DejaVuSans-Oblique.ttf"),
-    font!("DejaVuSans-BoldOblique.ttf"),
+    font!("AnimedMetricSans-Regular.ttf"),
+    font!("AnimedMetricSans-Bold.ttf"),
+    font!("AnimedMetricSans-Italic.ttf"),
+    font!("AnimedMetricSans-BoldItalic.ttf"),
 ];
 static MONO: [&[u8]; 4] = [
-    font!("DejaVuSansMono.ttf"),
-    font!("DejaVuSansMono-Bold.ttf"),
-    font!("DejaVuSansMono-Oblique.ttf"),
-    font!("DejaVuSansMono-BoldOblique.ttf"),
+    font!("AnimedMetricMono-Regular.ttf"),
+    font!("AnimedMetricMono-Bold.ttf"),
+    font!("AnimedMetricMono-Italic.ttf"),
+    font!("AnimedMetricMono-BoldItalic.ttf"),
 ];
 
 /// The face's file name, for messages and tests.
 pub fn face_name(family: FontFamily, bold: bool, italic: bool) -> &'static str {
     let names = match family {
         FontFamily::Serif => [
-            "DejaVu Serif",
-            "DejaVu Serif Bold",
-            "DejaVu Serif Italic",
-            "DejaVu Serif Bold Italic",
+            "Animed Metric Serif",
+            "Animed Metric Serif Bold",
+            "Animed Metric Serif Italic",
+            "Animed Metric Serif Bold Italic",
         ],
         FontFamily::Sans => [
-            "DejaVu Sans",
-            "DejaVu Sans Bold",
-            "DejaVu Sans Oblique",
-            "DejaVu Sans Bold Oblique",
+            "Animed Metric Sans",
+            "Animed Metric Sans Bold",
+            "Animed Metric Sans Italic",
+            "Animed Metric Sans Bold Italic",
         ],
         FontFamily::Typewriter => [
-            "DejaVu Sans Mono",
-            "DejaVu Sans Mono Bold",
-            "DejaVu Sans Mono Oblique",
-            "DejaVu Sans Mono Bold Oblique",
+            "Animed Metric Mono",
+            "Animed Metric Mono Bold",
+            "Animed Metric Mono Italic",
+            "Animed Metric Mono Bold Italic",
         ],
     };
     names[style_index(bold, italic)]
@@ -94,7 +97,7 @@ impl Font {
         };
         let face = Face::parse(set[style_index(bold, italic)], 0)
             .or_else(|_| Face::parse(SANS[0], 0))
-            .expect("the embedded DejaVu Sans parses");
+            .expect("the embedded sans face parses");
         let scale = 1.0 / f32::from(face.units_per_em().max(1));
         Font { face, scale }
     }
@@ -247,16 +250,42 @@ mod tests {
     #[test]
     fn metrics_are_in_em() {
         let f = Font::new(FontFamily::Sans, false, false);
-        // DejaVu Sans: 2048 units per em, ascender 1901, descender -483.
-        assert!((f.ascent() - 1901.0 / 2048.0).abs() < 1e-6);
-        assert!((f.descent() - 483.0 / 2048.0).abs() < 1e-6);
+        // Liberation Sans: 2048 units per em, ascender 1854, descender -434.
+        assert!((f.ascent() - 1854.0 / 2048.0).abs() < 1e-6);
+        assert!((f.descent() - 434.0 / 2048.0).abs() < 1e-6);
         let m = Font::new(FontFamily::Typewriter, false, false);
         // A monospace font: every ASCII glyph advances the same.
         let w = m.advance(m.glyph('i'));
         assert!(w > 0.5 && w < 0.7, "{w}");
         assert_eq!(w, m.advance(m.glyph('W')));
-        // 'A' 'V' kern together in DejaVu Sans.
+        // Courier's advance: 0.6 em (1229 of 2048 units).
+        assert_eq!(w, 1229.0 / 2048.0);
+        // 'A' 'V' kern together in Liberation Sans.
         assert!(f.kerning(f.glyph('A'), f.glyph('V')) < 0.0);
+    }
+
+    /// The reason these faces are embedded: Coin draws SERIF/SANS/TYPEWRITER
+    /// (and Inventor's Times/Helvetica/Courier) with fontconfig's Nimbus
+    /// faces, whose widths are the Adobe core fonts' (Times-Roman.afm,
+    /// Helvetica.afm, Courier.afm, in 1/1000 em); ours must advance alike.
+    #[test]
+    fn advances_match_times_helvetica_and_courier() {
+        let afm: [(FontFamily, [u16; 6]); 3] = [
+            (FontFamily::Serif, [250, 444, 278, 778, 944, 611]),
+            (FontFamily::Sans, [278, 556, 222, 833, 944, 611]),
+            (FontFamily::Typewriter, [600, 600, 600, 600, 600, 600]),
+        ];
+        for (fam, widths) in afm {
+            let f = Font::new(fam, false, false);
+            for (c, w) in " aimWT".chars().zip(widths) {
+                let got = f.advance(f.glyph(c)) * 1000.0;
+                assert!(
+                    (got - f32::from(w)).abs() <= 0.6,
+                    "{} {c:?}: {got} vs {w}",
+                    face_name(fam, false, false)
+                );
+            }
+        }
     }
 
     #[test]

@@ -7,7 +7,7 @@
 //!
 //! Units are the text's local units: a glyph is `size` high (one em).
 //! The "edges" of a line that BEGIN/MIDDLE/END align are its font's ascent
-//! above and descent below the baseline (DejaVu: 0.93 and 0.24 em).
+//! above and descent below the baseline (Liberation Sans, our "Animed Metric Sans": 0.91 and 0.21 em).
 //! Vertical text stacks glyphs in cells `size` high, each centred on its
 //! column, columns `spacing × size` apart.
 

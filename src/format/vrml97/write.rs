@@ -396,8 +396,16 @@ impl Writer<'_> {
             .iter()
             .any(|t| t.target.of == TargetRef::Material(crate::scene::MaterialId(mi as u32)));
         // An unlit material (lighting off, §4.14.2) is an Appearance
-        // without Material too.
-        let unlit = (m.unlit
+        // without Material too — white, or the Color node's colours. An
+        // unlit colour that is neither (glTF KHR_materials_unlit) keeps a
+        // Material with only that emissive colour, which draws the same.
+        let colored = self
+            .scene
+            .meshes
+            .get(s.mesh.0 as usize)
+            .is_some_and(|mesh| !mesh.colors.is_empty());
+        let unlit_white = m.emissive == Vec3::ONE || colored || m.texture.is_some();
+        let unlit = (m.unlit && unlit_white
             || m.texture
                 .as_ref()
                 .is_some_and(|t| t.model == TextureModel::Replace))

@@ -1,0 +1,91 @@
+//! Applying what components return: every component's [`Response`]
+//! passes here, so an intent means the same whichever part asked for it
+//! (scene changes go through undoable commands).
+
+use crate::anim::Property;
+use crate::editor::command::Command;
+use crate::editor::component::{Intent, Response};
+use crate::editor::record::Pending;
+use crate::editor::Editor;
+use crate::scene::{Node, NodeId};
+
+impl Editor {
+    /// Applies a component's intents; `Some(redraw)` when it took the event.
+    pub(in crate::internals::editor) fn apply_response(&mut self, r: Response) -> Option<bool> {
+        for i in r.intents {
+            match i {
+                Intent::Preview(after) => {
+                    let before = Box::new(self.scene.animation.clone());
+                    self.preview(&Command::SetAnimation {
+                        before,
+                        after: Box::new(after),
+                    });
+                }
+                Intent::Commit {
+                    label,
+                    before,
+                    after,
+                } => {
+                    self.scene.animation = after.clone();
+                    self.push_applied(
+                        &label,
+                        Command::SetAnimation {
+                            before: Box::new(before),
+                            after: Box::new(after),
+                        },
+                    );
+                }
+                Intent::SelectKeys(keys) => self.set_key_selection(keys),
+                Intent::ShowKeys(keys) => self.keys.selected = keys,
+                Intent::Seek(f) => {
+                    self.stop_playback();
+                    self.frame = f;
+                }
+                Intent::Status(s, error) => self.set_status(&s, error),
+                Intent::ContextMenu(at) => self.open_graph_menu(at),
+                Intent::StopPlayback => self.stop_playback(),
+                Intent::ShowNode { id, property, node } => self.show_moved(id, property, *node),
+                Intent::PutBack { id, node } => {
+                    self.pending = None;
+                    self.preview(&Command::SetNode {
+                        id,
+                        before: Box::new(self.scene.node(id).clone()),
+                        after: node,
+                    });
+                }
+                Intent::RecordNode {
+                    label,
+                    id,
+                    before,
+                    after,
+                    property,
+                } => {
+                    let c = self.recorded(Command::SetNode { id, before, after }, &[property]);
+                    self.execute(&label, c);
+                }
+            }
+        }
+        r.consumed.then_some(r.redraw)
+    }
+
+    /// Previews `node` (shown over its tracks as a pending change).
+    pub(in crate::internals::editor) fn show_moved(
+        &mut self,
+        id: NodeId,
+        property: Property,
+        node: Node,
+    ) {
+        let c = Command::SetNode {
+            id,
+            before: Box::new(self.scene.node(id).clone()),
+            after: Box::new(node.clone()),
+        };
+        self.preview(&c);
+        self.pending = Some(Pending {
+            id,
+            props: vec![property],
+            frame: self.frame,
+            node: Box::new(self.scene.node(id).clone()),
+        });
+    }
+}
