@@ -345,25 +345,24 @@ fn depth_triangle<V: V8, const W: bool>(
                 all_in &= a >= 0 && b >= 0;
             }
             if !outside {
+                let e1 = edge_lanes::<V>(exact, e[1], s[1]);
+                let e2 = edge_lanes::<V>(exact, e[2], s[2]);
                 if !all_in {
-                    for l in 0..8 {
-                        let li = l as i64;
-                        let inside = (e[0] + li * s[0]) | (e[1] + li * s[1]) | (e[2] + li * s[2]);
-                        if inside < 0 {
-                            mask &= !(1 << l);
-                        }
-                    }
+                    // A lane is outside when an edge is negative there; an
+                    // integer's conversion keeps its sign (0 gives +0), so
+                    // the sign bits of the converted lanes tell.
+                    let e0 = edge_lanes::<V>(exact, e[0], s[0]);
+                    mask &= !e0.or(e1).or(e2).bits();
                 }
                 if mask != 0 {
-                    let w1 = edge_lanes::<V>(exact, e[1], s[1]) * inv_area;
-                    let w2 = edge_lanes::<V>(exact, e[2], s[2]) * inv_area;
+                    let w1 = e1 * inv_area;
+                    let w2 = e2 * inv_area;
                     let z = z0 + w1 * dz1 + w2 * dz2;
                     let i0 = row + c;
                     let depth: &mut [f32; 8] =
                         (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
                     let old = V::load(depth);
-                    let nearer = old.gt(z).and(zero.le(z)).and(V::from_bits(mask));
-                    let m = nearer.bits();
+                    let m = old.gt(z).and(zero.le(z)).bits() & mask;
                     if m != 0 {
                         store_masked(depth, z, m);
                         if W {
@@ -374,9 +373,17 @@ fn depth_triangle<V: V8, const W: bool>(
                                 (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
                             store_masked(b2, w2, m);
                         }
-                        for (l, w) in bufs.winner[i0..i0 + 8].iter_mut().enumerate() {
-                            if m >> l & 1 == 1 {
-                                *w = ti;
+                        let winner: &mut [u32; 8] =
+                            (&mut bufs.winner[i0..i0 + 8]).try_into().expect("8 lanes");
+                        if m == 0xFF {
+                            // Covered and nearer in all eight (inside a
+                            // triangle): one store, not eight tests.
+                            *winner = [ti; 8];
+                        } else {
+                            for (l, w) in winner.iter_mut().enumerate() {
+                                if m >> l & 1 == 1 {
+                                    *w = ti;
+                                }
                             }
                         }
                     }
