@@ -79,7 +79,7 @@ pub enum Intent {
     ViewportMenu((f32, f32)),
     /// Show the IK chain's two joints posed so (an IK drag; kept pending
     /// over their tracks, `rig/ik.rs`).
-    IkPose([(NodeId, Node); 2]),
+    IkPose(Box<[(NodeId, Node); 2]>),
     /// The IK drag ended: record its pose, or keep it pending on animated
     /// joints until K.
     IkDone,

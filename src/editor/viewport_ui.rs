@@ -144,7 +144,9 @@ impl Viewport {
                 cam.zoom(delta);
                 Response::redraw().with(Intent::Camera(cam))
             }
-            Event::KeyDown { key, mods } if self.handles_key(key, mods) => self.to_handles(ev, ctx),
+            Event::KeyDown { key, mods } if self.handles_key(key, mods) => {
+                self.ask_handles(ev, ctx)
+            }
             _ => Response::ignored(),
         };
         // A handle drag started or ended inside the handles.
@@ -164,7 +166,7 @@ impl Viewport {
         }
     }
 
-    fn to_handles(&mut self, ev: &Event, ctx: &ViewportCtx) -> Response {
+    fn ask_handles(&mut self, ev: &Event, ctx: &ViewportCtx) -> Response {
         match &ctx.handles {
             Some(h) => self.handles.handle(ev, h),
             None => Response::ignored(),
@@ -188,7 +190,7 @@ impl Viewport {
                 y,
                 mods: Mods::NONE,
             };
-            let r = self.to_handles(&ev, ctx);
+            let r = self.ask_handles(&ev, ctx);
             if r.consumed {
                 if !self.handles.dragging() {
                     // Armed on the selection: a click still picks.
@@ -225,9 +227,9 @@ impl Viewport {
         let ev = Event::MouseMove { x, y, mods };
         match self.gesture {
             // Hover over the handles; not taken when it changes nothing.
-            Gesture::None => return self.to_handles(&ev, ctx),
+            Gesture::None => return self.ask_handles(&ev, ctx),
             Gesture::Handle | Gesture::Pick { .. } => {
-                let r = self.to_handles(&ev, ctx);
+                let r = self.ask_handles(&ev, ctx);
                 return if r.consumed { r } else { Response::taken() };
             }
             _ => {}
@@ -236,7 +238,7 @@ impl Viewport {
             Gesture::Ik(d) => match ik_drag::moved(d, &ctx.proj, x, y) {
                 None => Response::taken(),
                 Some(None) => Response::redraw(),
-                Some(Some(joints)) => Response::redraw().with(Intent::IkPose(joints)),
+                Some(Some(joints)) => Response::redraw().with(Intent::IkPose(Box::new(joints))),
             },
             Gesture::Orbit { last } => {
                 let mut cam = ctx.camera;
@@ -271,7 +273,7 @@ impl Viewport {
         };
         match std::mem::take(&mut self.gesture) {
             Gesture::Handle => {
-                let mut r = self.to_handles(&up, ctx);
+                let mut r = self.ask_handles(&up, ctx);
                 r.consumed = true;
                 r
             }
@@ -280,7 +282,7 @@ impl Viewport {
                 let mut r = Response::redraw();
                 if self.handles.armed() {
                     // Never past the slop: the handles let go, it stays a click.
-                    r.intents = self.to_handles(&up, ctx).intents;
+                    r.intents = self.ask_handles(&up, ctx).intents;
                 }
                 if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP {
                     r = r.with(Intent::Pick((x, y)));

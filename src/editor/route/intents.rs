@@ -70,7 +70,7 @@ impl Editor {
                 Intent::Camera(c) => self.camera = c,
                 Intent::Pick((x, y)) => self.pick(x, y),
                 Intent::ViewportMenu((x, y)) => self.open_context_menu(x as i32, y as i32),
-                Intent::IkPose(joints) => self.show_ik(joints),
+                Intent::IkPose(joints) => self.show_ik(*joints),
                 Intent::IkDone => self.ik_released(),
             }
         }

@@ -56,7 +56,8 @@ impl Editor {
         if self.viewport_event(&Event::KeyDown { key, mods }).is_some() {
             return true;
         }
-        if !self.viewport.handles.dragging() && !(mods.ctrl || mods.alt) && key == Key::Char('o') {
+        // (During a handle drag the handles took every key above.)
+        if !(mods.ctrl || mods.alt) && key == Key::Char('o') {
             self.toggle_onion();
             return true;
         }
