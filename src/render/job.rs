@@ -246,15 +246,15 @@ mod tests {
                 aa,
                 ..FrameSpec::default()
             };
-            let full = render_at(&s, &spec, 0.5).unwrap();
-            let colour = render_color_at(&s, &spec, 0.5).unwrap();
+            let full = render_at(&s, &spec, 0.0).unwrap();
+            let colour = render_color_at(&s, &spec, 0.0).unwrap();
             assert_eq!(colour.color, full.color, "aa {aa}");
             assert!(full.ids.iter().any(|&i| i != 0), "the box is drawn");
             assert!(colour.depth.is_empty() && colour.ids.is_empty());
-            let pose = evaluate(&s, 0.5);
+            let pose = evaluate(&s, 0.0);
             let view = view_for(&s, &pose, None, 70.0 / 45.0);
             let opts = options_for(&s, &spec);
-            let mut reused = render_at(&s, &spec, 0.5).unwrap();
+            let mut reused = render_at(&s, &spec, 0.0).unwrap();
             render_color_into(&s, &pose, &view, &opts, &mut reused);
             assert_eq!(reused.color, full.color);
             assert!(reused.depth.is_empty() && reused.ids.is_empty());
