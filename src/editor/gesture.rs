@@ -24,6 +24,12 @@ pub(super) enum Drag {
     Ik(Box<IkDrag>),
     /// The graph editor took the press; it keeps its own drag state.
     Graph,
+    /// The key panel took a press on one of its fields; it keeps its own
+    /// drag state (`keypanel.rs`).
+    KeyPanel,
+    /// The side panel took a press on an object row (a drag re-parents
+    /// it); it keeps its own drag state (`side_ui.rs`).
+    Side,
     Orbit {
         last: (f32, f32),
     },
@@ -46,13 +52,6 @@ pub(super) enum Drag {
     Pick {
         at: (f32, f32),
         armed: bool,
-    },
-    /// Pressed on an object list row: a drag drops it onto another row
-    /// (parent) or onto the list's empty space (top level).
-    RowMove {
-        node: NodeId,
-        at: (f32, f32),
-        moved: bool,
     },
     /// Right button in the viewport: a drag pans, a click opens the
     /// viewport's context menu.
@@ -101,8 +100,6 @@ pub(super) enum Base {
     Node(NodeId, Box<Node>),
     Settings(Settings),
     Frame(f32),
-    /// A key panel field: the animation and selected keys at press.
-    Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
     /// A morph slider (`rig/morph.rs`).
     Morph(Box<super::rig::state::MorphBase>),
     /// The clip name field (`rig/clips.rs`): typed, never dragged.

@@ -8,7 +8,8 @@ use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
 use crate::editor::ops;
-use crate::editor::panel::{Action, List, WidgetKind};
+use crate::editor::keypanel::KeyEvent;
+use crate::editor::panel::{Action, WidgetKind};
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -137,6 +138,8 @@ impl Editor {
             Drag::Graph => self.graph_event(&Event::MouseMove { x, y, mods }),
             Drag::Ik(_) => self.ik_move(x, y),
             Drag::Keys => self.strip_event(&Event::MouseMove { x, y, mods }),
+            Drag::KeyPanel => self.key_panel_mouse(KeyEvent::Move { x }),
+            Drag::Side => self.side_event(&Event::MouseMove { x, y, mods }),
             // A handle drag, a pick about to become one, or hover over
             // the handles.
             Drag::Handle | Drag::Pick { armed: true, .. } | Drag::None => {
@@ -148,7 +151,12 @@ impl Editor {
             return redraw;
         }
         match self.drag.clone() {
-            Drag::Handle | Drag::Keys | Drag::Ik(_) | Drag::Graph => false,
+            Drag::Handle
+            | Drag::Keys
+            | Drag::Ik(_)
+            | Drag::Graph
+            | Drag::KeyPanel
+            | Drag::Side => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -200,17 +208,6 @@ impl Editor {
                 self.drag = Drag::Context {
                     at,
                     last: (x, y),
-                    moved: true,
-                };
-                true
-            }
-            Drag::RowMove { node, at, moved } => {
-                if !moved && (x - at.0).abs().max((y - at.1).abs()) < DRAG_SLOP {
-                    return false;
-                }
-                self.drag = Drag::RowMove {
-                    node,
-                    at,
                     moved: true,
                 };
                 true
@@ -342,7 +339,9 @@ impl Editor {
                     return;
                 }
                 self.commit_edit();
-                if let Some(base) = self.field_base(id) {
+                if let FieldId::Key(f) = id {
+                    self.key_field_press(f, x);
+                } else if let Some(base) = self.field_base(id) {
                     self.drag = Drag::Field {
                         id,
                         start_x: x,
@@ -355,16 +354,9 @@ impl Editor {
                 self.commit_edit();
                 self.run_action(action);
             }
-            WidgetKind::Row { node, list, .. } => {
+            WidgetKind::Row { .. } => {
                 self.commit_edit();
-                self.selection = Some(node);
-                if list == List::Objects {
-                    self.drag = Drag::RowMove {
-                        node,
-                        at: (x, y),
-                        moved: false,
-                    };
-                }
+                self.side_event(&Event::MouseDown { button, x, y, mods });
             }
             _ => self.commit_edit(),
         }
@@ -396,6 +388,14 @@ impl Editor {
                 self.strip_event(&Event::MouseUp { button, x, y, mods });
                 return;
             }
+            Drag::KeyPanel => {
+                self.key_panel_mouse(KeyEvent::Release);
+                return;
+            }
+            Drag::Side => {
+                self.side_event(&Event::MouseUp { button, x, y, mods });
+                return;
+            }
             _ => {}
         }
         match std::mem::take(&mut self.drag) {
@@ -425,9 +425,6 @@ impl Editor {
             {
                 self.pick(x, y);
             }
-            Drag::RowMove {
-                node, moved: true, ..
-            } => self.drop_in_list(node, x, y),
             Drag::Context { moved: false, .. } => self.open_context_menu(x as i32, y as i32),
             Drag::Preview { .. } => {
                 let r = self.timeline.preview;
@@ -491,7 +488,8 @@ impl Editor {
             return Some(Base::Settings(self.scene.settings.clone()));
         }
         if let FieldId::Key(_) = id {
-            return self.key_field_base().map(|(a, k)| Base::Keys(a, k));
+            // The key panel holds its fields' presses (`keypanel.rs`).
+            return None;
         }
         if let FieldId::Morph(_) = id {
             return self.morph_base().map(|b| Base::Morph(Box::new(b)));
@@ -519,7 +517,6 @@ impl Editor {
             Base::Frame(f) => Some(FieldValue::Number(*f)),
             Base::Settings(s) => id.read_settings(s),
             Base::Node(_, n) => id.read_node(n),
-            Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
             Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
             Base::Clip => Some(FieldValue::Text(self.clip_name())),
             Base::Preview => self.preview_field(id).map(FieldValue::Number),
@@ -540,7 +537,6 @@ impl Editor {
     ) -> Option<Command> {
         match base {
             Base::Frame(_)
-            | Base::Keys(..)
             | Base::Morph(_)
             | Base::Clip
             | Base::Material(_)
@@ -566,10 +562,6 @@ impl Editor {
 
     pub(in crate::internals::editor) fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
         self.stop_playback();
-        if let Base::Keys(a, k) = base {
-            self.drag_key_field(id, a, k, dx);
-            return;
-        }
         let Some(FieldValue::Number(v0)) = self.field_value(id, base) else {
             return;
         };
@@ -601,7 +593,6 @@ impl Editor {
                     self.finish_material_drag(f, &b);
                 }
             }
-            Base::Keys(before, _) => self.finish_key_field_drag(id, before),
             Base::Morph(b) => {
                 let v = self.morph_pending().map(|p| p.weights);
                 let v = v.and_then(|w| {
@@ -784,10 +775,24 @@ impl Editor {
 
     /// Esc during a drag: put back what the drag changed.
     pub(in crate::internals::editor) fn cancel_drag(&mut self) {
+        match self.drag {
+            Drag::KeyPanel => {
+                self.key_panel_mouse(KeyEvent::Cancel);
+                return;
+            }
+            Drag::Side => {
+                let esc = Event::KeyDown {
+                    key: Key::Escape,
+                    mods: Mods::NONE,
+                };
+                self.side_event(&esc);
+                return;
+            }
+            _ => {}
+        }
         if let Drag::Field { id, base, .. } = std::mem::take(&mut self.drag) {
             match base {
                 Base::Frame(f) => self.frame = f,
-                Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
                 Base::Clip | Base::Preview => {}
                 Base::Material(_) => self.cancel_material_drag(),
                 Base::Morph(_) => {
@@ -1040,31 +1045,6 @@ impl Editor {
 
     /// The end of an object list drag: onto another object's row puts the
     /// dragged one under it; onto the list's empty space, at the top level.
-    pub(in crate::internals::editor) fn drop_in_list(
-        &mut self,
-        node: crate::scene::NodeId,
-        x: f32,
-        y: f32,
-    ) {
-        let target = self.widget_at(x, y).and_then(|w| match w.kind {
-            WidgetKind::Row {
-                node: t,
-                list: List::Objects,
-                ..
-            } => Some(t),
-            _ => None,
-        });
-        match target {
-            Some(t) if t == node => {}
-            Some(t) => self.reparent(node, Some(t)),
-            None if self.side_panel().objects.contains(x, y) => self.reparent(node, None),
-            None => self.set_status(
-                "Drop on an object's row to parent it there, on the list's empty space to unparent",
-                false,
-            ),
-        }
-    }
-
     pub(in crate::internals::editor) fn cycle_object_style(&mut self) {
         let Some(sel) = self.selection else { return };
         let next = match self.scene.node(sel).style {
