@@ -167,9 +167,6 @@ impl Editor {
 
     fn field_text(&self, id: super::fields::FieldId, max_chars: usize) -> String {
         use super::fields::FieldId;
-        if let FieldId::Key(k) = id {
-            return self.key_field_text(k, max_chars);
-        }
         if id == FieldId::ClipName {
             return self.clip_name();
         }

@@ -742,7 +742,8 @@ impl Editor {
     pub(in crate::internals::editor) fn key_down(&mut self, key: Key, mods: Mods) {
         if let Some(e) = &mut self.edit {
             match key {
-                Key::Enter | Key::Tab => self.commit_edit(),
+                Key::Enter => self.commit_edit(),
+                Key::Tab => self.tab_field(mods.shift),
                 Key::Escape => self.edit = None,
                 Key::Backspace => {
                     if e.fresh {

@@ -63,16 +63,6 @@ impl Editor {
         self.key_panel.rows(&self.key_panel_ctx())
     }
 
-    /// Text of a key panel field.
-    pub(in crate::internals::editor) fn key_field_text(
-        &self,
-        f: KeyField,
-        max_chars: usize,
-    ) -> String {
-        self.key_panel
-            .field_text(f, max_chars, &self.key_panel_ctx())
-    }
-
     /// Enter in a key field: sets the typed number on the selected keys.
     pub(in crate::internals::editor) fn commit_key_field(&mut self, id: FieldId, x: f32) {
         if let FieldId::Key(field) = id {

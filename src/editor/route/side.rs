@@ -5,12 +5,14 @@
 //! for hit testing (`route/panel.rs` builds the scene section and the
 //! properties' faces the panel places).
 
+use crate::editor::fields::{FieldId, FieldValue};
 use crate::editor::gesture::Drag;
+use crate::editor::keypanel::KeyPanel;
 use crate::editor::ops;
-use crate::editor::panel::Widget;
+use crate::editor::panel::{Widget, WidgetKind};
 use crate::editor::props_view::Look;
 use crate::editor::side_ui::{LightRow, ObjectRow, Section, SectionKind, SideCtx};
-use crate::editor::Editor;
+use crate::editor::{Editor, TextEdit};
 use crate::input::Event;
 use crate::ui::{theme, Painter, Rect, SidePanel};
 
@@ -115,6 +117,56 @@ impl Editor {
     /// The side panel paints its lists, scroll bars and row drag.
     pub(in crate::internals::editor) fn draw_side(&self, p: &mut Painter) {
         self.side.draw(p, &self.side_ctx(), &self.side_look());
+    }
+
+    /// Tab while typing: records the field and types into the next field
+    /// of the side panel (Shift: the one before), scrolling the
+    /// properties so it shows. A field outside the side panel (the frame,
+    /// the preview range) only records, as Enter does.
+    pub(in crate::internals::editor) fn tab_field(&mut self, back: bool) {
+        let Some(from) = self.edit.as_ref().map(|e| e.field) else {
+            return;
+        };
+        self.commit_edit();
+        let order = self.side_fields();
+        let Some(i) = order.iter().position(|&f| f == from) else {
+            return;
+        };
+        let n = order.len();
+        let next = order[if back { (i + n - 1) % n } else { (i + 1) % n }];
+        let shown = self.reveal_widget(|w| w.kind == WidgetKind::Field(next));
+        if let (Some(_), Some(text)) = (shown, self.field_start_text(next)) {
+            self.edit = Some(TextEdit {
+                field: next,
+                text,
+                fresh: true,
+            });
+        }
+    }
+
+    /// The side panel's fields in Tab order: the scene section's, then
+    /// every row of the properties, shown or scrolled away.
+    fn side_fields(&self) -> Vec<FieldId> {
+        let ctx = self.side_ctx();
+        let mut all = Vec::new();
+        self.scene_widgets(ctx.sections().scene, &mut all);
+        self.prop_widgets(self.side.props_view(&ctx).tall, &mut all);
+        let field = |w: Widget| match w.kind {
+            WidgetKind::Field(id) => Some(id),
+            _ => None,
+        };
+        all.into_iter().filter_map(field).collect()
+    }
+
+    /// The text typing into field `id` starts from: its value now.
+    fn field_start_text(&self, id: FieldId) -> Option<String> {
+        if let FieldId::Key(f) = id {
+            let keys = self.selected_keys();
+            let v = KeyPanel::number(f, &self.scene.animation, &keys)?;
+            return Some(FieldValue::Number(v).display());
+        }
+        let base = self.field_base(id)?;
+        self.field_value(id, &base).map(|v| v.display())
     }
 
     /// Scrolls the properties until a widget `wanted` shows (as a user
