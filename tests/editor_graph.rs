@@ -628,9 +628,14 @@ fn with_the_graph_open_each_list_and_the_properties_keep_a_row() {
             .count()
     };
     assert!(rows(List::Objects) >= 1, "an object row shows");
-    assert!(rows(List::Lights) >= 1, "a light row shows, not only the header");
+    assert!(
+        rows(List::Lights) >= 1,
+        "a light row shows, not only the header"
+    );
     let has = |s: &str| w.iter().any(|w| format!("{:?}", w.kind) == s);
     // The scene's fields share one row; the ball's name field shows.
     assert!(has("Field(Fps)") && has("Field(Duration)") && has("Field(Name)"));
-    assert!(!w.iter().any(|w| w.kind == WidgetKind::Header("Scene".into())));
+    assert!(!w
+        .iter()
+        .any(|w| w.kind == WidgetKind::Header("Scene".into())));
 }

@@ -62,15 +62,23 @@ const DRAG_SLOP: f32 = 3.0;
 pub enum KeyEvent {
     Button(KeyAction),
     /// The mouse went down on `field` at `x`.
-    Press { field: KeyField, x: f32 },
+    Press {
+        field: KeyField,
+        x: f32,
+    },
     /// The mouse moved to `x` while pressed.
-    Move { x: f32 },
+    Move {
+        x: f32,
+    },
     /// The mouse came up: a drag is one undo step, a click types.
     Release,
     /// Esc during the drag: back to the press.
     Cancel,
     /// A number typed into the field and Enter.
-    Typed { field: KeyField, value: f32 },
+    Typed {
+        field: KeyField,
+        value: f32,
+    },
 }
 
 impl KeyPanel {

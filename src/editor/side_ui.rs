@@ -561,7 +561,12 @@ mod tests {
         c.objects.truncate(2);
         c.area.h = 400;
         let sp = c.sections();
-        let row = |i: i32| (sp.objects.x as f32 + 20.0, (sp.objects.y + ROW * (1 + i) + 8) as f32);
+        let row = |i: i32| {
+            (
+                sp.objects.x as f32 + 20.0,
+                (sp.objects.y + ROW * (1 + i) + 8) as f32,
+            )
+        };
         let ev = |kind: fn(f32, f32) -> Event, (x, y): (f32, f32)| kind(x, y);
         let down = |x, y| Event::MouseDown {
             button: MouseButton::Left,

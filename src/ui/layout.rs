@@ -233,7 +233,10 @@ mod tests {
         // properties keep a header and a row (the scene's fields share one).
         let short = Layout::with_graph(480, 320, 140).side;
         let s = SidePanel::new(short);
-        assert!(short.h < 2 * ROW + 2 + 6 * ROW + 2, "a short panel: {short:?}");
+        assert!(
+            short.h < 2 * ROW + 2 + 6 * ROW + 2,
+            "a short panel: {short:?}"
+        );
         assert_eq!(s.scene.h, ROW + 2);
         assert!(s.objects.h >= 2 * ROW && s.lights.h >= 2 * ROW, "{s:?}");
         assert!(s.prop_rows_shown() >= 1);

@@ -7,8 +7,8 @@ use crate::editor::dialog::Answer;
 use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
-use crate::editor::ops;
 use crate::editor::keypanel::KeyEvent;
+use crate::editor::ops;
 use crate::editor::panel::{Action, WidgetKind};
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
@@ -475,11 +475,9 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_)
-            | Base::Morph(_)
-            | Base::Clip
-            | Base::Material(_)
-            | Base::Preview => None,
+            Base::Frame(_) | Base::Morph(_) | Base::Clip | Base::Material(_) | Base::Preview => {
+                None
+            }
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
