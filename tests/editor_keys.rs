@@ -788,8 +788,14 @@ fn tab_types_into_the_next_field_and_scrolls_it_into_view() {
     assert!(!field_shown(&ed, FieldId::Name));
     let at = find(&ed, "Field(Translation(0))");
     click(&mut ed, at);
+    let steps = ed.history().labels().count();
     key(&mut ed, Key::Tab, Mods::shift());
     assert_eq!(typing(&ed), Some((FieldId::Name, "Box".into())));
+    assert_eq!(
+        ed.history().labels().count(),
+        steps,
+        "nothing typed: nothing recorded"
+    );
     assert!(field_shown(&ed, FieldId::Name), "scrolled back into view");
     ed.handle(Event::Text("Crate".into()));
     key(&mut ed, Key::Tab, Mods::NONE);

@@ -119,15 +119,21 @@ impl Editor {
         self.side.draw(p, &self.side_ctx(), &self.side_look());
     }
 
-    /// Tab while typing: records the field and types into the next field
-    /// of the side panel (Shift: the one before), scrolling the
+    /// Tab while typing: records the field (if anything was typed) and
+    /// types into the next field of the side panel (Shift: the one before), scrolling the
     /// properties so it shows. A field outside the side panel (the frame,
     /// the preview range) only records, as Enter does.
     pub(in crate::internals::editor) fn tab_field(&mut self, back: bool) {
-        let Some(from) = self.edit.as_ref().map(|e| e.field) else {
+        let Some((from, fresh)) = self.edit.as_ref().map(|e| (e.field, e.fresh)) else {
             return;
         };
-        self.commit_edit();
+        if fresh {
+            // Nothing typed: nothing to record (no undo step, no change
+            // left pending on an animated property).
+            self.edit = None;
+        } else {
+            self.commit_edit();
+        }
         let order = self.side_fields();
         let Some(i) = order.iter().position(|&f| f == from) else {
             return;
