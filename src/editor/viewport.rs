@@ -3,7 +3,7 @@
 //! gizmos, and picking.
 
 use super::manip::ARROW_PX;
-use super::sel_outline::{for_each_ring, Ring};
+use super::sel_outline::{for_each_ring, set_bounds, Ring};
 use super::{gizmo, ops, Editor, LayerKey};
 use crate::input::camera::Projector;
 use crate::render::{self, Frame, RenderOptions};
@@ -60,18 +60,10 @@ impl Editor {
             mine[id.0 as usize + 1] = true;
         }
         let lf = &self.layer.frame;
-        let w = lf.width as usize;
-        let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
-        for (i, &id) in lf.ids.iter().enumerate() {
-            if id != 0 && mine.get(id as usize).copied().unwrap_or(false) {
-                let (x, y) = (i % w, i / w);
-                x0 = x0.min(x);
-                x1 = x1.max(x);
-                y0 = y0.min(y);
-                y1 = y1.max(y);
-            }
-        }
-        (x0 != usize::MAX).then(|| ((x1 - x0).max(y1 - y0) + 1) as f32 * 0.5)
+        let (w, h) = (lf.width as usize, lf.height as usize);
+        let is_mine = |&id: &u32| id != 0 && mine.get(id as usize) == Some(&true);
+        let (x0, y0, x1, y1) = set_bounds(&lf.ids, w, w, h, is_mine)?;
+        Some(((x1 - x0).max(y1 - y0) + 1) as f32 * 0.5)
     }
 
     /// How the viewport draws the scene (the onion copies too, so they
