@@ -53,6 +53,7 @@ mod route;
 mod screen;
 pub mod script;
 pub mod search;
+mod sel_outline;
 pub mod shell;
 pub mod side_ui;
 mod split;
