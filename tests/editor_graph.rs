@@ -616,3 +616,26 @@ fn editor_files_import_no_cycle() {
         }
     }
 }
+
+#[test]
+fn with_the_graph_open_each_list_and_the_properties_keep_a_row() {
+    use animed::internals::editor::panel::{List, WidgetKind};
+    let ed = graph_on_ball();
+    let w = ed.widgets();
+    let rows = |which: List| {
+        w.iter()
+            .filter(|w| matches!(w.kind, WidgetKind::Row { list, .. } if list == which))
+            .count()
+    };
+    assert!(rows(List::Objects) >= 1, "an object row shows");
+    assert!(
+        rows(List::Lights) >= 1,
+        "a light row shows, not only the header"
+    );
+    let has = |s: &str| w.iter().any(|w| format!("{:?}", w.kind) == s);
+    // The scene's fields share one row; the ball's name field shows.
+    assert!(has("Field(Fps)") && has("Field(Duration)") && has("Field(Name)"));
+    assert!(!w
+        .iter()
+        .any(|w| w.kind == WidgetKind::Header("Scene".into())));
+}

@@ -762,3 +762,72 @@ fn script_select_step_uses_the_list() {
         .unwrap_err();
     assert!(e.message.contains("no node named Nobody"), "{}", e.message);
 }
+
+/// Whether field `id` shows in the window (not scrolled away).
+fn field_shown(ed: &Editor, id: animed::internals::editor::fields::FieldId) -> bool {
+    use animed::internals::editor::panel::WidgetKind;
+    ed.widgets().iter().any(|w| w.kind == WidgetKind::Field(id))
+}
+
+#[test]
+fn tab_types_into_the_next_field_and_scrolls_it_into_view() {
+    use animed::internals::editor::fields::{FieldId, KeyField};
+    let (mut ed, bx) = zigzag();
+    let typing = |ed: &Editor| ed.text_edit().map(|e| (e.field, e.text.clone()));
+    // The box's own rows (four show at 480x320); one notch down hides
+    // the name.
+    let props = ed.side_panel().props;
+    let (x, y) = ((props.x + 20) as f32, (props.bottom() - 4) as f32);
+    let mods = Mods::NONE;
+    ed.handle(Event::Wheel {
+        delta: -1.0,
+        x,
+        y,
+        mods,
+    });
+    assert!(!field_shown(&ed, FieldId::Name));
+    let at = find(&ed, "Field(Translation(0))");
+    click(&mut ed, at);
+    let steps = ed.history().labels().count();
+    key(&mut ed, Key::Tab, Mods::shift());
+    assert_eq!(typing(&ed), Some((FieldId::Name, "Box".into())));
+    assert_eq!(
+        ed.history().labels().count(),
+        steps,
+        "nothing typed: nothing recorded"
+    );
+    assert!(field_shown(&ed, FieldId::Name), "scrolled back into view");
+    ed.handle(Event::Text("Crate".into()));
+    key(&mut ed, Key::Tab, Mods::NONE);
+    assert_eq!(ed.scene().node(bx).name, "Crate", "Tab records the field");
+    assert_eq!(typing(&ed).map(|t| t.0), Some(FieldId::Translation(0)));
+    key(&mut ed, Key::Escape, Mods::NONE);
+    // The key panel: T, C and B show, the ease row is below them.
+    click_marker(&mut ed, Row::Track(T), 20.0, Mods::NONE);
+    assert!(ed.key_panel_shown());
+    let (bias, ease) = (FieldId::Key(KeyField::Bias), FieldId::Key(KeyField::EaseIn));
+    assert!(field_shown(&ed, bias) && !field_shown(&ed, ease));
+    let at = find(&ed, "Field(Key(Bias))");
+    click(&mut ed, at);
+    ed.handle(Event::Text("0.5".into()));
+    key(&mut ed, Key::Tab, Mods::NONE);
+    let k20 = |ed: &Editor| {
+        let t = ed.scene().animation.track(target(bx, T)).unwrap();
+        t.key(2).unwrap()
+    };
+    assert_eq!(k20(&ed).bias, 0.5);
+    assert_eq!(typing(&ed), Some((ease, "0".into())));
+    assert!(field_shown(&ed, ease), "the ease row scrolled into view");
+    ed.handle(Event::Text("0.25".into()));
+    key(&mut ed, Key::Tab, Mods::shift());
+    assert_eq!(k20(&ed).ease_in, 0.25);
+    assert_eq!(typing(&ed), Some((bias, "0.5".into())));
+    assert!(field_shown(&ed, bias));
+    // Tab from the frame field (not the side panel's) only records.
+    key(&mut ed, Key::Escape, Mods::NONE);
+    let at = find(&ed, "Field(Frame)");
+    click(&mut ed, at);
+    ed.handle(Event::Text("12".into()));
+    key(&mut ed, Key::Tab, Mods::NONE);
+    assert_eq!((ed.current_frame(), typing(&ed)), (12.0, None));
+}

@@ -1345,3 +1345,42 @@ fn f3_searches_every_command_by_name() {
         "Esc only closed the search"
     );
 }
+
+#[test]
+fn with_nothing_selected_the_properties_say_how_to_start() {
+    use animed::internals::editor::panel::WidgetKind;
+    use animed::internals::ui::text;
+    let mut ed = stage();
+    assert_eq!(ed.selection(), None);
+    let sp = ed.side_panel();
+    let body = sp.props.take_top(16).1;
+    let lines = |ed: &Editor| -> Vec<(String, animed::internals::ui::Rect)> {
+        ed.widgets()
+            .into_iter()
+            .filter(|w| body.contains(w.rect.x as f32, w.rect.y as f32 + 1.0))
+            .filter_map(|w| match w.kind {
+                WidgetKind::Label { text, .. } => Some((text, w.rect)),
+                _ => None,
+            })
+            .collect()
+    };
+    let said = lines(&ed);
+    // As many lines as show at 480x320, each whole, none scrolled.
+    assert_eq!(said.len(), sp.prop_rows_shown() as usize, "{said:?}");
+    assert_eq!(said[0].0, "Nothing selected");
+    assert!(said.iter().any(|(t, _)| t.contains("Shift+A")), "{said:?}");
+    for (t, r) in &said {
+        assert!(r.bottom() <= sp.props.bottom(), "{t} inside");
+        assert!(text::width(t) + 4 <= r.w, "{t} fits its row");
+    }
+    // Selecting and deselecting moves no section of the panel.
+    let ball = node(&ed, "Ball");
+    let at = find(&ed, &format!("node: NodeId({})", ball.0));
+    click(&mut ed, at);
+    assert!(lines(&ed).iter().all(|(t, _)| !t.contains("Shift+A")));
+    assert_eq!(ed.side_panel(), sp);
+    key(&mut ed, Key::Escape, Mods::NONE);
+    ed.select(None);
+    assert_eq!(lines(&ed), said);
+    assert_eq!(ed.side_panel(), sp);
+}

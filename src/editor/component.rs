@@ -7,6 +7,7 @@
 
 use crate::anim::Animation;
 use crate::anim::Property;
+use crate::editor::fields::FieldId;
 use crate::editor::keystrip::KeyRef;
 use crate::input::OrbitCamera;
 use crate::scene::{Node, NodeId};
@@ -69,6 +70,16 @@ pub enum Intent {
         before: Box<Node>,
         after: Box<Node>,
         property: Property,
+    },
+    /// Start typing into `field`, its text `text` (selected, so the
+    /// first typed character replaces it).
+    Type { field: FieldId, text: String },
+    /// Make `node` the selection (a list row was pressed).
+    Select(NodeId),
+    /// Put `node` under `parent` in the scene tree (`None`: top level).
+    Reparent {
+        node: NodeId,
+        parent: Option<NodeId>,
     },
     /// Look through this camera (the viewport's orbit, pan and zoom).
     Camera(OrbitCamera),

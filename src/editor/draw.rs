@@ -3,8 +3,7 @@
 
 use super::fields::FieldValue;
 use super::gesture::Drag;
-use super::ops;
-use super::panel::{List, Widget, WidgetKind};
+use super::panel::{Widget, WidgetKind};
 use super::{Editor, Mode};
 use crate::render::Frame;
 use crate::ui::text;
@@ -106,31 +105,23 @@ impl Editor {
             theme::TEXT_DIM,
             l.toolbar.right() - x - 2,
         );
-        for w in &widgets {
+        // The side panel's lists and the key panel paint themselves.
+        let sp = self.side_panel();
+        let key_panel = self.key_panel_shown();
+        let theirs = |w: &Widget| {
+            let (x, y) = (w.rect.x as f32, w.rect.y as f32);
+            sp.objects.contains(x, y)
+                || sp.lights.contains(x, y)
+                || (key_panel && sp.props.contains(x, y))
+        };
+        for w in widgets.iter().filter(|w| !theirs(w)) {
             self.draw_widget(p, w);
+        }
+        if key_panel {
+            self.draw_key_panel(p);
         }
         self.draw_material_extras(p);
         self.draw_side(p);
-        if let Drag::RowMove {
-            node, moved: true, ..
-        } = &self.drag
-        {
-            // Where the dragged object would go.
-            let (mx, my) = self.mouse;
-            if let Some(w) = self.widget_at(mx, my) {
-                if matches!(
-                    w.kind,
-                    WidgetKind::Row {
-                        list: List::Objects,
-                        ..
-                    }
-                ) {
-                    p.stroke_rect(w.rect, theme::ACCENT);
-                }
-            }
-            let name = format!("move {}", ops::display_name(&self.scene, *node));
-            p.text(mx as i32 + 10, my as i32 + 4, &name, theme::ACCENT);
-        }
     }
 
     fn draw_widget(&self, p: &mut Painter, w: &Widget) {
@@ -169,27 +160,13 @@ impl Editor {
                     self.draw_morph_bar(p, w.rect, *i);
                 }
             }
-            WidgetKind::Row { node, depth, list } => {
-                let label = ops::display_name(&self.scene, *node);
-                let selected = self.selection == Some(*node);
-                widgets::list_row(p, w.rect, &label, *depth, selected, hot);
-                if *list == List::Lights {
-                    if let Some(l) = self.scene.node(*node).light() {
-                        // A colour swatch before the checkbox.
-                        let s = Rect::new(w.rect.right() - 10, w.rect.y + 4, 8, 8);
-                        p.fill_rect(s, theme::rgb(l.color));
-                    }
-                }
-            }
-            WidgetKind::Entry(_) | WidgetKind::PathInput => {}
+            // The side panel paints its rows (`side_ui.rs`).
+            WidgetKind::Row { .. } | WidgetKind::Entry(_) | WidgetKind::PathInput => {}
         }
     }
 
     fn field_text(&self, id: super::fields::FieldId, max_chars: usize) -> String {
         use super::fields::FieldId;
-        if let FieldId::Key(k) = id {
-            return self.key_field_text(k, max_chars);
-        }
         if id == FieldId::ClipName {
             return self.clip_name();
         }

@@ -1,10 +1,10 @@
 //! The editor's one gesture in progress: whatever a mouse press started
-//! (the viewport's, the key strip's, the graph editor's, a field drag,
-//! seek, a list row's drag, the ruler's and the strip's own) is ONE value
-//! of [`Drag`], so a mouse move or release goes to exactly the part that
-//! holds the gesture instead of every part being asked in turn. A
-//! component that keeps its own drag state (viewport, key strip, graph)
-//! is named by a marker here. Also what a field drag started from.
+//! (the viewport's, the key strip's, the graph editor's, the key panel's,
+//! the side panel's, a field drag, seek, the ruler's and the strip's own)
+//! is ONE value of [`Drag`], so a mouse move or release goes to exactly
+//! the part that holds the gesture instead of every part being asked in
+//! turn. A component that keeps its own drag state (viewport, key strip,
+//! graph, key panel, side panel) is named by a marker here. Also what a field drag started from.
 //! Routing lives in `route/input.rs`.
 
 use super::fields::FieldId;
@@ -24,6 +24,12 @@ pub(super) enum Drag {
     Keys,
     /// The graph editor took the press; it keeps its own drag state.
     Graph,
+    /// The key panel took a press on one of its fields; it keeps its own
+    /// drag state (`keypanel.rs`).
+    KeyPanel,
+    /// The side panel took a press on an object row (a drag re-parents
+    /// it); it keeps its own drag state (`side_ui.rs`).
+    Side,
     /// Pressed on a field: a click starts typing, a drag changes the value.
     Field {
         id: FieldId,
@@ -33,13 +39,6 @@ pub(super) enum Drag {
     },
     /// Dragging the current-frame cursor on the ruler.
     Seek,
-    /// Pressed on an object list row: a drag drops it onto another row
-    /// (parent) or onto the list's empty space (top level).
-    RowMove {
-        node: NodeId,
-        at: (f32, f32),
-        moved: bool,
-    },
     /// Middle button over the ruler or key strip: pans the frames shown.
     StripPan { last_x: f32 },
     /// Shift+drag on the ruler: the preview range from the press's frame.
@@ -54,8 +53,6 @@ pub(super) enum Base {
     Node(NodeId, Box<Node>),
     Settings(Settings),
     Frame(f32),
-    /// A key panel field: the animation and selected keys at press.
-    Keys(Box<crate::anim::Animation>, Vec<super::keystrip::KeyRef>),
     /// A morph slider (`rig/morph.rs`).
     Morph(Box<super::rig::state::MorphBase>),
     /// The clip name field (`rig/clips.rs`): typed, never dragged.

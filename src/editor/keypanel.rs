@@ -1,24 +1,27 @@
 //! The key panel as a component: while keys are selected the side panel's
 //! properties section shows it (frame, value, interpolation, T/C/B, ease,
 //! the track's repeat mode, the selected keys). It lays out its own
-//! widgets ([`KeyPanel::widgets`], painted by the side panel's widget
-//! painter with the texts [`KeyPanel::field_text`] gives), and answers its
-//! buttons and its fields' drags and typed numbers itself
+//! widgets ([`KeyPanel::widgets`]) and paints them ([`KeyPanel::draw`],
+//! scrolled where the side panel's properties section shows them), and
+//! answers its buttons, its fields' drags and typed numbers itself
 //! ([`KeyPanel::handle`]) with a [`Response`] whose intents (preview or
-//! commit an animation, select keys, a status line) the editor applies.
-//! Its own state is whether the "Object" button put the node's properties
-//! back. It never names the `Editor`; the rules it applies are in
-//! `keyprops.rs`, its routing in `route/keyprops.rs`.
+//! commit an animation, select keys, type into a field, a status line)
+//! the editor applies. Its own state is whether the "Object" button put
+//! the node's properties back and the field drag in progress (the
+//! editor's gesture only says the key panel holds the mouse). It never
+//! names the `Editor`; the rules it applies are in `keyprops.rs`, its
+//! routing in `route/keyprops.rs`.
 
 use super::component::{Intent, Response};
-use super::fields::{clamp_note, format_fit, format_number, FieldId};
+use super::fields::{clamp_note, format_fit, format_number, FieldId, FieldValue};
 use super::keyprops::*;
 use super::keystrip::{row_name, KeyRef};
 use super::panel::{button, label, w as widget, Action, Widget, WidgetKind};
+use super::props_view::{Look, PropsView};
 use crate::anim::{Animation, Interp, Repeat, Value, ValueKind};
 use crate::ui::layout::ROW;
 use crate::ui::text::{self, CHAR_W};
-use crate::ui::Rect;
+use crate::ui::{Painter, Rect};
 
 /// What the key panel sees of the editor.
 pub struct KeyPanelCtx<'a> {
@@ -28,37 +31,49 @@ pub struct KeyPanelCtx<'a> {
 }
 
 /// The key panel's state.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct KeyPanel {
     /// The "Object" button: show the node's properties instead while keys
     /// are selected ("Keys" comes back; selecting keys comes back too).
     pub node_shown: bool,
+    /// A press on one of its fields, until the mouse is released.
+    press: Option<FieldPress>,
 }
 
-/// What happens to the key panel: a click on one of its buttons, or the
-/// editor's field gesture on one of its fields (the editor keeps the
-/// gesture, `gesture::Drag::Field` with `Base::Keys`, as for every field).
+/// A press on a key field: a click starts typing, a drag changes the
+/// value from what the animation and selection were at the press.
+#[derive(Clone, Debug)]
+struct FieldPress {
+    field: KeyField,
+    start_x: f32,
+    moved: bool,
+    base: Animation,
+    keys: Vec<KeyRef>,
+}
+
+/// Pixels the mouse may move before a press on a field counts as a drag
+/// (the editor's `gesture::DRAG_SLOP`).
+const DRAG_SLOP: f32 = 3.0;
+
+/// What happens to the key panel: a click on one of its buttons, the
+/// mouse pressed on one of its fields (the editor found which), moved
+/// and released, Esc during that drag, or a number typed into a field.
 #[derive(Clone, Copy, Debug)]
-pub enum KeyEvent<'a> {
+pub enum KeyEvent {
     Button(KeyAction),
-    /// The field was dragged `dx` pixels from the press; `base` and
-    /// `keys` are the animation and selection at the press.
-    Drag {
+    /// The mouse went down on `field` at `x`.
+    Press {
         field: KeyField,
-        base: &'a Animation,
-        keys: &'a [KeyRef],
-        dx: f32,
+        x: f32,
     },
-    /// The drag ended: one undo step from `before` to what is shown.
-    Release {
-        field: KeyField,
-        before: &'a Animation,
+    /// The mouse moved to `x` while pressed.
+    Move {
+        x: f32,
     },
+    /// The mouse came up: a drag is one undo step, a click types.
+    Release,
     /// Esc during the drag: back to the press.
-    Cancel {
-        before: &'a Animation,
-        keys: &'a [KeyRef],
-    },
+    Cancel,
     /// A number typed into the field and Enter.
     Typed {
         field: KeyField,
@@ -87,6 +102,11 @@ impl KeyPanel {
         Self::number(f, ctx.anim, &ctx.keys)
             .map(|x| format_fit(x, max_chars))
             .unwrap_or_default()
+    }
+
+    /// Whether a press on one of its fields holds the mouse.
+    pub fn pressed(&self) -> bool {
+        self.press.is_some()
     }
 
     /// Answers one event. Buttons of the keys' menu that are not the
@@ -135,31 +155,61 @@ impl KeyPanel {
                 | KeyAction::SelectRow(_)
                 | KeyAction::SelectChannel => Response::ignored(),
             },
-            KeyEvent::Drag {
-                field,
-                base,
-                keys,
-                dx,
-            } => {
-                let Some(v0) = Self::number(field, base, keys) else {
-                    return Response::taken();
+            KeyEvent::Press { field, x } => {
+                if keys.is_empty() {
+                    return Response::ignored();
+                }
+                self.press = Some(FieldPress {
+                    field,
+                    start_x: x,
+                    moved: false,
+                    base: ctx.anim.clone(),
+                    keys: keys.clone(),
+                });
+                Response::taken()
+            }
+            KeyEvent::Move { x } => {
+                let Some(p) = &mut self.press else {
+                    return Response::ignored();
                 };
-                let v = v0 + dx * field.drag_step(keys[0].property);
-                match set_field(base, keys, field, v) {
-                    Ok((anim, refs)) => Response::redraw()
-                        .with(Intent::Preview(anim))
-                        .with(Intent::ShowKeys(refs)),
-                    Err(_) => Response::taken(),
+                let dx = x - p.start_x;
+                if !p.moved && dx.abs() < DRAG_SLOP {
+                    return Response::taken();
+                }
+                p.moved = true;
+                let r = Response::redraw().with(Intent::StopPlayback);
+                let Some(v0) = Self::number(p.field, &p.base, &p.keys) else {
+                    return r;
+                };
+                let v = v0 + dx * p.field.drag_step(p.keys[0].property);
+                match set_field(&p.base, &p.keys, p.field, v) {
+                    Ok((anim, refs)) => r.with(Intent::Preview(anim)).with(Intent::ShowKeys(refs)),
+                    Err(_) => r,
                 }
             }
-            KeyEvent::Release { field, before } => Response::redraw().with(Intent::Commit {
-                label: format!("Drag key {:?}", FieldId::Key(field)),
-                before: before.clone(),
-                after: ctx.anim.clone(),
-            }),
-            KeyEvent::Cancel { before, keys } => Response::redraw()
-                .with(Intent::Preview(before.clone()))
-                .with(Intent::ShowKeys(keys.to_vec())),
+            KeyEvent::Release => match self.press.take() {
+                None => Response::ignored(),
+                Some(p) if p.moved => Response::redraw().with(Intent::Commit {
+                    label: format!("Drag key {:?}", FieldId::Key(p.field)),
+                    before: p.base,
+                    after: ctx.anim.clone(),
+                }),
+                // A click: type into the field, starting from its number.
+                Some(p) => match Self::number(p.field, &p.base, &p.keys) {
+                    Some(v) => Response::redraw().with(Intent::Type {
+                        field: FieldId::Key(p.field),
+                        text: FieldValue::Number(v).display(),
+                    }),
+                    None => Response::taken(),
+                },
+            },
+            KeyEvent::Cancel => match self.press.take() {
+                Some(p) if p.moved => Response::redraw()
+                    .with(Intent::Preview(p.base))
+                    .with(Intent::ShowKeys(p.keys)),
+                Some(_) => Response::taken(),
+                None => Response::ignored(),
+            },
             KeyEvent::Typed { field, value } => match set_field(ctx.anim, keys, field, value) {
                 Ok((after, refs)) => {
                     let mut r =
@@ -173,6 +223,21 @@ impl KeyPanel {
                 }
                 Err(e) => Response::redraw().with(Intent::Status(e, true)),
             },
+        }
+    }
+
+    /// Paints the panel where `view` shows the properties' rows (scrolled
+    /// and clipped as the side panel places them), looking as `look` says.
+    pub fn draw(&self, p: &mut Painter, ctx: &KeyPanelCtx, view: &PropsView, look: &Look) {
+        let mut all = Vec::new();
+        self.widgets(view.tall, ctx, &mut all);
+        let mut shown = Vec::new();
+        view.place(all, &mut shown);
+        for w in &shown {
+            look.paint(p, w, |id, max_chars| match id {
+                FieldId::Key(f) => self.field_text(f, max_chars, ctx),
+                _ => String::new(),
+            });
         }
     }
 
@@ -419,33 +484,34 @@ mod tests {
             anim: &a,
             keys: keys.clone(),
         };
-        let drag = KeyEvent::Drag {
+        let press = KeyEvent::Press {
             field: KeyField::Frame,
-            base: &a,
-            keys: &keys,
-            dx: 40.0,
+            x: 100.0,
         };
-        let r = p.handle(drag, &ctx);
-        let Some(Intent::Preview(moved)) = r.intents.first() else {
-            panic!("a preview first: {r:?}");
+        assert_eq!(p.handle(press, &ctx), Response::taken());
+        assert!(p.pressed(), "the panel holds the press");
+        // Within the slop nothing changes yet.
+        let r = p.handle(KeyEvent::Move { x: 102.0 }, &ctx);
+        assert!(r.intents.is_empty() && !r.redraw);
+        let r = p.handle(KeyEvent::Move { x: 140.0 }, &ctx);
+        let moved = r.intents.iter().find_map(|i| match i {
+            Intent::Preview(m) => Some(m.clone()),
+            _ => None,
+        });
+        let Some(moved) = moved else {
+            panic!("a preview: {r:?}");
         };
         assert!(committed(&r).is_none(), "nothing recorded while dragging");
-        let Some(Intent::ShowKeys(refs)) = r.intents.get(1) else {
+        let Some(Intent::ShowKeys(refs)) = r.intents.last() else {
             panic!("the moved keys shown selected: {r:?}");
         };
-        assert!(refs[0].frame > 10.0 && refs[0].get(moved).is_some());
+        assert!(refs[0].frame > 10.0 && refs[0].get(&moved).is_some());
         // Release: one step from the press to what is shown.
         let shown = KeyPanelCtx {
-            anim: moved,
+            anim: &moved,
             keys: refs.clone(),
         };
-        let r = p.handle(
-            KeyEvent::Release {
-                field: KeyField::Frame,
-                before: &a,
-            },
-            &shown,
-        );
+        let r = p.handle(KeyEvent::Release, &shown);
         assert_eq!(
             r.intents,
             vec![Intent::Commit {
@@ -454,17 +520,27 @@ mod tests {
                 after: moved.clone(),
             }]
         );
-        // Esc puts back the press's animation and keys.
-        let r = p.handle(
-            KeyEvent::Cancel {
-                before: &a,
-                keys: &keys,
-            },
-            &shown,
-        );
+        assert!(!p.pressed());
+        // Esc during a drag puts back the press's animation and keys.
+        p.handle(press, &ctx);
+        p.handle(KeyEvent::Move { x: 60.0 }, &ctx);
+        let r = p.handle(KeyEvent::Cancel, &shown);
         assert_eq!(
             r.intents,
             vec![Intent::Preview(a.clone()), Intent::ShowKeys(keys.clone())]
         );
+        // A click without a drag types into the field from its number.
+        p.handle(press, &ctx);
+        let r = p.handle(KeyEvent::Release, &ctx);
+        assert_eq!(
+            r.intents,
+            vec![Intent::Type {
+                field: FieldId::Key(KeyField::Frame),
+                text: "10".into(),
+            }]
+        );
+        // Nothing pressed: the mouse is someone else's.
+        assert!(!p.handle(KeyEvent::Move { x: 0.0 }, &ctx).consumed);
+        assert!(!p.handle(KeyEvent::Release, &ctx).consumed);
     }
 }

@@ -44,6 +44,7 @@ pub mod motion_path;
 mod onion;
 pub mod ops;
 pub mod panel;
+pub mod props_view;
 pub mod record;
 pub mod recovery;
 pub mod request;

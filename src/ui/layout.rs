@@ -157,9 +157,19 @@ impl SidePanel {
     /// its header and `LIST_ROWS` rows, the properties get the rest up to
     /// half the rows and at most `PROP_ROWS` body rows, and what the
     /// properties leave goes to the lists, objects 3 : lights 2. Every
-    /// section scrolls what overflows.
+    /// section scrolls what overflows. A short panel keeps a header and
+    /// one row for each list and the properties.
     pub fn new(side: Rect) -> SidePanel {
-        let (scene, rest) = side.take_top(2 * ROW + 2);
+        // A panel too short for the scene section's title row, a header
+        // and a row per list and the properties (the graph editor open in
+        // a small window) puts the scene's fields on one row.
+        let lists_props = 3 * (ROW + ROW) + 2;
+        let scene_h = if side.h >= 2 * ROW + 2 + lists_props {
+            2 * ROW + 2
+        } else {
+            ROW + 2
+        };
+        let (scene, rest) = side.take_top(scene_h);
         let rows = rest.h / ROW;
         let lists_min = 2 * (1 + Self::LIST_ROWS);
         let prop_rows = (rows - lists_min - 1)
@@ -219,6 +229,17 @@ mod tests {
         let s = SidePanel::new(Layout::with_strip(1024, 640, default_strip_h(640)).side);
         assert_eq!(s.prop_rows_shown(), SidePanel::PROP_ROWS);
         assert!(s.objects.h > s.lights.h && s.lights.h >= 6 * ROW);
+        // The graph editor open in the tests' window: each list and the
+        // properties keep a header and a row (the scene's fields share one).
+        let short = Layout::with_graph(480, 320, 140).side;
+        let s = SidePanel::new(short);
+        assert!(
+            short.h < 2 * ROW + 2 + 6 * ROW + 2,
+            "a short panel: {short:?}"
+        );
+        assert_eq!(s.scene.h, ROW + 2);
+        assert!(s.objects.h >= 2 * ROW && s.lights.h >= 2 * ROW, "{s:?}");
+        assert!(s.prop_rows_shown() >= 1);
         // Sections follow each other with no gap, whatever the height.
         for h in (0..600).step_by(7) {
             let s = SidePanel::new(Rect::new(300, 22, 160, h));

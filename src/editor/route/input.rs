@@ -7,8 +7,9 @@ use crate::editor::dialog::Answer;
 use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
+use crate::editor::keypanel::KeyEvent;
 use crate::editor::ops;
-use crate::editor::panel::{Action, List, WidgetKind};
+use crate::editor::panel::{Action, WidgetKind};
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -137,6 +138,8 @@ impl Editor {
         let part = match &self.drag {
             Drag::Graph => self.graph_event(&ev),
             Drag::Keys => self.strip_event(&ev),
+            Drag::KeyPanel => self.key_panel_mouse(KeyEvent::Move { x }),
+            Drag::Side => self.side_event(&ev),
             // The viewport's gesture, or hover over its handles.
             Drag::Viewport | Drag::None => self.viewport_event(&ev),
             _ => None,
@@ -145,7 +148,7 @@ impl Editor {
             return redraw;
         }
         match self.drag.clone() {
-            Drag::Viewport | Drag::Keys | Drag::Graph => false,
+            Drag::Viewport | Drag::Keys | Drag::Graph | Drag::KeyPanel | Drag::Side => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -174,17 +177,6 @@ impl Editor {
             }
             Drag::Seek => {
                 self.seek_to_x(x);
-                true
-            }
-            Drag::RowMove { node, at, moved } => {
-                if !moved && (x - at.0).abs().max((y - at.1).abs()) < DRAG_SLOP {
-                    return false;
-                }
-                self.drag = Drag::RowMove {
-                    node,
-                    at,
-                    moved: true,
-                };
                 true
             }
             Drag::StripPan { last_x } => {
@@ -297,7 +289,9 @@ impl Editor {
                     return;
                 }
                 self.commit_edit();
-                if let Some(base) = self.field_base(id) {
+                if let FieldId::Key(f) = id {
+                    self.key_field_press(f, x);
+                } else if let Some(base) = self.field_base(id) {
                     self.drag = Drag::Field {
                         id,
                         start_x: x,
@@ -310,16 +304,9 @@ impl Editor {
                 self.commit_edit();
                 self.run_action(action);
             }
-            WidgetKind::Row { node, list, .. } => {
+            WidgetKind::Row { .. } => {
                 self.commit_edit();
-                self.selection = Some(node);
-                if list == List::Objects {
-                    self.drag = Drag::RowMove {
-                        node,
-                        at: (x, y),
-                        moved: false,
-                    };
-                }
+                self.side_event(&Event::MouseDown { button, x, y, mods });
             }
             _ => self.commit_edit(),
         }
@@ -346,6 +333,14 @@ impl Editor {
                 self.strip_event(&Event::MouseUp { button, x, y, mods });
                 return;
             }
+            Drag::KeyPanel => {
+                self.key_panel_mouse(KeyEvent::Release);
+                return;
+            }
+            Drag::Side => {
+                self.side_event(&Event::MouseUp { button, x, y, mods });
+                return;
+            }
             _ => {}
         }
         match std::mem::take(&mut self.drag) {
@@ -370,9 +365,6 @@ impl Editor {
                 base,
                 ..
             } => self.finish_field_drag(id, base),
-            Drag::RowMove {
-                node, moved: true, ..
-            } => self.drop_in_list(node, x, y),
             Drag::Preview { .. } => {
                 let r = self.timeline.preview;
                 self.set_preview_range(r);
@@ -435,7 +427,8 @@ impl Editor {
             return Some(Base::Settings(self.scene.settings.clone()));
         }
         if let FieldId::Key(_) = id {
-            return self.key_field_base().map(|(a, k)| Base::Keys(a, k));
+            // The key panel holds its fields' presses (`keypanel.rs`).
+            return None;
         }
         if let FieldId::Morph(_) = id {
             return self.morph_base().map(|b| Base::Morph(Box::new(b)));
@@ -463,7 +456,6 @@ impl Editor {
             Base::Frame(f) => Some(FieldValue::Number(*f)),
             Base::Settings(s) => id.read_settings(s),
             Base::Node(_, n) => id.read_node(n),
-            Base::Keys(a, k) => self.key_field_start(id, a, k).map(FieldValue::Number),
             Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
             Base::Clip => Some(FieldValue::Text(self.clip_name())),
             Base::Preview => self.preview_field(id).map(FieldValue::Number),
@@ -483,12 +475,9 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_)
-            | Base::Keys(..)
-            | Base::Morph(_)
-            | Base::Clip
-            | Base::Material(_)
-            | Base::Preview => None,
+            Base::Frame(_) | Base::Morph(_) | Base::Clip | Base::Material(_) | Base::Preview => {
+                None
+            }
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -510,10 +499,6 @@ impl Editor {
 
     pub(in crate::internals::editor) fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
         self.stop_playback();
-        if let Base::Keys(a, k) = base {
-            self.drag_key_field(id, a, k, dx);
-            return;
-        }
         let Some(FieldValue::Number(v0)) = self.field_value(id, base) else {
             return;
         };
@@ -545,7 +530,6 @@ impl Editor {
                     self.finish_material_drag(f, &b);
                 }
             }
-            Base::Keys(before, _) => self.finish_key_field_drag(id, before),
             Base::Morph(b) => {
                 let v = self.morph_pending().map(|p| p.weights);
                 let v = v.and_then(|w| {
@@ -695,7 +679,8 @@ impl Editor {
     pub(in crate::internals::editor) fn key_down(&mut self, key: Key, mods: Mods) {
         if let Some(e) = &mut self.edit {
             match key {
-                Key::Enter | Key::Tab => self.commit_edit(),
+                Key::Enter => self.commit_edit(),
+                Key::Tab => self.tab_field(mods.shift),
                 Key::Escape => self.edit = None,
                 Key::Backspace => {
                     if e.fresh {
@@ -728,6 +713,21 @@ impl Editor {
 
     /// Esc during a drag: put back what the drag changed.
     pub(in crate::internals::editor) fn cancel_drag(&mut self) {
+        match self.drag {
+            Drag::KeyPanel => {
+                self.key_panel_mouse(KeyEvent::Cancel);
+                return;
+            }
+            Drag::Side => {
+                let esc = Event::KeyDown {
+                    key: Key::Escape,
+                    mods: Mods::NONE,
+                };
+                self.side_event(&esc);
+                return;
+            }
+            _ => {}
+        }
         let drag = std::mem::take(&mut self.drag);
         if let Drag::Viewport = drag {
             self.cancel_viewport();
@@ -735,7 +735,6 @@ impl Editor {
         if let Drag::Field { id, base, .. } = drag {
             match base {
                 Base::Frame(f) => self.frame = f,
-                Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),
                 Base::Clip | Base::Preview => {}
                 Base::Material(_) => self.cancel_material_drag(),
                 Base::Morph(_) => {
@@ -988,31 +987,6 @@ impl Editor {
 
     /// The end of an object list drag: onto another object's row puts the
     /// dragged one under it; onto the list's empty space, at the top level.
-    pub(in crate::internals::editor) fn drop_in_list(
-        &mut self,
-        node: crate::scene::NodeId,
-        x: f32,
-        y: f32,
-    ) {
-        let target = self.widget_at(x, y).and_then(|w| match w.kind {
-            WidgetKind::Row {
-                node: t,
-                list: List::Objects,
-                ..
-            } => Some(t),
-            _ => None,
-        });
-        match target {
-            Some(t) if t == node => {}
-            Some(t) => self.reparent(node, Some(t)),
-            None if self.side_panel().objects.contains(x, y) => self.reparent(node, None),
-            None => self.set_status(
-                "Drop on an object's row to parent it there, on the list's empty space to unparent",
-                false,
-            ),
-        }
-    }
-
     pub(in crate::internals::editor) fn cycle_object_style(&mut self) {
         let Some(sel) = self.selection else { return };
         let next = match self.scene.node(sel).style {

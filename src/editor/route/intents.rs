@@ -6,7 +6,7 @@ use crate::anim::Property;
 use crate::editor::command::Command;
 use crate::editor::component::{Intent, Response};
 use crate::editor::record::Pending;
-use crate::editor::Editor;
+use crate::editor::{Editor, TextEdit};
 use crate::scene::{Node, NodeId};
 
 impl Editor {
@@ -67,6 +67,15 @@ impl Editor {
                     let c = self.recorded(Command::SetNode { id, before, after }, &[property]);
                     self.execute(&label, c);
                 }
+                Intent::Type { field, text } => {
+                    self.edit = Some(TextEdit {
+                        field,
+                        text,
+                        fresh: true,
+                    })
+                }
+                Intent::Select(node) => self.selection = Some(node),
+                Intent::Reparent { node, parent } => self.reparent(node, parent),
                 Intent::Camera(c) => self.camera = c,
                 Intent::Pick((x, y)) => self.pick(x, y),
                 Intent::ViewportMenu((x, y)) => self.open_context_menu(x as i32, y as i32),

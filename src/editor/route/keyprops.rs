@@ -1,18 +1,18 @@
 //! The editor's side of the key panel component (`keypanel.rs`): the
-//! context it sees, routing its buttons and field gestures to it and
-//! applying what it returns; the keys' menu commands it leaves go to the
+//! context it sees, routing its buttons and the mouse on its fields to it
+//! (`Drag::KeyPanel` while it holds a press) and applying what it returns; the keys' menu commands it leaves go to the
 //! key strip and graph editor.
 
-use crate::anim::Animation;
 use crate::editor::component::Response;
 use crate::editor::fields::FieldId;
+use crate::editor::gesture::Drag;
 use crate::editor::keypanel::{KeyEvent, KeyPanelCtx};
 use crate::editor::keyprops::{KeyAction, KeyField};
-use crate::editor::keystrip::KeyRef;
 use crate::editor::panel::{label, Widget};
+use crate::editor::props_view::PropsView;
 use crate::editor::Editor;
 use crate::ui::text::CHAR_W;
-use crate::ui::Rect;
+use crate::ui::{Painter, Rect};
 
 impl Editor {
     /// What the key panel sees.
@@ -26,10 +26,31 @@ impl Editor {
     /// Hands `ev` to the key panel and applies its answer. Whether it was
     /// the panel's.
     fn key_panel_event(&mut self, ev: KeyEvent) -> bool {
-        let mut panel = self.key_panel;
+        let mut panel = std::mem::take(&mut self.key_panel);
         let r: Response = panel.handle(ev, &self.key_panel_ctx());
         self.key_panel = panel;
         self.apply_response(r).is_some()
+    }
+
+    /// A press on key field `f` at `x`: the key panel holds the mouse
+    /// until release (a drag previews, a click types).
+    pub(in crate::internals::editor) fn key_field_press(&mut self, f: KeyField, x: f32) {
+        self.key_panel_event(KeyEvent::Press { field: f, x });
+        if self.key_panel.pressed() {
+            self.drag = Drag::KeyPanel;
+        }
+    }
+
+    /// The mouse moved or came up, or Esc, while the key panel holds it
+    /// (`Drag::KeyPanel`): `Some(redraw)`.
+    pub(in crate::internals::editor) fn key_panel_mouse(&mut self, ev: KeyEvent) -> Option<bool> {
+        let mut panel = std::mem::take(&mut self.key_panel);
+        let r: Response = panel.handle(ev, &self.key_panel_ctx());
+        self.key_panel = panel;
+        if !self.key_panel.pressed() {
+            self.drag = Drag::None;
+        }
+        self.apply_response(r)
     }
 
     /// Whether the properties section shows the key panel.
@@ -40,79 +61,6 @@ impl Editor {
     /// Rows the key panel needs (for the side panel split).
     pub(in crate::internals::editor) fn key_panel_rows(&self) -> i32 {
         self.key_panel.rows(&self.key_panel_ctx())
-    }
-
-    /// Text of a key panel field.
-    pub(in crate::internals::editor) fn key_field_text(
-        &self,
-        f: KeyField,
-        max_chars: usize,
-    ) -> String {
-        self.key_panel
-            .field_text(f, max_chars, &self.key_panel_ctx())
-    }
-
-    /// The base of a key field drag or edit: the animation and the keys.
-    pub(in crate::internals::editor) fn key_field_base(
-        &self,
-    ) -> Option<(Box<Animation>, Vec<KeyRef>)> {
-        let keys = self.selected_keys();
-        (!keys.is_empty()).then(|| (Box::new(self.scene.animation.clone()), keys))
-    }
-
-    /// The value a field started from.
-    pub(in crate::internals::editor) fn key_field_start(
-        &self,
-        id: FieldId,
-        anim: &Animation,
-        keys: &[KeyRef],
-    ) -> Option<f32> {
-        let FieldId::Key(f) = id else { return None };
-        crate::editor::keypanel::KeyPanel::number(f, anim, keys)
-    }
-
-    /// A drag on a key field: previews `field` = start + dx · step.
-    pub(in crate::internals::editor) fn drag_key_field(
-        &mut self,
-        id: FieldId,
-        base: &Animation,
-        keys: &[KeyRef],
-        dx: f32,
-    ) {
-        if let FieldId::Key(field) = id {
-            self.key_panel_event(KeyEvent::Drag {
-                field,
-                base,
-                keys,
-                dx,
-            });
-        }
-    }
-
-    /// Release of a key field drag: one undo step.
-    pub(in crate::internals::editor) fn finish_key_field_drag(
-        &mut self,
-        id: FieldId,
-        before: Box<Animation>,
-    ) {
-        if let FieldId::Key(field) = id {
-            self.key_panel_event(KeyEvent::Release {
-                field,
-                before: &before,
-            });
-        }
-    }
-
-    /// Esc during a key field drag.
-    pub(in crate::internals::editor) fn cancel_key_field_drag(
-        &mut self,
-        before: Animation,
-        keys: Vec<KeyRef>,
-    ) {
-        self.key_panel_event(KeyEvent::Cancel {
-            before: &before,
-            keys: &keys,
-        });
     }
 
     /// Enter in a key field: sets the typed number on the selected keys.
@@ -142,6 +90,14 @@ impl Editor {
     /// The key panel's widgets in the properties section `r`.
     pub(in crate::internals::editor) fn key_panel_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         self.key_panel.widgets(r, &self.key_panel_ctx(), out);
+    }
+
+    /// The key panel paints itself where the side panel shows it.
+    pub(in crate::internals::editor) fn draw_key_panel(&self, p: &mut Painter) {
+        let (shown, tall) = self.props_view();
+        let view = PropsView { shown, tall };
+        self.key_panel
+            .draw(p, &self.key_panel_ctx(), &view, &self.side_look());
     }
 
     /// "Keys" at the right of the node properties header while keys are

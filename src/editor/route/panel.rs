@@ -13,11 +13,23 @@ use crate::ui::layout::{CONTROLS_H, ROW};
 use crate::ui::text::{self, CHAR_W};
 use crate::ui::Rect;
 
+/// What the properties say with nothing selected: how to start (a
+/// newcomer's first questions), as many lines as the section shows.
+const NOTHING_SELECTED: [&str; 6] = [
+    "Nothing selected",
+    "Click an object",
+    "Shift+A: add object",
+    "F3: find a command",
+    "F1: every shortcut",
+    "Ctrl+O: open a file",
+];
+
 impl Editor {
     /// Property rows the selection needs (for the side panel split).
     pub(in crate::internals::editor) fn prop_rows(&self) -> i32 {
         match self.selection.map(|s| &self.scene.node(s).kind) {
-            None => 1,
+            // As many lines of how to start as show (they never scroll).
+            None => (NOTHING_SELECTED.len() as i32).min(self.side_panel().prop_rows_shown().max(1)),
             Some(NodeKind::Light(l)) => match l.kind {
                 LightKind::Directional => 5,
                 LightKind::Point => 5,
@@ -91,10 +103,23 @@ impl Editor {
     }
 
     pub(in crate::internals::editor) fn scene_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
-        let (h, rest) = r.take_top(ROW);
-        out.push(w(h, WidgetKind::Header("Scene".into())));
-        self.clip_widgets(h, out);
-        let row = Rect::new(rest.x + 2, rest.y + 1, rest.w - 4, ROW);
+        let mut row = if r.h >= 2 * ROW {
+            let (h, rest) = r.take_top(ROW);
+            out.push(w(h, WidgetKind::Header("Scene".into())));
+            self.clip_widgets(h, out);
+            Rect::new(rest.x + 2, rest.y + 1, rest.w - 4, ROW)
+        } else {
+            // A short panel (the graph editor open): one row, no title,
+            // the clips behind their menu button.
+            Rect::new(r.x + 2, r.y + 1, r.w - 4, ROW)
+        };
+        if r.h < 2 * ROW && !self.scene.clips.is_empty() {
+            let bw = text::width("Clips") + 4;
+            let menu = Rect::new(row.right() - bw, row.y + 1, bw, ROW - 2);
+            let clips = crate::editor::rig::clip_action::ClipAction::Menu;
+            out.push(button(menu, "Clips", Action::Clip(clips), false));
+            row.w -= bw + 2;
+        }
         let half = row.w / 2;
         let (a, b) = row.take_left(half);
         field_row(out, a, "fps", 4 * CHAR_W, &[FieldId::Fps]);
@@ -120,11 +145,11 @@ impl Editor {
         let body = Rect::new(body.x + 2, body.y + 1, body.w - 4, body.h - 1);
         let Some(sel) = self.selection else {
             out.push(w(h, WidgetKind::Header("Properties".into())));
-            out.push(label(
-                Rect::new(body.x + 2, body.y, body.w, ROW),
-                "Nothing selected",
-                true,
-            ));
+            let lines = NOTHING_SELECTED.iter().take(self.prop_rows() as usize);
+            for (i, line) in lines.enumerate() {
+                let y = body.y + i as i32 * ROW;
+                out.push(label(Rect::new(body.x + 2, y, body.w, ROW), line, true));
+            }
             return;
         };
         let node = self.scene.node(sel);

@@ -76,3 +76,63 @@ impl Editor {
         self.viewport.draw(p, &ctx);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::editor::gesture::Drag;
+    use crate::editor::Editor;
+    use crate::input::{Event, Mods, MouseButton};
+
+    fn press(ed: &mut Editor, button: MouseButton, at: (f32, f32)) {
+        let (x, y) = at;
+        ed.handle(Event::MouseDown {
+            button,
+            x,
+            y,
+            mods: Mods::NONE,
+        });
+    }
+    fn release(ed: &mut Editor, button: MouseButton, at: (f32, f32)) {
+        let (x, y) = at;
+        ed.handle(Event::MouseUp {
+            button,
+            x,
+            y,
+            mods: Mods::NONE,
+        });
+    }
+    fn to(ed: &mut Editor, at: (f32, f32)) -> bool {
+        let (x, y) = at;
+        ed.handle(Event::MouseMove {
+            x,
+            y,
+            mods: Mods::NONE,
+        })
+    }
+
+    #[test]
+    fn the_viewports_gesture_is_the_editors_one_gesture_until_the_release() {
+        let mut ed = Editor::with_demo(480, 320);
+        let vp = ed.layout().viewport;
+        let side = ed.layout().side;
+        let mid = ((vp.x + vp.w / 2) as f32, (vp.y + vp.h / 2) as f32);
+        // A right drag pans, even once the mouse leaves the viewport: the
+        // move goes to the gesture's owner, not to what is under it.
+        press(&mut ed, MouseButton::Right, mid);
+        assert!(matches!(ed.drag, Drag::Viewport));
+        let cam = *ed.camera();
+        assert!(to(&mut ed, (mid.0 + 20.0, mid.1)));
+        let panned = *ed.camera();
+        assert_ne!(panned, cam);
+        let over_side = ((side.x + 10) as f32, mid.1);
+        assert!(to(&mut ed, over_side));
+        assert_ne!(*ed.camera(), panned, "still panning over the side panel");
+        release(&mut ed, MouseButton::Right, over_side);
+        assert!(matches!(ed.drag, Drag::None));
+        assert!(ed.menu().is_none(), "a drag opens no menu");
+        // A right click opens the viewport's menu where it was released.
+        press(&mut ed, MouseButton::Right, mid);
+        release(&mut ed, MouseButton::Right, mid);
+        assert_eq!(ed.menu().map(|m| m.title.as_str()), Some("Viewport"));
+    }
+}
