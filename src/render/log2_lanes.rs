@@ -78,7 +78,7 @@ mod tests {
         };
         let mut values: Vec<f32> = vec![1.0, 2.0, 1.5, 1.999_999_9, 1.000_000_1, f32::MAX, 3.0e7];
         values.extend((1..=254u32).map(|e| f32::from_bits(e << 23)));
-        while values.len() % 8 != 0 || values.len() < 80_000 {
+        while !values.len().is_multiple_of(8) || values.len() < 80_000 {
             // A positive normal finite number: exponent field 1..=254.
             let bits = next() & 0x7fff_ffff;
             if (1..=254).contains(&(bits >> 23)) {
