@@ -50,3 +50,122 @@ fn golden_vrml97_orientation_interpolator_at_1s() {
         &draw("orientation_interpolator_alum_box.wrl", 1.0),
     );
 }
+
+/// An Inventor file drawn at 160×120 on black.
+fn draw_iv(src: &str, headlight: Headlight) -> animed::internals::render::Frame {
+    let loaded =
+        animed::internals::format::load_bytes(src.as_bytes(), Path::new("levels.iv")).unwrap();
+    let spec = FrameSpec {
+        width: 160,
+        height: 120,
+        viewpoint: None,
+        style: None,
+        background: Some(glam::Vec3::ZERO),
+        headlight,
+        threads: 0,
+        aa: 1,
+    };
+    render_at(&loaded.scene, &spec, 0.0).expect("renders")
+}
+
+fn rgb(f: &animed::internals::render::Frame, x: usize, y: usize) -> [u8; 3] {
+    let c = f.color[y * f.width as usize + x];
+    [(c >> 16) as u8, (c >> 8) as u8, c as u8]
+}
+
+/// The centre pixel of an Inventor file drawn at 160×120 on black.
+fn centre(src: &str, headlight: Headlight) -> [u8; 3] {
+    rgb(&draw_iv(src, headlight), 80, 60)
+}
+
+/// Inventor's ambient term as Coin 4 draws it (each figure read from
+/// Coin's picture of the same file through pivy, tests/coin_levels.py's
+/// set-up): the material's ambientColor × the Environment's intensity and
+/// colour, whatever the diffuse colour, and no ambient from the lights.
+#[test]
+fn inventor_ambient_levels_match_coin() {
+    let quad = |env: &str, mat: &str, light: &str| {
+        format!(
+            "#Inventor V2.1 ascii\nSeparator {{ OrthographicCamera {{ position 0 0 5 height 2.2 }}\n\
+             {env} {light} Material {{ {mat} }} Cube {{ width 2 height 2 depth 0.1 }} }}"
+        )
+    };
+    // Only the ambient term: 0.8 × (1, 1, 0.5) × (0.5, 0.25, 1) = (0.4, 0.2, 0.4).
+    let env = "Environment { ambientIntensity 0.8 ambientColor 1 1 0.5 }";
+    let mat = "diffuseColor 0 0 0 ambientColor 0.5 0.25 1";
+    assert_eq!(centre(&quad(env, mat, ""), Headlight::On), [102, 51, 102]);
+    // The default 0.2 grey ambient on a red face: 0.04 in green and blue
+    // too (VRML97's ambientIntensity × diffuse would give 0 there).
+    let red = "diffuseColor 1 0 0 ambientColor 0.2 0.2 0.2";
+    assert_eq!(centre(&quad("", red, ""), Headlight::On), [255, 10, 10]);
+    assert_eq!(centre(&quad("", red, ""), Headlight::Off), [10, 10, 10]);
+    // A light shining from behind adds no ambient of its own.
+    let behind = "DirectionalLight { direction 0 0 1 }";
+    let white_amb = "diffuseColor 1 0 0 ambientColor 1 1 1";
+    assert_eq!(
+        centre(&quad("", white_amb, behind), Headlight::Off),
+        [51, 51, 51]
+    );
+}
+
+/// Two red line sets, 5 px wide, at y = ±0.5 (rows 33 and 87).
+fn line_pair(normals: &str) -> String {
+    format!(
+        "#Inventor V2.1 ascii\nSeparator {{ OrthographicCamera {{ position 0 0 5 height 2.2 }}\n\
+         DrawStyle {{ lineWidth 5 }} Material {{ diffuseColor 1 0 0 }}\n\
+         Coordinate3 {{ point [-1 0.5 0, 1 0.5 0, -1 -0.5 0, 1 -0.5 0] }}\n\
+         {normals} IndexedLineSet {{ coordIndex [0 1 -1 2 3 -1] }} }}"
+    )
+}
+
+/// Inventor line sets with normals are lit, those without are drawn in
+/// their diffuse colour; each figure is Coin 4's for the same file (pivy):
+/// the upper line's normal faces the headlight (1 + the 0.04 ambient), the
+/// lower one's is turned 53° away (0.6 + 0.04).
+#[test]
+fn inventor_line_sets_with_normals_are_lit_like_coin() {
+    let normals = "Normal { vector [0 0 1, 0 0 1, 0.8 0 0.6, 0.8 0 0.6] }";
+    for (binding, lower) in [
+        ("", [163, 10, 10]),
+        ("NormalBinding { value PER_VERTEX }", [163, 10, 10]),
+        ("NormalBinding { value PER_PART }", [255, 10, 10]),
+        ("NormalBinding { value OVERALL }", [255, 10, 10]),
+    ] {
+        let f = draw_iv(&line_pair(&format!("{normals} {binding}")), Headlight::On);
+        assert_eq!(rgb(&f, 80, 33), [255, 10, 10], "{binding}");
+        assert_eq!(rgb(&f, 80, 87), lower, "{binding}");
+    }
+    let f = draw_iv(&line_pair(""), Headlight::On);
+    assert_eq!(rgb(&f, 80, 33), [255, 0, 0], "no normals: unlit");
+    assert_eq!(rgb(&f, 80, 87), [255, 0, 0], "no normals: unlit");
+}
+
+/// A lit line set: a ring of polylines whose normals point outwards and
+/// towards the viewer, lit by a light from the upper left (bright there,
+/// dark below right, the 0.2 × 0.2 ambient where the light does not
+/// reach), beside the same ring without normals (flat, in its diffuse
+/// colour).
+#[test]
+fn golden_inventor_lit_line_set() {
+    let ring = |n: usize| {
+        let mut pts = Vec::new();
+        let mut nrm = Vec::new();
+        for k in 0..=n {
+            let a = k as f32 / n as f32 * std::f32::consts::TAU;
+            pts.push(format!("{:.4} {:.4} 0", a.cos(), a.sin()));
+            nrm.push(format!("{:.4} {:.4} 1.5", a.cos(), a.sin()));
+        }
+        (pts.join(", "), nrm.join(", "))
+    };
+    let (pts, nrm) = ring(32);
+    let src = format!(
+        "#Inventor V2.1 ascii\nSeparator {{ OrthographicCamera {{ position 0 0 5 height 3.2 }}\n\
+         DirectionalLight {{ direction 1 -1 -0.3 }}\n\
+         DrawStyle {{ lineWidth 3 }} Material {{ diffuseColor 1 0.8 0.2 }}\n\
+         Coordinate3 {{ point [{pts}] }}\n\
+         Separator {{ Transform {{ translation -1.1 0 0 }} Normal {{ vector [{nrm}] }}\n\
+           LineSet {{ numVertices 33 }} }}\n\
+         Separator {{ Transform {{ translation 1.1 0 0 }} LineSet {{ numVertices 33 }} }} }}"
+    );
+    golden::check("read_iv_lit_line_set", &draw_iv(&src, Headlight::Off));
+}

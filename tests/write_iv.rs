@@ -272,3 +272,26 @@ fn the_global_ambient_goes_through_environment_and_the_key_note() {
         assert_eq!(back.scene.settings.ambient, ambient);
     }
 }
+
+/// Inventor's ambient colour is written as it was read (Coin lights with
+/// the whole colour, not the mean the VRML97 writer keeps as an
+/// intensity); a material without one writes the grey of its intensity.
+#[test]
+fn ambient_colours_go_through_as_read() {
+    use animed::internals::format::load_bytes;
+    use glam::Vec3;
+    let src = "#Inventor V2.1 ascii\nSeparator { Material { ambientColor 0.5 0.25 1 } Cube {} }";
+    let a = load_bytes(src.as_bytes(), std::path::Path::new("a.iv")).unwrap();
+    let (text, _) = iv(&a.scene, InventorVersion::V2_1);
+    assert!(text.contains("ambientColor 0.5 0.25 1"), "{text}");
+    let back = load_bytes(text.as_bytes(), std::path::Path::new("b.iv")).unwrap();
+    let want = Some(Vec3::new(0.5, 0.25, 1.0));
+    assert!(back.scene.materials.iter().any(|m| m.ambient_color == want));
+    let mut s = writers_common::demo_scene();
+    for m in &mut s.materials {
+        m.ambient_color = None;
+        m.ambient_intensity = 0.3;
+    }
+    let (text, _) = iv(&s, InventorVersion::V2_1);
+    assert!(text.contains("ambientColor 0.3 0.3 0.3"), "{text}");
+}

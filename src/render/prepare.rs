@@ -296,11 +296,20 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             .map(|(_, l)| l.clone())
             .collect();
         item_lights.extend(headlight.clone());
-        item_lights.extend(global_ambient.clone());
+        // An Inventor material's ambient term is a constant colour (below).
+        if material.ambient_color.is_none() {
+            item_lights.extend(global_ambient.clone());
+        }
         // An unlit material (lighting off) draws like a mesh without
         // normals: its vertex colours or its emissive colour as they are.
         let has_normals = mesh.normals.len() == mesh.positions.len() && !material.unlit;
         let mut smat = ShadeMaterial::new(material);
+        // Inventor's ambient (Coin: OpenGL's material ambient × the light
+        // model's ambient; Inventor lights have none): the same colour at
+        // every pixel, so it is added as emission is.
+        if let Some(a) = material.ambient_color {
+            smat.emissive += a * scene.settings.ambient;
+        }
         let item = out.items.len() as u32;
         // Textured: the material's texture, when its image exists and the
         // mesh has coordinates for it (lit or not: an unlit mesh's colour

@@ -7,6 +7,16 @@ pub struct Material {
     pub name: String,
     pub diffuse: Vec3,
     pub ambient_intensity: f32,
+    /// Inventor's and VRML 1.0's `ambientColor` (their first value), kept
+    /// whole because their ambient term is not VRML97's: Coin lights it as
+    /// OpenGL's material ambient times the light model's ambient (the
+    /// scene's `Environment`, [`super::Settings::ambient`]), a constant
+    /// colour that does not follow the diffuse one, and Inventor lights add
+    /// no ambient of their own. `None` (VRML97, X3D, glTF, OBJ):
+    /// `ambient_intensity × diffuse` per light, as §4.14.4 says.
+    /// `ambient_intensity` still holds this colour's mean, for writers of
+    /// formats that have only an intensity.
+    pub ambient_color: Option<Vec3>,
     pub specular: Vec3,
     pub emissive: Vec3,
     /// 0..1 as in VRML97; the specular exponent is `shininess * 128`.
@@ -35,6 +45,7 @@ impl Default for Material {
             name: String::new(),
             diffuse: Vec3::splat(0.8),
             ambient_intensity: 0.2,
+            ambient_color: None,
             specular: Vec3::ZERO,
             emissive: Vec3::ZERO,
             shininess: 0.2,

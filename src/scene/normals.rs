@@ -235,6 +235,17 @@ pub fn mesh_from_polylines(
     Ok(mesh)
 }
 
+/// One normal per polyline corner, in the order [`mesh_from_polylines`]
+/// lays out its vertices (`None` when `normals` is [`Binding::None`]): an
+/// Inventor line set with normals is lit, as Coin lights it.
+pub fn polyline_normals(
+    positions: usize,
+    polylines: &[Vec<u32>],
+    normals: &Binding,
+) -> Result<Option<Vec<Vec3>>, MeshError> {
+    resolve(normals, polylines, positions, "normal")
+}
+
 /// A point mesh (VRML PointSet); `colors`, when given, must be as long as
 /// `positions` (extra colours are ignored, too few is an error).
 pub fn mesh_from_points(positions: &[Vec3], colors: Option<&[Vec3]>) -> Result<Mesh, MeshError> {

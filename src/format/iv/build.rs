@@ -448,17 +448,25 @@ impl Builder {
             }
         };
         let Some(mesh) = mesh else { return };
-        // Lines and points carry no normals, so Inventor (Coin, SGI) draws
-        // them unlit in their base colour: the diffuse colour, as under
-        // LightModel BASE_COLOR (drawn black by the lighting model otherwise).
-        let material =
-            if matches!(n.kind.as_str(), "IndexedLineSet" | "LineSet" | "PointSet") && !st.unlit {
-                let mut unlit = st.clone();
-                unlit.unlit = true;
-                self.material(&unlit, texture)
-            } else {
-                self.material(st, texture)
-            };
+        // Lines and points without normals are drawn unlit by Inventor
+        // (Coin, SGI) in their base colour: the diffuse colour, as under
+        // LightModel BASE_COLOR (drawn black by the lighting model
+        // otherwise). A line set with normals (`shapes::mesh`) is lit.
+        let lit_lines = self
+            .scene
+            .meshes
+            .get(mesh.0 as usize)
+            .is_some_and(|m| !m.normals.is_empty() && m.normals.len() == m.positions.len());
+        let material = if matches!(n.kind.as_str(), "IndexedLineSet" | "LineSet" | "PointSet")
+            && !st.unlit
+            && !lit_lines
+        {
+            let mut unlit = st.clone();
+            unlit.unlit = true;
+            self.material(&unlit, texture)
+        } else {
+            self.material(st, texture)
+        };
         // Coin culls no primitive: a closed one is drawn culled only because
         // its back faces cannot show; through a see-through material or
         // texture they do, so such a primitive is two-sided.
@@ -663,6 +671,10 @@ impl Builder {
             name: m.as_ref().and_then(|m| m.def.clone()).unwrap_or_default(),
             diffuse,
             ambient_intensity: ((ambient.x + ambient.y + ambient.z) / 3.0).clamp(0.0, 1.0),
+            // Coin's ambient term: this colour × the Environment's, whatever
+            // the diffuse colour (per-vertex colours included: Coin keeps
+            // the first ambientColor for every vertex).
+            ambient_color: Some(ambient.clamp(Vec3::ZERO, Vec3::ONE)),
             specular: first(m, "specularColor", Vec3::ZERO),
             emissive: first(m, "emissiveColor", Vec3::ZERO),
             shininess: scalar(m, "shininess", 0.2),
@@ -676,6 +688,7 @@ impl Builder {
             mat.diffuse = Vec3::ZERO;
             mat.specular = Vec3::ZERO;
             mat.ambient_intensity = 0.0;
+            mat.ambient_color = None;
         }
         let id = self.scene.add_material(mat);
         self.materials.insert(key, id);

@@ -8,7 +8,7 @@ use crate::format::lexer::Pos;
 use crate::format::polygons::{self, split_index};
 use crate::format::syntax::{AstNode, NodeRef};
 use crate::scene::normals::{
-    mesh_from_points, mesh_from_polylines, Binding, PolyOptions, TexCoords,
+    mesh_from_points, mesh_from_polylines, polyline_normals, Binding, PolyOptions, TexCoords,
 };
 use crate::scene::{primitives, Mesh, Morphs};
 use glam::{Vec2, Vec3};
@@ -399,17 +399,27 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 split_index(&ints(n, "coordIndex"))
             };
             let lines = polygons::drop_bad(lines, inp.coords.len());
+            // Normals as for faces (DEFAULT: per vertex, indexed for the
+            // indexed set); a line set with normals is lit (Coin), one
+            // without is drawn in its base colour (`Builder::shape`).
+            let nb = match inp.normal_binding {
+                Bind::Default if kind == "LineSet" => Bind::PerVertex,
+                Bind::Default => Bind::PerVertexIndexed,
+                b => b,
+            };
             // A line set's part is one segment (SoIndexedLineSet: PER_PART
             // colours each segment, PER_FACE each polyline): per-part
-            // colours take the polylines apart into their segments.
-            let lines = if matches!(inp.material_binding, Bind::PerPart | Bind::PerPartIndexed) {
-                lines
-                    .iter()
-                    .flat_map(|l| l.windows(2).map(<[u32]>::to_vec))
-                    .collect()
-            } else {
-                lines
-            };
+            // colours or normals take the polylines apart into their segments.
+            let per_part = |b: Bind| matches!(b, Bind::PerPart | Bind::PerPartIndexed);
+            let lines =
+                if per_part(inp.material_binding) || (per_part(nb) && !inp.normals.is_empty()) {
+                    lines
+                        .iter()
+                        .flat_map(|l| l.windows(2).map(<[u32]>::to_vec))
+                        .collect()
+                } else {
+                    lines
+                };
             let corner_ids = consecutive(&lines);
             let cb = binding(
                 inp.material_binding,
@@ -419,10 +429,30 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 None,
                 &corner_ids,
             );
-            mesh_from_polylines(&inp.coords, &lines, &cb)
+            let nbind = match nb {
+                // OVERALL: the first normal for every corner.
+                Bind::Overall if !inp.normals.is_empty() => Binding::PerFace {
+                    values: inp.normals[..1].to_vec(),
+                    index: Some(vec![0; lines.len()]),
+                },
+                b => binding(
+                    b,
+                    &inp.normals,
+                    &ints(n, "normalIndex"),
+                    &lines,
+                    None,
+                    &corner_ids,
+                ),
+            };
+            let mut mesh = mesh_from_polylines(&inp.coords, &lines, &cb)
                 .or_else(|_| mesh_from_polylines(&inp.coords, &lines, &Binding::None))
                 .map_err(|e| msgs.push((n.pos, format!("{kind} skipped: {e}"))))
-                .ok()
+                .ok()?;
+            match polyline_normals(inp.coords.len(), &lines, &nbind) {
+                Ok(normals) => mesh.normals = normals.unwrap_or_default(),
+                Err(e) => msgs.push((n.pos, format!("{kind}: normals ignored (drawn unlit): {e}"))),
+            }
+            Some(mesh)
         }
         "PointSet" => {
             let start = n.num("startIndex").unwrap_or(0.0).max(0.0) as usize;

@@ -432,3 +432,25 @@ fn inventor_and_vrml1_light_with_a_global_ambient_an_environment_sets() {
     );
     assert_eq!(env.scene.settings.ambient, Vec3::new(0.5, 0.0, 0.25));
 }
+
+/// Coin's ambient term is the material's first ambientColor (whole, not
+/// its mean) times the Environment's; BASE_COLOR and line sets without
+/// normals are unlit and have none.
+#[test]
+fn materials_keep_inventors_ambient_colour() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF A Cube {}\n Material { ambientColor [0.5 0.25 1, 1 1 1] diffuseColor [0 0 0, 1 1 1] }\n DEF B Cube {}\n LightModel { model BASE_COLOR }\n DEF C Cube {}\n}",
+    );
+    let s = &l.scene;
+    let mat = |n: &str| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => s.materials[sh.material.0 as usize].clone(),
+        _ => panic!("{n} is not a shape"),
+    };
+    assert_eq!(mat("A").ambient_color, Some(Vec3::splat(0.2)), "default");
+    assert_eq!(mat("B").ambient_color, Some(Vec3::new(0.5, 0.25, 1.0)));
+    assert!(
+        (mat("B").ambient_intensity - 1.75 / 3.0).abs() < 1e-6,
+        "the mean"
+    );
+    assert_eq!(mat("C").ambient_color, None, "unlit");
+}

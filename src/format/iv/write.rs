@@ -915,9 +915,12 @@ impl Writer<'_> {
     }
 
     fn material_fields(&mut self, of: TargetRef, m: &Material) {
-        let a = ambient_grey(m.ambient_intensity);
-        self.out
-            .line(&format!("ambientColor {}", vec3(Vec3::splat(a))));
+        // Inventor's own ambient colour as read; a VRML97 material's
+        // intensity as the grey that reads back as it.
+        let a = m
+            .ambient_color
+            .unwrap_or_else(|| Vec3::splat(ambient_grey(m.ambient_intensity)));
+        self.out.line(&format!("ambientColor {}", vec3(a)));
         self.field(of, Property::Diffuse, "diffuseColor", &vec3(m.diffuse));
         self.field(of, Property::Specular, "specularColor", &vec3(m.specular));
         self.field(of, Property::Emissive, "emissiveColor", &vec3(m.emissive));
