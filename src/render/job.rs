@@ -158,7 +158,13 @@ pub fn render_at(scene: &Scene, spec: &FrameSpec, time: f32) -> Result<Frame, St
     let camera = find_camera(scene, spec.viewpoint.as_deref())?;
     let pose = evaluate(scene, time);
     let aspect = spec.width.max(1) as f32 / spec.height.max(1) as f32;
-    let view = view_for(scene, &pose, camera, aspect);
+    let view = match camera {
+        Some(_) => view_for(scene, &pose, camera, aspect),
+        // View-all for this picture size (Text2 labels framed as Coin does).
+        None => {
+            View::view_all_for_picture(scene, &evaluate(scene, 0.0), &pose, spec.width, spec.height)
+        }
+    };
     Ok(render(scene, &pose, &view, &options_for(scene, spec)))
 }
 
