@@ -1,6 +1,6 @@
 //! The library's two verbs besides [`crate::compare`]: [`load`] a scene
 //! file and [`render`] it as a [`RenderSpec`] says. Both go through exactly
-//! the code `animed render` uses (`format::load`, `render::job::render_at`),
+//! the code `animed render` uses (`format::load`, `render::job::render_color_at`),
 //! so a picture made here has the bytes the command line writes.
 
 use crate::error::{Error, ErrorKind, Result};
@@ -248,7 +248,7 @@ pub fn render(scene: &Scene, spec: &RenderSpec) -> Result<Image> {
         }
         _ => scene,
     };
-    let frame = job::render_at(scene, &frame_spec, spec.time).map_err(invalid)?;
+    let frame = job::render_color_at(scene, &frame_spec, spec.time).map_err(invalid)?;
     Ok(Image::from(&frame))
 }
 

@@ -450,6 +450,27 @@ fn only_the_shell_touches_files() {
     );
 }
 
+/// The wall clock and the process id are the shell's to pass in
+/// (`Editor::set_wall_clock`, `set_pid`; the window loop and
+/// `cli/edit.rs::tell_places` do): no editor file but `disk.rs` (the
+/// shell's helpers) asks for them, so a test or a script can fix both.
+#[test]
+fn the_state_machine_reads_no_clock_or_pid() {
+    let process = ["SystemTime::now", "process::id", "UNIX_EPOCH.elapsed"];
+    let mut found = Vec::new();
+    for (m, code) in &editor_code() {
+        if m.len() == 2 && m[1] == "disk" {
+            continue;
+        }
+        for w in process {
+            if code.contains(w) {
+                found.push(format!("{}: {w}", m.join("/")));
+            }
+        }
+    }
+    assert!(found.is_empty(), "process state in the editor: {found:?}");
+}
+
 /// No file of `src/editor/` imports another that (through others)
 /// imports it back. An edge A → B is any path in A's non-test code that
 /// names module B (`use super::b::…`, `crate::editor::b::…`, a child

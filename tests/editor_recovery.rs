@@ -417,6 +417,9 @@ fn a_killed_untitled_session_is_listed_and_recovered() {
 
     // The next start offers both, the newest marked.
     let mut ed = Editor::with_demo(SIZE.0, SIZE.1);
+    // What the shell tells every session (`cli/edit.rs::tell_places`).
+    ed.set_pid(std::process::id());
+    ed.set_wall_clock(std::time::SystemTime::now());
     assert_eq!(ed.offer_untitled(&copies), 2);
     let dlg = ed.dialog().expect("the recovery list").clone();
     assert_eq!(dlg.then, After::Recover);
@@ -484,6 +487,7 @@ fn recovered_untitled_work_comes_back_with_its_view() {
     let views = d.join("views");
     let mut ed = Editor::new(Scene::new(), None, SIZE.0, SIZE.1);
     ed.set_view_memory(Some(views.clone()));
+    ed.set_pid(std::process::id());
     assert_eq!(ed.offer_untitled(&copies), 0, "nothing to offer yet");
     // A box, then the top view zoomed out: work and a view of its own.
     key_with(&mut ed, Key::Char('a'), Mods::shift());

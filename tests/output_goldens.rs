@@ -1,5 +1,5 @@
 //! Goldens of animation frames as `animed render --range` draws them
-//! (`render::job::render_at`, the function the sequence writer calls):
+//! (`render::job::render_color_at`, the function the sequence writer calls):
 //! the demo animation and a castle-engine OrientationInterpolator test.
 //! `UPDATE_GOLDENS=1` rewrites them; look at every one.
 
@@ -7,7 +7,7 @@
 mod golden;
 
 use animed::internals::output::FrameRange;
-use animed::internals::render::job::{render_at, FrameSpec};
+use animed::internals::render::job::{render_color_at, FrameSpec};
 use std::path::PathBuf;
 
 fn data(name: &str) -> PathBuf {
@@ -35,7 +35,7 @@ fn check_range(file: &str, golden_prefix: &str, range: &str) {
     let r = FrameRange::parse(range).unwrap();
     let mut frames = Vec::new();
     for i in 0..r.count {
-        let f = render_at(&scene, &spec(), r.time(i)).expect("render");
+        let f = render_color_at(&scene, &spec(), r.time(i)).expect("render");
         golden::check(&format!("{golden_prefix}_{i}"), &f);
         frames.push(f);
     }

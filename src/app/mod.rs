@@ -12,7 +12,7 @@ use crate::render::Frame;
 use minifb::{MouseMode, Window, WindowOptions};
 use std::cell::RefCell;
 use std::rc::Rc;
-use std::time::{Duration, Instant};
+use std::time::{Duration, Instant, SystemTime};
 
 /// Poll interval while something moves (playback, drags) and when idle.
 const ACTIVE_POLL: Duration = Duration::from_millis(8);
@@ -101,6 +101,8 @@ pub fn run<S: Screen + Send>(mut ed: S) -> Result<(), String> {
         }
         let mut events = std::mem::take(&mut pending);
         input.poll(&window, &typed, &mut events);
+        // The screen reads no clock: the loop tells it the time.
+        ed.set_wall_clock(SystemTime::now());
         if !events.is_empty() {
             last_input = Instant::now();
         }

@@ -5,7 +5,7 @@
 //! and a function that returns the lines to print.
 
 use crate::render::job::{render_at, FrameSpec, Headlight};
-use crate::render::{bench_scenes, render_into, Frame};
+use crate::render::{bench_scenes, render_color_into, Frame};
 use crate::scene::Scene;
 use std::time::{Duration, Instant};
 
@@ -259,10 +259,10 @@ fn render_scene_time_aa(scene: &Scene, args: &Args, headlight: Headlight, aa: u3
     );
     let opts = crate::render::job::options_for(scene, &spec);
     // One frame reused, as a player or the editor does (and as llvmpipe
-    // reuses its framebuffer).
+    // reuses its framebuffer); colour only, as `animed render` draws.
     let mut frame = Frame::new(w, h, opts.background);
     time_it(args.seconds, || {
-        render_into(scene, &pose, &view, &opts, &mut frame);
+        render_color_into(scene, &pose, &view, &opts, &mut frame);
         std::hint::black_box(&frame);
     })
 }

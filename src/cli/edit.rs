@@ -132,13 +132,17 @@ pub fn run(args: Args) -> i32 {
 /// What the shell tells the editor about this process, which the editor
 /// never reads itself: the working directory (the file browser starts
 /// there when no file is open), `$HOME` (a typed `~/`) and the state
-/// folder (copies of untitled work, `disk::state_dir`).
+/// folder (copies of untitled work, `disk::state_dir`), the process id
+/// (the untitled copy's name) and the wall clock ("Autosaved at …").
 pub fn tell_places(ed: &mut Editor) {
     if let Ok(dir) = std::env::current_dir() {
         ed.set_start_dir(&dir);
     }
     ed.set_home(crate::editor::disk::home().as_deref());
     ed.set_state_dir(&crate::editor::disk::state_dir());
+    // The process's id and the clock are the shell's to give too.
+    ed.set_pid(std::process::id());
+    ed.set_wall_clock(std::time::SystemTime::now());
 }
 
 /// Anti-aliasing samples per pixel of the editor window by default.

@@ -2,11 +2,11 @@
 //!
 //! Structure for other outputs (PNG sequences, GIF, shards): [`prepare`]
 //! turns the arguments into a [`Job`] (loaded scene + [`FrameSpec`] + time);
-//! `render::job::render_at(&job.scene, &job.spec, t)` draws any frame of it;
+//! `render::job::render_color_at(&job.scene, &job.spec, t)` draws any frame of it;
 //! [`save_png_atomic`] writes one. `run` is just those three in a row.
 
 use crate::format::{self, LoadError, Loaded};
-use crate::render::job::{render_at, FrameSpec, Headlight};
+use crate::render::job::{render_color_at, FrameSpec, Headlight};
 use crate::render::Frame;
 use crate::scene::{RenderStyle, Scene};
 use glam::Vec3;
@@ -147,7 +147,7 @@ pub fn run(args: Args) -> i32 {
         return 0;
     }
     let result = prepare(&args).and_then(|job| {
-        let frame = render_at(&job.scene, &job.spec, job.time)?;
+        let frame = render_color_at(&job.scene, &job.spec, job.time)?;
         save_png_atomic(&frame, &job.output)
     });
     match result {

@@ -8,6 +8,7 @@
 use crate::anim::Animation;
 use crate::anim::Property;
 use crate::editor::keystrip::KeyRef;
+use crate::input::OrbitCamera;
 use crate::scene::{Node, NodeId};
 
 /// What the keys components (key strip, graph editor) see of the editor
@@ -69,6 +70,19 @@ pub enum Intent {
         after: Box<Node>,
         property: Property,
     },
+    /// Look through this camera (the viewport's orbit, pan and zoom).
+    Camera(OrbitCamera),
+    /// Select what the viewport shows at this window pixel (nothing there
+    /// clears the selection): a click in the viewport.
+    Pick((f32, f32)),
+    /// Open the viewport's context menu at this window pixel.
+    ViewportMenu((f32, f32)),
+    /// Show the IK chain's two joints posed so (an IK drag; kept pending
+    /// over their tracks, `rig/ik.rs`).
+    IkPose(Box<[(NodeId, Node); 2]>),
+    /// The IK drag ended: record its pose, or keep it pending on animated
+    /// joints until K.
+    IkDone,
 }
 
 /// A component's answer to one event.

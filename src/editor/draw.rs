@@ -28,7 +28,7 @@ impl Editor {
         self.draw_viewport_overlay(&mut p);
         self.draw_motion_path(&mut p);
         self.draw_bones(&mut p);
-        self.draw_handles(&mut p);
+        self.draw_viewport_ui(&mut p);
         self.draw_viewport_labels(&mut p, &l);
         self.draw_timeline(&mut p, &l);
         self.draw_panels(&mut p, &l);

@@ -1,12 +1,13 @@
 //! The editor's one gesture in progress: whatever a mouse press started
-//! (camera, field drag, seek, pick, a handle, keys in the strip, the IK
-//! target, the graph editor) is ONE value of [`Drag`], so a mouse move or
-//! release goes to exactly the part that holds the gesture instead of
-//! every part being asked in turn. Also what a field drag started from.
+//! (the viewport's, the key strip's, the graph editor's, a field drag,
+//! seek, a list row's drag, the ruler's and the strip's own) is ONE value
+//! of [`Drag`], so a mouse move or release goes to exactly the part that
+//! holds the gesture instead of every part being asked in turn. A
+//! component that keeps its own drag state (viewport, key strip, graph)
+//! is named by a marker here. Also what a field drag started from.
 //! Routing lives in `route/input.rs`.
 
 use super::fields::FieldId;
-use super::rig::state::IkDrag;
 use crate::scene::{Node, NodeId, Settings};
 
 /// State kept between mouse down and up.
@@ -14,22 +15,15 @@ use crate::scene::{Node, NodeId, Settings};
 pub(super) enum Drag {
     #[default]
     None,
-    /// A handle of the current tool took the press; the handles
-    /// (`manip/handles.rs`) keep their own drag state.
-    Handle,
+    /// The viewport took the press (orbit, pan, pick, its menu, a
+    /// handle, the IK target): it keeps its own gesture
+    /// (`viewport_ui.rs`).
+    Viewport,
     /// The key strip took the press (keys moved or a selection box); it
     /// keeps its own drag state.
     Keys,
-    /// The IK target (`rig/ik.rs`).
-    Ik(Box<IkDrag>),
     /// The graph editor took the press; it keeps its own drag state.
     Graph,
-    Orbit {
-        last: (f32, f32),
-    },
-    Pan {
-        last: (f32, f32),
-    },
     /// Pressed on a field: a click starts typing, a drag changes the value.
     Field {
         id: FieldId,
@@ -39,14 +33,6 @@ pub(super) enum Drag {
     },
     /// Dragging the current-frame cursor on the ruler.
     Seek,
-    /// Pressed in the viewport in select mode; selects on release. On the
-    /// selection (`armed`: its body, or inside the rotate rings; the
-    /// handles hold which) a move past the slop turns it into that
-    /// handle's drag instead.
-    Pick {
-        at: (f32, f32),
-        armed: bool,
-    },
     /// Pressed on an object list row: a drag drops it onto another row
     /// (parent) or onto the list's empty space (top level).
     RowMove {
@@ -54,45 +40,12 @@ pub(super) enum Drag {
         at: (f32, f32),
         moved: bool,
     },
-    /// Right button in the viewport: a drag pans, a click opens the
-    /// viewport's context menu.
-    Context {
-        at: (f32, f32),
-        last: (f32, f32),
-        moved: bool,
-    },
     /// Middle button over the ruler or key strip: pans the frames shown.
-    StripPan {
-        last_x: f32,
-    },
+    StripPan { last_x: f32 },
     /// Shift+drag on the ruler: the preview range from the press's frame.
-    Preview {
-        from: f32,
-    },
+    Preview { from: f32 },
     /// Dragging the timeline's top edge: the key strip's height.
-    StripResize {
-        y0: f32,
-        h0: i32,
-    },
-}
-
-impl Drag {
-    /// Ends the gesture and returns what `part` finds in it, when it is
-    /// that part's; any other gesture stays.
-    fn take_if<T>(&mut self, part: impl FnOnce(Drag) -> Result<T, Drag>) -> Option<T> {
-        match part(std::mem::take(self)) {
-            Ok(t) => Some(t),
-            Err(other) => {
-                *self = other;
-                None
-            }
-        }
-    }
-
-    /// The IK drag, if it is the gesture (which then ends).
-    pub(super) fn take_ik(&mut self) -> Option<Box<IkDrag>> {
-        self.take_if(|d| if let Drag::Ik(i) = d { Ok(i) } else { Err(d) })
-    }
+    StripResize { y0: f32, h0: i32 },
 }
 
 /// What a field drag started from (to compute values and the command).

@@ -8,7 +8,8 @@
 //! undone; a drag previews live and records one command at release.
 //!
 //! The animating tools: `record.rs` (record mode, K, pending changes),
-//! `manip/` (handles, one file per kind), `keystrip.rs` + `keyedit.rs` +
+//! `viewport_ui.rs` (the viewport: orbit, pan, pick, its handles from
+//! `manip/`, one file per kind), `keystrip.rs` + `keyedit.rs` +
 //! `keystrip_draw.rs` (the key strip under the ruler), `keyprops.rs` (the
 //! key panel), `motion_path.rs`, `onion.rs`, `recovery.rs` (autosave). A
 //! new drag previews with `preview` and records one command at release
@@ -51,6 +52,7 @@ mod route;
 mod screen;
 pub mod script;
 pub mod search;
+mod sel_outline;
 pub mod shell;
 pub mod side_ui;
 mod split;
@@ -58,6 +60,7 @@ mod strip_tips;
 pub mod timeline;
 pub mod tooltip;
 mod viewport;
+pub mod viewport_ui;
 pub mod views;
 mod widget_paint;
 
@@ -149,8 +152,9 @@ pub struct Editor {
     record: bool,
     /// A change on an animated property not yet keyed (record off).
     pending: Option<record::Pending>,
-    /// Handles: tool, hover and drag.
-    manip: manip::Manip,
+    /// The viewport component: its one gesture (orbit, pan, pick, menu,
+    /// IK target) and its handles (tool, hover, drag).
+    viewport: viewport_ui::Viewport,
     /// Key strip: selected keys, fold state, clipboard, strip drags.
     keys: keystrip::KeyStrip,
     /// The key panel (whether "Object" put the node's properties back).
@@ -227,7 +231,7 @@ impl Editor {
             playback: None,
             record: false,
             pending: None,
-            manip: manip::Manip::default(),
+            viewport: viewport_ui::Viewport::default(),
             keys: keystrip::KeyStrip::default(),
             key_panel: keypanel::KeyPanel::default(),
             onion: onion::Onion::default(),

@@ -14,7 +14,10 @@
 //!   state and a clean quit. A copy this session did not write (a crash's)
 //!   is only deleted by "Discard copy" or by saving over its scene.
 //! * Time comes from `Event::Tick`s: the window loop sends one at least
-//!   every second, scripts with `wait-frames` / `sleep-ms`.
+//!   every second, scripts with `wait-frames` / `sleep-ms`. The wall clock
+//!   ("Autosaved at …", "… ago") and the process id (the untitled copy's
+//!   name) are the shell's too: it passes them in (`Editor::set_wall_clock`,
+//!   `Editor::set_pid`), so a test or script can fix them.
 //! * Who touches the disk: nobody here. These are the rules (names, which
 //!   copy is worth offering, the order of sessions, how times read, the
 //!   autosave clock); the shell's `disk.rs` reads folders, file times,
@@ -60,9 +63,9 @@ pub fn state_dir_from(xdg_state_home: Option<&Path>, home: Option<&Path>, tmp: &
     tmp.join("animed")
 }
 
-/// This process's untitled copy in `dir`.
-pub fn untitled_in(dir: &Path) -> PathBuf {
-    dir.join(format!("untitled-{}{SUFFIX}", std::process::id()))
+/// The untitled copy in `dir` of the session whose process id is `pid`.
+pub fn untitled_in(dir: &Path, pid: u32) -> PathBuf {
+    dir.join(format!("untitled-{pid}{SUFFIX}"))
 }
 
 /// Whether a recovery copy written at `copy` is worth offering over its
@@ -192,6 +195,14 @@ pub struct Autosave {
     pub(super) dir: Option<PathBuf>,
     /// How long the last autosave took, in milliseconds.
     pub(super) last_ms: Option<f64>,
+    /// This session's process id, as the shell gave it (names the
+    /// untitled copy; `None`: untitled work gets no copy, like a missing
+    /// state folder).
+    pub(super) pid: Option<u32>,
+    /// The wall clock as the shell last read it (the status line's
+    /// "Autosaved at …", the recovery dialog's "… ago"); the Unix epoch
+    /// until told.
+    pub(super) wall: SystemTime,
     /// Mouse buttons held: a drag may be previewing into the scene.
     buttons: u8,
     /// Tick time the buttons were first seen held.
@@ -210,6 +221,8 @@ impl Default for Autosave {
             chosen: 0,
             dir: None,
             last_ms: None,
+            pid: None,
+            wall: SystemTime::UNIX_EPOCH,
             buttons: 0,
             held_since: None,
         }
@@ -268,8 +281,8 @@ mod tests {
         );
         assert_eq!(state_dir_from(None, None, t), t.join("animed"));
         assert_eq!(
-            untitled_pid(&untitled_in(x)),
-            Some(std::process::id()),
+            untitled_pid(&untitled_in(x, 4242)),
+            Some(4242),
             "the name carries the pid"
         );
     }

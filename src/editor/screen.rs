@@ -14,6 +14,9 @@ impl Screen for Editor {
     fn perform(&mut self) -> bool {
         super::shell::perform(self)
     }
+    fn set_wall_clock(&mut self, now: std::time::SystemTime) {
+        Editor::set_wall_clock(self, now)
+    }
     fn draw(&mut self, frame: &mut Frame) {
         Editor::draw(self, frame)
     }

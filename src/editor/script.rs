@@ -71,6 +71,8 @@ const DRAG_STEPS: usize = 8;
 const MAX_SIDE: u32 = 4096;
 /// Largest wait (frames or milliseconds), so a typo cannot hang a session.
 const MAX_WAIT: u64 = 100_000;
+/// The latest `clock` a script may set (seconds since 1970: year 5138).
+const MAX_CLOCK: u64 = 100_000_000_000;
 /// How often `sleep-ms` ticks.
 const SLEEP_SLICE: std::time::Duration = std::time::Duration::from_millis(100);
 
@@ -85,6 +87,8 @@ pub enum Step {
     Wheel(f32, Option<(f32, f32)>),
     WaitFrames(u64),
     SleepMs(u64),
+    /// Sets the wall clock to these seconds since 1970 (UTC).
+    Clock(u64),
     Resize(u32, u32),
     /// Saves the current window picture (relative paths: the working
     /// directory, as `--screenshot`).
@@ -243,6 +247,10 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<(usize, Step)>, ScriptError>
             "sleep-ms" => {
                 want(1..=1)?;
                 Step::SleepMs(count(0, MAX_WAIT)?)
+            }
+            "clock" => {
+                want(1..=1)?;
+                Step::Clock(count(0, MAX_CLOCK)?)
             }
             "resize" => {
                 want(2..=2)?;
@@ -502,6 +510,10 @@ impl Runner {
                     self.clock += dt;
                     feed(ed, Event::Tick { time: self.clock });
                 }
+            }
+            Step::Clock(secs) => {
+                let t = std::time::UNIX_EPOCH + std::time::Duration::from_secs(*secs);
+                ed.set_wall_clock(t);
             }
             Step::SleepMs(ms) => {
                 // Real time, in slices, each followed by a tick.

@@ -17,7 +17,7 @@ use super::Editor;
 use crate::format::export::atomic::{EditLock, Stamp};
 use crate::scene::Scene;
 use std::path::{Path, PathBuf};
-use std::time::{Instant, SystemTime};
+use std::time::Instant;
 
 /// Rounds of requests answered in one [`perform`]: an answer may queue
 /// more (an open asks for the view memory and the recovery check), never
@@ -68,7 +68,7 @@ fn perform_one(ed: &mut Editor, r: Request) {
         Request::Remove(p) => remove(&p),
         Request::FindRecovery { scene } => {
             if let Some((copy, when)) = disk::newer_copy(&scene) {
-                ed.recovery_found(&scene, copy, when, SystemTime::now());
+                ed.recovery_found(&scene, copy, when);
             }
         }
         Request::Recover { copy } => {
@@ -281,7 +281,7 @@ impl Editor {
             return 0;
         }
         let list: Vec<Session> = disk::untitled_sessions(dir);
-        let n = self.offer_sessions(dir, list, SystemTime::now());
+        let n = self.offer_sessions(dir, list);
         perform(self);
         n
     }

@@ -3,6 +3,7 @@
 //! gizmos, and picking.
 
 use super::manip::ARROW_PX;
+use super::sel_outline::{for_each_ring, Ring};
 use super::{gizmo, ops, Editor, LayerKey};
 use crate::input::camera::Projector;
 use crate::render::{self, Frame, RenderOptions};
@@ -162,25 +163,24 @@ impl Editor {
         let w = (lf.width as usize).min(vp.w.max(0) as usize);
         let h = (lf.height as usize).min(vp.h.max(0) as usize);
         let lw = lf.width as usize;
-        let mask: Vec<bool> = (0..w * h)
-            .map(|i| {
-                let id = lf.ids[(i / w.max(1)) * lw + i % w.max(1)];
-                id != 0 && mine.get(id as usize).copied().unwrap_or(false)
-            })
-            .collect();
-        let fw = frame.width as usize;
+        let mut mask = Vec::with_capacity(w * h);
         for y in 0..h {
-            for x in 0..w {
-                let o = (vp.y as usize + y) * fw + vp.x as usize + x;
-                let c = frame.color[o];
-                frame.color[o] = match outline_ring(&mask, w, h, x, y) {
-                    Ring::Inside => theme::blend(c, theme::SELECTED, 1, 8),
-                    Ring::Near => theme::SELECTED,
-                    Ring::Far => theme::blend(c, 0x000000, 1, 2),
-                    Ring::None => continue,
-                };
-            }
+            let row = &lf.ids[y * lw..y * lw + w];
+            mask.extend(
+                row.iter()
+                    .map(|&id| id != 0 && mine.get(id as usize) == Some(&true)),
+            );
         }
+        let fw = frame.width as usize;
+        for_each_ring(&mask, w, h, |x, y, ring| {
+            let o = (vp.y as usize + y) * fw + vp.x as usize + x;
+            let c = frame.color[o];
+            frame.color[o] = match ring {
+                Ring::Inside => theme::blend(c, theme::SELECTED, 1, 8),
+                Ring::Near => theme::SELECTED,
+                Ring::Far => theme::blend(c, 0x000000, 1, 2),
+            };
+        });
     }
 
     /// Light gizmos and the axis indicator, clipped to the viewport.
@@ -308,44 +308,6 @@ fn draw_grid(frame: &mut Frame, proj: &Projector, radius: f32) {
     }
 }
 
-/// Where a pixel lies relative to the selection's silhouette.
-#[derive(Debug, PartialEq, Eq)]
-enum Ring {
-    /// On the selection (tinted).
-    Inside,
-    /// Outside, touching it (the outline colour).
-    Near,
-    /// Outside, two pixels away (a dark edge behind the outline).
-    Far,
-    None,
-}
-
-/// Classifies pixel (x, y) of the `w`×`h` selection mask.
-fn outline_ring(mask: &[bool], w: usize, h: usize, x: usize, y: usize) -> Ring {
-    if mask[y * w + x] {
-        return Ring::Inside;
-    }
-    let at = |dx: i32, dy: i32| {
-        let (nx, ny) = (x as i32 + dx, y as i32 + dy);
-        nx >= 0
-            && ny >= 0
-            && (nx as usize) < w
-            && (ny as usize) < h
-            && mask[ny as usize * w + nx as usize]
-    };
-    let near = (-1..=1).any(|dy| (-1..=1).any(|dx| at(dx, dy)));
-    if near {
-        return Ring::Near;
-    }
-    let far = (-2..=2)
-        .any(|dy: i32| (-2..=2).any(|dx: i32| (dx.abs() == 2 || dy.abs() == 2) && at(dx, dy)));
-    if far {
-        Ring::Far
-    } else {
-        Ring::None
-    }
-}
-
 /// Handle size factor for a selection `r_px` pixels in radius: full size
 /// (arrows [`ARROW_PX`] long) once the arrows reach no further than 2.5
 /// radii, shrinking with the object below that, never under 60 % (still
@@ -380,7 +342,7 @@ fn corner_axes(view: &glam::Mat4) -> [(f32, f32); 3] {
 
 #[cfg(test)]
 mod tests {
-    use super::{corner_axes, handle_scale, outline_ring, tripod_label, Ring, ARROW_PX};
+    use super::{corner_axes, handle_scale, tripod_label, ARROW_PX};
     use crate::ui::Rect;
 
     #[test]
@@ -395,23 +357,6 @@ mod tests {
         // Up or sideways: beyond the arm's end as before.
         assert_eq!(tripod_label((c.0, c.1 - 15.0), (0.0, -1.0), vp), (19, 170));
         assert_eq!(tripod_label((c.0 + 15.0, c.1), (1.0, 0.0), vp), (39, 190));
-    }
-
-    #[test]
-    fn the_outline_lies_outside_the_silhouette() {
-        // A 2×2 selected square in a 8×8 mask at (3, 3).
-        let (w, h) = (8, 8);
-        let mut mask = vec![false; w * h];
-        for (x, y) in [(3, 3), (4, 3), (3, 4), (4, 4)] {
-            mask[y * w + x] = true;
-        }
-        assert_eq!(outline_ring(&mask, w, h, 3, 3), Ring::Inside);
-        assert_eq!(outline_ring(&mask, w, h, 2, 3), Ring::Near);
-        assert_eq!(outline_ring(&mask, w, h, 5, 5), Ring::Near);
-        assert_eq!(outline_ring(&mask, w, h, 1, 4), Ring::Far);
-        assert_eq!(outline_ring(&mask, w, h, 6, 6), Ring::Far);
-        assert_eq!(outline_ring(&mask, w, h, 0, 0), Ring::None);
-        assert_eq!(outline_ring(&mask, w, h, 7, 3), Ring::None);
     }
 
     #[test]

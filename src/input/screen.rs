@@ -17,6 +17,10 @@ pub trait Screen {
     fn perform(&mut self) -> bool {
         false
     }
+    /// The wall clock, told by the window loop before each pass's events
+    /// (the editor's "Autosaved at …"): a screen never reads the clock
+    /// itself, so tests and scripts can fix it.
+    fn set_wall_clock(&mut self, _now: std::time::SystemTime) {}
     /// Draws into `frame` (resizing it to [`Screen::size`]).
     fn draw(&mut self, frame: &mut Frame);
     fn wants_quit(&self) -> bool;

@@ -24,7 +24,7 @@ pub use progress::Mode as ProgressMode;
 pub use range::{FrameRange, Shard};
 pub use sequence::{OutputKind, SequenceJob};
 
-use crate::render::job::{render_at, FrameSpec};
+use crate::render::job::{render_color_at, FrameSpec};
 use crate::scene::Scene;
 use std::path::Path;
 
@@ -87,5 +87,5 @@ pub fn render_range(scene: &Scene, spec: &FrameSpec, args: RangeArgs) -> Result<
     let mut job = SequenceJob::new(range, shard, pattern)?;
     job.workers = frames_at_once(spec);
     job.progress = ProgressMode::detect();
-    job.run(|t| render_at(scene, spec, t))
+    job.run(|t| render_color_at(scene, spec, t))
 }

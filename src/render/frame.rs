@@ -8,7 +8,8 @@ pub struct Frame {
     pub height: u32,
     /// `0x00RRGGBB` per pixel (what minifb shows).
     pub color: Vec<u32>,
-    /// Window-space depth in 0..1 (1 = far / empty).
+    /// Window-space depth in 0..1 (1 = far / empty); empty after a
+    /// colour-only render (`render::render_color_into`), as are `ids`.
     pub depth: Vec<f32>,
     /// `NodeId.0 + 1` of the node drawn at each pixel; 0 = background.
     pub ids: Vec<u32>,
@@ -48,16 +49,27 @@ impl Frame {
     /// the size is unchanged; new pixels are zero (the renderer overwrites
     /// every pixel anyway).
     pub fn resize(&mut self, width: u32, height: u32) {
+        self.fit(width, height, true);
+    }
+
+    /// [`Frame::resize`], with empty depth and id buffers unless
+    /// `depth_and_ids` (a colour-only render, `render::render_color_into`).
+    pub fn fit(&mut self, width: u32, height: u32, depth_and_ids: bool) {
         let n = width as usize * height as usize;
-        if (self.width, self.height) != (width, height) {
-            self.width = width;
-            self.height = height;
-            for v in [&mut self.color, &mut self.ids] {
-                v.clear();
-                v.resize(n, 0);
-            }
+        self.width = width;
+        self.height = height;
+        let m = if depth_and_ids { n } else { 0 };
+        if self.color.len() != n {
+            self.color.clear();
+            self.color.resize(n, 0);
+        }
+        if self.ids.len() != m {
+            self.ids.clear();
+            self.ids.resize(m, 0);
+        }
+        if self.depth.len() != m {
             self.depth.clear();
-            self.depth.resize(n, 0.0);
+            self.depth.resize(m, 0.0);
         }
     }
 

@@ -4,7 +4,7 @@
 //! The CLI, GIF/sequence output and sharded rendering all call
 //! [`render_at`], so every frame they write is the same picture.
 
-use super::{render, Frame, RenderOptions, View};
+use super::{render_color_into, render_into, Frame, RenderOptions, View};
 use crate::anim::{evaluate, Pose};
 use crate::scene::{NodeId, RenderStyle, Scene, SourceFormat};
 use glam::Vec3;
@@ -155,6 +155,22 @@ pub fn options_for(scene: &Scene, spec: &FrameSpec) -> RenderOptions {
 
 /// Renders `scene` at `time` seconds as `spec` says.
 pub fn render_at(scene: &Scene, spec: &FrameSpec, time: f32) -> Result<Frame, String> {
+    frame_at(scene, spec, time, render_into)
+}
+
+/// [`render_at`] for a picture only: the same colour, no depth or ids
+/// (what `animed render` and the library's `render` write out).
+pub fn render_color_at(scene: &Scene, spec: &FrameSpec, time: f32) -> Result<Frame, String> {
+    frame_at(scene, spec, time, render_color_into)
+}
+
+/// The camera, pose and view of `spec` at `time`, drawn by `draw`.
+fn frame_at(
+    scene: &Scene,
+    spec: &FrameSpec,
+    time: f32,
+    draw: fn(&Scene, &Pose, &View, &RenderOptions, &mut Frame),
+) -> Result<Frame, String> {
     let camera = find_camera(scene, spec.viewpoint.as_deref())?;
     let pose = evaluate(scene, time);
     let aspect = spec.width.max(1) as f32 / spec.height.max(1) as f32;
@@ -165,7 +181,10 @@ pub fn render_at(scene: &Scene, spec: &FrameSpec, time: f32) -> Result<Frame, St
             View::view_all_for_picture(scene, &evaluate(scene, 0.0), &pose, spec.width, spec.height)
         }
     };
-    Ok(render(scene, &pose, &view, &options_for(scene, spec)))
+    let opts = options_for(scene, spec);
+    let mut frame = Frame::new(0, 0, opts.background);
+    draw(scene, &pose, &view, &opts, &mut frame);
+    Ok(frame)
 }
 
 #[cfg(test)]
@@ -218,6 +237,36 @@ mod tests {
         // Re-framing per time (the old behaviour) would have moved the eye.
         let reframed = View::view_all(&s, &evaluate(&s, 48.0 / fps), 1.5);
         assert_ne!(reframed.eye, v2.eye);
+    }
+
+    /// A colour-only frame has exactly the full frame's colour bytes and
+    /// no depth or ids, with and without multisampling; one frame reused
+    /// across both kinds gets its buffers back.
+    #[test]
+    fn colour_only_frames_keep_the_colour_bytes() {
+        let s = sliding_box(true);
+        for aa in [1, 4] {
+            let spec = FrameSpec {
+                width: 70,
+                height: 45,
+                aa,
+                ..FrameSpec::default()
+            };
+            let full = render_at(&s, &spec, 0.0).unwrap();
+            let colour = render_color_at(&s, &spec, 0.0).unwrap();
+            assert_eq!(colour.color, full.color, "aa {aa}");
+            assert!(full.ids.iter().any(|&i| i != 0), "the box is drawn");
+            assert!(colour.depth.is_empty() && colour.ids.is_empty());
+            let pose = evaluate(&s, 0.0);
+            let view = view_for(&s, &pose, None, 70.0 / 45.0);
+            let opts = options_for(&s, &spec);
+            let mut reused = render_at(&s, &spec, 0.0).unwrap();
+            render_color_into(&s, &pose, &view, &opts, &mut reused);
+            assert_eq!(reused.color, full.color);
+            assert!(reused.depth.is_empty() && reused.ids.is_empty());
+            render_into(&s, &pose, &view, &opts, &mut reused);
+            assert_eq!(reused, full, "aa {aa}");
+        }
     }
 
     #[test]

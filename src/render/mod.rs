@@ -123,6 +123,33 @@ pub fn render_into(
     opts: &RenderOptions,
     frame: &mut Frame,
 ) {
+    render_frame(scene, pose, view, opts, frame, true);
+}
+
+/// [`render_into`] for callers that want only the picture (`animed render`,
+/// the library's `render`, the benchmarks): the same colour bytes, but the
+/// frame's `depth` and `ids` come back empty. Writing them out is a third
+/// of a one-layer frame's memory traffic (8 of every pixel's 12 bytes) that
+/// nobody reads there; the editor, which picks with ids, keeps them.
+pub fn render_color_into(
+    scene: &Scene,
+    pose: &Pose,
+    view: &View,
+    opts: &RenderOptions,
+    frame: &mut Frame,
+) {
+    render_frame(scene, pose, view, opts, frame, false);
+}
+
+/// Draws into `frame`, with its depth and id buffers when `depth_and_ids`.
+fn render_frame(
+    scene: &Scene,
+    pose: &Pose,
+    view: &View,
+    opts: &RenderOptions,
+    frame: &mut Frame,
+    depth_and_ids: bool,
+) {
     let mut opts = opts.clone();
     opts.width = opts.width.min(MAX_SIDE);
     opts.height = opts.height.min(MAX_SIDE);
@@ -130,7 +157,7 @@ pub fn render_into(
         opts.height = (MAX_PIXELS / opts.width as u64) as u32;
     }
     // Every pixel is written by its tile, so resized buffers need no fill.
-    frame.resize(opts.width, opts.height);
+    frame.fit(opts.width, opts.height, depth_and_ids);
     if opts.width == 0 || opts.height == 0 {
         return;
     }
@@ -187,11 +214,18 @@ fn draw(
     let band = raster::TILE_H as usize * w as usize;
     let background = opts.background;
     let clock = band_trace::frame_start();
+    // A colour-only frame has no depth or ids: its bands get empty slices,
+    // which the resolve leaves alone.
+    let n_bands = frame.color.len().div_ceil(band);
+    let mut depth: Vec<&mut [f32]> = frame.depth.chunks_mut(band).collect();
+    let mut ids: Vec<&mut [u32]> = frame.ids.chunks_mut(band).collect();
+    depth.resize_with(n_bands, Default::default);
+    ids.resize_with(n_bands, Default::default);
     let bands = frame
         .color
         .par_chunks_mut(band)
-        .zip(frame.depth.par_chunks_mut(band))
-        .zip(frame.ids.par_chunks_mut(band))
+        .zip(depth)
+        .zip(ids)
         .enumerate();
     /// A band's index and its rows of the colour, depth and id buffers.
     type Band<'a> = (usize, ((&'a mut [u32], &'a mut [f32]), &'a mut [u32]));

@@ -733,6 +733,8 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
         ..
     } = scratch;
     let inv = 1.0 / ns as f32;
+    // A colour-only frame (`render_color_into`) has no depth or ids.
+    let depth_and_ids = !target.depth.is_empty();
     for (row, y) in (rect[1]..rect[3]).enumerate() {
         let dst = (y - target.y0) as usize * target.stride + rect[0] as usize;
         let src = row * TILE as usize;
@@ -743,6 +745,9 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
                 let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
                 let px = super::frame::pack_rgb8(ld(r), ld(g), ld(b));
                 put8(&mut target.color[dst + k..dst + tw], &px);
+                if !depth_and_ids {
+                    continue;
+                }
                 let at = src + k..src + k + 8;
                 put8(
                     &mut target.depth[dst + k..dst + tw],
@@ -777,8 +782,10 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
             }
             for s in 0..ns {
                 let j = s * PLANE + src + k;
-                for (z, d) in zmin.iter_mut().zip(&depth[j..j + 8]) {
-                    *z = z.min(*d);
+                if depth_and_ids {
+                    for (z, d) in zmin.iter_mut().zip(&depth[j..j + 8]) {
+                        *z = z.min(*d);
+                    }
                 }
                 if flat[(src + k) / 8] {
                     continue;
@@ -786,14 +793,18 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
                 for (a, c) in acc.iter_mut().zip([r, g, b]) {
                     *a = *a + Sse8::load(c[j..j + 8].try_into().expect("8"));
                 }
-                for (i, d) in id.iter_mut().zip(&ids[j..j + 8]) {
-                    *i = if *i == 0 { *d } else { *i };
+                if depth_and_ids {
+                    for (i, d) in id.iter_mut().zip(&ids[j..j + 8]) {
+                        *i = if *i == 0 { *d } else { *i };
+                    }
                 }
             }
             let px = super::frame::pack_rgb8(acc[0] * inv, acc[1] * inv, acc[2] * inv);
             put8(&mut target.color[dst + k..dst + tw], &px);
-            put8(&mut target.depth[dst + k..dst + tw], &zmin);
-            put8(&mut target.ids[dst + k..dst + tw], &id);
+            if depth_and_ids {
+                put8(&mut target.depth[dst + k..dst + tw], &zmin);
+                put8(&mut target.ids[dst + k..dst + tw], &id);
+            }
         }
     }
 }

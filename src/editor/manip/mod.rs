@@ -100,9 +100,9 @@ impl Handle {
     }
 }
 
-/// The handles' state: tool, hover, and the drag they run (the editor's
-/// gesture is then `gesture::Drag::Handle`), or a press on the selection
-/// armed to become one (`handles.rs`).
+/// The handles' state: tool, hover, and the drag they run (the viewport
+/// component's gesture is then `Handle`, `viewport_ui.rs`), or a press on
+/// the selection armed to become one (`handles.rs`).
 #[derive(Clone, Debug, Default)]
 pub struct Manip {
     pub tool: Tool,

@@ -11,24 +11,21 @@
 //! animated ones keep the pose pending (shown until the frame changes)
 //! until K keys both. While dragging, the pose is shown the same pending
 //! way, over the joints' tracks.
+//!
+//! The drag itself is the viewport component's (`viewport_ui.rs`, with
+//! the pure `ik_drag.rs`); here the editor builds what it sees
+//! ([`IkCtx`]) and applies what it returns (`show_ik`, `ik_released`).
 
-use crate::anim::ik::{self, Chain};
+use crate::anim::ik::Chain;
 use crate::anim::{Property, Target, TargetRef};
 use crate::editor::command::Command;
-use crate::editor::gesture::Drag;
-use crate::editor::manip::geom::{pixel_ray, ray_plane};
 use crate::editor::record::with_keys;
+use crate::editor::viewport_ui::IkCtx;
 use crate::editor::Editor;
-use crate::scene::{Node, NodeId, Scene};
-use crate::ui::{Painter, Rect};
-use glam::{Quat, Vec3};
+use crate::scene::{NodeId, Scene};
+use glam::Quat;
 
 pub use super::state::{IkDrag, IkPending};
-
-/// The target's colour (the IK handle).
-const IK: u32 = 0xf0d040;
-/// How close (pixels) a press must be to the end joint to grab the target.
-const GRAB_PX: f32 = 9.0;
 
 /// The rotation part of a world matrix (scale and shear ignored).
 fn world_rotation(pose: &crate::anim::Pose, id: Option<NodeId>) -> Quat {
@@ -37,13 +34,6 @@ fn world_rotation(pose: &crate::anim::Pose, id: Option<NodeId>) -> Quat {
             let (_, r, _) = m.to_scale_rotation_translation();
             r.normalize()
         })
-}
-
-/// `local` turned by the world rotation `turn` about its own pivot, for a
-/// node whose parent's world rotation is `parent`: P⁻¹·Δ·P·L (exact for
-/// parents without non-uniform scale).
-fn turned_local(parent: Quat, turn: Quat, local: Quat) -> Quat {
-    (parent.inverse() * turn * parent * local).normalize()
 }
 
 impl Editor {
@@ -89,15 +79,17 @@ impl Editor {
             .filter(|&e| self.selection == Some(e) && (e.0 as usize) < self.scene.nodes.len())
     }
 
-    /// Mouse down in the viewport: grabs the IK target when it is under
-    /// the mouse. True when taken.
-    pub(in crate::internals::editor) fn ik_press(&mut self, x: f32, y: f32) -> bool {
-        let Some(end) = self.ik_end() else {
-            return false;
-        };
-        let Some((root, mid)) = self.ik_chain(end) else {
-            return false;
-        };
+    /// What the viewport sees of the IK target (`None`: IK is off or the
+    /// selection is not its joint). `press`: build the drag a press would
+    /// start; `drawn`: find out whether the target shows (its skeleton
+    /// does), for drawing.
+    pub(in crate::internals::editor) fn ik_ctx(
+        &mut self,
+        press: bool,
+        drawn: bool,
+    ) -> Option<IkCtx> {
+        let end = self.ik_end()?;
+        let (root, mid) = self.ik_chain(end)?;
         let pose = self.pose().clone();
         let at = |id| super::bones::pivot(&self.scene, &pose, id);
         let chain = Chain {
@@ -105,13 +97,25 @@ impl Editor {
             mid: at(mid),
             end: at(end),
         };
+        let grab = press.then(|| Box::new(self.ik_grab(root, mid, chain, &pose)));
+        let drawn = drawn && !self.shown_bones().is_empty();
+        Some(IkCtx {
+            chain: [chain.root, chain.mid, chain.end],
+            drawn,
+            grab,
+        })
+    }
+
+    /// The drag a press on the target starts: the chain as it is, bending
+    /// the way it bends, in the plane facing the viewer through the end.
+    fn ik_grab(
+        &mut self,
+        root: NodeId,
+        mid: NodeId,
+        chain: Chain,
+        pose: &crate::anim::Pose,
+    ) -> IkDrag {
         let proj = self.projector();
-        let Some(p) = proj.point(chain.end) else {
-            return false;
-        };
-        if (p.0 - x).hypot(p.1 - y) > GRAB_PX {
-            return false;
-        }
         let inv = proj.view.inverse();
         let forward = (-inv.z_axis.truncate()).normalize_or_zero();
         let up = inv.y_axis.truncate();
@@ -124,66 +128,38 @@ impl Editor {
             up
         };
         let parent = self.scene.node(root).parent;
-        self.drag = Drag::Ik(Box::new(IkDrag {
+        IkDrag {
             root,
             mid,
             chain,
             pole,
             plane: (chain.end, forward),
             posed: [self.posed_node(root), self.posed_node(mid)],
-            parent_rot: world_rotation(&pose, parent),
-            root_rot: world_rotation(&pose, Some(root)),
+            parent_rot: world_rotation(pose, parent),
+            root_rot: world_rotation(pose, Some(root)),
             target: chain.end,
-        }));
-        self.stop_playback();
-        true
-    }
-
-    /// The two joints' new local rotations for the target `t`.
-    fn ik_solve(d: &IkDrag, t: Vec3) -> Option<[Node; 2]> {
-        let s = ik::solve(d.chain, t, d.pole)?;
-        let mut root = d.posed[0].clone();
-        let mut mid = d.posed[1].clone();
-        root.transform.rotation = turned_local(d.parent_rot, s.root_turn, root.transform.rotation);
-        let root_after = (s.root_turn * d.root_rot).normalize();
-        mid.transform.rotation = turned_local(root_after, s.mid_turn, mid.transform.rotation);
-        Some([root, mid])
-    }
-
-    /// Mouse move during an IK drag: solves and shows. `None` when no IK
-    /// drag runs.
-    pub(in crate::internals::editor) fn ik_move(&mut self, x: f32, y: f32) -> Option<bool> {
-        let Drag::Ik(d) = &self.drag else {
-            return None;
-        };
-        let mut d = d.clone();
-        let proj = self.projector();
-        let (ro, rd) = pixel_ray(&proj, x, y);
-        let Some(t) = ray_plane(d.plane.0, d.plane.1, ro, rd) else {
-            return Some(false);
-        };
-        d.target = t;
-        if let Some([root, mid]) = Self::ik_solve(&d, t) {
-            self.rig.ik_pending = Some(IkPending {
-                joints: [(d.root, root), (d.mid, mid)],
-                frame: self.frame,
-                revision: self.history.revision(),
-            });
-            self.pending = None;
-            self.scene_rev += 1;
         }
-        self.drag = Drag::Ik(d);
-        Some(true)
     }
 
-    /// Mouse up: ends an IK drag as described in the module doc. False
-    /// when no IK drag ran.
-    pub(in crate::internals::editor) fn ik_release(&mut self) -> bool {
-        if self.drag.take_ik().is_none() {
-            return false;
-        }
+    /// An IK drag moved: shows the two joints posed so, pending over
+    /// their tracks.
+    pub(in crate::internals::editor) fn show_ik(
+        &mut self,
+        joints: [(NodeId, crate::scene::Node); 2],
+    ) {
+        self.rig.ik_pending = Some(IkPending {
+            joints,
+            frame: self.frame,
+            revision: self.history.revision(),
+        });
+        self.pending = None;
+        self.scene_rev += 1;
+    }
+
+    /// The IK drag ended, as described in the module doc.
+    pub(in crate::internals::editor) fn ik_released(&mut self) {
         let Some(p) = self.ik_pending().cloned() else {
-            return true;
+            return;
         };
         let animated = p
             .joints
@@ -194,10 +170,9 @@ impl Editor {
                 "IK pose pending: K keys both joints, a new frame drops it",
                 false,
             );
-            return true;
+            return;
         }
         self.bake_ik(&p, "IK");
-        true
     }
 
     /// The pending IK pose, if it still applies.
@@ -276,53 +251,5 @@ impl Editor {
             }
         }
         true
-    }
-
-    /// The IK handle: the chain in yellow and a diamond at the target.
-    pub(in crate::internals::editor) fn draw_ik(&mut self, p: &mut Painter, vp: Rect) {
-        let Some(end) = self.ik_end() else {
-            return;
-        };
-        let Some((root, mid)) = self.ik_chain(end) else {
-            return;
-        };
-        let pose = self.pose().clone();
-        let at = |id| super::bones::pivot(&self.scene, &pose, id);
-        let pts = [at(root), at(mid), at(end)];
-        let proj = self.projector();
-        p.set_clip(Some(vp));
-        for w in pts.windows(2) {
-            if let Some((a, b)) = proj.segment(w[0], w[1]) {
-                p.line(a, b, IK, 1.5);
-            }
-        }
-        let target = match &self.drag {
-            Drag::Ik(d) => d.target,
-            _ => pts[2],
-        };
-        if let Some((x, y)) = proj.point(target) {
-            let r = 6.0;
-            p.fill_polygon(&[(x, y - r), (x + r, y), (x, y + r), (x - r, y)], IK, 220);
-        }
-        p.set_clip(None);
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_turn_in_world_space_becomes_the_local_one() {
-        // Parent turned 90° about y: a world turn about z is a local turn
-        // about the parent's local axis that maps to world z, i.e. −x.
-        let parent = Quat::from_rotation_y(std::f32::consts::FRAC_PI_2);
-        let turn = Quat::from_rotation_z(0.3);
-        let local = turned_local(parent, turn, Quat::IDENTITY);
-        let want = Quat::from_rotation_x(-0.3);
-        // (angle_between is an acos: about 3e-4 of noise near zero.)
-        assert!(local.angle_between(want) < 1e-3, "{local:?}");
-        // And back: parent · local = turn · parent.
-        assert!((parent * local).angle_between(turn * parent) < 1e-3);
     }
 }

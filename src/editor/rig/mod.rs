@@ -13,6 +13,7 @@ pub mod bones;
 pub mod clip_action;
 pub mod clips;
 pub mod ik;
+pub mod ik_drag;
 pub mod morph;
 pub mod state;
 mod view;

@@ -1,6 +1,7 @@
 //! The rig tools' state (pure data, no `Editor`): the editor holds a
-//! `RigState`, the gesture (`gesture::Drag`) an `IkDrag` and a
-//! `MorphBase` while a slider is dragged.
+//! `RigState`, the viewport component (`viewport_ui.rs`) an `IkDrag`
+//! and a field drag (`gesture::Base`) a `MorphBase` while a slider is
+//! dragged.
 //! It lives apart from the tools' `Editor` methods (`morph.rs`, `ik.rs`,
 //! `mod.rs`), which would otherwise close import circles through the
 //! editor (editor → rig → editor).

@@ -54,7 +54,6 @@ impl Editor {
             }
         }
         p.set_clip(None);
-        self.draw_ik(p, vp);
     }
 
     /// Where joint `id`'s ball is drawn in the window, if it shows (tests

@@ -12,7 +12,7 @@ impl Editor {
     /// grabbed (the hit test there gives that handle), or `None` when the
     /// selection has no such handle in view.
     pub fn handle_pixel(&mut self, name: &str) -> Option<(f32, f32)> {
-        let h = parse(self.manip.tool, name)?;
+        let h = parse(self.viewport.handles.tool, name)?;
         let hits = |ed: &mut Editor, p: (f32, f32)| ed.handle_at(p.0, p.1) == Some(h);
         let candidates: Vec<(f32, f32)> = match h {
             Handle::Axis(i) => {

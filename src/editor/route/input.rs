@@ -133,39 +133,25 @@ impl Editor {
         let (lx, ly) = self.mouse;
         self.mouse = (x, y);
         // The part that holds the gesture gets the move, and only it.
+        let ev = Event::MouseMove { x, y, mods };
         let part = match &self.drag {
-            Drag::Graph => self.graph_event(&Event::MouseMove { x, y, mods }),
-            Drag::Ik(_) => self.ik_move(x, y),
-            Drag::Keys => self.strip_event(&Event::MouseMove { x, y, mods }),
-            // A handle drag, a pick about to become one, or hover over
-            // the handles.
-            Drag::Handle | Drag::Pick { armed: true, .. } | Drag::None => {
-                self.handles_move(x, y, mods)
-            }
+            Drag::Graph => self.graph_event(&ev),
+            Drag::Keys => self.strip_event(&ev),
+            // The viewport's gesture, or hover over its handles.
+            Drag::Viewport | Drag::None => self.viewport_event(&ev),
             _ => None,
         };
         if let Some(redraw) = part {
             return redraw;
         }
         match self.drag.clone() {
-            Drag::Handle | Drag::Keys | Drag::Ik(_) | Drag::Graph => false,
+            Drag::Viewport | Drag::Keys | Drag::Graph => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
                 let before = self.widget_at(lx, ly);
                 let after = self.widget_at(x, y);
                 before != after
-            }
-            Drag::Orbit { last } => {
-                self.camera.orbit(x - last.0, y - last.1);
-                self.drag = Drag::Orbit { last: (x, y) };
-                true
-            }
-            Drag::Pan { last } => {
-                let h = self.layout().viewport.h as f32;
-                self.camera.pan(x - last.0, y - last.1, h);
-                self.drag = Drag::Pan { last: (x, y) };
-                true
             }
             Drag::Field {
                 id,
@@ -188,20 +174,6 @@ impl Editor {
             }
             Drag::Seek => {
                 self.seek_to_x(x);
-                true
-            }
-            Drag::Pick { .. } => false,
-            Drag::Context { at, last, moved } => {
-                if !moved && (x - at.0).abs().max((y - at.1).abs()) < DRAG_SLOP {
-                    return false;
-                }
-                let h = self.layout().viewport.h as f32;
-                self.camera.pan(x - last.0, y - last.1, h);
-                self.drag = Drag::Context {
-                    at,
-                    last: (x, y),
-                    moved: true,
-                };
                 true
             }
             Drag::RowMove { node, at, moved } => {
@@ -270,27 +242,10 @@ impl Editor {
             return;
         }
         if l.viewport.contains(x, y) {
+            // The viewport's press: its gesture (orbit, pan, pick, menu,
+            // a handle, the IK target) becomes the editor's.
             self.commit_edit();
-            let grab = button == MouseButton::Left && !mods.alt && self.mode == Mode::Select;
-            if grab && (self.ik_press(x, y) || self.handles_press(x, y)) {
-                return;
-            }
-            self.drag = match (button, self.mode) {
-                (MouseButton::Middle, _) if mods.shift => Drag::Pan { last: (x, y) },
-                (MouseButton::Middle, _) => Drag::Orbit { last: (x, y) },
-                (MouseButton::Left, _) if mods.alt => Drag::Orbit { last: (x, y) },
-                (MouseButton::Left, Mode::View) if mods.shift => Drag::Pan { last: (x, y) },
-                (MouseButton::Left, Mode::View) => Drag::Orbit { last: (x, y) },
-                (MouseButton::Left, Mode::Select) => Drag::Pick {
-                    at: (x, y),
-                    armed: false,
-                },
-                (MouseButton::Right, _) => Drag::Context {
-                    at: (x, y),
-                    last: (x, y),
-                    moved: false,
-                },
-            };
+            self.viewport_event(&Event::MouseDown { button, x, y, mods });
             return;
         }
         if button == MouseButton::Right {
@@ -383,15 +338,10 @@ impl Editor {
                 self.graph_event(&Event::MouseUp { button, x, y, mods });
                 return;
             }
-            Drag::Ik(_) => {
-                self.ik_release();
+            Drag::Viewport => {
+                self.viewport_event(&Event::MouseUp { button, x, y, mods });
                 return;
             }
-            Drag::Handle => {
-                self.handles_release();
-                return;
-            }
-            Drag::Pick { armed: true, .. } => self.handles_disarm(),
             Drag::Keys => {
                 self.strip_event(&Event::MouseUp { button, x, y, mods });
                 return;
@@ -420,15 +370,9 @@ impl Editor {
                 base,
                 ..
             } => self.finish_field_drag(id, base),
-            Drag::Pick { at, .. }
-                if (x - at.0).abs() <= DRAG_SLOP && (y - at.1).abs() <= DRAG_SLOP =>
-            {
-                self.pick(x, y);
-            }
             Drag::RowMove {
                 node, moved: true, ..
             } => self.drop_in_list(node, x, y),
-            Drag::Context { moved: false, .. } => self.open_context_menu(x as i32, y as i32),
             Drag::Preview { .. } => {
                 let r = self.timeline.preview;
                 self.set_preview_range(r);
@@ -454,8 +398,8 @@ impl Editor {
             return self.graph_event(&ev).unwrap_or(false);
         }
         if l.viewport.contains(x, y) {
-            self.camera.zoom(delta);
-            return true;
+            let ev = Event::Wheel { delta, x, y, mods };
+            return self.viewport_event(&ev).unwrap_or(false);
         }
         if let Some(redraw) = self.side_event(&Event::Wheel { delta, x, y, mods }) {
             return redraw;
@@ -770,7 +714,7 @@ impl Editor {
         {
             return;
         }
-        if self.handles_key(key, mods) || self.key_strip_key(key, mods) {
+        if self.viewport_key(key, mods) || self.key_strip_key(key, mods) {
             return;
         }
         if !matches!(self.drag, Drag::None) {
@@ -784,7 +728,11 @@ impl Editor {
 
     /// Esc during a drag: put back what the drag changed.
     pub(in crate::internals::editor) fn cancel_drag(&mut self) {
-        if let Drag::Field { id, base, .. } = std::mem::take(&mut self.drag) {
+        let drag = std::mem::take(&mut self.drag);
+        if let Drag::Viewport = drag {
+            self.cancel_viewport();
+        }
+        if let Drag::Field { id, base, .. } = drag {
             match base {
                 Base::Frame(f) => self.frame = f,
                 Base::Keys(a, k) => self.cancel_key_field_drag(*a, k),

@@ -67,6 +67,11 @@ impl Editor {
                     let c = self.recorded(Command::SetNode { id, before, after }, &[property]);
                     self.execute(&label, c);
                 }
+                Intent::Camera(c) => self.camera = c,
+                Intent::Pick((x, y)) => self.pick(x, y),
+                Intent::ViewportMenu((x, y)) => self.open_context_menu(x as i32, y as i32),
+                Intent::IkPose(joints) => self.show_ik(*joints),
+                Intent::IkDone => self.ik_released(),
             }
         }
         r.consumed.then_some(r.redraw)

@@ -20,4 +20,5 @@ mod record;
 mod recovery;
 mod side;
 mod timeline;
+mod viewport;
 mod views;

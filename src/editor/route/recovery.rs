@@ -27,6 +27,24 @@ impl Editor {
         self.autosave.dir = Some(dir.to_path_buf());
     }
 
+    /// This session's process id, from the shell (names the untitled
+    /// copy): the editor never asks the process.
+    pub fn set_pid(&mut self, pid: u32) {
+        self.autosave.pid = Some(pid);
+    }
+
+    /// The wall clock, from the shell before each event (the window loop)
+    /// or once (scripts, `clock` in a script): what "Autosaved at …" and
+    /// the recovery dialog's "… ago" read. The editor never reads it.
+    pub fn set_wall_clock(&mut self, now: SystemTime) {
+        self.autosave.wall = now;
+    }
+
+    /// The wall clock as the shell last gave it.
+    pub fn wall_clock(&self) -> SystemTime {
+        self.autosave.wall
+    }
+
     /// Where this session's recovery copy goes (`None`: untitled work and
     /// no state folder given).
     pub fn recovery_file(&self) -> Option<PathBuf> {
@@ -36,9 +54,11 @@ impl Editor {
         }
     }
 
-    /// Where this session's untitled work is autosaved.
+    /// Where this session's untitled work is autosaved (`None` until the
+    /// shell gave a state folder and the process id).
     pub(in crate::internals::editor) fn untitled_file(&self) -> Option<PathBuf> {
-        self.autosave.dir.as_deref().map(untitled_in)
+        let (dir, pid) = (self.autosave.dir.as_deref()?, self.autosave.pid?);
+        Some(untitled_in(dir, pid))
     }
 
     /// The recovery copy this session wrote, if it still stands.
@@ -120,7 +140,7 @@ impl Editor {
                 self.autosave.written = Some(path);
                 if why == AutosaveWhy::Clock {
                     // Say so: the user should see their work is safe.
-                    let when = clock_utc(SystemTime::now());
+                    let when = clock_utc(self.autosave.wall);
                     let what = match &self.path {
                         Some(_) => "unsaved changes",
                         None => "untitled work",
@@ -167,15 +187,10 @@ impl Editor {
     }
 
     /// The shell found a recovery copy newer than the open scene's file
-    /// (written `when`, seen at `now`): asks whether to recover it (the
-    /// dialog's Recover / Discard copy / Open saved).
-    pub fn recovery_found(
-        &mut self,
-        scene: &Path,
-        copy: PathBuf,
-        when: SystemTime,
-        now: SystemTime,
-    ) {
+    /// (written `when`; "… ago" from the wall clock the shell gave): asks
+    /// whether to recover it (the dialog's Recover / Discard copy / Open
+    /// saved).
+    pub fn recovery_found(&mut self, scene: &Path, copy: PathBuf, when: SystemTime) {
         if self.path.as_deref() != Some(scene) {
             return;
         }
@@ -183,7 +198,7 @@ impl Editor {
             .file_name()
             .map(|n| n.to_string_lossy().to_string())
             .unwrap_or_default();
-        let when = describe_time(when, now);
+        let when = describe_time(when, self.autosave.wall);
         self.autosave.offer = Some(copy);
         self.dialog = Some(Dialog::new(
             format!("Unsaved work on {name} was autosaved\n{when}. Recover it?"),
@@ -199,7 +214,7 @@ impl Editor {
     /// The untitled sessions the shell found in `dir` (newest first):
     /// lists them in the recovery dialog unless another question is open.
     /// Returns how many were offered.
-    pub fn offer_sessions(&mut self, dir: &Path, list: Vec<Session>, _now: SystemTime) -> usize {
+    pub fn offer_sessions(&mut self, dir: &Path, list: Vec<Session>) -> usize {
         if self.dialog.is_some() {
             return 0;
         }
@@ -234,7 +249,7 @@ impl Editor {
         self.autosave.chosen = chosen;
         self.autosave.offer = Some(list[chosen].path.clone());
         let mut message = String::from("Untitled work was autosaved and not saved:");
-        let lines = session_lines(list, SystemTime::now());
+        let lines = session_lines(list, self.autosave.wall);
         // At most 9 rows (keys 1-9 pick one); the rest wait their turn.
         for (i, l) in lines.iter().enumerate().take(9) {
             let mark = if i == chosen { ">" } else { " " };
@@ -367,13 +382,13 @@ mod tests {
         let mut ed = Editor::new(boxes(), None, 320, 240);
         assert_eq!(ed.recovery_file(), None);
         ed.set_state_dir(Path::new("/state/animed"));
+        assert_eq!(ed.recovery_file(), None, "no pid given");
+        // The pid is the shell's to give, not the process's to ask.
+        ed.set_pid(4242);
         let u = ed.recovery_file().unwrap();
         assert_eq!(
             u,
-            Path::new("/state/animed").join(format!(
-                "untitled-{}.animed-recovery.wrl",
-                std::process::id()
-            ))
+            Path::new("/state/animed").join("untitled-4242.animed-recovery.wrl")
         );
     }
 
@@ -496,6 +511,34 @@ mod tests {
         tick(&mut ed, 30.0);
         tick(&mut ed, 40.0);
         assert!(recovery_path(&scene).exists(), "released: saved");
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn a_clock_and_pid_the_shell_gives_make_a_fixed_status_line() {
+        // Nothing here depends on when or as which process the test runs:
+        // the script sets the wall clock, the test the pid.
+        let d = tmp_dir("clock");
+        let mut ed = Editor::new(boxes(), None, 320, 240);
+        ed.set_state_dir(&d);
+        ed.set_pid(4242);
+        let id = crate::scene::NodeId(0);
+        let before = Box::new(ed.scene().node(id).clone());
+        let mut after = before.clone();
+        after.transform.translation.y = 2.0;
+        ed.execute("move", Command::SetNode { id, before, after });
+        let script = "clock 1795833077\nwait-frames 1000\n";
+        crate::editor::script::run(&mut ed, script, Path::new("clock.txt")).unwrap();
+        let copy = "untitled-4242.animed-recovery.wrl";
+        assert_eq!(
+            ed.status().text,
+            format!("Autosaved untitled work at 02:31:17 UTC ({copy})")
+        );
+        assert!(d.join(copy).exists());
+        assert_eq!(
+            ed.wall_clock(),
+            SystemTime::UNIX_EPOCH + Duration::from_secs(1_795_833_077)
+        );
         std::fs::remove_dir_all(&d).unwrap();
     }
 

@@ -140,6 +140,12 @@ pub fn punctual_from_light(l: &Light, reference: f32) -> Punctual {
 /// still say what animed wrote for it; `direction` and `location` come from
 /// the placement node animed wrote beside it (see `read`).
 pub fn light_from_extras(l: &gltf::khr_lights_punctual::Light, read: &Punctual) -> Option<Light> {
+    extras_light(l, read).map(|(light, _)| light)
+}
+
+/// [`light_from_extras`] with the reference distance its intensity was
+/// mapped with, from one parse of the extras.
+fn extras_light(l: &gltf::khr_lights_punctual::Light, read: &Punctual) -> Option<(Light, f32)> {
     let raw = l.extras().as_ref()?;
     let v: serde_json::Value = serde_json::from_str(raw.get()).ok()?;
     let a = v.get("animed")?;
@@ -170,19 +176,16 @@ pub fn light_from_extras(l: &gltf::khr_lights_punctual::Light, read: &Punctual) 
             drop_off_rate: 0.0,
         };
     }
-    let mut want = punctual_from_light(&light, f("reference")?);
+    let reference = f("reference")?;
+    let mut want = punctual_from_light(&light, reference);
     want.color = read.color;
-    (want.intensity == read.intensity && want.range == read.range).then_some(light)
+    (want.intensity == read.intensity && want.range == read.range).then_some((light, reference))
 }
 
 /// A light animed wrote (restored exactly by [`light_from_extras`]) and
 /// the reference distance its intensity was mapped with.
 pub fn animed_light(l: &gltf::khr_lights_punctual::Light) -> Option<(Light, f32)> {
-    let light = light_from_extras(l, &Punctual::from_gltf(l))?;
-    let raw = l.extras().as_ref()?;
-    let v: serde_json::Value = serde_json::from_str(raw.get()).ok()?;
-    let reference = v.get("animed")?.get("reference")?.as_f64()? as f32;
-    Some((light, reference))
+    extras_light(l, &Punctual::from_gltf(l))
 }
 
 /// The inverse of [`punctual_from_light`]'s intensity for a light that is

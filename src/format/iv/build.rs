@@ -293,21 +293,7 @@ impl Builder {
             "File" => self.file(n, st, cur, name),
             "WWWInline" => {
                 if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
-                    let urls = n.strings("name");
-                    let r = inline::load_into(
-                        &mut self.scene,
-                        &mut self.log.warnings,
-                        &mut self.inlines,
-                        &self.log.path,
-                        n.pos,
-                        &urls,
-                        id,
-                        self.depth,
-                        self.build_depth,
-                    );
-                    if let Err(e) = r {
-                        self.stop(n.pos, e);
-                    }
+                    self.graft(n.pos, &n.strings("name"), id);
                 }
             }
             "Environment" => {

@@ -14,7 +14,7 @@ use crate::format::build_log::fmt_warning;
 use crate::format::lexer::{self, Pos};
 use crate::format::syntax::{self, NodeRef, Options, Parsed};
 use crate::format::{gzip, inline, limits};
-use crate::scene::Node;
+use crate::scene::{Node, NodeId};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
@@ -35,22 +35,8 @@ impl Builder {
             .filter(|_| self.depth < inline::MAX_DEPTH)
             .and_then(|file| Some((self.parsed_file(&file, n.pos)?, file)));
         let Some((parsed, file)) = found else {
-            if limits::tripped().is_some() {
-                return;
-            }
-            let r = inline::load_into(
-                &mut self.scene,
-                &mut self.log.warnings,
-                &mut self.inlines,
-                &self.log.path,
-                n.pos,
-                &urls,
-                id,
-                self.depth,
-                self.build_depth,
-            );
-            if let Err(e) = r {
-                self.stop(n.pos, e);
+            if limits::tripped().is_none() {
+                self.graft(n.pos, &urls, id);
             }
             return;
         };
@@ -65,6 +51,26 @@ impl Builder {
         self.depth -= 1;
         self.loader.set_base(&base);
         self.log.path = path;
+    }
+
+    /// The scene of the file `urls` names, loaded apart and grafted under
+    /// `id` (`WWWInline`, and a `File` that is not ASCII Inventor); a
+    /// passed input limit ends the build.
+    pub(super) fn graft(&mut self, at: Pos, urls: &[String], id: NodeId) {
+        let r = inline::load_into(
+            &mut self.scene,
+            &mut self.log.warnings,
+            &mut self.inlines,
+            &self.log.path,
+            at,
+            urls,
+            id,
+            self.depth,
+            self.build_depth,
+        );
+        if let Err(e) = r {
+            self.stop(at, e);
+        }
     }
 
     /// `file` parsed, once per path: `None` when it does not read, is not
