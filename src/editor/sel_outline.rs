@@ -23,7 +23,7 @@ pub enum Ring {
 /// that is inside, touches (8-neighbourhood) or lies at Chebyshev distance
 /// 2 from a set pixel; pixels beyond the image count as unset.
 pub fn for_each_ring(mask: &[bool], w: usize, h: usize, mut put: impl FnMut(usize, usize, Ring)) {
-    let Some((bx0, by0, bx1, by1)) = bounds(mask, w, h) else {
+    let Some((bx0, by0, bx1, by1)) = set_bounds(mask, w, w, h, |&m| m) else {
         return;
     };
     let (x0, x1) = (bx0.saturating_sub(2), (bx1 + 2).min(w - 1));
@@ -78,11 +78,6 @@ pub fn for_each_ring(mask: &[bool], w: usize, h: usize, mut put: impl FnMut(usiz
             put(x0 + rx, y, ring);
         }
     }
-}
-
-/// The set pixels' bounding box (x0, y0, x1, y1), inclusive.
-fn bounds(mask: &[bool], w: usize, h: usize) -> Option<(usize, usize, usize, usize)> {
-    set_bounds(mask, w, w, h, |&m| m)
 }
 
 /// The bounding box (x0, y0, x1, y1), inclusive, of the cells of the
