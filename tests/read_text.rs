@@ -174,3 +174,40 @@ fn text2_labels_keep_their_pixel_size_and_face_the_viewer() {
         );
     }
 }
+
+/// View-all frames Inventor `Text2` labels by their pixel rectangles as
+/// Coin's camera before view-all sees them (`render/coin_bounds.rs`): for
+/// the Inventor sample `text.iv` (data/models/simple) at 160×120, Coin 4
+/// (pivy) put its camera at (−0.0828, −0.0247, 5.4395) — its box x
+/// −1.8225..1.6569, y −1.0493..1 holds the cube and the two labels whose
+/// rectangles reach the view from 2 units away ("brown", "lazy"); the
+/// labels at the camera's own depth and those above the view count
+/// nothing. Counting the anchors alone put it at z 4.18.
+#[test]
+fn text2_files_are_framed_as_coin_frames_them() {
+    let mut src =
+        String::from("#Inventor V2.1 ascii\nSeparator { Font { name \"Courier-Bold\" size 20 }\n");
+    for (at, text, right) in [
+        ("-1 1 1", "The", true),
+        ("-1 1 -1", "quick", true),
+        ("-1 -1 -1", "brown", true),
+        ("-1 -1 1", "fox", true),
+        ("1 1 1", "jumped", false),
+        ("1 1 -1", "over the", false),
+        ("1 -1 -1", "lazy", false),
+        ("1 -1 1", "dog", false),
+    ] {
+        let j = if right { "justification RIGHT" } else { "" };
+        src += &format!(
+            " Separator {{ Transform {{ translation {at} }} Text2 {{ string \"{text}\" {j} }} }}\n"
+        );
+    }
+    src += " Cube { }\n}\n";
+    let scene = animed::internals::format::load_bytes(src.as_bytes(), Path::new("text.iv"))
+        .unwrap()
+        .scene;
+    let pose = animed::internals::anim::evaluate(&scene, 0.0);
+    let v = animed::internals::render::View::view_all_for_picture(&scene, &pose, &pose, 160, 120);
+    let coin = glam::Vec3::new(-0.0828, -0.0247, 5.4395);
+    assert!((v.eye - coin).length() < 0.05, "{} vs Coin's {coin}", v.eye);
+}

@@ -23,7 +23,7 @@ pub enum Ring {
 /// that is inside, touches (8-neighbourhood) or lies at Chebyshev distance
 /// 2 from a set pixel; pixels beyond the image count as unset.
 pub fn for_each_ring(mask: &[bool], w: usize, h: usize, mut put: impl FnMut(usize, usize, Ring)) {
-    let Some((bx0, by0, bx1, by1)) = bounds(mask, w, h) else {
+    let Some((bx0, by0, bx1, by1)) = set_bounds(mask, w, w, h, |&m| m) else {
         return;
     };
     let (x0, x1) = (bx0.saturating_sub(2), (bx1 + 2).min(w - 1));
@@ -80,15 +80,24 @@ pub fn for_each_ring(mask: &[bool], w: usize, h: usize, mut put: impl FnMut(usiz
     }
 }
 
-/// The set pixels' bounding box (x0, y0, x1, y1), inclusive.
-fn bounds(mask: &[bool], w: usize, h: usize) -> Option<(usize, usize, usize, usize)> {
+/// The bounding box (x0, y0, x1, y1), inclusive, of the cells of the
+/// first `w` columns and `h` rows of a row-major grid (rows `stride`
+/// cells apart) for which `set` holds; found row by row, from each end
+/// of the row, with no division per cell.
+pub fn set_bounds<T>(
+    cells: &[T],
+    stride: usize,
+    w: usize,
+    h: usize,
+    set: impl Fn(&T) -> bool,
+) -> Option<(usize, usize, usize, usize)> {
     let mut b: Option<(usize, usize, usize, usize)> = None;
-    for y in 0..h {
-        let row = &mask[y * w..(y + 1) * w];
-        let (Some(first), Some(last)) = (row.iter().position(|&m| m), row.iter().rposition(|&m| m))
-        else {
+    for (y, row) in cells.chunks(stride.max(1)).take(h).enumerate() {
+        let row = &row[..w.min(row.len())];
+        let Some(first) = row.iter().position(&set) else {
             continue;
         };
+        let last = row.iter().rposition(&set).unwrap_or(first);
         b = Some(match b {
             None => (first, y, last, y),
             Some((x0, y0, x1, _)) => (x0.min(first), y0, x1.max(last), y),
@@ -99,7 +108,7 @@ fn bounds(mask: &[bool], w: usize, h: usize) -> Option<(usize, usize, usize, usi
 
 #[cfg(test)]
 mod tests {
-    use super::{for_each_ring, Ring};
+    use super::{for_each_ring, set_bounds, Ring};
 
     /// The neighbourhood test the rings replace, one pixel at a time.
     fn by_neighbourhood(mask: &[bool], w: usize, h: usize, x: usize, y: usize) -> Option<Ring> {
@@ -178,5 +187,22 @@ mod tests {
     fn an_empty_mask_has_no_rings() {
         assert!(rings(&[false; 12], 4, 3).iter().all(Option::is_none));
         assert!(rings(&[], 0, 0).is_empty());
+    }
+
+    #[test]
+    fn bounds_keep_to_the_first_w_columns_and_h_rows() {
+        // 4 columns of a 6-cell stride, 3 of 4 rows; 9 marks a set cell.
+        #[rustfmt::skip]
+        let cells = [
+            0, 0, 0, 0, 9, 9,
+            0, 0, 9, 0, 0, 9,
+            0, 9, 0, 0, 0, 0,
+            9, 9, 9, 9, 9, 9,
+        ];
+        let set = |&c: &u32| c == 9;
+        assert_eq!(set_bounds(&cells, 6, 4, 3, set), Some((1, 1, 2, 2)));
+        assert_eq!(set_bounds(&cells, 6, 4, 4, set), Some((0, 1, 3, 3)));
+        assert_eq!(set_bounds(&cells, 6, 2, 1, set), None);
+        assert_eq!(set_bounds(&cells[..0], 6, 4, 3, set), None);
     }
 }

@@ -3,7 +3,7 @@
 //! gizmos, and picking.
 
 use super::manip::ARROW_PX;
-use super::sel_outline::{for_each_ring, Ring};
+use super::sel_outline::{for_each_ring, set_bounds, Ring};
 use super::{gizmo, ops, Editor, LayerKey};
 use crate::input::camera::Projector;
 use crate::render::{self, Frame, RenderOptions};
@@ -51,27 +51,26 @@ impl Editor {
         }
     }
 
-    /// Half the larger side of the box around the selected subtree's
-    /// visible pixels in the viewport layer (`None` when none shows).
-    fn selection_px_radius(&mut self, sel: NodeId) -> Option<f32> {
-        self.update_layer();
+    /// Whether a pixel id of the scene layer (`NodeId.0 + 1`, 0 = none)
+    /// belongs to `sel`'s subtree: the selection's pixels, for its
+    /// outline and its handle size.
+    fn subtree_ids(&self, sel: NodeId) -> impl Fn(u32) -> bool {
         let mut mine = vec![false; self.scene.nodes.len() + 1];
         for id in ops::subtree(&self.scene, sel) {
             mine[id.0 as usize + 1] = true;
         }
+        move |id| id != 0 && mine.get(id as usize) == Some(&true)
+    }
+
+    /// Half the larger side of the box around the selected subtree's
+    /// visible pixels in the viewport layer (`None` when none shows).
+    fn selection_px_radius(&mut self, sel: NodeId) -> Option<f32> {
+        self.update_layer();
+        let mine = self.subtree_ids(sel);
         let lf = &self.layer.frame;
-        let w = lf.width as usize;
-        let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
-        for (i, &id) in lf.ids.iter().enumerate() {
-            if id != 0 && mine.get(id as usize).copied().unwrap_or(false) {
-                let (x, y) = (i % w, i / w);
-                x0 = x0.min(x);
-                x1 = x1.max(x);
-                y0 = y0.min(y);
-                y1 = y1.max(y);
-            }
-        }
-        (x0 != usize::MAX).then(|| ((x1 - x0).max(y1 - y0) + 1) as f32 * 0.5)
+        let (w, h) = (lf.width as usize, lf.height as usize);
+        let (x0, y0, x1, y1) = set_bounds(&lf.ids, w, w, h, |&id| mine(id))?;
+        Some(((x1 - x0).max(y1 - y0) + 1) as f32 * 0.5)
     }
 
     /// How the viewport draws the scene (the onion copies too, so they
@@ -155,10 +154,7 @@ impl Editor {
     /// light and dark backgrounds) and tints its inside only lightly, so
     /// the object's own colour stays readable (issue 17 item 7).
     fn outline(&self, frame: &mut Frame, vp: Rect, sel: NodeId) {
-        let mut mine = vec![false; self.scene.nodes.len() + 1];
-        for id in ops::subtree(&self.scene, sel) {
-            mine[id.0 as usize + 1] = true;
-        }
+        let mine = self.subtree_ids(sel);
         let lf = &self.layer.frame;
         let w = (lf.width as usize).min(vp.w.max(0) as usize);
         let h = (lf.height as usize).min(vp.h.max(0) as usize);
@@ -166,10 +162,7 @@ impl Editor {
         let mut mask = Vec::with_capacity(w * h);
         for y in 0..h {
             let row = &lf.ids[y * lw..y * lw + w];
-            mask.extend(
-                row.iter()
-                    .map(|&id| id != 0 && mine.get(id as usize) == Some(&true)),
-            );
+            mask.extend(row.iter().map(|&id| mine(id)));
         }
         let fw = frame.width as usize;
         for_each_ring(&mask, w, h, |x, y, ring| {

@@ -131,8 +131,9 @@ fn merge(acc: Option<XfBox>, b: Option<XfBox>) -> Option<XfBox> {
 }
 
 /// The box of one visible shape node in its own frame, with its world
-/// matrix; `None` for other nodes and empty or hidden shapes.
-fn own_box(scene: &Scene, pose: &Pose, i: usize) -> Option<XfBox> {
+/// matrix; `None` for other nodes and empty or hidden shapes. `picture`:
+/// the size of the picture view-all frames, for Text2 labels.
+fn own_box(scene: &Scene, pose: &Pose, i: usize, picture: Option<(u32, u32)>) -> Option<XfBox> {
     let node = &scene.nodes[i];
     let NodeKind::Shape(shape) = &node.kind else {
         return None;
@@ -144,12 +145,19 @@ fn own_box(scene: &Scene, pose: &Pose, i: usize) -> Option<XfBox> {
     let world = pose.world.get(i).copied().unwrap_or(Mat4::IDENTITY);
     let geo = Geometry::of(mesh, pose, NodeId(i as u32), world);
     // An Inventor Text2 label is drawn at a pixel size, not a scene size:
-    // only its anchor counts.
-    let label = matches!(mesh.text.as_deref(), Some(t) if t.kind == TextKind::Text2);
-    let (lo, hi) = if label {
-        (Vec3::ZERO, Vec3::ZERO)
-    } else {
-        points_bounds(geo.positions)?
+    // Coin's box is its pixel rectangle as the camera before view-all
+    // sees it; without a picture size only its anchor counts.
+    let label = mesh
+        .text
+        .as_deref()
+        .filter(|t| t.kind == TextKind::Text2 && t.units_per_pixel > 0.0);
+    let (lo, hi) = match (label, picture) {
+        (Some(t), Some(px)) => {
+            let (lo, hi) = points_bounds(geo.positions)?;
+            return label_box(lo, hi, geo.world, t.units_per_pixel, px);
+        }
+        (Some(_), None) => (Vec3::ZERO, Vec3::ZERO),
+        (None, _) => points_bounds(geo.positions)?,
     };
     (geo.world.is_finite()).then_some(XfBox {
         lo,
@@ -158,15 +166,69 @@ fn own_box(scene: &Scene, pose: &Pose, i: usize) -> Option<XfBox> {
     })
 }
 
+/// Coin's box of an Inventor Text2 label for view-all (`SoText2`'s
+/// bounding box, probed through pivy; tests below): the label's pixel
+/// rectangle (`lo..hi` in local units, `units_per_pixel` of them a pixel)
+/// as the camera *before* view-all sees it — Coin's default perspective
+/// camera at (0, 0, 1) looking down −z, heightAngle 45°, near 1, far 10, in
+/// a viewport of the picture's size — taken back to the anchor's depth and
+/// into the label's frame. Coin truncates the anchor's pixel position
+/// (from the viewport's lower left) toward zero, and gives no box when the
+/// anchor is outside near..far or the rectangle misses the viewport.
+fn label_box(
+    lo: Vec3,
+    hi: Vec3,
+    world: Mat4,
+    units_per_pixel: f32,
+    (w, h): (u32, u32),
+) -> Option<XfBox> {
+    let eye = world.transform_point3(Vec3::ZERO) - Vec3::Z;
+    let depth = -eye.z;
+    if !(1.0..=10.0).contains(&depth) || w == 0 || h == 0 {
+        return None;
+    }
+    let (wf, hf) = (w as f32, h as f32);
+    // Eye units per pixel at that depth (the angle spans the smaller side).
+    let upp = 2.0 * depth * libm::tanf(std::f32::consts::FRAC_PI_8) / wf.min(hf);
+    let sx = (wf * 0.5 + eye.x / upp).trunc();
+    let sy = (hf * 0.5 + eye.y / upp).trunc();
+    let (x0, x1) = (sx + lo.x / units_per_pixel, sx + hi.x / units_per_pixel);
+    let (y0, y1) = (sy + lo.y / units_per_pixel, sy + hi.y / units_per_pixel);
+    // Measured edges: a rectangle touching the viewport's bottom or top
+    // edge counts, one touching its left or right edge does not.
+    if !(x1 > 0.0 && x0 < wf && y1 >= 0.0 && y0 <= hf) {
+        return None;
+    }
+    let to_local = world.inverse();
+    let corner = |x: f32, y: f32| {
+        let p = Vec3::new((x - wf * 0.5) * upp, (y - hf * 0.5) * upp, -depth) + Vec3::Z;
+        to_local.transform_point3(p)
+    };
+    let pts = [
+        corner(x0, y0),
+        corner(x1, y0),
+        corner(x0, y1),
+        corner(x1, y1),
+    ];
+    let (lo, hi) = points_bounds(&pts)?;
+    Some(XfBox { lo, hi, m: world })
+}
+
 /// World-space bounds of every visible shape, merged as Coin merges them
-/// (see the module doc); `None` when nothing is visible.
-pub fn coin_scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
+/// (see the module doc); `None` when nothing is visible. `picture`: the
+/// picture's size in pixels when view-all frames one (Text2 labels then
+/// count as Coin counts them, [`label_box`]).
+pub fn coin_scene_bounds(
+    scene: &Scene,
+    pose: &Pose,
+    picture: Option<(u32, u32)>,
+) -> Option<(Vec3, Vec3)> {
     let order = scene.walk();
     let mut boxes: Vec<Option<XfBox>> = vec![None; scene.nodes.len()];
     // Reverse pre-order: every child is done before its parent.
     for &id in order.iter().rev() {
         let i = id.0 as usize;
-        let mut acc = own_box(scene, pose, i);
+        let mut acc = own_box(scene, pose, i, picture);
         for c in &scene.nodes[i].children {
             acc = merge(acc, boxes.get(c.0 as usize).copied().flatten());
         }
@@ -208,7 +270,7 @@ mod tests {
             );
         }
         let pose = crate::anim::evaluate(&s, 0.0);
-        let (lo, hi) = coin_scene_bounds(&s, &pose).unwrap();
+        let (lo, hi) = coin_scene_bounds(&s, &pose, None).unwrap();
         let m = pose.world[root.0 as usize];
         let union = XfBox {
             lo: Vec3::new(-2.0, -2.0, -2.5),
@@ -225,6 +287,67 @@ mod tests {
         assert!(
             hi.y - lo.y > phi.y - plo.y + 0.1,
             "{lo} {hi} vs {plo} {phi}"
+        );
+    }
+
+    /// Coin 4's box (pivy, SoGetBoundingBoxAction after a default
+    /// SoPerspectiveCamera, 160×120) of a Courier `Text2` "quick", size 20,
+    /// at (0, 0, −1): x 0.0138..0.8146, y −0.0552..0.1795 (1..59 and
+    /// −4..13 pixels of 0.0138 at depth 2). Ours comes from our own glyphs
+    /// (Liberation Mono, Courier's widths), so within a pixel or two.
+    #[test]
+    fn text2_boxes_are_coins_pixel_rectangles() {
+        let b = |at: Vec3, size: (u32, u32)| {
+            let upp = 0.05; // local units per pixel of the mesh
+            let (lo, hi) = (
+                Vec3::new(1.0, -4.0, 0.0) * upp,
+                Vec3::new(59.0, 13.0, 0.0) * upp,
+            );
+            label_box(lo, hi, Mat4::from_translation(at), upp, size).map(|x| x.world())
+        };
+        let close = |a: Vec3, b: Vec3| (a - b).length() < 1e-3;
+        let (lo, hi) = b(Vec3::new(0.0, 0.0, -1.0), (160, 120)).unwrap();
+        assert!(close(lo, Vec3::new(0.0138, -0.0552, -1.0)), "{lo}");
+        assert!(close(hi, Vec3::new(0.8146, 0.1795, -1.0)), "{hi}");
+        // The anchor's pixel is truncated: x = 1 is 152.43 px → 152.
+        let (lo, _) = b(Vec3::new(1.0, 0.0, -1.0), (160, 120)).unwrap();
+        assert!((lo.x - 1.0079).abs() < 1e-3, "{lo}");
+        // The smaller side sets the scale (120×160 as 160×120), 320×240 halves it.
+        assert_eq!(
+            b(Vec3::new(0.0, 0.0, -1.0), (120, 160)),
+            b(Vec3::new(0.0, 0.0, -1.0), (160, 120))
+        );
+        let (_, hi) = b(Vec3::new(0.0, 0.0, -1.0), (320, 240)).unwrap();
+        assert!((hi.x - 0.4073).abs() < 1e-3, "{hi}");
+        // No box: nearer than 1 or beyond 10 from the camera, or outside
+        // the viewport (Coin's edges: the anchor at pixel row −13 puts the
+        // top on the bottom edge and counts, −14 does not; at column −59
+        // the right end is on the left edge and does not count, −58 does).
+        let px = |x: f32, y: f32| Vec3::new((x - 80.0) * 0.0138071, (y - 60.0) * 0.0138071, -1.0);
+        for at in [
+            Vec3::new(0.0, 0.0, 0.5),
+            Vec3::new(0.0, 0.0, -10.0),
+            Vec3::new(1.5, 0.0, -1.0),
+            Vec3::new(1.0, 1.0, -1.0),
+            px(0.0, -14.5),
+            px(-59.5, 0.0),
+            px(159.5, 0.0),
+            px(0.0, 125.5),
+        ] {
+            assert_eq!(b(at, (160, 120)), None, "{at}");
+        }
+        for at in [
+            px(0.0, -13.5),
+            px(-58.5, 0.0),
+            px(158.5, 0.0),
+            px(0.0, 124.5),
+        ] {
+            assert!(b(at, (160, 120)).is_some(), "{at}");
+        }
+        let (lo, hi) = b(px(0.0, -13.5), (160, 120)).unwrap();
+        assert!(
+            (lo.y + 1.0631).abs() < 1e-3 && (hi.y + 0.8284).abs() < 1e-3,
+            "{lo} {hi}"
         );
     }
 

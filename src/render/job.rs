@@ -174,7 +174,13 @@ fn frame_at(
     let camera = find_camera(scene, spec.viewpoint.as_deref())?;
     let pose = evaluate(scene, time);
     let aspect = spec.width.max(1) as f32 / spec.height.max(1) as f32;
-    let view = view_for(scene, &pose, camera, aspect);
+    let view = match camera {
+        Some(_) => view_for(scene, &pose, camera, aspect),
+        // View-all for this picture size (Text2 labels framed as Coin does).
+        None => {
+            View::view_all_for_picture(scene, &evaluate(scene, 0.0), &pose, spec.width, spec.height)
+        }
+    };
     let opts = options_for(scene, spec);
     let mut frame = Frame::new(0, 0, opts.background);
     draw(scene, &pose, &view, &opts, &mut frame);

@@ -218,9 +218,9 @@ pub fn for_each_pixel_at(
     }
 }
 
-/// The depth pass's buffers, `TILE` pixels per row; the weights only for
-/// the first sample (`b1`, `b2` are empty for the others: the shading pass
-/// recomputes the few it needs there, `Tri::weights_at`).
+/// The depth pass's buffers, `TILE` pixels per row: depth and winner for
+/// every sample plane, the weights only for the first sample (the shading
+/// pass recomputes the few it needs at other samples, `Tri::weights_at`).
 struct DepthBufs<'a> {
     depth: &'a mut [f32],
     winner: &'a mut [u32],
@@ -228,54 +228,57 @@ struct DepthBufs<'a> {
     b2: &'a mut [f32],
 }
 
-/// Keeps, per pixel of the tile, the nearest opaque triangle of `bin` (the
-/// first one on ties) with its depth and barycentric weights.
-/// `off` is the sample position (SUBPIXEL units from the pixel centre).
-/// `W`: whether to keep the weights (the first sample).
-fn depth_pass<const W: bool>(
+/// Keeps, per sample of the tile, the nearest opaque triangle of `bin`
+/// (the first one on ties) with its depth, and the first sample's
+/// barycentric weights. `NS` samples per pixel at `offs` (SUBPIXEL units
+/// from the pixel centre), every triangle once for all of them.
+fn depth_pass<const NS: usize>(
     p: &Prepared,
     bin: &Bin,
     rect: Rect,
-    off: (i64, i64),
+    offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
 ) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { depth_pass_avx::<W>(p, bin, rect, off, bufs) };
+        unsafe { depth_pass_avx::<NS>(p, bin, rect, offs, bufs) };
         return;
     }
     for &ti in &bin.opaque {
-        depth_triangle::<Sse8, W>(&p.opaque[ti as usize], ti, rect, off, bufs);
+        depth_triangle::<Sse8, NS>(&p.opaque[ti as usize], ti, rect, offs, bufs);
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn depth_pass_avx<const W: bool>(
+unsafe fn depth_pass_avx<const NS: usize>(
     p: &Prepared,
     bin: &Bin,
     rect: Rect,
-    off: (i64, i64),
+    offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
 ) {
     for &ti in &bin.opaque {
-        depth_triangle::<simd::Avx8, W>(&p.opaque[ti as usize], ti, rect, off, bufs);
+        depth_triangle::<simd::Avx8, NS>(&p.opaque[ti as usize], ti, rect, offs, bufs);
     }
 }
 
 /// One triangle's depth pass over blocks of eight pixels of a row (aligned
-/// to the tile). A block is skipped when one edge is negative at both of
-/// its ends and taken whole when every edge is non-negative at both ends
-/// (edge functions are linear); only blocks on an edge test each pixel.
+/// to the tile), all `NS` samples of a block in turn. A block is skipped
+/// when one edge is negative at both of its ends at every sample, and taken
+/// whole at a sample when every edge is non-negative at both ends there
+/// (edge functions are linear, so a sample's edges are the first sample's
+/// plus a constant per triangle); only blocks on an edge test each pixel.
 /// Weights and depth are computed exactly as [`for_each_pixel`] does, per
-/// pixel, so the blocks change no bit.
+/// pixel and sample, and each sample plane sees the triangles in bin
+/// order, so the blocks change no bit.
 #[inline(always)]
-fn depth_triangle<V: V8, const W: bool>(
+fn depth_triangle<V: V8, const NS: usize>(
     t: &Tri,
     ti: u32,
     rect: Rect,
-    off: (i64, i64),
+    offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
 ) {
     let x0 = t.bbox[0].max(rect[0]);
@@ -288,24 +291,45 @@ fn depth_triangle<V: V8, const W: bool>(
     if x1 - x0 < 6 {
         // Narrow triangles (most small ones): pixel by pixel is cheaper
         // than a block, and does the very same arithmetic.
-        for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
-            let z = depth_at(t, w1, w2);
-            let i = (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
-            if z < bufs.depth[i] && z >= 0.0 {
-                bufs.depth[i] = z;
-                bufs.winner[i] = ti;
-                if W {
-                    bufs.b1[i] = w1;
-                    bufs.b2[i] = w2;
+        for (si, &off) in offs.iter().enumerate() {
+            let plane = si * PLANE;
+            for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
+                let z = depth_at(t, w1, w2);
+                let i = (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
+                if z < bufs.depth[plane + i] && z >= 0.0 {
+                    bufs.depth[plane + i] = z;
+                    bufs.winner[plane + i] = ti;
+                    if si == 0 {
+                        bufs.b1[i] = w1;
+                        bufs.b2[i] = w2;
+                    }
                 }
-            }
-        });
+            });
+        }
         return;
     }
     // First block column (relative to the tile) and its screen x.
     let c0 = ((x0 - rect[0]) & !7) as usize;
-    let mut ed = Edges::at(t, rect[0] + c0 as i32, y0, off);
+    let xb0 = rect[0] + c0 as i32;
+    let mut ed = Edges::at(t, xb0, y0, offs[0]);
     let s = ed.step_x;
+    // Each sample's edges minus the first sample's (0 for one sample), and
+    // per edge their least and greatest.
+    let mut d = [[0i64; 3]; NS];
+    if NS > 1 {
+        let px = xb0 as i64 * SUBPIXEL + SUBPIXEL / 2;
+        let py = y0 as i64 * SUBPIXEL + SUBPIXEL / 2;
+        for (d, &off) in d.iter_mut().zip(offs) {
+            for (k, d) in d.iter_mut().enumerate() {
+                *d = t.edge(k, px + off.0, py + off.1).0 - ed.row[k];
+            }
+        }
+    }
+    let (mut dmin, mut dmax) = ([0i64; 3], [0i64; 3]);
+    if NS > 1 {
+        dmin = std::array::from_fn(|k| d.iter().map(|d| d[k]).min().unwrap_or(0));
+        dmax = std::array::from_fn(|k| d.iter().map(|d| d[k]).max().unwrap_or(0));
+    }
     let (z0, dz1, dz2) = (
         V::splat(t.z[0]),
         V::splat(t.z[1] - t.z[0]),
@@ -315,12 +339,13 @@ fn depth_triangle<V: V8, const W: bool>(
     let zero = V::splat(0.0);
     // Edge values over the blocks stay below 2⁵² in magnitude (always, for
     // triangles near the screen): lanes are then converted through exact
-    // f64 (`V8::from_edge`), giving the bits of `i64 as f32`.
+    // f64 (`V8::from_edge`), giving the bits of `i64 as f32` (either way
+    // the same bits; one choice for all samples).
     let span_x = (x1 - rect[0] - c0 as i32 + 8) as i64;
     let span_y = (y1 - y0) as i64;
     let exact = (0..3).all(|k| {
-        ed.row[k]
-            .saturating_abs()
+        (ed.row[k].saturating_add(dmin[k]).saturating_abs())
+            .max(ed.row[k].saturating_add(dmax[k]).saturating_abs())
             .saturating_add(s[k].saturating_abs().saturating_mul(span_x))
             .saturating_add(ed.step_y[k].saturating_abs().saturating_mul(span_y))
             < 1 << 52
@@ -335,55 +360,75 @@ fn depth_triangle<V: V8, const W: bool>(
             let lo = (x0 - xb).max(0);
             let hi = (x1 - xb).min(8);
             let in_box = (0xFFu32 << lo) & (0xFF >> (8 - hi));
-            let ends = |k: usize| (e[k], e[k] + 7 * s[k]);
-            let mut mask = in_box;
+            // Outside at every sample: an edge negative at both ends even
+            // at the sample where it is greatest; inside at every sample:
+            // every edge non-negative at both ends where it is least.
             let mut outside = false;
             let mut all_in = true;
             for k in 0..3 {
-                let (a, b) = ends(k);
-                outside |= a < 0 && b < 0;
-                all_in &= a >= 0 && b >= 0;
+                let (a, b) = (e[k], e[k] + 7 * s[k]);
+                outside |= a + dmax[k] < 0 && b + dmax[k] < 0;
+                all_in &= a + dmin[k] >= 0 && b + dmin[k] >= 0;
             }
             if !outside {
-                let e1 = edge_lanes::<V>(exact, e[1], s[1]);
-                let e2 = edge_lanes::<V>(exact, e[2], s[2]);
-                if !all_in {
-                    // A lane is outside when an edge is negative there; an
-                    // integer's conversion keeps its sign (0 gives +0), so
-                    // the sign bits of the converted lanes tell.
-                    let e0 = edge_lanes::<V>(exact, e[0], s[0]);
-                    mask &= !e0.or(e1).or(e2).bits();
-                }
-                if mask != 0 {
+                for (si, d) in d.iter().enumerate() {
+                    let es: [i64; 3] = std::array::from_fn(|k| e[k] + d[k]);
+                    // This sample's block: outside, or inside whole.
+                    let (mut out_s, mut in_s) = (false, all_in);
+                    if NS > 1 && !all_in {
+                        in_s = true;
+                        for k in 0..3 {
+                            let (a, b) = (es[k], es[k] + 7 * s[k]);
+                            out_s |= a < 0 && b < 0;
+                            in_s &= a >= 0 && b >= 0;
+                        }
+                    }
+                    if out_s {
+                        continue;
+                    }
+                    let e1 = edge_lanes::<V>(exact, es[1], s[1]);
+                    let e2 = edge_lanes::<V>(exact, es[2], s[2]);
+                    let mut mask = in_box;
+                    if !in_s {
+                        // A lane is outside when an edge is negative there;
+                        // an integer's conversion keeps its sign (0 gives
+                        // +0), so the sign bits of the converted lanes tell.
+                        let e0 = edge_lanes::<V>(exact, es[0], s[0]);
+                        mask &= !e0.or(e1).or(e2).bits();
+                    }
+                    if mask == 0 {
+                        continue;
+                    }
                     let w1 = e1 * inv_area;
                     let w2 = e2 * inv_area;
                     let z = z0 + w1 * dz1 + w2 * dz2;
-                    let i0 = row + c;
+                    let i0 = si * PLANE + row + c;
                     let depth: &mut [f32; 8] =
                         (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
                     let old = V::load(depth);
                     let m = old.gt(z).and(zero.le(z)).bits() & mask;
-                    if m != 0 {
-                        store_masked(depth, z, m);
-                        if W {
-                            let b1: &mut [f32; 8] =
-                                (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
-                            store_masked(b1, w1, m);
-                            let b2: &mut [f32; 8] =
-                                (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
-                            store_masked(b2, w2, m);
-                        }
-                        let winner: &mut [u32; 8] =
-                            (&mut bufs.winner[i0..i0 + 8]).try_into().expect("8 lanes");
-                        if m == 0xFF {
-                            // Covered and nearer in all eight (inside a
-                            // triangle): one store, not eight tests.
-                            *winner = [ti; 8];
-                        } else {
-                            for (l, w) in winner.iter_mut().enumerate() {
-                                if m >> l & 1 == 1 {
-                                    *w = ti;
-                                }
+                    if m == 0 {
+                        continue;
+                    }
+                    store_masked(depth, z, m);
+                    if si == 0 {
+                        let b1: &mut [f32; 8] =
+                            (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                        store_masked(b1, w1, m);
+                        let b2: &mut [f32; 8] =
+                            (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                        store_masked(b2, w2, m);
+                    }
+                    let winner: &mut [u32; 8] =
+                        (&mut bufs.winner[i0..i0 + 8]).try_into().expect("8 lanes");
+                    if m == 0xFF {
+                        // Covered and nearer in all eight (inside a
+                        // triangle): one store, not eight tests.
+                        *winner = [ti; 8];
+                    } else {
+                        for (l, w) in winner.iter_mut().enumerate() {
+                            if m >> l & 1 == 1 {
+                                *w = ti;
                             }
                         }
                     }
@@ -458,19 +503,17 @@ pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch) {
     } = scratch;
     depth.fill(1.0);
     winner.fill(NONE);
-    for (s, &off) in sample_offsets(ns).iter().enumerate() {
-        let plane = s * PLANE..(s + 1) * PLANE;
-        let mut bufs = DepthBufs {
-            depth: &mut depth[plane.clone()],
-            winner: &mut winner[plane],
-            b1: &mut b1[..if s == 0 { PLANE } else { 0 }],
-            b2: &mut b2[..if s == 0 { PLANE } else { 0 }],
-        };
-        if s == 0 {
-            depth_pass::<true>(p, bin, rect, off, &mut bufs);
-        } else {
-            depth_pass::<false>(p, bin, rect, off, &mut bufs);
-        }
+    let mut bufs = DepthBufs {
+        depth,
+        winner,
+        b1,
+        b2,
+    };
+    let offs = sample_offsets(ns);
+    match ns {
+        1 => depth_pass::<1>(p, bin, rect, offs.try_into().expect("1"), &mut bufs),
+        4 => depth_pass::<4>(p, bin, rect, offs.try_into().expect("4"), &mut bufs),
+        _ => depth_pass::<8>(p, bin, rect, offs.try_into().expect("8"), &mut bufs),
     }
 }
 

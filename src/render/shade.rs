@@ -176,20 +176,11 @@ fn normalize<V: Lanes>(v: [V; 3]) -> ([V; 3], V) {
     ([v[0] * inv, v[1] * inv, v[2] * inv], len)
 }
 
-/// Lights lit together in one round of [`shade8`]: their specular powers
-/// are raised in one interleaved loop, so the squarings of different
-/// lights overlap instead of waiting on one another (a power by repeated
-/// squaring is one long chain of dependent multiplies per light).
-const ROUND: usize = 4;
-
 /// The lighting model for eight pixels of one material: world positions
 /// `p`, normals `n` (any length; normalised here) and diffuse colours.
 /// Every lane does exactly the arithmetic a lone pixel would, so grouping
 /// never changes a result; per-light and per-material constants are
-/// computed once per call, outside the lane arithmetic. Lights go in
-/// rounds of [`ROUND`]: first each light's direction, reach and cosines,
-/// then the round's specular powers together, then the terms added in
-/// light order (the same sums as one light at a time).
+/// computed once per call, outside the lane arithmetic.
 #[inline(always)]
 pub fn shade8<V: Lanes>(
     m: &ShadeMaterial,
@@ -200,98 +191,69 @@ pub fn shade8<V: Lanes>(
     diffuse: [V; 3],
 ) -> [V; 3] {
     let zero = V::splat(0.0);
+    let one = V::splat(1.0);
     let (n, _) = normalize(n);
     let e: [V; 3] = splat3(eye);
     let (v, _) = normalize([e[0] - p[0], e[1] - p[1], e[2] - p[2]]);
     let mut sum: [V; 3] = splat3(m.emissive);
     let use_specular = m.specular != Vec3::ZERO;
-    for round in lights.chunks(ROUND) {
-        // Per light of the round: attenuation × spot, max(N·L, 0) and
-        // max(N·H, 0) (raised to the power below); `None` for a light
-        // that is ambient only.
-        let mut lit = [false; ROUND];
-        let mut factor = [zero; ROUND];
-        let mut ndl = [zero; ROUND];
-        let mut spec = [zero; ROUND];
-        for (k, l) in round.iter().enumerate() {
-            if ambient_only(l) {
-                continue;
-            }
-            let (to_light, f) = toward(l, p);
-            lit[k] = true;
-            factor[k] = f;
-            ndl[k] = dot(&n, &to_light).max(zero);
-            if use_specular {
-                let (h, _) =
-                    normalize([to_light[0] + v[0], to_light[1] + v[1], to_light[2] + v[2]]);
-                spec[k] = dot(&n, &h).max(zero);
-            }
-        }
-        if use_specular {
-            powi_round(&mut spec, &lit, m.exponent as u32);
-            for (s, d) in spec.iter_mut().zip(ndl) {
-                *s = s.keep(d.gt(zero));
-            }
-        }
-        for (k, l) in round.iter().enumerate() {
-            let amb = l.ambient * m.ambient_intensity;
-            if !lit[k] {
+    for l in lights {
+        if l.color == Vec3::ZERO {
+            if let WorldLightKind::Directional { .. } = l.kind {
                 // Ambient only (Inventor's global ambient, a light of
                 // intensity 0): attenuation and spot are 1, and the direct
-                // terms are 0·x, so the term is ambient × diffuse.
+                // terms below are 0·x, so the term is ambient × diffuse.
                 // Adding +0 keeps the sign of a zero as the full sum
                 // would; no vector, square root or division per lane.
+                let amb = l.ambient * m.ambient_intensity;
                 for ch in 0..3 {
                     let term = V::splat(amb[ch]) * diffuse[ch] + zero;
                     sum[ch] = sum[ch] + term;
                 }
                 continue;
             }
-            for ch in 0..3 {
-                let term = V::splat(amb[ch]) * diffuse[ch]
-                    + V::splat(l.color[ch]) * diffuse[ch] * ndl[k]
-                    + V::splat(l.color[ch] * m.specular[ch]) * spec[k];
-                sum[ch] = sum[ch] + factor[k] * term;
+        }
+        // Unit vector to the light and attenuation × spot factor per lane
+        // (0 where the light does not reach).
+        let (to_light, factor) = match l.kind {
+            WorldLightKind::Directional { to_light } => (splat3(to_light), one),
+            WorldLightKind::Point {
+                location, radius, ..
             }
+            | WorldLightKind::Spot {
+                location, radius, ..
+            } => {
+                let loc: [V; 3] = splat3(location);
+                let (to_light, dist) = normalize([loc[0] - p[0], loc[1] - p[1], loc[2] - p[2]]);
+                let a = l.attenuation;
+                let denom =
+                    (V::splat(a.x) + V::splat(a.y) * dist + V::splat(a.z) * (dist * dist)).max(one);
+                let reach = dist.le(V::splat(radius)).and(dist.gt(zero));
+                let mut factor = (one / denom).keep(reach);
+                if let WorldLightKind::Spot { axis, .. } = l.kind {
+                    let cos = zero - dot(&to_light, &splat3(axis));
+                    factor = spot(&l.kind, factor, cos);
+                }
+                (to_light, factor)
+            }
+        };
+        let amb = l.ambient * m.ambient_intensity;
+        let ndl = dot(&n, &to_light).max(zero);
+        let spec = if use_specular {
+            let (h, _) = normalize([to_light[0] + v[0], to_light[1] + v[1], to_light[2] + v[2]]);
+            let ndh = dot(&n, &h).max(zero);
+            powi(ndh, m.exponent as u32).keep(ndl.gt(zero))
+        } else {
+            zero
+        };
+        for ch in 0..3 {
+            let term = V::splat(amb[ch]) * diffuse[ch]
+                + V::splat(l.color[ch]) * diffuse[ch] * ndl
+                + V::splat(l.color[ch] * m.specular[ch]) * spec;
+            sum[ch] = sum[ch] + factor * term;
         }
     }
     sum
-}
-
-/// A directional light of colour 0 adds only its ambient term.
-#[inline(always)]
-fn ambient_only(l: &WorldLight) -> bool {
-    l.color == Vec3::ZERO && matches!(l.kind, WorldLightKind::Directional { .. })
-}
-
-/// The unit vector from `p` to light `l` and its attenuation × spot factor
-/// per lane (0 where the light does not reach).
-#[inline(always)]
-fn toward<V: Lanes>(l: &WorldLight, p: [V; 3]) -> ([V; 3], V) {
-    let zero = V::splat(0.0);
-    let one = V::splat(1.0);
-    match l.kind {
-        WorldLightKind::Directional { to_light } => (splat3(to_light), one),
-        WorldLightKind::Point {
-            location, radius, ..
-        }
-        | WorldLightKind::Spot {
-            location, radius, ..
-        } => {
-            let loc: [V; 3] = splat3(location);
-            let (to_light, dist) = normalize([loc[0] - p[0], loc[1] - p[1], loc[2] - p[2]]);
-            let a = l.attenuation;
-            let denom =
-                (V::splat(a.x) + V::splat(a.y) * dist + V::splat(a.z) * (dist * dist)).max(one);
-            let reach = dist.le(V::splat(radius)).and(dist.gt(zero));
-            let mut factor = (one / denom).keep(reach);
-            if let WorldLightKind::Spot { axis, .. } = l.kind {
-                let cos = zero - dot(&to_light, &splat3(axis));
-                factor = spot(&l.kind, factor, cos);
-            }
-            (to_light, factor)
-        }
-    }
 }
 
 /// The spot term multiplied into `factor`, for lanes whose direction from
@@ -372,53 +334,18 @@ fn acos<V: Lanes>(x: V) -> V {
 }
 
 /// `x^e` per lane by repeated squaring: the same bits on every machine and
-/// build, unlike platform `powf`. The product starts at the lowest set bit's
-/// square (not 1 · it, which is the same number) and stops squaring after
-/// the highest bit.
+/// build, unlike platform `powf`.
 #[inline(always)]
-fn powi<V: Lanes>(x: V, e: u32) -> V {
-    let mut x = [x];
-    powi_round(&mut x, &[true], e);
-    x[0]
-}
-
-/// [`powi`] of every `live` entry of `xs` in place, the entries' multiplies
-/// interleaved bit by bit (independent chains the CPU runs side by side);
-/// other entries are left alone. Each entry gets exactly the products a
-/// lone `powi` makes, in the same order: r = x^(2^i0), then r · x^(2^i) for
-/// each higher set bit i.
-#[inline(always)]
-fn powi_round<V: Lanes, const N: usize>(xs: &mut [V; N], live: &[bool; N], e: u32) {
-    if e == 0 {
-        for (x, &on) in xs.iter_mut().zip(live) {
-            if on {
-                *x = V::splat(1.0);
-            }
-        }
-        return;
-    }
-    let low = e.trailing_zeros();
-    for _ in 0..low {
-        for (x, &on) in xs.iter_mut().zip(live) {
-            if on {
-                *x = *x * *x;
-            }
-        }
-    }
-    let mut r = *xs;
-    let mut e = e >> (low + 1);
+fn powi<V: Lanes>(mut x: V, mut e: u32) -> V {
+    let mut r = V::splat(1.0);
     while e > 0 {
-        for ((x, r), &on) in xs.iter_mut().zip(r.iter_mut()).zip(live) {
-            if on {
-                *x = *x * *x;
-                if e & 1 == 1 {
-                    *r = *r * *x;
-                }
-            }
+        if e & 1 == 1 {
+            r = r * x;
         }
+        x = x * x;
         e >>= 1;
     }
-    *xs = r;
+    r
 }
 
 #[cfg(test)]
@@ -532,50 +459,6 @@ mod tests {
         let mut out = [0.0; 8];
         powi(<Sse8 as Lanes>::splat(0.5), 10).store(&mut out);
         assert_eq!(out, [1.0 / 1024.0; 8]);
-    }
-
-    /// The interleaved powers give exactly the bits of the plain
-    /// repeated-squaring loop (r = 1, r·x at every set bit, x·x) for every
-    /// exponent a material can have, and leave entries not `live` alone.
-    #[test]
-    fn powers_in_a_round_match_the_plain_loop_bit_for_bit() {
-        let plain = |mut x: f32, mut e: u32| {
-            let mut r = 1.0f32;
-            while e > 0 {
-                if e & 1 == 1 {
-                    r *= x;
-                }
-                x *= x;
-                e >>= 1;
-            }
-            r
-        };
-        let xs = [
-            0.0,
-            0.3,
-            0.5,
-            std::f32::consts::FRAC_1_SQRT_2,
-            0.9,
-            0.99,
-            0.999_9,
-            1.0,
-            1.5,
-            -0.0,
-            f32::NAN,
-        ];
-        for e in 0..=128 {
-            for w in xs.windows(3) {
-                let lanes = |x: f32| <Sse8 as Lanes>::splat(x);
-                let mut round = [lanes(w[0]), lanes(w[1]), lanes(w[2])];
-                powi_round(&mut round, &[true, false, true], e);
-                let mut out = [0.0; 8];
-                for (k, v) in round.into_iter().enumerate() {
-                    v.store(&mut out);
-                    let want = if k == 1 { w[1] } else { plain(w[k], e) };
-                    assert_eq!(out[0].to_bits(), want.to_bits(), "{}^{e}", w[k]);
-                }
-            }
-        }
     }
 
     #[test]

@@ -15,6 +15,7 @@
 //! Everything else is plain f32 arithmetic with no fused operations, so
 //! results are the same on every machine and for any thread count.
 
+use super::log2_lanes::log2_fast;
 use super::texel_filter::{bilerp, channels, weight};
 use crate::scene::{Filter, Image, MipLevel, MipMode, Texture, TextureModel, Wrap};
 use glam::{Affine2, Vec2, Vec3, Vec4};
@@ -132,12 +133,12 @@ impl Sampler {
         let size = Vec2::new(base.width() as f32, base.height() as f32);
         let (x, y) = (ddx * size, ddy * size);
         let rho2 = x.length_squared().max(y.length_squared());
-        // Also catches NaN footprints.
-        if rho2.is_nan() || rho2 <= 1.0 {
+        // Also catches NaN footprints; an infinite one reads as magnified.
+        if !(rho2 > 1.0 && rho2 <= f32::MAX) {
             return 0.0;
         }
-        // log2(rho) = log2(rho²) / 2.
-        0.5 * libm::log2f(rho2)
+        // log2(rho) = log2(rho²) / 2, division-free (`log2_lanes`).
+        0.5 * log2_fast(rho2)
     }
 
     /// The filtered RGBA (0..1) at transformed coordinates `st`.
@@ -261,9 +262,18 @@ impl Sampler {
         let y = (1.0 - t) * h as f32 - 0.5;
         let (x0, y0) = (x.floor(), y.floor());
         let (fx, fy) = (x - x0, y - y0);
+        // Within two texels of the period (mirrored: two periods, and
+        // their flips 1 − t), so the indices stay small.
+        let keep = |c: f32, n: i64, wrap: Wrap| {
+            let n = n as f32;
+            match wrap {
+                Wrap::Mirror => c.clamp(-2.0 * n - 2.0, 2.0 * n),
+                _ => c.clamp(-2.0, n),
+            }
+        };
         let (x0, y0) = (
-            x0.clamp(-2.0, w as f32) as i64,
-            y0.clamp(-2.0, h as f32) as i64,
+            keep(x0, w, self.wrap_s) as i64,
+            keep(y0, h, self.wrap_t) as i64,
         );
         let xs = [wrap(x0, w, self.wrap_s), wrap(x0 + 1, w, self.wrap_s)];
         let ys = [wrap(y0, h, self.wrap_t), wrap(y0 + 1, h, self.wrap_t)];
@@ -464,6 +474,15 @@ mod tests {
         t.filter.mag_nearest = false;
         let s = Sampler::new(&t, &img);
         assert_eq!(s.sample(Vec2::new(1.0, 0.5), 0.0).x, 1.0);
+        // Bilinear in the flipped period reads as its mirror image (it
+        // once read the last texels there).
+        for (u, m) in [(1.5, 0.5), (1.75, 0.25), (-0.25, 0.25)] {
+            let (a, b) = (
+                s.sample(Vec2::new(u, 0.5), 0.0),
+                s.sample(Vec2::new(m, 0.5), 0.0),
+            );
+            assert_eq!(a, b, "{u} mirrors {m}");
+        }
     }
 
     #[test]

@@ -5,8 +5,8 @@
 //! each a function call with its own `floorf` calls and integer
 //! conversions) cost more than three times the whole lighting of a pixel.
 //! Here the coordinate arithmetic and the four lerps per level run on
-//! [`V8`] lanes, the level of detail's `log2f` too (`log2_lanes`: libm's
-//! bits); only what is per lane by nature stays scalar: choosing the mip
+//! [`V8`] lanes, the level of detail's `log2` too (`log2_lanes`, the same
+//! bits as the one-pixel sampler's); only what is per lane by nature stays scalar: choosing the mip
 //! level and fetching the texels. Every lane
 //! does the same operations (IEEE f32, then `texel_filter`'s integer
 //! filter) in the same order as `texel` →
@@ -17,7 +17,7 @@
 //! NEAREST/non-trilinear filters, and NaN footprints (where `f32::max` and
 //! `MAXPS` disagree).
 
-use super::log2_lanes::log2f8;
+use super::log2_lanes::log2_fast8;
 use super::simd::V8;
 use super::texel_block::filter;
 use super::texture::Sampler;
@@ -54,7 +54,7 @@ impl Sampler {
         if !self.lanes_cover() || !no_nan {
             return self.texel8_by_lane(uv);
         }
-        // λ = ½·log2(ρ²) where ρ² > 1 (libm's bits, on lanes); 0 where
+        // λ = ½·log2(ρ²) where ρ² > 1 (`log2_fast`'s bits, on lanes); 0 where
         // ρ² ≤ 1, and where ρ² = ∞ (λ would not be finite).
         let rho2 = lx.max(ly);
         let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
@@ -63,7 +63,7 @@ impl Sampler {
         let lod = if in_range.bits() == 0 {
             V::splat(0.0)
         } else {
-            (V::splat(0.5) * log2f8(safe)).keep(in_range)
+            (V::splat(0.5) * log2_fast8(safe)).keep(in_range)
         };
         if let Some(out) = self.texel8_one_level(lod, uv.u, uv.v) {
             return out;

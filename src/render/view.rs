@@ -77,7 +77,7 @@ impl View {
     /// the sphere's silhouette is slightly cropped, as in Coin.)
     /// An empty scene gives the VRML97 default view.
     pub fn view_all(scene: &Scene, pose: &Pose, aspect: f32) -> View {
-        Self::build_view_all(coin_sphere(scene, pose), aspect).0
+        Self::build_view_all(coin_sphere(scene, pose, None), aspect).0
     }
 
     /// [`View::view_all`] framed once per file: the camera comes from
@@ -87,7 +87,32 @@ impl View {
     /// hold `now` as well (Coin's automatic clipping planes do the same).
     /// For a still scene (`now` = `start`) it is exactly `view_all`.
     pub fn view_all_from_start(scene: &Scene, start: &Pose, now: &Pose, aspect: f32) -> View {
-        let (view, mut cam) = Self::build_view_all(coin_sphere(scene, start), aspect);
+        Self::view_all_from_start_in(scene, start, now, aspect, None)
+    }
+
+    /// [`View::view_all_from_start`] for a picture `width`×`height` pixels:
+    /// Inventor `Text2` labels then count in the box as Coin counts them
+    /// (their pixel rectangles, [`super::coin_bounds`]), not by their
+    /// anchors alone.
+    pub fn view_all_for_picture(
+        scene: &Scene,
+        start: &Pose,
+        now: &Pose,
+        width: u32,
+        height: u32,
+    ) -> View {
+        let aspect = width.max(1) as f32 / height.max(1) as f32;
+        Self::view_all_from_start_in(scene, start, now, aspect, Some((width, height)))
+    }
+
+    fn view_all_from_start_in(
+        scene: &Scene,
+        start: &Pose,
+        now: &Pose,
+        aspect: f32,
+        picture: Option<(u32, u32)>,
+    ) -> View {
+        let (view, mut cam) = Self::build_view_all(coin_sphere(scene, start, picture), aspect);
         let (Some((c, r)), Some(near), Some(far)) =
             (bounding_sphere(scene, now), cam.near, cam.far)
         else {
@@ -114,7 +139,7 @@ impl View {
     /// The camera [`View::view_all`] builds (for the editor's orbit and for
     /// writers that want to save it), with the view.
     pub fn view_all_camera(scene: &Scene, pose: &Pose, aspect: f32) -> (View, Camera) {
-        Self::build_view_all(coin_sphere(scene, pose), aspect)
+        Self::build_view_all(coin_sphere(scene, pose, None), aspect)
     }
 
     fn build_view_all(sphere: Option<(Vec3, f32)>, aspect: f32) -> (View, Camera) {
@@ -285,8 +310,8 @@ pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
 
 /// The sphere circumscribing the scene's box as Coin merges it
 /// ([`super::coin_bounds`]): what view-all frames.
-fn coin_sphere(scene: &Scene, pose: &Pose) -> Option<(Vec3, f32)> {
-    super::coin_bounds::coin_scene_bounds(scene, pose)
+fn coin_sphere(scene: &Scene, pose: &Pose, picture: Option<(u32, u32)>) -> Option<(Vec3, f32)> {
+    super::coin_bounds::coin_scene_bounds(scene, pose, picture)
         .map(|(lo, hi)| ((lo + hi) * 0.5, (hi - lo).length() * 0.5))
 }
 

@@ -46,14 +46,14 @@ const IGNORED: &[&str] = &[
 
 /// Where new nodes go.
 #[derive(Clone, Copy)]
-struct Cursor {
+pub(super) struct Cursor {
     parent: Option<NodeId>,
     /// Unnamed transforms since `parent`, applied to each node added.
     pending: Mat4,
     /// World matrix of `parent` (for ResetTransform).
     world: Mat4,
     /// Inside a Separator (lights there are scoped).
-    separated: bool,
+    pub(super) separated: bool,
     /// Scene depth of `parent` (0 at the top).
     depth: u32,
 }
@@ -83,7 +83,7 @@ const MAX_CHAIN_DEPTH: u32 = 128;
 impl Cursor {
     /// Where the children of group `id` (just added here) go: the pending
     /// transforms are folded into the world matrix.
-    fn inside(&self, id: NodeId, separated: bool) -> Cursor {
+    pub(super) fn inside(&self, id: NodeId, separated: bool) -> Cursor {
         Cursor {
             parent: Some(id),
             pending: Mat4::IDENTITY,
@@ -112,16 +112,18 @@ struct MeshKey {
 pub struct Builder {
     /// Warnings and the first input limit passed (shared with the VRML97
     /// builder).
-    log: BuildLog,
-    depth: usize,
+    pub(super) log: BuildLog,
+    pub(super) depth: usize,
     vrml1: bool,
     pub(super) scene: Scene,
     /// By (Material, BaseColor, unlit, Texture2, texture transform).
     materials: HashMap<(usize, usize, bool, usize, [u32; 7]), MaterialId>,
     meshes: HashMap<MeshKey, Option<MeshId>>,
     coords: HashMap<usize, Rc<Vec<Vec3>>>,
-    build_depth: usize,
-    inlines: inline::Cache,
+    pub(super) build_depth: usize,
+    pub(super) inlines: inline::Cache,
+    /// Files read by `File` nodes (`file_node`).
+    pub(super) files: super::file_node::Files,
     pub(super) loader: textures::Loader,
     /// Each Texture2 node's image (None: it did not load).
     pub(super) texture_images: HashMap<usize, Option<ImageId>>,
@@ -145,6 +147,7 @@ impl Builder {
             coords: HashMap::new(),
             build_depth: 0,
             inlines: inline::Cache::new(),
+            files: super::file_node::Files::new(),
             loader: textures::Loader::new(path),
             texture_images: HashMap::new(),
         }
@@ -175,7 +178,7 @@ impl Builder {
     }
 
     /// Ends the build with a passed input limit (the first one is kept).
-    fn stop(&mut self, pos: Pos, e: LimitError) {
+    pub(super) fn stop(&mut self, pos: Pos, e: LimitError) {
         self.log.stop(pos, e);
     }
 
@@ -188,7 +191,7 @@ impl Builder {
     }
 
     /// Adds a scene node at the cursor (carrying the pending transforms).
-    fn add(&mut self, pos: Pos, cur: &Cursor, mut node: Node) -> Option<NodeId> {
+    pub(super) fn add(&mut self, pos: Pos, cur: &Cursor, mut node: Node) -> Option<NodeId> {
         if self.log.full() || !self.log.charge(pos, &self.scene, &node) {
             return None;
         }
@@ -207,7 +210,7 @@ impl Builder {
         }
     }
 
-    fn node(&mut self, n: &NodeRef, st: &mut State, cur: &mut Cursor) {
+    pub(super) fn node(&mut self, n: &NodeRef, st: &mut State, cur: &mut Cursor) {
         if self.build_depth >= MAX_BUILD_DEPTH || self.log.full() {
             self.warn_once(
                 "depth",
@@ -287,23 +290,10 @@ impl Builder {
                     self.node(&c, st, cur);
                 }
             }
-            "File" | "WWWInline" => {
+            "File" => self.file(n, st, cur, name),
+            "WWWInline" => {
                 if let Some(id) = self.add(n.pos, cur, Node::group(name)) {
-                    let urls = n.strings("name");
-                    let r = inline::load_into(
-                        &mut self.scene,
-                        &mut self.log.warnings,
-                        &mut self.inlines,
-                        &self.log.path,
-                        n.pos,
-                        &urls,
-                        id,
-                        self.depth,
-                        self.build_depth,
-                    );
-                    if let Err(e) = r {
-                        self.stop(n.pos, e);
-                    }
+                    self.graft(n.pos, &n.strings("name"), id);
                 }
             }
             "Environment" => {

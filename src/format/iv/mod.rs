@@ -7,6 +7,7 @@ mod binary;
 mod binary_fields;
 mod build;
 mod copies;
+mod file_node;
 mod kits;
 mod morph;
 mod shapes;

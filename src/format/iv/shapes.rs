@@ -206,6 +206,26 @@ fn binding(
     }
 }
 
+/// [`binding`] for normals: OVERALL with normals given is the first normal
+/// at every corner (Coin lights the whole shape with it), not normals
+/// computed from the faces as when none are given.
+fn normal_binding(
+    b: Bind,
+    values: &[Vec3],
+    index: &[i64],
+    faces: &[Vec<u32>],
+    parts: Option<&[u32]>,
+    corner_ids: &[Vec<u32>],
+) -> Binding {
+    match (b, values.first()) {
+        (Bind::Overall, Some(&n)) => Binding::PerFace {
+            values: vec![n],
+            index: Some(vec![0; faces.len()]),
+        },
+        _ => binding(b, values, index, faces, parts, corner_ids),
+    }
+}
+
 fn options(st: &State) -> PolyOptions {
     PolyOptions {
         ccw: st.ccw.unwrap_or(true),
@@ -368,7 +388,7 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             } else {
                 inp.normal_binding
             };
-            o.normals = binding(nb, &inp.normals, &[], &faces, Some(&parts), &corner_ids);
+            o.normals = normal_binding(nb, &inp.normals, &[], &faces, Some(&parts), &corner_ids);
             // Non-indexed shapes take texture coordinates by vertex number
             // counted from startIndex (Coin's SoQuadMesh::generatePrimitives).
             let texcoords = inp.textured.then(|| {
@@ -429,21 +449,14 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 None,
                 &corner_ids,
             );
-            let nbind = match nb {
-                // OVERALL: the first normal for every corner.
-                Bind::Overall if !inp.normals.is_empty() => Binding::PerFace {
-                    values: inp.normals[..1].to_vec(),
-                    index: Some(vec![0; lines.len()]),
-                },
-                b => binding(
-                    b,
-                    &inp.normals,
-                    &ints(n, "normalIndex"),
-                    &lines,
-                    None,
-                    &corner_ids,
-                ),
-            };
+            let nbind = normal_binding(
+                nb,
+                &inp.normals,
+                &ints(n, "normalIndex"),
+                &lines,
+                None,
+                &corner_ids,
+            );
             let mut mesh = mesh_from_polylines(&inp.coords, &lines, &cb)
                 .or_else(|_| mesh_from_polylines(&inp.coords, &lines, &Binding::None))
                 .map_err(|e| msgs.push((n.pos, format!("{kind} skipped: {e}"))))
@@ -525,7 +538,7 @@ fn indexed_faces(
     } else {
         inp.normal_binding
     };
-    o.normals = binding(
+    o.normals = normal_binding(
         nb,
         &inp.normals,
         &ints(n, "normalIndex"),

@@ -454,3 +454,63 @@ fn materials_keep_inventors_ambient_colour() {
     );
     assert_eq!(mat("C").ambient_color, None, "unlit");
 }
+
+/// NormalBinding OVERALL with a normal given lights the whole shape with
+/// that normal (Coin draws castle's vrml_1/normals.wrl so), faces and
+/// line sets alike; line sets with normals are lit, without them unlit.
+#[test]
+fn overall_normals_are_the_first_normal_everywhere() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n Coordinate3 { point [0 0 0, 1 0 0, 1 1 0, 0 1 0] }\n DEF U IndexedLineSet { coordIndex [0 1 2] }\n Normal { vector [0 0.6 0.3, 1 0 0] } NormalBinding { value OVERALL }\n DEF F IndexedFaceSet { coordIndex [0 1 2 3] }\n DEF L IndexedLineSet { coordIndex [0 1 2] }\n}",
+    );
+    let s = &l.scene;
+    let mesh = |n: &str| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].clone(),
+        _ => panic!("{n} is not a shape"),
+    };
+    let want = Vec3::new(0.0, 0.6, 0.3).normalize();
+    for n in ["F", "L"] {
+        let m = mesh(n);
+        assert_eq!(m.normals.len(), m.positions.len(), "{n}");
+        assert!(
+            m.normals
+                .iter()
+                .all(|v| (v.normalize() - want).length() < 1e-5),
+            "{n}: {:?}",
+            m.normals
+        );
+    }
+    assert!(mesh("U").normals.is_empty(), "no normals yet: unlit");
+}
+
+/// A `File` node's nodes are traversed in the including file's state: the
+/// Material before each `File` (or USE of it) colours what the file draws,
+/// as Coin draws chessboard.iv's pieces; a file that does not load is a
+/// warning naming it, and so is a problem inside an included file.
+#[test]
+fn file_nodes_draw_in_the_including_state() {
+    let dir = std::env::temp_dir().join(format!("animed-iv-file-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("piece.iv"),
+        "#Inventor V2.1 ascii\nSeparator { DEF Piece Cube {} Bogus {} }\n",
+    )
+    .unwrap();
+    let main = dir.join("board.iv");
+    let src = "#Inventor V2.1 ascii\nSeparator {\n Material { diffuseColor 1 0 0 }\n DEF P File { name \"piece.iv\" }\n Material { diffuseColor 0 1 0 }\n USE P\n File { name \"missing.iv\" }\n}\n";
+    let l = read_nested(src.as_bytes(), &main, 0, false).unwrap();
+    let s = &l.scene;
+    let colours: Vec<Vec3> = s
+        .nodes
+        .iter()
+        .filter_map(|n| match &n.kind {
+            NodeKind::Shape(sh) => Some(s.materials[sh.material.0 as usize].diffuse),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(colours, [Vec3::X, Vec3::Y]);
+    let w = l.warnings.join("\n");
+    assert!(w.contains("piece.iv:2:"), "{w}");
+    assert!(w.contains("missing.iv"), "{w}");
+    std::fs::remove_dir_all(&dir).ok();
+}

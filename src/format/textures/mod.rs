@@ -30,6 +30,13 @@ impl Loader {
         }
     }
 
+    /// Resolves relative urls against `base` from now on (an Inventor
+    /// `File`'s nodes name their textures relative to their own file);
+    /// returns the previous base.
+    pub fn set_base(&mut self, base: &Path) -> PathBuf {
+        std::mem::replace(&mut self.base, base.to_path_buf())
+    }
+
     /// Tries `urls` in order and returns the first that loads. When none
     /// does, returns one warning text per url.
     pub fn load(&mut self, scene: &mut Scene, urls: &[String]) -> Result<ImageId, Vec<String>> {
