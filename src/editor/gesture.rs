@@ -4,7 +4,7 @@
 //! is ONE value of [`Drag`], so a mouse move or release goes to exactly
 //! the part that holds the gesture instead of every part being asked in
 //! turn. A component that keeps its own drag state (viewport, key strip,
-//! graph, key panel, side panel) is named by a marker here. Also what a field drag started from.
+//! graph, side panel with its faces) is named by a marker here. Also what a field drag started from.
 //! Routing lives in `route/input.rs`.
 
 use super::fields::FieldId;
@@ -24,11 +24,10 @@ pub(super) enum Drag {
     Keys,
     /// The graph editor took the press; it keeps its own drag state.
     Graph,
-    /// The key panel took a press on one of its fields; it keeps its own
-    /// drag state (`keypanel.rs`).
-    KeyPanel,
     /// The side panel took a press on an object row (a drag re-parents
-    /// it); it keeps its own drag state (`side_ui.rs`).
+    /// it) or on a field of one of its faces (key panel, material rows,
+    /// morph sliders, the clip name); it keeps its own drag state
+    /// (`side_ui.rs`, `side_faces.rs`).
     Side,
     /// Pressed on a field: a click starts typing, a drag changes the value.
     Field {
@@ -53,12 +52,6 @@ pub(super) enum Base {
     Node(NodeId, Box<Node>),
     Settings(Settings),
     Frame(f32),
-    /// A morph slider (`rig/morph.rs`).
-    Morph(Box<super::rig::state::MorphBase>),
-    /// The clip name field (`rig/clips.rs`): typed, never dragged.
-    Clip,
-    /// A material field (`material/`).
-    Material(Box<super::material::MatBase>),
     /// A preview range field (`route/timeline.rs`): typed, never dragged.
     Preview,
 }

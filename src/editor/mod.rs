@@ -24,6 +24,7 @@ pub mod create;
 pub mod dialog;
 pub mod disk;
 mod draw;
+pub mod field_press;
 pub mod fields;
 mod gesture;
 pub mod gizmo;
@@ -55,6 +56,7 @@ pub mod script;
 pub mod search;
 mod sel_outline;
 pub mod shell;
+pub mod side_faces;
 pub mod side_ui;
 mod split;
 mod strip_tips;
@@ -158,8 +160,6 @@ pub struct Editor {
     viewport: viewport_ui::Viewport,
     /// Key strip: selected keys, fold state, clipboard, strip drags.
     keys: keystrip::KeyStrip,
-    /// The key panel (whether "Object" put the node's properties back).
-    key_panel: keypanel::KeyPanel,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
     /// The graph editor (taken out while it handles an event; created
@@ -234,7 +234,6 @@ impl Editor {
             pending: None,
             viewport: viewport_ui::Viewport::default(),
             keys: keystrip::KeyStrip::default(),
-            key_panel: keypanel::KeyPanel::default(),
             onion: onion::Onion::default(),
             graph: None,
             timeline: timeline::Timeline::default(),

@@ -12,9 +12,12 @@
 //! every other widget's.
 
 use super::component::{Intent, Response};
+use super::keypanel::KeyPanel;
+use super::material::rows_ui::MatRows;
 use super::ops::NewLight;
 use super::panel::{button, label, w, Action, List, Widget, WidgetKind};
 use super::props_view::{Look, PropsView};
+use super::rig::{clip_ui::ClipField, morph_ui::MorphRows};
 use crate::input::{Event, Key, MouseButton};
 use crate::scene::NodeId;
 use crate::ui::layout::ROW;
@@ -50,6 +53,13 @@ pub struct Side {
     pub revealed: Option<(NodeId, Rect)>,
     /// An object row pressed and maybe being dragged.
     row_drag: Option<RowDrag>,
+    /// The faces that are components of their own (`side_faces.rs`
+    /// routes to them): the key panel, the material rows, the morph
+    /// sliders, the clip name field.
+    pub keys: KeyPanel,
+    pub material: MatRows,
+    pub morph: MorphRows,
+    pub clip: ClipField,
 }
 
 /// A press on an object row: past the slop it drags the object, to drop

@@ -4,12 +4,13 @@ use crate::editor::browser::Purpose;
 use crate::editor::browser_ui::Reply;
 use crate::editor::command::Command;
 use crate::editor::dialog::Answer;
+use crate::editor::field_press::FieldEvent;
 use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
-use crate::editor::keypanel::KeyEvent;
 use crate::editor::ops;
 use crate::editor::panel::{Action, WidgetKind};
+use crate::editor::side_faces::is_face_field;
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -138,8 +139,7 @@ impl Editor {
         let part = match &self.drag {
             Drag::Graph => self.graph_event(&ev),
             Drag::Keys => self.strip_event(&ev),
-            Drag::KeyPanel => self.key_panel_mouse(KeyEvent::Move { x }),
-            Drag::Side => self.side_event(&ev),
+            Drag::Side => self.side_mouse(&ev),
             // The viewport's gesture, or hover over its handles.
             Drag::Viewport | Drag::None => self.viewport_event(&ev),
             _ => None,
@@ -148,7 +148,7 @@ impl Editor {
             return redraw;
         }
         match self.drag.clone() {
-            Drag::Viewport | Drag::Keys | Drag::Graph | Drag::KeyPanel | Drag::Side => false,
+            Drag::Viewport | Drag::Keys | Drag::Graph | Drag::Side => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -289,8 +289,9 @@ impl Editor {
                     return;
                 }
                 self.commit_edit();
-                if let FieldId::Key(f) = id {
-                    self.key_field_press(f, x);
+                if is_face_field(id) {
+                    // The side panel's faces hold their own presses.
+                    self.face_event(FieldEvent::Press { field: id, x });
                 } else if let Some(base) = self.field_base(id) {
                     self.drag = Drag::Field {
                         id,
@@ -333,12 +334,8 @@ impl Editor {
                 self.strip_event(&Event::MouseUp { button, x, y, mods });
                 return;
             }
-            Drag::KeyPanel => {
-                self.key_panel_mouse(KeyEvent::Release);
-                return;
-            }
             Drag::Side => {
-                self.side_event(&Event::MouseUp { button, x, y, mods });
+                self.side_mouse(&Event::MouseUp { button, x, y, mods });
                 return;
             }
             _ => {}
@@ -426,18 +423,10 @@ impl Editor {
         if id.is_setting() {
             return Some(Base::Settings(self.scene.settings.clone()));
         }
-        if let FieldId::Key(_) = id {
-            // The key panel holds its fields' presses (`keypanel.rs`).
+        if is_face_field(id) {
+            // The side panel's faces hold their fields' presses
+            // (`side_faces.rs`).
             return None;
-        }
-        if let FieldId::Morph(_) = id {
-            return self.morph_base().map(|b| Base::Morph(Box::new(b)));
-        }
-        if id == FieldId::ClipName {
-            return Some(Base::Clip);
-        }
-        if let FieldId::Material(_) = id {
-            return self.material_base().map(|b| Base::Material(Box::new(b)));
         }
         if let FieldId::Preview(_) = id {
             return Some(Base::Preview);
@@ -456,13 +445,7 @@ impl Editor {
             Base::Frame(f) => Some(FieldValue::Number(*f)),
             Base::Settings(s) => id.read_settings(s),
             Base::Node(_, n) => id.read_node(n),
-            Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
-            Base::Clip => Some(FieldValue::Text(self.clip_name())),
             Base::Preview => self.preview_field(id).map(FieldValue::Number),
-            Base::Material(b) => match id {
-                FieldId::Material(f) => Some(FieldValue::Number(f.read(&b.start))),
-                _ => None,
-            },
         }
     }
 
@@ -475,9 +458,7 @@ impl Editor {
         value: &FieldValue,
     ) -> Option<Command> {
         match base {
-            Base::Frame(_) | Base::Morph(_) | Base::Clip | Base::Material(_) | Base::Preview => {
-                None
-            }
+            Base::Frame(_) | Base::Preview => None,
             Base::Settings(s) => {
                 let mut after = s.clone();
                 id.write_settings(&mut after, value)
@@ -507,14 +488,6 @@ impl Editor {
             self.frame = v.round().min(self.scene.settings.duration);
             return;
         }
-        if let Base::Morph(b) = base {
-            self.drag_morph(id, b, v);
-            return;
-        }
-        if let (Base::Material(b), FieldId::Material(f)) = (base, id) {
-            self.drag_material(f, b, v);
-            return;
-        }
         if let Some(c) = self.field_command(id, base, &FieldValue::Number(v)) {
             // Preview from the base state: the command's `after` is absolute.
             self.preview(&c);
@@ -524,27 +497,7 @@ impl Editor {
     pub(in crate::internals::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
         let label = format!("Drag {id:?}");
         match base {
-            Base::Frame(_) | Base::Clip | Base::Preview => {}
-            Base::Material(b) => {
-                if let FieldId::Material(f) = id {
-                    self.finish_material_drag(f, &b);
-                }
-            }
-            Base::Morph(b) => {
-                let v = self.morph_pending().map(|p| p.weights);
-                let v = v.and_then(|w| {
-                    Self::morph_value(
-                        id,
-                        &crate::editor::rig::state::MorphBase {
-                            start: w,
-                            ..(*b).clone()
-                        },
-                    )
-                });
-                if let Some(v) = v {
-                    self.set_morph(id, &b, v);
-                }
-            }
+            Base::Frame(_) | Base::Preview => {}
             Base::Settings(before) => {
                 let after = self.scene.settings.clone();
                 self.push_applied(&label, Command::SetSettings { before, after });
@@ -582,28 +535,12 @@ impl Editor {
                 }
             }
         };
-        if let (FieldId::Key(_), FieldValue::Number(x)) = (edit.field, &value) {
-            self.commit_key_field(edit.field, *x);
-            return;
-        }
-        if let (FieldId::ClipName, FieldValue::Text(t)) = (edit.field, &value) {
-            self.rename_clip(t);
+        if is_face_field(edit.field) {
+            self.face_typed(edit.field, value);
             return;
         }
         if let (FieldId::Preview(i), FieldValue::Number(x)) = (edit.field, &value) {
             self.set_preview_field(i, *x);
-            return;
-        }
-        if let (FieldId::Material(f), FieldValue::Number(x)) = (edit.field, &value) {
-            if let Some(b) = self.material_base() {
-                self.set_material(f, &b, *x);
-            }
-            return;
-        }
-        if let (FieldId::Morph(_), FieldValue::Number(x)) = (edit.field, &value) {
-            if let Some(b) = self.morph_base() {
-                self.set_morph(edit.field, &b, *x);
-            }
             return;
         }
         if edit.field == FieldId::Frame {
@@ -714,16 +651,12 @@ impl Editor {
     /// Esc during a drag: put back what the drag changed.
     pub(in crate::internals::editor) fn cancel_drag(&mut self) {
         match self.drag {
-            Drag::KeyPanel => {
-                self.key_panel_mouse(KeyEvent::Cancel);
-                return;
-            }
             Drag::Side => {
                 let esc = Event::KeyDown {
                     key: Key::Escape,
                     mods: Mods::NONE,
                 };
-                self.side_event(&esc);
+                self.side_mouse(&esc);
                 return;
             }
             _ => {}
@@ -735,12 +668,7 @@ impl Editor {
         if let Drag::Field { id, base, .. } = drag {
             match base {
                 Base::Frame(f) => self.frame = f,
-                Base::Clip | Base::Preview => {}
-                Base::Material(_) => self.cancel_material_drag(),
-                Base::Morph(_) => {
-                    self.rig.morph_pending = None;
-                    self.scene_rev += 1;
-                }
+                Base::Preview => {}
                 Base::Settings(s) => {
                     self.scene.settings = s;
                     self.scene_rev += 1;
@@ -953,7 +881,7 @@ impl Editor {
             Action::Delete => self.delete_selection(),
             Action::Rename => {
                 if let Some(sel) = self.selection {
-                    self.key_panel.node_shown = true;
+                    self.side.keys.node_shown = true;
                     let name = self.scene.node(sel).name.clone();
                     self.edit = Some(TextEdit {
                         field: FieldId::Name,

@@ -6,6 +6,7 @@ mod aim;
 mod browser;
 mod create;
 mod dialog;
+mod faces;
 mod files;
 mod graph;
 mod input;

@@ -5,9 +5,8 @@
 //! for hit testing (`route/panel.rs` builds the scene section and the
 //! properties' faces the panel places).
 
-use crate::editor::fields::{FieldId, FieldValue};
+use crate::editor::fields::FieldId;
 use crate::editor::gesture::Drag;
-use crate::editor::keypanel::KeyPanel;
 use crate::editor::ops;
 use crate::editor::panel::{Widget, WidgetKind};
 use crate::editor::props_view::Look;
@@ -166,10 +165,8 @@ impl Editor {
 
     /// The text typing into field `id` starts from: its value now.
     fn field_start_text(&self, id: FieldId) -> Option<String> {
-        if let FieldId::Key(f) = id {
-            let keys = self.selected_keys();
-            let v = KeyPanel::number(f, &self.scene.animation, &keys)?;
-            return Some(FieldValue::Number(v).display());
+        if crate::editor::side_faces::is_face_field(id) {
+            return self.face_start_text(id);
         }
         let base = self.field_base(id)?;
         self.field_value(id, &base).map(|v| v.display())
