@@ -524,6 +524,11 @@ impl Editor {
     /// Ends typing into a field: parses and records the value.
     pub(in crate::internals::editor) fn commit_edit(&mut self) {
         let Some(edit) = self.edit.take() else { return };
+        if edit.fresh {
+            // Nothing typed: the value stands (no undo step, nothing left
+            // pending on an animated property), as Tab does.
+            return;
+        }
         let value = if edit.field.is_text() {
             FieldValue::Text(edit.text.clone())
         } else {
