@@ -12,7 +12,7 @@ use crate::editor::keystrip::KeyRef;
 use crate::editor::material::{MatBase, MatField};
 use crate::editor::rig::state::MorphBase;
 use crate::input::OrbitCamera;
-use crate::scene::{Material, MaterialId, Node, NodeId};
+use crate::scene::{Material, MaterialId, Node, NodeId, Settings};
 
 /// What the keys components (key strip, graph editor) see of the editor
 /// alike: the animation, the selected object and its name, the current
@@ -130,6 +130,31 @@ pub enum Intent {
     DropWeights,
     /// Rename the playing clip to what was typed.
     RenameClip(String),
+    /// Show node `id` as `node` while one of its fields is dragged (not
+    /// recorded; a change left pending on its tracks stays).
+    PreviewNode { id: NodeId, node: Box<Node> },
+    /// Record node `id` becoming `after` as one undo step with the record
+    /// rules for `props` (record mode keys them; otherwise a change on an
+    /// animated property is left pending for K). `before`: what a drag
+    /// started from, put back first so undo returns to it.
+    SetNode {
+        label: String,
+        id: NodeId,
+        before: Option<Box<Node>>,
+        after: Box<Node>,
+        props: Vec<Property>,
+    },
+    /// Show these scene settings (a drag on fps or len; not recorded).
+    PreviewSettings(Settings),
+    /// Record the scene settings `before` → `after` as one undo step.
+    SetSettings {
+        label: String,
+        before: Settings,
+        after: Settings,
+    },
+    /// The scene's length was typed: say how many keys lie after its end
+    /// (and cut the preview range to it).
+    NoteKeysAfterEnd,
 }
 
 /// A component's answer to one event.

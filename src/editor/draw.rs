@@ -1,7 +1,6 @@
 //! Painting the whole window: viewport layer, overlay, panels, timeline,
 //! and the modal browser or dialog on top.
 
-use super::fields::FieldValue;
 use super::gesture::Drag;
 use super::panel::{Widget, WidgetKind};
 use super::rig::{clip_ui::ClipField, morph_ui::MorphRows};
@@ -109,6 +108,9 @@ impl Editor {
         // The side panel's lists and its faces (key panel, material rows)
         // paint themselves; the morph sliders and the clip field too,
         // where the node rows and the scene section place them.
+        // The scene section and node face first: the clips' and the other
+        // faces' buttons sit on their title rows.
+        let own = self.draw_side_sections(p);
         let sp = self.side_panel();
         let face = self.material_panel().is_some() || self.key_panel_shown();
         let theirs = |w: &Widget| {
@@ -116,6 +118,7 @@ impl Editor {
             sp.objects.contains(x, y)
                 || sp.lights.contains(x, y)
                 || (face && sp.props.contains(x, y))
+                || own.contains(w)
         };
         let (morph, clip, look) = (self.morph_ctx(), self.clip_ctx(), self.side_look());
         for w in widgets.iter().filter(|w| !theirs(w)) {
@@ -165,24 +168,14 @@ impl Editor {
         }
     }
 
+    /// The text of a field of the controls bar (the side panel's faces
+    /// paint their own fields).
     fn field_text(&self, id: super::fields::FieldId, max_chars: usize) -> String {
-        use super::fields::FieldId;
-        if let FieldId::Preview(_) = id {
-            let v = self.preview_field(id);
-            return v.map_or(String::new(), |x| super::fields::format_fit(x, max_chars));
-        }
-        let v = if id == FieldId::Frame {
-            Some(FieldValue::Number(self.frame))
-        } else if id.is_setting() {
-            id.read_settings(&self.scene.settings)
-        } else {
-            self.selection
-                .and_then(|s| id.read_node(&self.posed_node(s)))
-        };
-        match v {
-            Some(FieldValue::Number(x)) => super::fields::format_fit(x, max_chars),
-            Some(v) => v.display(),
-            None => String::new(),
+        use super::fields::{format_fit, FieldId};
+        match id {
+            FieldId::Preview(_) => self.preview_field(id).map_or(String::new(), |x| format_fit(x, max_chars)),
+            FieldId::Frame => format_fit(self.frame, max_chars),
+            _ => String::new(),
         }
     }
 

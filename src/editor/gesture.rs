@@ -1,14 +1,14 @@
 //! The editor's one gesture in progress: whatever a mouse press started
-//! (the viewport's, the key strip's, the graph editor's, the key panel's,
-//! the side panel's, a field drag, seek, the ruler's and the strip's own)
+//! (the viewport's, the key strip's, the graph editor's, the side
+//! panel's, a controls bar field, seek, the ruler's and the strip's own)
 //! is ONE value of [`Drag`], so a mouse move or release goes to exactly
 //! the part that holds the gesture instead of every part being asked in
 //! turn. A component that keeps its own drag state (viewport, key strip,
-//! graph, side panel with its faces) is named by a marker here. Also what a field drag started from.
-//! Routing lives in `route/input.rs`.
+//! graph, side panel with its faces — every field of the side panel is
+//! a face's) is named by a marker here. Routing lives in `route/input.rs`.
 
+use super::field_press::FieldPress;
 use super::fields::FieldId;
-use crate::scene::{Node, NodeId, Settings};
 
 /// State kept between mouse down and up.
 #[derive(Clone, Debug, Default)]
@@ -26,16 +26,13 @@ pub(super) enum Drag {
     Graph,
     /// The side panel took a press on an object row (a drag re-parents
     /// it) or on a field of one of its faces (key panel, material rows,
-    /// morph sliders, the clip name); it keeps its own drag state
-    /// (`side_ui.rs`, `side_faces.rs`).
+    /// morph sliders, the clip name, the node's rows, the scene section);
+    /// it keeps its own drag state (`side_ui.rs`, `side_faces.rs`).
     Side,
-    /// Pressed on a field: a click starts typing, a drag changes the value.
-    Field {
-        id: FieldId,
-        start_x: f32,
-        moved: bool,
-        base: Base,
-    },
+    /// Pressed on the controls bar's Frame field (a drag scrubs) or a
+    /// preview range field (typed only); a click types
+    /// (`route/time_field.rs`).
+    TimeField(FieldPress<FieldId, f32>),
     /// Dragging the current-frame cursor on the ruler.
     Seek,
     /// Middle button over the ruler or key strip: pans the frames shown.
@@ -44,16 +41,6 @@ pub(super) enum Drag {
     Preview { from: f32 },
     /// Dragging the timeline's top edge: the key strip's height.
     StripResize { y0: f32, h0: i32 },
-}
-
-/// What a field drag started from (to compute values and the command).
-#[derive(Clone, Debug)]
-pub(super) enum Base {
-    Node(NodeId, Box<Node>),
-    Settings(Settings),
-    Frame(f32),
-    /// A preview range field (`route/timeline.rs`): typed, never dragged.
-    Preview,
 }
 
 /// Pixels the mouse may move before a press counts as a drag.

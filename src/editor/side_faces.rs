@@ -11,8 +11,10 @@ use super::field_press::FieldEvent;
 use super::fields::{FieldId, FieldValue};
 use super::keypanel::{KeyEvent, KeyPanelCtx};
 use super::material::rows_ui::MatCtx;
+use super::node_props::{NodeCtx, NodeProps};
 use super::props_view::{Look, PropsView};
 use super::rig::{clip_ui::ClipCtx, morph_ui::MorphCtx};
+use super::scene_section::{SceneCtx, SceneSection};
 use super::side_ui::Side;
 use crate::ui::Painter;
 
@@ -23,6 +25,10 @@ pub struct FacesCtx<'a> {
     pub material: Option<MatCtx<'a>>,
     pub morph: MorphCtx,
     pub clip: ClipCtx,
+    /// The node face (`node_props.rs`) and the scene section
+    /// (`scene_section.rs`).
+    pub node: NodeCtx,
+    pub scene: SceneCtx,
 }
 
 /// Whether field `id` belongs to one of the faces here.
@@ -30,7 +36,8 @@ pub fn is_face_field(id: FieldId) -> bool {
     matches!(
         id,
         FieldId::Key(_) | FieldId::Material(_) | FieldId::Morph(_) | FieldId::ClipName
-    )
+    ) || NodeProps::owns(id)
+        || SceneSection::owns(id)
 }
 
 impl Side {
@@ -40,6 +47,8 @@ impl Side {
             || self.material.pressed()
             || self.morph.pressed()
             || self.clip.pressed()
+            || self.node.pressed()
+            || self.scene.pressed()
     }
 
     /// Hands `ev` to the face it is for and returns its answer.
@@ -77,6 +86,12 @@ impl Side {
         }
         if to(self.clip.pressed(), |f| f == FieldId::ClipName) {
             return self.clip.handle(ev, &ctx.clip);
+        }
+        if to(self.node.pressed(), NodeProps::owns) {
+            return self.node.handle(ev.clone(), &ctx.node);
+        }
+        if to(self.scene.pressed(), SceneSection::owns) {
+            return self.scene.handle(ev.clone(), &ctx.scene);
         }
         Response::ignored()
     }
@@ -131,6 +146,8 @@ mod tests {
                 name: "Walk".into(),
                 named: true,
             },
+            node: NodeCtx::default(),
+            scene: SceneCtx::default(),
         }
     }
 

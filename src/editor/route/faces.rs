@@ -8,6 +8,7 @@ use crate::editor::field_press::FieldEvent;
 use crate::editor::fields::{FieldId, FieldValue};
 use crate::editor::gesture::Drag;
 use crate::editor::keypanel::KeyPanel;
+use crate::editor::node_props::NodeProps;
 use crate::editor::props_view::PropsView;
 use crate::editor::side_faces::FacesCtx;
 use crate::editor::Editor;
@@ -22,6 +23,8 @@ impl Editor {
             material: self.material_ctx(),
             morph: self.morph_ctx(),
             clip: self.clip_ctx(),
+            node: self.node_ctx(),
+            scene: self.scene_ctx(),
         }
     }
 
@@ -68,6 +71,10 @@ impl Editor {
             FieldId::Material(f) => f.read(&ctx.material?.value),
             FieldId::Morph(i) => *ctx.morph.base?.start.as_slice().get(i as usize)?,
             FieldId::ClipName => return Some(ctx.clip.name),
+            FieldId::Fps | FieldId::Duration => {
+                return id.read_settings(&ctx.scene.settings).map(|v| v.display())
+            }
+            _ if NodeProps::owns(id) => return NodeProps::start_text(id, &ctx.node),
             _ => return None,
         };
         Some(FieldValue::Number(v).display())

@@ -156,25 +156,7 @@ impl Editor {
                 let after = self.widget_at(x, y);
                 before != after
             }
-            Drag::Field {
-                id,
-                start_x,
-                moved,
-                base,
-            } => {
-                let dx = x - start_x;
-                if !moved && dx.abs() < DRAG_SLOP {
-                    return false;
-                }
-                self.drag = Drag::Field {
-                    id,
-                    start_x,
-                    moved: true,
-                    base: base.clone(),
-                };
-                self.drag_field(id, &base, dx);
-                true
-            }
+            Drag::TimeField(_) => self.time_field_move(x),
             Drag::Seek => {
                 self.seek_to_x(x);
                 true
@@ -292,13 +274,9 @@ impl Editor {
                 if is_face_field(id) {
                     // The side panel's faces hold their own presses.
                     self.face_event(FieldEvent::Press { field: id, x });
-                } else if let Some(base) = self.field_base(id) {
-                    self.drag = Drag::Field {
-                        id,
-                        start_x: x,
-                        moved: false,
-                        base,
-                    };
+                } else {
+                    // The controls bar's Frame and preview range fields.
+                    self.time_field_press(id, x);
                 }
             }
             WidgetKind::Button { action, .. } | WidgetKind::Check { action, .. } => {
@@ -341,27 +319,7 @@ impl Editor {
             _ => {}
         }
         match std::mem::take(&mut self.drag) {
-            Drag::Field {
-                id,
-                moved: false,
-                base,
-                ..
-            } => {
-                let text = self.field_value(id, &base).map(|v| v.display());
-                if let Some(text) = text {
-                    self.edit = Some(TextEdit {
-                        field: id,
-                        text,
-                        fresh: true,
-                    });
-                }
-            }
-            Drag::Field {
-                id,
-                moved: true,
-                base,
-                ..
-            } => self.finish_field_drag(id, base),
+            Drag::TimeField(p) => self.time_field_release(p),
             Drag::Preview { .. } => {
                 let r = self.timeline.preview;
                 self.set_preview_range(r);
@@ -416,111 +374,6 @@ impl Editor {
 
     // ----- fields -----
 
-    pub(in crate::internals::editor) fn field_base(&self, id: FieldId) -> Option<Base> {
-        if id == FieldId::Frame {
-            return Some(Base::Frame(self.frame));
-        }
-        if id.is_setting() {
-            return Some(Base::Settings(self.scene.settings.clone()));
-        }
-        if is_face_field(id) {
-            // The side panel's faces hold their fields' presses
-            // (`side_faces.rs`).
-            return None;
-        }
-        if let FieldId::Preview(_) = id {
-            return Some(Base::Preview);
-        }
-        let sel = self.selection?;
-        // Fields edit what is shown: animated values at the current frame.
-        Some(Base::Node(sel, Box::new(self.posed_node(sel))))
-    }
-
-    pub(in crate::internals::editor) fn field_value(
-        &self,
-        id: FieldId,
-        base: &Base,
-    ) -> Option<FieldValue> {
-        match base {
-            Base::Frame(f) => Some(FieldValue::Number(*f)),
-            Base::Settings(s) => id.read_settings(s),
-            Base::Node(_, n) => id.read_node(n),
-            Base::Preview => self.preview_field(id).map(FieldValue::Number),
-        }
-    }
-
-    /// Shows `value` in the scene as if `id` had been set (from `base`).
-    /// Returns the command that would record it.
-    pub(in crate::internals::editor) fn field_command(
-        &self,
-        id: FieldId,
-        base: &Base,
-        value: &FieldValue,
-    ) -> Option<Command> {
-        match base {
-            Base::Frame(_) | Base::Preview => None,
-            Base::Settings(s) => {
-                let mut after = s.clone();
-                id.write_settings(&mut after, value)
-                    .then(|| Command::SetSettings {
-                        before: s.clone(),
-                        after,
-                    })
-            }
-            Base::Node(nid, n) => {
-                let mut after = n.clone();
-                id.write_node(&mut after, value).then(|| Command::SetNode {
-                    id: *nid,
-                    before: n.clone(),
-                    after,
-                })
-            }
-        }
-    }
-
-    pub(in crate::internals::editor) fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
-        self.stop_playback();
-        let Some(FieldValue::Number(v0)) = self.field_value(id, base) else {
-            return;
-        };
-        let v = id.clamp(v0 + dx * id.drag_step());
-        if let Base::Frame(_) = base {
-            self.frame = v.round().min(self.scene.settings.duration);
-            return;
-        }
-        if let Some(c) = self.field_command(id, base, &FieldValue::Number(v)) {
-            // Preview from the base state: the command's `after` is absolute.
-            self.preview(&c);
-        }
-    }
-
-    pub(in crate::internals::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
-        let label = format!("Drag {id:?}");
-        match base {
-            Base::Frame(_) | Base::Preview => {}
-            Base::Settings(before) => {
-                let after = self.scene.settings.clone();
-                self.push_applied(&label, Command::SetSettings { before, after });
-            }
-            Base::Node(nid, before) => {
-                let after = Box::new(self.scene.node(nid).clone());
-                // Previews changed the stored node; put it back so the
-                // recorded command starts from it.
-                self.scene.nodes[nid.0 as usize] = (*before).clone();
-                let props: Vec<_> = crate::editor::record::field_property(id)
-                    .into_iter()
-                    .collect();
-                let c = Command::SetNode {
-                    id: nid,
-                    before,
-                    after,
-                };
-                let c = self.recorded(c, &props);
-                self.execute(&label, c);
-            }
-        }
-    }
-
     /// Ends typing into a field: parses and records the value.
     pub(in crate::internals::editor) fn commit_edit(&mut self) {
         let Some(edit) = self.edit.take() else { return };
@@ -557,35 +410,6 @@ impl Editor {
                     let end = self.scene.settings.duration;
                     self.set_status(&format!("{n} (the scene has frames 0 to {end})"), false);
                 }
-            }
-            return;
-        }
-        let Some(base) = self.field_base(edit.field) else {
-            return;
-        };
-        match self.field_command(edit.field, &base, &value) {
-            Some(c) => {
-                self.stop_playback();
-                let props: Vec<_> = crate::editor::record::field_property(edit.field)
-                    .into_iter()
-                    .collect();
-                let c = self.recorded(c, &props);
-                self.execute(&format!("Set {:?}", edit.field), c);
-                if edit.field == FieldId::Duration {
-                    self.note_keys_after_end();
-                }
-                if let FieldValue::Number(x) = value {
-                    let kept = edit.field.clamp(x);
-                    let name = edit.field.label();
-                    if let Some(n) = crate::editor::fields::clamp_note(&name, x, kept) {
-                        self.set_status(&n, false);
-                    }
-                }
-            }
-            None => {
-                let name = edit.field.label();
-                let why = format!("{name}: cannot set '{}' here", edit.text);
-                self.set_status(&why, true)
             }
         }
     }
@@ -670,24 +494,8 @@ impl Editor {
         if let Drag::Viewport = drag {
             self.cancel_viewport();
         }
-        if let Drag::Field { id, base, .. } = drag {
-            match base {
-                Base::Frame(f) => self.frame = f,
-                Base::Preview => {}
-                Base::Settings(s) => {
-                    self.scene.settings = s;
-                    self.scene_rev += 1;
-                }
-                Base::Node(nid, n) => {
-                    let c = Command::SetNode {
-                        id: nid,
-                        before: n.clone(),
-                        after: n,
-                    };
-                    self.preview(&c);
-                }
-            }
-            let _ = id;
+        if let Drag::TimeField(p) = drag {
+            self.time_field_cancel(p);
         }
     }
 

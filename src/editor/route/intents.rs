@@ -100,6 +100,37 @@ impl Editor {
                     self.scene_rev += 1;
                 }
                 Intent::RenameClip(name) => self.rename_clip(&name),
+                // The node face and the scene section (`node_props.rs`,
+                // `scene_section.rs`).
+                Intent::PreviewNode { id, node } => self.preview(&Command::SetNode {
+                    id,
+                    before: Box::new(self.scene.node(id).clone()),
+                    after: node,
+                }),
+                Intent::SetNode {
+                    label,
+                    id,
+                    before,
+                    after,
+                    props,
+                } => {
+                    if let Some(b) = before {
+                        self.scene.nodes[id.0 as usize] = *b;
+                    }
+                    let before = Box::new(self.scene.node(id).clone());
+                    let c = self.recorded(Command::SetNode { id, before, after }, &props);
+                    self.execute(&label, c);
+                }
+                Intent::PreviewSettings(after) => self.preview(&Command::SetSettings {
+                    before: self.scene.settings.clone(),
+                    after,
+                }),
+                Intent::SetSettings {
+                    label,
+                    before,
+                    after,
+                } => self.execute(&label, Command::SetSettings { before, after }),
+                Intent::NoteKeysAfterEnd => self.note_keys_after_end(),
             }
         }
         r.consumed.then_some(r.redraw)

@@ -20,6 +20,7 @@ mod panel;
 mod record;
 mod recovery;
 mod side;
+mod time_field;
 mod timeline;
 mod viewport;
 mod views;
