@@ -173,7 +173,9 @@ impl Editor {
     fn field_text(&self, id: super::fields::FieldId, max_chars: usize) -> String {
         use super::fields::{format_fit, FieldId};
         match id {
-            FieldId::Preview(_) => self.preview_field(id).map_or(String::new(), |x| format_fit(x, max_chars)),
+            FieldId::Preview(_) => self
+                .preview_field(id)
+                .map_or(String::new(), |x| format_fit(x, max_chars)),
             FieldId::Frame => format_fit(self.frame, max_chars),
             _ => String::new(),
         }

@@ -195,7 +195,12 @@ impl NodeProps {
                     out.push(label(a, "Draw", true));
                     let bw = text::width("Hidden") + 8;
                     let at = Rect::new(b.x, b.y + 1, bw, b.h - 2);
-                    out.push(button(at, style_name(node.style), Action::ObjectStyle, false));
+                    out.push(button(
+                        at,
+                        style_name(node.style),
+                        Action::ObjectStyle,
+                        false,
+                    ));
                     delete_button(r, out);
                 }
             }
@@ -365,7 +370,10 @@ mod tests {
             panic!("a drag shows the node: {r:?}")
         };
         assert_eq!(*id, NodeId(3));
-        assert!((node.transform.translation.x - 1.2).abs() < 1e-6, "10 px x 0.02");
+        assert!(
+            (node.transform.translation.x - 1.2).abs() < 1e-6,
+            "10 px x 0.02"
+        );
         let r = p.handle(FieldEvent::Release, &c);
         let [Intent::SetNode {
             before,
@@ -386,10 +394,17 @@ mod tests {
     #[test]
     fn a_click_types_esc_puts_back_and_a_typed_value_is_recorded_clamped() {
         let (mut p, c) = (NodeProps::default(), ctx());
-        p.handle(FieldEvent::Press { field: FieldId::Name, x: 5.0 }, &c);
+        p.handle(
+            FieldEvent::Press {
+                field: FieldId::Name,
+                x: 5.0,
+            },
+            &c,
+        );
         let r = p.handle(FieldEvent::Release, &c);
         let typing = Intent::Type {
             field: FieldId::Name,
+            text: "Box".into(),
         };
         assert_eq!(r.intents, vec![typing]);
         let tx = FieldId::Translation(0);
@@ -413,8 +428,13 @@ mod tests {
             _ => None,
         });
         let (after, before) = set.expect("recorded");
-        assert_eq!((after.light().unwrap().intensity, before.is_none()), (1.0, true));
-        assert!(matches!(r.intents.last(), Some(Intent::Status(s, false)) if s.contains("set to 1")));
+        assert_eq!(
+            (after.light().unwrap().intensity, before.is_none()),
+            (1.0, true)
+        );
+        assert!(
+            matches!(r.intents.last(), Some(Intent::Status(s, false)) if s.contains("set to 1"))
+        );
         // Nothing selected: no field is the face's to press.
         let none = NodeCtx::default();
         let r = p.handle(FieldEvent::Press { field: tx, x: 0.0 }, &none);
@@ -430,9 +450,12 @@ mod tests {
         let r = Rect::new(0, 0, 160, 20 * ROW);
         let room = p.widgets(r, &c, &mut out).expect("a selection");
         assert_eq!(room.morph.len(), 2);
-        let keys = out.iter().find(|w| w.kind == WidgetKind::Label {
-            text: "Keys".into(),
-            dim: true,
+        let keys = out.iter().find(|w| {
+            w.kind
+                == WidgetKind::Label {
+                    text: "Keys".into(),
+                    dim: true,
+                }
         });
         assert!(keys.unwrap().rect.y >= room.morph[1].bottom());
         assert_eq!(NodeProps::rows(&c), 7);

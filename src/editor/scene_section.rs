@@ -158,13 +158,14 @@ impl SceneSection {
                 }
                 let before = ctx.settings.clone();
                 let label = format!("Set {field:?}");
-                let mut r = Response::redraw()
-                    .with(Intent::StopPlayback)
-                    .with(Intent::SetSettings {
-                        label,
-                        before,
-                        after,
-                    });
+                let mut r =
+                    Response::redraw()
+                        .with(Intent::StopPlayback)
+                        .with(Intent::SetSettings {
+                            label,
+                            before,
+                            after,
+                        });
                 if field == FieldId::Duration {
                     r = r.with(Intent::NoteKeysAfterEnd);
                 }
@@ -225,7 +226,9 @@ mod tests {
         assert!(r.intents.contains(&Intent::NoteKeysAfterEnd));
         assert!(r.intents.iter().any(|i| matches!(i,
             Intent::SetSettings { after, .. } if after.duration == 1.0)));
-        assert!(matches!(r.intents.last(), Some(Intent::Status(t, false)) if t.contains("set to 1")));
+        assert!(
+            matches!(r.intents.last(), Some(Intent::Status(t, false)) if t.contains("set to 1"))
+        );
     }
 
     #[test]
@@ -236,7 +239,9 @@ mod tests {
         let kinds: Vec<String> = out.iter().map(|w| format!("{:?}", w.kind)).collect();
         assert!(!kinds.iter().any(|k| k.contains("Header")), "{kinds:?}");
         assert!(kinds.iter().any(|k| k.contains("Clips")), "{kinds:?}");
-        let fields = out.iter().filter(|w| matches!(w.kind, WidgetKind::Field(_)));
+        let fields = out
+            .iter()
+            .filter(|w| matches!(w.kind, WidgetKind::Field(_)));
         assert_eq!(fields.count(), 2);
         assert!(out.iter().all(|w| w.rect.bottom() <= 20 + ROW + 2));
     }

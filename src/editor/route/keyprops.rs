@@ -7,7 +7,7 @@
 use crate::editor::component::Response;
 use crate::editor::keypanel::{KeyEvent, KeyPanelCtx};
 use crate::editor::keyprops::KeyAction;
-use crate::editor::panel::{label, Widget};
+use crate::editor::panel::Widget;
 use crate::editor::Editor;
 use crate::ui::text::CHAR_W;
 use crate::ui::Rect;
@@ -92,22 +92,6 @@ impl Editor {
             }
         }
         lines
-    }
-
-    /// Line `i` of the node panel's list of the selection's key frames.
-    pub(in crate::internals::editor) fn key_list_row(
-        &self,
-        i: usize,
-        r: Rect,
-        out: &mut Vec<Widget>,
-    ) {
-        let lines = self.key_list_lines();
-        let Some(line) = lines.get(i) else { return };
-        let (a, b) = r.take_left(5 * CHAR_W);
-        if i == 0 {
-            out.push(label(a, "Keys", true));
-        }
-        out.push(label(b, line, false));
     }
 }
 

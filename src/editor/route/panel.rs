@@ -6,9 +6,9 @@
 use crate::editor::browser::Browser;
 use crate::editor::fields::FieldId;
 use crate::editor::node_props::{NodeCtx, NodeProps};
-use crate::editor::scene_section::{SceneCtx, SceneSection};
 #[allow(unused_imports)]
 use crate::editor::panel::*;
+use crate::editor::scene_section::{SceneCtx, SceneSection};
 use crate::editor::{Editor, Mode};
 use crate::ui::layout::CONTROLS_H;
 use crate::ui::text::{self, CHAR_W};

@@ -168,7 +168,7 @@ impl Editor {
     fn side_fields(&self) -> Vec<FieldId> {
         let ctx = self.side_ctx();
         let mut all = Vec::new();
-        self.scene_widgets(ctx.sections().scene, &mut all);
+        self.scene_widgets(&mut all);
         self.prop_widgets(self.side.props_view(&ctx).tall, &mut all);
         let field = |w: Widget| match w.kind {
             WidgetKind::Field(id) => Some(id),
