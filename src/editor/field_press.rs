@@ -5,8 +5,12 @@
 //! face that took the press keeps it (and what the value started from);
 //! the editor's one gesture only says the side panel holds the mouse.
 
+use super::component::Response;
 use super::fields::{FieldId, FieldValue};
-use super::gesture::DRAG_SLOP;
+
+/// Pixels the mouse may move before a press counts as a drag (every
+/// press the editor knows: fields, handles, rows).
+pub const DRAG_SLOP: f32 = 3.0;
 
 /// A press on field `field` at `start_x`, with what its value started
 /// from (`base`).
@@ -43,6 +47,22 @@ impl<F, B> FieldPress<F, B> {
     /// Whether the press became a drag.
     pub fn moved(&self) -> bool {
         self.moved
+    }
+}
+
+/// The press held in `slot` moved to `x`: the press and how far it moved
+/// once it is a drag; otherwise the answer to give (`ignored` without a
+/// press, `taken` while it may still be a click).
+pub fn drag_of<F, B>(
+    slot: &mut Option<FieldPress<F, B>>,
+    x: f32,
+) -> Result<(&mut FieldPress<F, B>, f32), Response> {
+    let Some(p) = slot else {
+        return Err(Response::ignored());
+    };
+    match p.drag_dx(x) {
+        Some(dx) => Ok((p, dx)),
+        None => Err(Response::taken()),
     }
 }
 

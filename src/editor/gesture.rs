@@ -43,8 +43,9 @@ pub(super) enum Drag {
     StripResize { y0: f32, h0: i32 },
 }
 
-/// Pixels the mouse may move before a press counts as a drag.
-pub(super) const DRAG_SLOP: f32 = 3.0;
+/// Pixels the mouse may move before a press counts as a drag (kept with
+/// the field gesture, the lower file).
+pub(super) use super::field_press::DRAG_SLOP;
 
 /// Files the writers can produce.
 pub(super) fn is_writable_type(p: &std::path::Path) -> bool {

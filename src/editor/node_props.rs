@@ -12,7 +12,7 @@
 //! to their own parts (it leaves them room).
 
 use super::component::{Intent, Response};
-use super::field_press::{FieldEvent, FieldPress};
+use super::field_press::{drag_of, FieldEvent, FieldPress};
 use super::fields::{clamp_note, format_fit, FieldId, FieldValue};
 use super::ops;
 use super::panel::{button, field_row, label, style_name, w, Action, Widget, WidgetKind};
@@ -253,11 +253,9 @@ impl NodeProps {
                 Response::taken()
             }
             FieldEvent::Move { x } => {
-                let Some(p) = &mut self.press else {
-                    return Response::ignored();
-                };
-                let Some(dx) = p.drag_dx(x) else {
-                    return Response::taken();
+                let (p, dx) = match drag_of(&mut self.press, x) {
+                    Ok(held) => held,
+                    Err(r) => return r,
                 };
                 let r = Response::redraw().with(Intent::StopPlayback);
                 let (f, b) = (p.field, &mut p.base);

@@ -8,7 +8,7 @@
 //! title's right is the clips' own (`rig/clips.rs`), placed from here.
 
 use super::component::{Intent, Response};
-use super::field_press::{FieldEvent, FieldPress};
+use super::field_press::{drag_of, FieldEvent, FieldPress};
 use super::fields::{clamp_note, format_fit, FieldId, FieldValue};
 use super::panel::{button, field_row, w, Action, Widget, WidgetKind};
 use super::props_view::Look;
@@ -113,11 +113,9 @@ impl SceneSection {
                 Response::taken()
             }
             FieldEvent::Move { x } => {
-                let Some(p) = &mut self.press else {
-                    return Response::ignored();
-                };
-                let Some(dx) = p.drag_dx(x) else {
-                    return Response::taken();
+                let (p, dx) = match drag_of(&mut self.press, x) {
+                    Ok(held) => held,
+                    Err(r) => return r,
                 };
                 let (f, base) = (p.field, &p.base);
                 let r = Response::redraw().with(Intent::StopPlayback);

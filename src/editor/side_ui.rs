@@ -14,6 +14,7 @@
 //! every other widget's.
 
 use super::component::{Intent, Response};
+use super::field_press::DRAG_SLOP;
 use super::keypanel::KeyPanel;
 use super::material::rows_ui::MatRows;
 use super::node_props::{NodeCtx, NodeProps};
@@ -81,9 +82,6 @@ struct RowDrag {
     moved: bool,
 }
 
-/// Pixels the mouse may move before a press on a row counts as a drag
-/// (the editor's `gesture::DRAG_SLOP`).
-const DRAG_SLOP: f32 = 3.0;
 
 impl Side {
     /// First visible body row of the properties showing `now`, when
