@@ -66,6 +66,20 @@ pub fn drag_of<F, B>(
     }
 }
 
+/// Esc while `slot` may hold a press: `undo`'s answer for a press that
+/// became a drag (put back what it showed), `taken` for one that is still
+/// a click, `ignored` without a press. The press ends either way.
+pub fn cancel_of<F, B>(
+    slot: &mut Option<FieldPress<F, B>>,
+    undo: impl FnOnce(FieldPress<F, B>) -> Response,
+) -> Response {
+    match slot.take() {
+        Some(p) if p.moved() => undo(p),
+        Some(_) => Response::taken(),
+        None => Response::ignored(),
+    }
+}
+
 /// What happens to a face's fields: the mouse pressed on one of them (the
 /// editor found which), moved and released, Esc during that press, or a
 /// value typed into a field and Enter.

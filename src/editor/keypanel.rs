@@ -13,7 +13,7 @@
 //! routing in `route/keyprops.rs`.
 
 use super::component::{Intent, Response};
-use super::field_press::FieldPress;
+use super::field_press::{cancel_of, FieldPress};
 use super::fields::{clamp_note, format_fit, format_number, FieldId, FieldValue};
 use super::keyprops::*;
 use super::keystrip::{row_name, KeyRef};
@@ -187,13 +187,11 @@ impl KeyPanel {
                     None => Response::taken(),
                 },
             },
-            KeyEvent::Cancel => match self.press.take() {
-                Some(p) if p.moved() => Response::redraw()
+            KeyEvent::Cancel => cancel_of(&mut self.press, |p| {
+                Response::redraw()
                     .with(Intent::Preview(p.base.0))
-                    .with(Intent::ShowKeys(p.base.1)),
-                Some(_) => Response::taken(),
-                None => Response::ignored(),
-            },
+                    .with(Intent::ShowKeys(p.base.1))
+            }),
             KeyEvent::Typed { field, value } => match set_field(ctx.anim, keys, field, value) {
                 Ok((after, refs)) => {
                     let mut r =
@@ -215,14 +213,10 @@ impl KeyPanel {
     pub fn draw(&self, p: &mut Painter, ctx: &KeyPanelCtx, view: &PropsView, look: &Look) {
         let mut all = Vec::new();
         self.widgets(view.tall, ctx, &mut all);
-        let mut shown = Vec::new();
-        view.place(all, &mut shown);
-        for w in &shown {
-            look.paint(p, w, |id, max_chars| match id {
-                FieldId::Key(f) => self.field_text(f, max_chars, ctx),
-                _ => String::new(),
-            });
-        }
+        view.paint(p, look, all, |id, max_chars| match id {
+            FieldId::Key(f) => self.field_text(f, max_chars, ctx),
+            _ => String::new(),
+        });
     }
 
     /// "Keys" at the right of the node properties' `header` while keys are

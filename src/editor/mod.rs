@@ -38,6 +38,7 @@ pub mod keyprops;
 pub mod keystrip;
 mod keystrip_draw;
 pub mod keystrip_ui;
+pub mod live_field;
 pub mod manip;
 pub mod material;
 pub mod menu;

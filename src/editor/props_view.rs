@@ -36,6 +36,23 @@ impl PropsView {
             }
         }
     }
+
+    /// Paints the widgets of `all` that show (see [`PropsView::place`])
+    /// as `look` says, fields with the text `text` gives: how a face of
+    /// the properties draws its rows.
+    pub fn paint(
+        &self,
+        p: &mut Painter,
+        look: &Look,
+        all: Vec<Widget>,
+        text: impl Fn(FieldId, usize) -> String,
+    ) {
+        let mut shown = Vec::new();
+        self.place(all, &mut shown);
+        for w in &shown {
+            look.paint(p, w, &text);
+        }
+    }
 }
 
 /// What a part of the side panel needs to paint its widgets as the

@@ -12,8 +12,9 @@
 
 use super::{thumb, MatAction, MatBase, MatField, Shown};
 use crate::editor::component::{Intent, Response};
-use crate::editor::field_press::{FieldEvent, FieldPress};
+use crate::editor::field_press::FieldEvent;
 use crate::editor::fields::{format_fit, FieldId, FieldValue};
+use crate::editor::live_field::{LiveField, LiveRules};
 use crate::editor::panel::{button, field_row, label, w, Action, Widget, WidgetKind};
 use crate::editor::props_view::{Look, PropsView};
 use crate::scene::{Image, Material, Wrap};
@@ -60,8 +61,41 @@ impl MatCtx<'_> {
 /// its drag shows now.
 #[derive(Clone, Debug, Default)]
 pub struct MatRows {
-    press: Option<FieldPress<MatField, MatBase>>,
-    dragged: Option<f32>,
+    live: LiveField<MatRules>,
+}
+
+/// How the material fields read and ask for changes (`live_field.rs`).
+#[derive(Clone, Debug)]
+pub struct MatRules;
+
+impl LiveRules for MatRules {
+    type Field = MatField;
+    type Base = MatBase;
+    fn id(f: MatField) -> FieldId {
+        FieldId::Material(f)
+    }
+    fn read(f: MatField, base: &MatBase) -> Option<f32> {
+        Some(f.read(&base.start))
+    }
+    fn show(base: &MatBase, f: MatField, v: f32) -> Intent {
+        let mut m = base.start.clone();
+        f.write(&mut m, v);
+        Intent::ShowMaterial {
+            id: base.material,
+            props: vec![f.property()],
+            value: Box::new(m),
+        }
+    }
+    fn set(base: MatBase, field: MatField, value: f32) -> Intent {
+        Intent::SetMaterial {
+            field,
+            base: Box::new(base),
+            value,
+        }
+    }
+    fn drop() -> Intent {
+        Intent::DropMaterial
+    }
 }
 
 /// The panel's rows inside the properties rect `r`.
@@ -115,7 +149,7 @@ pub fn switch(header: Rect, out: &mut Vec<Widget>) {
 impl MatRows {
     /// Whether a press on one of its fields holds the mouse.
     pub fn pressed(&self) -> bool {
-        self.press.is_some()
+        self.live.pressed()
     }
 
     /// Answers one event on its fields (`None`: the panel is not shown;
@@ -125,70 +159,23 @@ impl MatRows {
             material: c.shown.material,
             start: c.value.clone(),
         };
-        match ev {
-            FieldEvent::Press {
-                field: FieldId::Material(f),
-                x,
-            } => {
-                let Some(c) = ctx else {
-                    return Response::ignored();
-                };
-                self.press = Some(FieldPress::new(*f, *x, base(c)));
-                self.dragged = None;
-                Response::taken()
-            }
-            FieldEvent::Move { x } => {
-                let Some(p) = &mut self.press else {
-                    return Response::ignored();
-                };
-                let Some(dx) = p.drag_dx(*x) else {
-                    return Response::taken();
-                };
-                let f = p.field;
-                let v0 = f.read(&p.base.start);
-                let v = f.clamp(v0 + dx * FieldId::Material(f).drag_step());
-                let mut m = p.base.start.clone();
-                f.write(&mut m, v);
-                self.dragged = Some(v);
-                Response::redraw()
-                    .with(Intent::StopPlayback)
-                    .with(Intent::ShowMaterial {
-                        id: p.base.material,
-                        props: vec![f.property()],
-                        value: Box::new(m),
-                    })
-            }
-            FieldEvent::Release => match (self.press.take(), self.dragged.take()) {
-                (None, _) => Response::ignored(),
-                (Some(p), Some(v)) if p.moved() => Response::redraw().with(Intent::SetMaterial {
-                    field: p.field,
-                    base: Box::new(p.base),
-                    value: v,
-                }),
-                (Some(p), _) if p.moved() => Response::taken(),
-                // A click: type into the field, starting from its number.
-                (Some(p), _) => Response::redraw().with(Intent::Type {
-                    field: FieldId::Material(p.field),
-                    text: FieldValue::Number(p.field.read(&p.base.start)).display(),
-                }),
-            },
-            FieldEvent::Cancel => match (self.press.take(), self.dragged.take()) {
-                (Some(p), _) if p.moved() => Response::redraw().with(Intent::DropMaterial),
-                (Some(_), _) => Response::taken(),
-                (None, _) => Response::ignored(),
-            },
-            FieldEvent::Typed {
-                field: FieldId::Material(f),
-                value: FieldValue::Number(v),
-            } => match ctx {
-                Some(c) => Response::redraw().with(Intent::SetMaterial {
-                    field: *f,
-                    base: Box::new(base(c)),
-                    value: *v,
-                }),
-                None => Response::ignored(),
-            },
-            _ => Response::ignored(),
+        match (ev, ctx) {
+            (
+                FieldEvent::Press {
+                    field: FieldId::Material(f),
+                    x,
+                },
+                Some(c),
+            ) => self.live.press(*f, *x, base(c)),
+            (
+                FieldEvent::Typed {
+                    field: FieldId::Material(f),
+                    value: FieldValue::Number(v),
+                },
+                Some(c),
+            ) => Response::redraw().with(MatRules::set(base(c), *f, *v)),
+            (FieldEvent::Press { .. } | FieldEvent::Typed { .. }, _) => Response::ignored(),
+            _ => self.live.handle(ev),
         }
     }
 
@@ -312,14 +299,10 @@ impl MatRows {
     pub fn draw(&self, p: &mut Painter, ctx: &MatCtx, view: &PropsView, look: &Look) {
         let mut all = Vec::new();
         self.widgets(view.tall, ctx, &mut all);
-        let mut shown = Vec::new();
-        view.place(all, &mut shown);
-        for w in &shown {
-            look.paint(p, w, |id, max| match id {
-                FieldId::Material(f) => Self::field_text(f, max, ctx),
-                _ => String::new(),
-            });
-        }
+        view.paint(p, look, all, |id, max| match id {
+            FieldId::Material(f) => Self::field_text(f, max, ctx),
+            _ => String::new(),
+        });
         // Laid out like the widgets: in the scrolled rows, drawn where
         // they show.
         let (props, l) = (view.shown, rows(view.tall));

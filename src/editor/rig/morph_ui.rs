@@ -9,8 +9,9 @@
 
 use super::state::MorphBase;
 use crate::editor::component::{Intent, Response};
-use crate::editor::field_press::{FieldEvent, FieldPress};
+use crate::editor::field_press::FieldEvent;
 use crate::editor::fields::{format_fit, FieldId, FieldValue};
+use crate::editor::live_field::{LiveField, LiveRules};
 use crate::editor::panel::{field_row, Widget, WidgetKind};
 use crate::editor::props_view::Look;
 use crate::ui::text::CHAR_W;
@@ -38,14 +39,46 @@ impl MorphCtx {
 /// shows now.
 #[derive(Clone, Debug, Default)]
 pub struct MorphRows {
-    press: Option<FieldPress<u8, MorphBase>>,
-    dragged: Option<f32>,
+    live: LiveField<MorphRules>,
+}
+
+/// How the sliders read and ask for changes (`live_field.rs`): field `i`
+/// is weight `i`.
+#[derive(Clone, Debug)]
+pub struct MorphRules;
+
+impl LiveRules for MorphRules {
+    type Field = u8;
+    type Base = MorphBase;
+    fn id(i: u8) -> FieldId {
+        FieldId::Morph(i)
+    }
+    fn read(i: u8, base: &MorphBase) -> Option<f32> {
+        base.start.as_slice().get(i as usize).copied()
+    }
+    fn show(base: &MorphBase, index: u8, value: f32) -> Intent {
+        Intent::ShowWeight {
+            base: Box::new(base.clone()),
+            index,
+            value,
+        }
+    }
+    fn set(base: MorphBase, index: u8, value: f32) -> Intent {
+        Intent::SetWeight {
+            base: Box::new(base),
+            index,
+            value,
+        }
+    }
+    fn drop() -> Intent {
+        Intent::DropWeights
+    }
 }
 
 impl MorphRows {
     /// Whether a press on a slider holds the mouse.
     pub fn pressed(&self) -> bool {
-        self.press.is_some()
+        self.live.pressed()
     }
 
     /// Slider row `i` in `r`: the target's name, then its weight field.
@@ -83,71 +116,23 @@ impl MorphRows {
 
     /// Answers one event on a slider.
     pub fn handle(&mut self, ev: &FieldEvent, ctx: &MorphCtx) -> Response {
-        match ev {
-            FieldEvent::Press {
-                field: FieldId::Morph(i),
-                x,
-            } => {
-                let Some(base) = ctx.base.clone() else {
-                    return Response::ignored();
-                };
-                self.press = Some(FieldPress::new(*i, *x, base));
-                self.dragged = None;
-                Response::taken()
-            }
-            FieldEvent::Move { x } => {
-                let Some(p) = &mut self.press else {
-                    return Response::ignored();
-                };
-                let Some(dx) = p.drag_dx(*x) else {
-                    return Response::taken();
-                };
-                let r = Response::redraw().with(Intent::StopPlayback);
-                let Some(&v0) = p.base.start.as_slice().get(p.field as usize) else {
-                    return r;
-                };
-                let v = v0 + dx * FieldId::Morph(p.field).drag_step();
-                self.dragged = Some(v);
-                r.with(Intent::ShowWeight {
-                    base: Box::new(p.base.clone()),
-                    index: p.field,
-                    value: v,
-                })
-            }
-            FieldEvent::Release => match (self.press.take(), self.dragged.take()) {
-                (None, _) => Response::ignored(),
-                (Some(p), Some(v)) if p.moved() => Response::redraw().with(Intent::SetWeight {
-                    base: Box::new(p.base),
-                    index: p.field,
-                    value: v,
-                }),
-                (Some(p), _) if p.moved() => Response::taken(),
-                // A click: type into the slider, starting from its weight.
-                (Some(p), _) => match p.base.start.as_slice().get(p.field as usize) {
-                    Some(&v) => Response::redraw().with(Intent::Type {
-                        field: FieldId::Morph(p.field),
-                        text: FieldValue::Number(v).display(),
-                    }),
-                    None => Response::taken(),
+        match (ev, &ctx.base) {
+            (
+                FieldEvent::Press {
+                    field: FieldId::Morph(i),
+                    x,
                 },
-            },
-            FieldEvent::Cancel => match (self.press.take(), self.dragged.take()) {
-                (Some(p), _) if p.moved() => Response::redraw().with(Intent::DropWeights),
-                (Some(_), _) => Response::taken(),
-                (None, _) => Response::ignored(),
-            },
-            FieldEvent::Typed {
-                field: FieldId::Morph(i),
-                value: FieldValue::Number(v),
-            } => match &ctx.base {
-                Some(b) => Response::redraw().with(Intent::SetWeight {
-                    base: Box::new(b.clone()),
-                    index: *i,
-                    value: *v,
-                }),
-                None => Response::ignored(),
-            },
-            _ => Response::ignored(),
+                Some(b),
+            ) => self.live.press(*i, *x, b.clone()),
+            (
+                FieldEvent::Typed {
+                    field: FieldId::Morph(i),
+                    value: FieldValue::Number(v),
+                },
+                Some(b),
+            ) => Response::redraw().with(MorphRules::set(b.clone(), *i, *v)),
+            (FieldEvent::Press { .. } | FieldEvent::Typed { .. }, _) => Response::ignored(),
+            _ => self.live.handle(ev),
         }
     }
 }
