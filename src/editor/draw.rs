@@ -3,8 +3,6 @@
 
 use super::gesture::Drag;
 use super::panel::{Widget, WidgetKind};
-use super::rig::clip_ui::ClipField;
-use super::rig::morph_ui::MorphRows;
 use super::{Editor, Mode};
 use crate::render::Frame;
 use crate::ui::text;
@@ -106,29 +104,15 @@ impl Editor {
             theme::TEXT_DIM,
             l.toolbar.right() - x - 2,
         );
-        // The side panel's lists and its faces (key panel, material rows)
-        // paint themselves; the morph sliders and the clip field too,
-        // where the node rows and the scene section place them.
-        // The scene section and node face first: the clips' and the other
-        // faces' buttons sit on their title rows.
-        let own = self.draw_side_sections(p);
-        let sp = self.side_panel();
-        let face = self.material_panel().is_some() || self.key_panel_shown();
-        let theirs = |w: &Widget| {
-            let (x, y) = (w.rect.x as f32, w.rect.y as f32);
-            sp.objects.contains(x, y)
-                || sp.lights.contains(x, y)
-                || (face && sp.props.contains(x, y))
-                || own.contains(w)
-        };
-        let (morph, clip, look) = (self.morph_ctx(), self.clip_ctx(), self.side_look());
-        for w in widgets.iter().filter(|w| !theirs(w)) {
-            if !MorphRows::paint(p, w, &morph, &look) && !ClipField::paint(p, w, &clip, &look) {
-                self.draw_widget(p, w);
-            }
+        // The side panel paints itself (its sections, faces and lists);
+        // the toolbar's and the controls bar's widgets are the editor's.
+        let (placed, rest): (Vec<Widget>, Vec<Widget>) = widgets
+            .into_iter()
+            .partition(|w| l.side.contains(w.rect.x as f32, w.rect.y as f32));
+        for w in &rest {
+            self.draw_widget(p, w);
         }
-        self.draw_face(p);
-        self.draw_side(p);
+        self.draw_side_panel(p, &placed);
     }
 
     fn draw_widget(&self, p: &mut Painter, w: &Widget) {

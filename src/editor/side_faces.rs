@@ -13,11 +13,12 @@ use super::fields::{FieldId, FieldValue};
 use super::keypanel::{KeyEvent, KeyPanelCtx};
 use super::material::rows_ui::MatCtx;
 use super::node_props::{NodeCtx, NodeProps};
+use super::panel::Widget;
 use super::props_view::{Look, PropsView};
-use super::rig::clip_ui::ClipCtx;
-use super::rig::morph_ui::MorphCtx;
+use super::rig::clip_ui::{ClipCtx, ClipField};
+use super::rig::morph_ui::{MorphCtx, MorphRows};
 use super::scene_section::{SceneCtx, SceneSection};
-use super::side_ui::Side;
+use super::side_ui::{Side, SideCtx};
 use crate::ui::Painter;
 
 /// What the faces see of the editor.
@@ -31,6 +32,23 @@ pub struct FacesCtx<'a> {
     /// (`scene_section.rs`).
     pub node: NodeCtx,
     pub scene: SceneCtx,
+}
+
+/// Everything the side panel paints from: its own snapshot and its
+/// faces', where the properties show and whether the node's rows show
+/// there, how things look, and the widgets laid out in the panel (among
+/// them those its faces place for others: the clips' row in the scene
+/// title, the morph sliders under the node's rows, the switches at the
+/// node's title).
+pub struct SideDraw<'a> {
+    pub side: &'a SideCtx,
+    pub scene: &'a SceneCtx,
+    pub node: &'a NodeCtx,
+    pub faces: &'a FacesCtx<'a>,
+    pub view: PropsView,
+    pub node_shown: bool,
+    pub placed: &'a [Widget],
+    pub look: &'a Look,
 }
 
 /// Whether field `id` belongs to one of the faces here.
@@ -96,6 +114,32 @@ impl Side {
             return self.scene.handle(ev.clone(), &ctx.scene);
         }
         Response::ignored()
+    }
+
+    /// Paints the whole side panel, back to front: the scene section and
+    /// the node's rows, the widgets they place for others (the clips' row,
+    /// the morph sliders, the switches at the node's title), the face shown
+    /// instead of the node's rows (material rows, key panel), then the
+    /// lists, their scroll bars and a dragged row's mark.
+    pub fn draw_all(&self, p: &mut Painter, d: &SideDraw) {
+        let node_view = d.node_shown.then_some(&d.view);
+        let own = self.draw_sections(p, (d.scene, d.node), node_view, d.look);
+        let sp = d.side.sections();
+        let face = d.faces.material.is_some() || self.keys.shown(&d.faces.keys);
+        let theirs = |w: &Widget| {
+            let (x, y) = (w.rect.x as f32, w.rect.y as f32);
+            sp.objects.contains(x, y)
+                || sp.lights.contains(x, y)
+                || (face && sp.props.contains(x, y))
+                || own.contains(w)
+        };
+        for w in d.placed.iter().filter(|w| !theirs(w)) {
+            let _ = MorphRows::paint(p, w, &d.faces.morph, d.look)
+                || ClipField::paint(p, w, &d.faces.clip, d.look)
+                || d.look.paint(p, w, |_, _| String::new());
+        }
+        self.draw_face(p, d.faces, &d.view, d.look);
+        self.draw(p, d.side, d.look);
     }
 
     /// Paints the face that shows in the properties' place (the material

@@ -1,7 +1,7 @@
 //! The editor's side of the side panel's faces (`side_faces.rs`): the
 //! snapshot they see, a press on one of their fields (the side panel
 //! holds the gesture, `Drag::Side`, until the release), the mouse and Esc
-//! while it holds it, a typed value, and painting the face that shows.
+//! while it holds it, a typed value, and the panel painting itself.
 
 use crate::editor::component::Response;
 use crate::editor::field_press::FieldEvent;
@@ -9,8 +9,10 @@ use crate::editor::fields::{FieldId, FieldValue};
 use crate::editor::gesture::Drag;
 use crate::editor::keypanel::KeyPanel;
 use crate::editor::node_props::NodeProps;
+use crate::editor::panel::Widget;
 use crate::editor::props_view::PropsView;
-use crate::editor::side_faces::FacesCtx;
+use crate::editor::side_faces::{FacesCtx, SideDraw};
+use crate::editor::side_ui::SectionKind;
 use crate::editor::Editor;
 use crate::input::Event;
 use crate::ui::Painter;
@@ -80,12 +82,21 @@ impl Editor {
         Some(FieldValue::Number(v).display())
     }
 
-    /// Paints the face that shows in the properties' place; false when
-    /// the node's rows show.
-    pub(in crate::internals::editor) fn draw_face(&self, p: &mut Painter) -> bool {
+    /// The side panel paints itself; `placed` are the window's widgets
+    /// inside it.
+    pub(in crate::internals::editor) fn draw_side_panel(&self, p: &mut Painter, placed: &[Widget]) {
         let (shown, tall) = self.props_view();
-        let view = PropsView { shown, tall };
-        self.side
-            .draw_face(p, &self.faces_ctx(), &view, &self.side_look())
+        let (side, faces) = (self.side_ctx(), self.faces_ctx());
+        let d = SideDraw {
+            side: &side,
+            scene: &self.scene_ctx(),
+            node: &self.node_ctx(),
+            faces: &faces,
+            view: PropsView { shown, tall },
+            node_shown: self.prop_section().kind == SectionKind::Node,
+            placed,
+            look: &self.side_look(),
+        };
+        self.side.draw_all(p, &d);
     }
 }

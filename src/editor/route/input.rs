@@ -299,24 +299,16 @@ impl Editor {
         mods: Mods,
     ) {
         // The part that holds the gesture ends it.
-        match &self.drag {
-            Drag::Graph => {
-                self.graph_event(&Event::MouseUp { button, x, y, mods });
-                return;
-            }
-            Drag::Viewport => {
-                self.viewport_event(&Event::MouseUp { button, x, y, mods });
-                return;
-            }
-            Drag::Keys => {
-                self.strip_event(&Event::MouseUp { button, x, y, mods });
-                return;
-            }
-            Drag::Side => {
-                self.side_mouse(&Event::MouseUp { button, x, y, mods });
-                return;
-            }
-            _ => {}
+        let up = Event::MouseUp { button, x, y, mods };
+        let part = match &self.drag {
+            Drag::Graph => Some(self.graph_event(&up)),
+            Drag::Viewport => Some(self.viewport_event(&up)),
+            Drag::Keys => Some(self.strip_event(&up)),
+            Drag::Side => Some(self.side_mouse(&up)),
+            _ => None,
+        };
+        if part.is_some() {
+            return;
         }
         match std::mem::take(&mut self.drag) {
             Drag::TimeField(p) => self.time_field_release(p),

@@ -1,8 +1,8 @@
 //! The editor's side of the side panel component (`side_ui.rs`): the
 //! snapshot it sees, routing the wheel and presses on its rows to it
 //! (`Drag::Side` while it holds a row drag), applying what it returns,
-//! the lists' reveal of the selection, Tab between its fields, and
-//! painting its scene section and node face. Its widgets join the
+//! the lists' reveal of the selection and Tab between its fields (the
+//! panel paints itself, `route/faces.rs`). Its widgets join the
 //! editor's for hit testing (`route/panel.rs` gathers the scene section
 //! and the properties' faces the panel places).
 
@@ -10,11 +10,11 @@ use crate::editor::fields::FieldId;
 use crate::editor::gesture::Drag;
 use crate::editor::ops;
 use crate::editor::panel::{Widget, WidgetKind};
-use crate::editor::props_view::{Look, PropsView};
+use crate::editor::props_view::Look;
 use crate::editor::side_ui::{LightRow, ObjectRow, Section, SectionKind, SideCtx};
 use crate::editor::{Editor, TextEdit};
 use crate::input::Event;
-use crate::ui::{theme, Painter, Rect, SidePanel};
+use crate::ui::{theme, Rect, SidePanel};
 
 impl Editor {
     /// What the side panel sees: its area, the two lists' rows, what the
@@ -112,24 +112,6 @@ impl Editor {
         let mut all = Vec::new();
         self.prop_widgets(tall, &mut all);
         self.side.place_props(&ctx, all, out);
-    }
-
-    /// The scene section and, when the properties show it, the node face
-    /// paint themselves; the widgets they painted, for the editor to
-    /// leave out.
-    pub(in crate::internals::editor) fn draw_side_sections(&self, p: &mut Painter) -> Vec<Widget> {
-        let node_shown = self.prop_section().kind == SectionKind::Node;
-        let (shown, tall) = self.props_view();
-        let view = PropsView { shown, tall };
-        let ctxs = (&self.scene_ctx(), &self.node_ctx());
-        let look = self.side_look();
-        self.side
-            .draw_sections(p, ctxs, node_shown.then_some(&view), &look)
-    }
-
-    /// The side panel paints its lists, scroll bars and row drag.
-    pub(in crate::internals::editor) fn draw_side(&self, p: &mut Painter) {
-        self.side.draw(p, &self.side_ctx(), &self.side_look());
     }
 
     /// Tab while typing: records the field (if anything was typed) and
