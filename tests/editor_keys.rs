@@ -872,3 +872,41 @@ fn enter_or_clicking_away_with_nothing_typed_records_nothing() {
     assert_eq!(ed.history().labels().count(), steps + 1);
     assert!(ed.pending().is_some() && ed.status().text.contains("Pending"));
 }
+
+/// Dragging a node field of an animated property shows the value while
+/// the mouse moves (it used to show only after the release: the drag
+/// changed the node under its tracks), Esc puts it all back, and the
+/// release leaves one undo step and the change pending for K.
+#[test]
+fn a_field_drag_on_an_animated_property_follows_the_mouse() {
+    let (mut ed, bx) = zigzag();
+    let steps = ed.history().labels().count();
+    let shown_y = |ed: &Editor| ed.posed_node(bx).transform.translation.y;
+    let y0 = shown_y(&ed);
+    let stored = ed.scene().node(bx).clone();
+    let at = find(&ed, "Field(Translation(1))");
+    let far = (at.0 + 50.0, at.1);
+    down(&mut ed, at, Mods::NONE);
+    move_to(&mut ed, far, Mods::NONE);
+    assert!(
+        (shown_y(&ed) - (y0 + 1.0)).abs() < 1e-4,
+        "50 px x 0.02, live"
+    );
+    key(&mut ed, Key::Escape, Mods::NONE);
+    up(&mut ed, far, Mods::NONE);
+    assert_eq!(shown_y(&ed), y0, "Esc puts the value back");
+    assert_eq!(ed.scene().node(bx), &stored, "and the stored node");
+    assert!(ed.pending().is_none());
+    assert_eq!(ed.history().labels().count(), steps);
+    down(&mut ed, at, Mods::NONE);
+    move_to(&mut ed, far, Mods::NONE);
+    up(&mut ed, far, Mods::NONE);
+    assert!((shown_y(&ed) - (y0 + 1.0)).abs() < 1e-4);
+    assert_eq!(ed.history().labels().count(), steps + 1);
+    assert!(
+        ed.pending().is_some(),
+        "an animated value stays pending for K"
+    );
+    ed.undo();
+    assert_eq!(ed.scene().node(bx), &stored, "undo returns the stored node");
+}

@@ -130,17 +130,13 @@ pub enum Intent {
     DropWeights,
     /// Rename the playing clip to what was typed.
     RenameClip(String),
-    /// Show node `id` as `node` while one of its fields is dragged (not
-    /// recorded; a change left pending on its tracks stays).
-    PreviewNode { id: NodeId, node: Box<Node> },
-    /// Record node `id` becoming `after` as one undo step with the record
-    /// rules for `props` (record mode keys them; otherwise a change on an
-    /// animated property is left pending for K). `before`: what a drag
-    /// started from, put back first so undo returns to it.
+    /// Record node `id` (as stored now) becoming `after` as one undo
+    /// step with the record rules for `props` (record mode keys them;
+    /// otherwise a change on an animated property is left pending for K):
+    /// a node field typed, or its drag released.
     SetNode {
         label: String,
         id: NodeId,
-        before: Option<Box<Node>>,
         after: Box<Node>,
         props: Vec<Property>,
     },

@@ -6,7 +6,8 @@
 //! paints them itself ([`NodeProps::draw`]) and owns the press, drag and
 //! click-to-type of its fields ([`NodeProps::handle`], the shared
 //! `field_press.rs` gesture), answering with a [`Response`] whose intents
-//! (show the node, record it with the record rules, type) the editor
+//! (show the node over its tracks as a handle drag does, put the stored
+//! node back and record the change by the record rules, type) the editor
 //! applies. It never names the `Editor`; the morph sliders below its
 //! rows and the buttons on its header that switch to other faces belong
 //! to their own parts (it leaves them room).
@@ -40,6 +41,9 @@ pub struct NodeCtx {
     /// The selection as shown: animated values at the current frame (a
     /// change not yet keyed included).
     pub node: Option<(NodeId, Node)>,
+    /// The selection as stored (the values under its tracks): what a
+    /// drag puts back before it records, so undo returns to it.
+    pub stored: Option<Node>,
     /// Morph slider rows under the node's own (`rig/morph.rs` fills them).
     pub morph_rows: usize,
     /// The selection's key frames, as lines that fit after "Keys".
@@ -56,11 +60,13 @@ pub struct Room {
     pub morph: Vec<Rect>,
 }
 
-/// What a field drag started from and what it shows now.
+/// What a field drag started from (the node as shown and as stored)
+/// and what it shows now.
 #[derive(Clone, Debug)]
 pub struct NodeBase {
     id: NodeId,
     node: Box<Node>,
+    stored: Box<Node>,
     shown: Option<Box<Node>>,
 }
 
@@ -241,12 +247,13 @@ impl NodeProps {
     pub fn handle(&mut self, ev: FieldEvent, ctx: &NodeCtx) -> Response {
         match ev {
             FieldEvent::Press { field, x } => {
-                let Some((id, node)) = &ctx.node else {
+                let (Some((id, node)), Some(stored)) = (&ctx.node, &ctx.stored) else {
                     return Response::ignored();
                 };
                 let base = NodeBase {
                     id: *id,
                     node: Box::new(node.clone()),
+                    stored: Box::new(stored.clone()),
                     shown: None,
                 };
                 self.press = Some(FieldPress::new(field, x, base));
@@ -264,11 +271,20 @@ impl NodeProps {
                 };
                 let v = FieldValue::Number(f.clamp(v0 + dx * f.drag_step()));
                 let mut node = b.node.clone();
+                let Some(property) = field_property(f) else {
+                    return r;
+                };
                 if !f.write_node(&mut node, &v) {
                     return r;
                 }
                 b.shown = Some(node.clone());
-                r.with(Intent::PreviewNode { id: b.id, node })
+                // Shown over the property's tracks (as a handle drag is),
+                // so an animated value follows the mouse too.
+                r.with(Intent::ShowNode {
+                    id: b.id,
+                    property,
+                    node,
+                })
             }
             FieldEvent::Release => match self.press.take() {
                 None => Response::ignored(),
@@ -277,10 +293,15 @@ impl NodeProps {
                     let Some(after) = b.shown else {
                         return Response::redraw();
                     };
-                    Response::redraw().with(Intent::SetNode {
+                    // The stored node back, then the change recorded from
+                    // it by the record rules.
+                    let put_back = Intent::PutBack {
+                        id: b.id,
+                        node: b.stored,
+                    };
+                    Response::redraw().with(put_back).with(Intent::SetNode {
                         label: format!("Drag {f:?}"),
                         id: b.id,
-                        before: Some(b.node),
                         after,
                         props: field_property(f).into_iter().collect(),
                     })
@@ -295,9 +316,9 @@ impl NodeProps {
                 },
             },
             FieldEvent::Cancel => match self.press.take() {
-                Some(p) if p.moved() => Response::redraw().with(Intent::PreviewNode {
+                Some(p) if p.moved() => Response::redraw().with(Intent::PutBack {
                     id: p.base.id,
-                    node: p.base.node,
+                    node: p.base.stored,
                 }),
                 Some(_) => Response::taken(),
                 None => Response::ignored(),
@@ -316,7 +337,6 @@ impl NodeProps {
                     .with(Intent::SetNode {
                         label: format!("Set {field:?}"),
                         id: *id,
-                        before: None,
                         after,
                         props: field_property(field).into_iter().collect(),
                     });
@@ -344,11 +364,13 @@ mod tests {
     use crate::anim::Property;
     use crate::scene::Light;
 
+    /// Box at x 1 as shown; stored at x 0 (a track moves it).
     fn ctx() -> NodeCtx {
         let mut n = Node::group("Box");
         n.transform.translation.x = 1.0;
         NodeCtx {
             node: Some((NodeId(3), n)),
+            stored: Some(Node::group("Box")),
             rows_shown: 4,
             key_lines: vec!["0 10".into()],
             ..NodeCtx::default()
@@ -364,25 +386,21 @@ mod tests {
         let r = p.handle(FieldEvent::Move { x: 52.0 }, &c);
         assert!(r.intents.is_empty(), "inside the slop nothing changes");
         let r = p.handle(FieldEvent::Move { x: 60.0 }, &c);
-        let Some(Intent::PreviewNode { id, node }) = r.intents.last() else {
-            panic!("a drag shows the node: {r:?}")
+        let Some(Intent::ShowNode { id, node, property }) = r.intents.last() else {
+            panic!("a drag shows the node over its tracks: {r:?}")
         };
-        assert_eq!(*id, NodeId(3));
+        assert_eq!((*id, *property), (NodeId(3), Property::Translation));
         assert!(
             (node.transform.translation.x - 1.2).abs() < 1e-6,
             "10 px x 0.02"
         );
         let r = p.handle(FieldEvent::Release, &c);
-        let [Intent::SetNode {
-            before,
-            after,
-            props,
-            ..
-        }] = r.intents.as_slice()
+        let [Intent::PutBack { node: stored, .. }, Intent::SetNode { after, props, .. }] =
+            r.intents.as_slice()
         else {
-            panic!("one record: {r:?}")
+            panic!("the stored node back, then one record: {r:?}")
         };
-        assert_eq!(before.as_ref().unwrap().transform.translation.x, 1.0);
+        assert_eq!(stored.transform.translation.x, 0.0);
         assert!((after.transform.translation.x - 1.2).abs() < 1e-6);
         assert_eq!(props, &[Property::Translation]);
         assert!(!p.pressed());
@@ -409,10 +427,10 @@ mod tests {
         p.handle(FieldEvent::Press { field: tx, x: 5.0 }, &c);
         p.handle(FieldEvent::Move { x: 25.0 }, &c);
         let r = p.handle(FieldEvent::Cancel, &c);
-        let Some(Intent::PreviewNode { node, .. }) = r.intents.last() else {
-            panic!("Esc puts the node back: {r:?}")
+        let Some(Intent::PutBack { node, .. }) = r.intents.last() else {
+            panic!("Esc puts the stored node back: {r:?}")
         };
-        assert_eq!(node.transform.translation.x, 1.0);
+        assert_eq!(node.transform.translation.x, 0.0);
         // A light's intensity typed above 1 is kept at 1 and said so.
         let mut lc = ctx();
         lc.node = Some((NodeId(1), Node::new("L", NodeKind::Light(Light::spot()))));
@@ -422,14 +440,10 @@ mod tests {
         };
         let r = p.handle(typed, &lc);
         let set = r.intents.iter().find_map(|i| match i {
-            Intent::SetNode { after, before, .. } => Some((after, before)),
+            Intent::SetNode { after, .. } => Some(after),
             _ => None,
         });
-        let (after, before) = set.expect("recorded");
-        assert_eq!(
-            (after.light().unwrap().intensity, before.is_none()),
-            (1.0, true)
-        );
+        assert_eq!(set.expect("recorded").light().unwrap().intensity, 1.0);
         assert!(
             matches!(r.intents.last(), Some(Intent::Status(s, false)) if s.contains("set to 1"))
         );

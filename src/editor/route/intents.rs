@@ -102,21 +102,12 @@ impl Editor {
                 Intent::RenameClip(name) => self.rename_clip(&name),
                 // The node face and the scene section (`node_props.rs`,
                 // `scene_section.rs`).
-                Intent::PreviewNode { id, node } => self.preview(&Command::SetNode {
-                    id,
-                    before: Box::new(self.scene.node(id).clone()),
-                    after: node,
-                }),
                 Intent::SetNode {
                     label,
                     id,
-                    before,
                     after,
                     props,
                 } => {
-                    if let Some(b) = before {
-                        self.scene.nodes[id.0 as usize] = *b;
-                    }
                     let before = Box::new(self.scene.node(id).clone());
                     let c = self.recorded(Command::SetNode { id, before, after }, &props);
                     self.execute(&label, c);

@@ -25,6 +25,7 @@ impl Editor {
     pub(in crate::internals::editor) fn node_ctx(&self) -> NodeCtx {
         NodeCtx {
             node: self.selection.map(|s| (s, self.posed_node(s))),
+            stored: self.selection.map(|s| self.scene.node(s).clone()),
             morph_rows: self.morph_rows(),
             key_lines: self.key_list_lines(),
             rows_shown: self.side_panel().prop_rows_shown(),
