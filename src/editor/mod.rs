@@ -116,6 +116,9 @@ struct Playback {
 struct SceneLayer {
     key: Option<LayerKey>,
     frame: Frame,
+    /// The picture with the selection outlined (`sel_outline.rs`), made
+    /// again when the layer or the selection changes.
+    outlined: Option<sel_outline::Outlined>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -263,6 +266,7 @@ impl Editor {
             layer: SceneLayer {
                 key: None,
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
+                outlined: None,
             },
             painter: Painter::new(),
             rig: rig::state::RigState::default(),
