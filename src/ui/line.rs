@@ -69,10 +69,10 @@ pub fn wu_line(
 /// `y.floor() as i64` without a libm call (the SSE2 baseline has no
 /// rounding instruction, and this runs twice per grid pixel): truncation,
 /// one less for negative non-integers. Exact for every finite `f32`: past
-/// 2^23 every float is an integer, and `as` saturates like the original.
+/// 2^23 every float is an integer, and both saturate at `i64::MIN`.
 fn floor(y: f32) -> i64 {
     let t = y as i64;
-    t - ((t as f32) > y) as i64
+    t.saturating_sub(((t as f32) > y) as i64)
 }
 
 #[cfg(test)]
