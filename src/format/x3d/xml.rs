@@ -24,6 +24,10 @@ use std::rc::Rc;
 
 type PResult<T> = Result<T, (Pos, String)>;
 
+/// A node's interface (X3D's table, a ProtoDeclare's fields, a Script's
+/// declarations), shared.
+type Iface = Rc<Vec<Typed>>;
+
 /// Whether the bytes look like an X3D XML document (an XML declaration or
 /// an `<X3D` root, after any byte-order mark, blanks and comments).
 pub fn is_xml(bytes: &[u8]) -> bool {
@@ -41,7 +45,7 @@ struct Scope {
     routes: Vec<Route>,
     /// Each DEF name's node type as the file wrote it (before the rewrite)
     /// and its interface when known: what ROUTEs are checked against.
-    kinds: HashMap<String, (String, Option<Rc<Vec<Typed>>>)>,
+    kinds: HashMap<String, (String, Option<Iface>)>,
     /// The typed interfaces of this scope's ProtoDeclares.
     proto_ifaces: HashMap<String, Rc<Vec<Typed>>>,
 }
