@@ -15,6 +15,7 @@
 //! primitives in scene order, so the bytes never depend on the thread count.
 
 mod background;
+mod blend_samples;
 pub mod band_trace;
 pub mod bench_scenes;
 mod clip;
