@@ -5,10 +5,10 @@
 //! tile owns its pixels, so tiles can run on any thread in any order and the
 //! picture stays the same.
 
+use super::blend_samples;
 use super::clip::ATTRS;
 use super::fragment::{store_masked, Leftover, Pass, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
-use super::blend_samples;
 use super::samples::SamplePlanes;
 use super::shade::shade;
 use super::shading;
@@ -749,7 +749,11 @@ fn resolve_tile_in<V: V8>(rect: Rect, scratch: &Scratch, target: &mut Target) {
             // Eight at a time (tile rows are TILE long, so the last block
             // may read past `tw` but only `tw` pixels are written).
             for k in (0..tw).step_by(8) {
-                let px = super::frame::pack_rgb8(ld::<V>(r, src + k), ld::<V>(g, src + k), ld::<V>(b, src + k));
+                let px = super::frame::pack_rgb8(
+                    ld::<V>(r, src + k),
+                    ld::<V>(g, src + k),
+                    ld::<V>(b, src + k),
+                );
                 put8(&mut target.color[dst + k..dst + tw], &px);
                 if !depth_and_ids {
                     continue;
