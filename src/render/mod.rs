@@ -17,6 +17,7 @@
 mod background;
 pub mod band_trace;
 pub mod bench_scenes;
+mod blend_samples;
 mod clip;
 mod coin_bounds;
 mod fragment;
