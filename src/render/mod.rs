@@ -41,6 +41,7 @@ mod texel_filter;
 mod texture;
 mod texture_lanes;
 mod tri_gradients;
+mod trilinear16;
 mod view;
 
 pub use frame::{pack_rgb, Frame};
