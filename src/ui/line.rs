@@ -89,7 +89,7 @@ mod tests {
             (9.5, 2.5),
             0xffffff,
             1.0,
-            &|_| true,
+            |_| true,
         );
         assert!(buf[20..30].iter().all(|&c| c == 0xffffff));
         assert!(buf[10..20].iter().all(|&c| c == 0));
@@ -105,7 +105,7 @@ mod tests {
             (60.0, 60.0),
             0xff0000,
             1.0,
-            &|i| i % 2 == 0,
+            |i| i % 2 == 0,
         );
         assert!(buf.iter().enumerate().all(|(i, &c)| i % 2 == 0 || c == 0));
         assert!(buf.iter().any(|&c| c != 0));
