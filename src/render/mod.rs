@@ -17,6 +17,7 @@
 mod background;
 pub mod band_trace;
 pub mod bench_scenes;
+mod blend_samples;
 mod clip;
 mod coin_bounds;
 mod fragment;
@@ -40,6 +41,7 @@ mod texel_filter;
 mod texture;
 mod texture_lanes;
 mod tri_gradients;
+mod trilinear16;
 mod view;
 
 pub use frame::{pack_rgb, Frame};
