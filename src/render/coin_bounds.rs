@@ -224,7 +224,8 @@ pub(super) fn label_world(
     units_per_pixel: f32,
     picture: (u32, u32),
 ) -> Option<(Vec3, Vec3)> {
-    if units_per_pixel <= 0.0 {
+    // NaN or infinite scales too (speed's review).
+    if !units_per_pixel.is_finite() || units_per_pixel <= 0.0 {
         return None;
     }
     let (lo, hi) = points_bounds(positions)?;

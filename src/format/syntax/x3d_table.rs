@@ -865,7 +865,8 @@ const NODES: &[(&str, &str)] = &[
 /// or `None` for any other name (PROTOs, vendor extensions, components
 /// not in the table).
 pub fn builtin(kind: &str) -> Option<Vec<Entry>> {
-    let (_, fields) = NODES.iter().find(|(k, _)| *k == kind)?;
+    let at = NODES.binary_search_by(|(k, _)| (*k).cmp(kind)).ok()?;
+    let fields = NODES[at].1;
     let mut out = vec![(Access::Exposed, "SFNode", "metadata")];
     out.extend(fields.split_whitespace().filter_map(entry));
     Some(out)

@@ -601,7 +601,11 @@ impl Reader<'_, '_> {
             proto: None,
             height,
         };
-        let iface = xml_checks::builtin(tag, &declared);
+        // Kept only where a ROUTE or a connect can need it.
+        let needed = node_def_or_connects(e, &connects);
+        let iface = needed
+            .then(|| xml_checks::builtin(tag, &declared))
+            .flatten();
         self.check_connects(tag, iface.as_deref().map(|v| v.as_slice()), &connects);
         let head = self.parsed.x3d.clone();
         nodes::rewrite(&mut node, &head, &mut self.parsed.warnings);
@@ -862,6 +866,12 @@ impl Reader<'_, '_> {
         self.scope().routes.extend(routes);
         Ok(Some(Rc::new(node)))
     }
+}
+
+/// Whether an element's interface can be needed: it has a DEF (ROUTEs
+/// name it) or `<connect>`s.
+fn node_def_or_connects(e: Node, connects: &[(String, String, Pos)]) -> bool {
+    e.attribute("DEF").is_some() || !connects.is_empty()
 }
 
 /// Counts a field value's numbers and strings against the input budget.

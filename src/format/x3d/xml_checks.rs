@@ -42,10 +42,9 @@ pub(super) fn attribute_problems(kind: &str, fields: &[Field]) -> Vec<(Pos, Stri
     if x3d_table::declares_fields(kind) {
         return Vec::new();
     }
-    let Some(iface) = builtin(kind, &[]) else {
+    let Some(iface) = x3d_table::builtin(kind) else {
         return Vec::new();
     };
-    let iface = view(&iface);
     fields
         .iter()
         .filter(|f| !matches!(f.value, Value::Nodes(_) | Value::Is(_)))
