@@ -3,10 +3,10 @@
 //! edge behind the outline). Classifying every viewport pixel by looking
 //! at its 5×5 neighbourhood cost more than half of an editor frame at
 //! 1280×720, so this works only inside the mask's bounding box grown by
-//! two pixels and finds the neighbourhoods by separable dilation: a row
-//! pass (3 and 5 wide, from running counts) then a column pass (rows
-//! ORed). The rings are the same as the neighbourhood test's, pixel for
-//! pixel.
+//! two pixels and finds the neighbourhoods by separable dilation on bit
+//! rows (64 pixels a word): a row pass (3 and 5 wide, shifts carried
+//! across words) then a column pass (rows ORed). The rings are the same
+//! as the neighbourhood test's, pixel for pixel.
 
 /// Where a pixel lies relative to the selection's silhouette.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,52 +30,65 @@ pub fn for_each_ring(mask: &[bool], w: usize, h: usize, mut put: impl FnMut(usiz
     let (y0, y1) = (by0.saturating_sub(2), (by1 + 2).min(h - 1));
     let rw = x1 - x0 + 1;
     let rows = y1 - y0 + 1;
-    // Row pass: whether a set pixel lies within 1 (near) or 2 (wide)
-    // columns, from a running count along the row (columns outside the
-    // grown box hold no set pixel).
-    let mut near = vec![false; rw * rows];
-    let mut wide = vec![false; rw * rows];
-    let mut count = vec![0u32; rw + 1];
+    // 64 columns of the grown box per word, bit b of word i column
+    // 64·i + b; the last word's bits past the box are never reported.
+    let nw = rw.div_ceil(64);
+    let last = if rw % 64 == 0 {
+        !0
+    } else {
+        (1u64 << (rw % 64)) - 1
+    };
+    // Row pass: the set pixels, and whether one lies within 1 (near) or 2
+    // (wide) columns — the row shifted by 1 and 2 each way, carrying
+    // across words (columns outside the grown box hold no set pixel).
+    let mut set = vec![0u64; nw * rows];
+    let mut near = vec![0u64; nw * rows];
+    let mut wide = vec![0u64; nw * rows];
     for ry in 0..rows {
         let src = &mask[(y0 + ry) * w + x0..(y0 + ry) * w + x1 + 1];
-        for (i, &m) in src.iter().enumerate() {
-            count[i + 1] = count[i] + m as u32;
+        let at = ry * nw..(ry + 1) * nw;
+        let bits = &mut set[at.clone()];
+        for (word, chunk) in bits.iter_mut().zip(src.chunks(64)) {
+            *word = chunk
+                .iter()
+                .enumerate()
+                .fold(0, |a, (b, &m)| a | (m as u64) << b);
         }
-        let span = |rx: usize, r: usize| count[(rx + r + 1).min(rw)] > count[rx.saturating_sub(r)];
-        for rx in 0..rw {
-            near[ry * rw + rx] = span(rx, 1);
-            wide[ry * rw + rx] = span(rx, 2);
+        for i in 0..nw {
+            let m = bits[i];
+            let lo = if i > 0 { bits[i - 1] } else { 0 };
+            let hi = bits.get(i + 1).copied().unwrap_or(0);
+            let n = m | (m << 1 | lo >> 63) | (m >> 1 | hi << 63);
+            near[ry * nw + i] = n;
+            wide[ry * nw + i] = n | (m << 2 | lo >> 62) | (m >> 2 | hi << 62);
         }
     }
     // Column pass: the row results of the rows within 1 (2) above and
     // below, ORed; rows outside the grown box hold no set pixel.
-    let mut near_col = vec![false; rw];
-    let mut wide_col = vec![false; rw];
-    let or_rows = |dst: &mut [bool], rows_of: &[bool], ry: usize, r: usize| {
-        dst.fill(false);
-        for y in ry.saturating_sub(r)..=(ry + r).min(rows - 1) {
-            for (d, &s) in dst.iter_mut().zip(&rows_of[y * rw..(y + 1) * rw]) {
-                *d |= s;
-            }
-        }
+    let or_rows = |rows_of: &[u64], ry: usize, r: usize, i: usize| {
+        (ry.saturating_sub(r)..=(ry + r).min(rows - 1)).fold(0, |a, y| a | rows_of[y * nw + i])
     };
     for ry in 0..rows {
-        or_rows(&mut near_col, &near, ry, 1);
-        or_rows(&mut wide_col, &wide, ry, 2);
         let y = y0 + ry;
-        for rx in 0..rw {
-            let ring = if mask[y * w + x0 + rx] {
-                Ring::Inside
-            } else if near_col[rx] {
-                Ring::Near
-            } else if wide_col[rx] {
-                // Nothing within one pixel, so the set pixel within two
-                // lies exactly two away.
-                Ring::Far
-            } else {
-                continue;
-            };
-            put(x0 + rx, y, ring);
+        for i in 0..nw {
+            let inside = set[ry * nw + i];
+            let near_col = or_rows(&near, ry, 1, i);
+            let wide_col = or_rows(&wide, ry, 2, i);
+            let mut any = (inside | wide_col) & if i + 1 == nw { last } else { !0 };
+            while any != 0 {
+                let b = any.trailing_zeros();
+                any &= any - 1;
+                let ring = if inside >> b & 1 == 1 {
+                    Ring::Inside
+                } else if near_col >> b & 1 == 1 {
+                    Ring::Near
+                } else {
+                    // Nothing within one pixel, so the set pixel within
+                    // two lies exactly two away.
+                    Ring::Far
+                };
+                put(x0 + i * 64 + b as usize, y, ring);
+            }
         }
     }
 }
@@ -162,14 +175,24 @@ mod tests {
 
     #[test]
     fn rings_match_the_neighbourhood_test_on_any_mask() {
-        // Masks of several densities and shapes, touching the borders too
-        // (a fixed linear congruential sequence: the same masks every run).
+        // Masks of several densities and shapes, touching the borders too,
+        // some wider than a 64-pixel word (a fixed linear congruential
+        // sequence: the same masks every run).
         let mut seed = 0x2545_f491_u32;
         let mut next = || {
             seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
             seed >> 8
         };
-        for (w, h) in [(1, 1), (1, 7), (9, 1), (13, 11), (32, 5)] {
+        for (w, h) in [
+            (1, 1),
+            (1, 7),
+            (9, 1),
+            (13, 11),
+            (32, 5),
+            (64, 3),
+            (65, 4),
+            (150, 6),
+        ] {
             for density in [0, 2, 20, 128, 250] {
                 let mask: Vec<bool> = (0..w * h).map(|_| next() % 256 < density).collect();
                 let got = rings(&mask, w, h);

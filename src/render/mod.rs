@@ -15,9 +15,9 @@
 //! primitives in scene order, so the bytes never depend on the thread count.
 
 mod background;
-mod blend_samples;
 pub mod band_trace;
 pub mod bench_scenes;
+mod blend_samples;
 mod clip;
 mod coin_bounds;
 mod fragment;
