@@ -24,6 +24,7 @@ pub mod create;
 pub mod dialog;
 pub mod disk;
 mod draw;
+pub mod field_press;
 pub mod fields;
 mod gesture;
 pub mod gizmo;
@@ -41,6 +42,7 @@ pub mod manip;
 pub mod material;
 pub mod menu;
 pub mod motion_path;
+pub mod node_props;
 mod onion;
 pub mod ops;
 pub mod panel;
@@ -50,11 +52,13 @@ pub mod recovery;
 pub mod request;
 pub mod rig;
 mod route;
+pub mod scene_section;
 mod screen;
 pub mod script;
 pub mod search;
 mod sel_outline;
 pub mod shell;
+pub mod side_faces;
 pub mod side_ui;
 mod split;
 mod strip_tips;
@@ -158,8 +162,6 @@ pub struct Editor {
     viewport: viewport_ui::Viewport,
     /// Key strip: selected keys, fold state, clipboard, strip drags.
     keys: keystrip::KeyStrip,
-    /// The key panel (whether "Object" put the node's properties back).
-    key_panel: keypanel::KeyPanel,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
     /// The graph editor (taken out while it handles an event; created
@@ -234,7 +236,6 @@ impl Editor {
             pending: None,
             viewport: viewport_ui::Viewport::default(),
             keys: keystrip::KeyStrip::default(),
-            key_panel: keypanel::KeyPanel::default(),
             onion: onion::Onion::default(),
             graph: None,
             timeline: timeline::Timeline::default(),
