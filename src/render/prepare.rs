@@ -659,7 +659,7 @@ fn screen_triangle(
 /// that (and NaN) take `round` itself.
 #[inline]
 pub fn round_i64(x: f32) -> i64 {
-    if !(x.abs() < (1u64 << 62) as f32) {
+    if x.is_nan() || x.abs() >= (1u64 << 62) as f32 {
         return x.round() as i64;
     }
     let t = x as i64;
