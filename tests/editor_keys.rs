@@ -856,7 +856,8 @@ fn enter_or_clicking_away_with_nothing_typed_records_nothing() {
     assert!(untouched(&ed), "Enter with nothing typed records nothing");
     // A click on another field ends the first one the same way.
     click(&mut ed, tx);
-    click(&mut ed, find(&ed, "Field(Translation(1))"));
+    let ty = find(&ed, "Field(Translation(1))");
+    click(&mut ed, ty);
     let typing = ed.text_edit().map(|e| e.field);
     assert_eq!(typing, Some(FieldId::Translation(1)));
     key(&mut ed, Key::Escape, Mods::NONE);

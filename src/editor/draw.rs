@@ -3,7 +3,8 @@
 
 use super::gesture::Drag;
 use super::panel::{Widget, WidgetKind};
-use super::rig::{clip_ui::ClipField, morph_ui::MorphRows};
+use super::rig::clip_ui::ClipField;
+use super::rig::morph_ui::MorphRows;
 use super::{Editor, Mode};
 use crate::render::Frame;
 use crate::ui::text;

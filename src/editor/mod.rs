@@ -120,6 +120,9 @@ struct Playback {
 struct SceneLayer {
     key: Option<LayerKey>,
     frame: Frame,
+    /// The picture with the selection outlined (`sel_outline.rs`), made
+    /// again when the layer or the selection changes.
+    outlined: Option<sel_outline::Outlined>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -264,6 +267,7 @@ impl Editor {
             layer: SceneLayer {
                 key: None,
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
+                outlined: None,
             },
             painter: Painter::new(),
             rig: rig::state::RigState::default(),
@@ -528,11 +532,15 @@ impl Editor {
         self.disk_stamp = stamp;
     }
 
-    /// Looks at everything drawn (lights too when there is nothing else).
+    /// Looks at everything drawn (lights too when there is nothing else);
+    /// Text2 labels count as `animed render` counts them for a picture of
+    /// the viewport's size.
     pub fn frame_all(&mut self) {
+        let vp = self.layout().viewport;
+        let (w, h) = (vp.w.max(1) as u32, vp.h.max(1) as u32);
         let b = {
             let pose = self.pose().clone();
-            crate::render::scene_bounds(&self.scene, &pose)
+            crate::render::scene_bounds_for_picture(&self.scene, &pose, w, h)
                 .or_else(|| ops::scene_bounds(&self.scene, &pose))
         };
         let (c, r) = ops::sphere(b);

@@ -1,6 +1,7 @@
-//! The side panel's faces that are components of their own — the key
-//! panel, the material rows, the morph sliders, the clip name field —
-//! as one part of [`Side`]: a field event goes to the face whose field
+//! The side panel's faces, each a component of its own — the node rows,
+//! the key panel, the material rows, the morph sliders (inside the node
+//! rows), the scene section and its clip name field — as one part of
+//! [`Side`]: a field event goes to the face whose field
 //! it names (a press, a typed value) or to the face holding the press
 //! (the mouse moved or released, Esc), and the face that shows in the
 //! properties' place paints itself. The editor hands field events to the
@@ -13,7 +14,8 @@ use super::keypanel::{KeyEvent, KeyPanelCtx};
 use super::material::rows_ui::MatCtx;
 use super::node_props::{NodeCtx, NodeProps};
 use super::props_view::{Look, PropsView};
-use super::rig::{clip_ui::ClipCtx, morph_ui::MorphCtx};
+use super::rig::clip_ui::ClipCtx;
+use super::rig::morph_ui::MorphCtx;
 use super::scene_section::{SceneCtx, SceneSection};
 use super::side_ui::Side;
 use crate::ui::Painter;

@@ -21,7 +21,8 @@ use super::node_props::{NodeCtx, NodeProps};
 use super::ops::NewLight;
 use super::panel::{button, label, w, Action, List, Widget, WidgetKind};
 use super::props_view::{Look, PropsView};
-use super::rig::{clip_ui::ClipField, morph_ui::MorphRows};
+use super::rig::clip_ui::ClipField;
+use super::rig::morph_ui::MorphRows;
 use super::scene_section::{SceneCtx, SceneSection};
 use crate::input::{Event, Key, MouseButton};
 use crate::scene::NodeId;
@@ -81,7 +82,6 @@ struct RowDrag {
     to: (f32, f32),
     moved: bool,
 }
-
 
 impl Side {
     /// First visible body row of the properties showing `now`, when

@@ -41,11 +41,12 @@ mod texel_filter;
 mod texture;
 mod texture_lanes;
 mod tri_gradients;
+mod trilinear16;
 mod view;
 
 pub use frame::{pack_rgb, Frame};
 pub use shade::{ShadeMaterial, WorldLight};
-pub use view::{bounding_sphere, scene_bounds, shape_bounds, View};
+pub use view::{bounding_sphere, scene_bounds, scene_bounds_for_picture, shape_bounds, View};
 
 use crate::anim::Pose;
 use crate::scene::{RenderStyle, Scene};

@@ -24,8 +24,8 @@ pub fn shade_visible(pass: &Pass, vis: &Visible, out: &mut Shaded) {
 fn shade_visible_isa<const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx512() {
-        // SAFETY: `simd::avx512()` checked that the CPU has AVX-512F/VL
-        // (and so AVX).
+        // SAFETY: `simd::avx512()` checked that the CPU has AVX-512
+        // F/VL/BW/DQ (and so AVX).
         unsafe { shade_visible_avx512::<TEX>(pass, vis, out) };
         return;
     }
@@ -63,6 +63,6 @@ macro_rules! avx_entry {
 avx_entry!(
     /// The AVX path compiled with AVX-512's 32 registers (see `simd::avx512`).
     shade_visible_avx512,
-    "avx,avx2,avx512f,avx512vl"
+    "avx,avx2,avx512f,avx512vl,avx512bw,avx512dq"
 );
 avx_entry!(shade_visible_avx, "avx");

@@ -581,7 +581,8 @@ mod avx_lanes {
 }
 
 /// Whether the AVX-512 register file may serve the AVX path: the CPU has
-/// AVX-512F and VL, and `ANIMED_SIMD` is neither `sse2` nor `avx`. The
+/// AVX-512F, VL, BW and DQ (every CPU with VL has all four; the texture
+/// sampler's 16-lane pass, `trilinear16`, uses BW's 16-bit lanes), and `ANIMED_SIMD` is neither `sse2` nor `avx`. The
 /// same eight-lane AVX instructions then get 32 registers instead of 16
 /// (the lighting of a [`crate::render::lanes::Pair`] no longer spills);
 /// nothing fused is ever emitted (Rust never contracts a multiply and an
@@ -596,6 +597,8 @@ pub fn avx512() -> bool {
             !forced_off
                 && std::arch::is_x86_feature_detected!("avx512f")
                 && std::arch::is_x86_feature_detected!("avx512vl")
+                && std::arch::is_x86_feature_detected!("avx512bw")
+                && std::arch::is_x86_feature_detected!("avx512dq")
         }
         #[cfg(not(target_arch = "x86_64"))]
         {

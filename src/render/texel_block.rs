@@ -16,12 +16,14 @@ use super::simd::{Lanes, V8};
 use super::texel_fetch::{fetch4, fetch_pairs};
 use super::texel_filter::{bilerp, UNIT};
 use super::texture::Sampler;
+#[cfg(target_arch = "x86_64")]
+use super::trilinear16;
 use crate::scene::{MipLevel, Wrap};
 
 /// The filtered alpha of four texels of alpha 255: `bilerp` gives
 /// 255·256 for any weights, then × [`UNIT`] (const arithmetic is IEEE
 /// f32, the same as at run time). Blending two levels of it gives it again.
-const OPAQUE: f32 = (255.0 * 256.0) * UNIT;
+pub(super) const OPAQUE: f32 = (255.0 * 256.0) * UNIT;
 
 /// Largest level (in texels) whose addresses stay exact in f32 lanes.
 const EXACT_TEXELS: u64 = 1 << 24;
@@ -30,9 +32,12 @@ impl Sampler {
     /// The trilinear texel of eight lanes when they share their level pair,
     /// `None` otherwise (or for levels too large to address in f32). `lod`
     /// is each lane's level of detail (finite, ≥ 0); `u`, `v` the
-    /// untransformed coordinates.
+    /// untransformed coordinates. With `wide` (which the caller checked
+    /// with `simd::avx512()`) two levels blend in one 16-lane AVX-512 pass
+    /// (`trilinear16`), else in two eight-lane passes: the same bits
+    /// either way.
     #[inline(always)]
-    pub(super) fn texel8_one_level<V: V8>(&self, lod: V, u: V, v: V) -> Option<[V; 4]> {
+    pub(super) fn texel8_one_level<V: V8>(&self, lod: V, u: V, v: V, wide: bool) -> Option<[V; 4]> {
         let levels = self.image().levels();
         let last = levels.len() - 1;
         // `Sampler::sample`'s choice: level `lod as usize` and the next,
@@ -48,14 +53,31 @@ impl Sampler {
             return None;
         }
         let (s, t) = self.reduce8(u, v);
-        let a = self.bilinear_level8(level, s, t);
-        if i == last {
-            return Some(a);
-        }
         // `lod − i as f32`; a block that needs no blending (all magnified,
         // or exactly on a level) reads one level, as `sample` does.
         let f = lod - V::splat(i as f32);
-        if f.eq(V::splat(0.0)).bits() == 0xFF {
+        let blend = i != last && f.eq(V::splat(0.0)).bits() != 0xFF;
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = wide;
+        #[cfg(target_arch = "x86_64")]
+        if blend && wide {
+            let (sa, ta, fa) = (to_arr(s), to_arr(t), to_arr(f));
+            let levels = [level, &levels[i + 1]];
+            let wrap = [self.wrap_s(), self.wrap_t()];
+            // SAFETY: the caller checked `simd::avx512()` (AVX-512 F, VL,
+            // BW, DQ); the finer level holds at most 2²⁴ texels (above).
+            let out = unsafe { trilinear16::sample(levels, &sa, &ta, &fa, wrap, !self.opaque()) };
+            // (Not `out.map(..)`: a closure lacks the caller's target
+            // features, and `V::load` inside it becomes a call.)
+            return Some([
+                V::load(&out[0]),
+                V::load(&out[1]),
+                V::load(&out[2]),
+                V::load(&out[3]),
+            ]);
+        }
+        let a = self.bilinear_level8(level, s, t);
+        if !blend {
             return Some(a);
         }
         let b = self.bilinear_level8(&levels[i + 1], s, t);
@@ -187,6 +209,15 @@ pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V, alpha: bool) -
     ]
 }
 
+/// The lanes as an array.
+#[cfg(any(target_arch = "x86_64", test))]
+#[inline(always)]
+fn to_arr<V: V8>(v: V) -> [f32; 8] {
+    let mut a = [0.0; 8];
+    v.store(&mut a);
+    a
+}
+
 /// A mask of the finite lanes.
 #[inline(always)]
 fn finite<V: V8>(x: V) -> V {
@@ -246,6 +277,10 @@ mod tests {
             (seed >> 8) as f32 / (1u32 << 24) as f32
         };
         let mut taken = [0usize; 3];
+        let wide = crate::render::simd::avx512();
+        if !wide {
+            eprintln!("shared_level_blocks_match_one_pixel_bit_for_bit: no AVX-512 here, trilinear16 NOT tested");
+        }
         for (w, h, a) in [(64, 32, 11), (50, 30, 11), (7, 1, 11), (40, 24, 0)] {
             let img = image(w, h, [53, 29, a]);
             assert_eq!(img.has_alpha(), a != 0);
@@ -276,7 +311,21 @@ mod tests {
                         s.lod(Vec2::new(lanes[2][k], 0.0), Vec2::new(0.0, lanes[5][k]))
                     });
                     let (u, v) = (Sse8::load(&lanes[0]), Sse8::load(&lanes[1]));
-                    if s.texel8_one_level(Sse8::load(&lods), u, v).is_some() {
+                    let lod = Sse8::load(&lods);
+                    // Two eight-lane passes and the 16-lane AVX-512 pass
+                    // give the same bits (`assert_lanes_match` above took
+                    // the path this CPU runs).
+                    if wide {
+                        let bits = |o: Option<[Sse8; 4]>| {
+                            o.map(|c| c.map(|v| to_arr(v).map(f32::to_bits)))
+                        };
+                        assert_eq!(
+                            bits(s.texel8_one_level(lod, u, v, false)),
+                            bits(s.texel8_one_level(lod, u, v, true)),
+                            "{w}x{h} {wrap:?} round {round}: 8 vs 16 lanes"
+                        );
+                    }
+                    if s.texel8_one_level(lod, u, v, wide).is_some() {
                         taken[round % 3] += 1;
                     } else {
                         assert!(
@@ -298,8 +347,8 @@ mod tests {
         let s = Sampler::new(&Texture::new(ImageId(0)), &img);
         let lod = Sse8::load(&[0.5, 0.5, 0.5, 1.5, 0.5, 0.5, 0.5, 0.5]);
         let z = Sse8::splat(0.3);
-        assert!(s.texel8_one_level(lod, z, z).is_none());
+        assert!(s.texel8_one_level(lod, z, z, false).is_none());
         let lod = Sse8::load(&[0.5, 0.0, 0.25, 0.75, 0.5, 0.5, 0.5, 0.999]);
-        assert!(s.texel8_one_level(lod, z, z).is_some());
+        assert!(s.texel8_one_level(lod, z, z, false).is_some());
     }
 }

@@ -36,8 +36,18 @@ pub struct UvIn<V> {
 
 impl Sampler {
     /// [`Sampler::texel`] for eight lanes, as R, G, B, A lanes in 0..1.
+    /// Inlined into the shading loop: called once per block as a function
+    /// (inputs and outputs through memory), the sampler measured 8 % slower.
     #[inline(always)]
     pub fn texel8<V: V8>(&self, uv: &UvIn<V>) -> [V; 4] {
+        self.texel8_in(uv, super::simd::avx512())
+    }
+
+    /// [`Sampler::texel8`]'s work; `wide`: blend two levels in one 16-lane
+    /// pass (`trilinear16`, only after `simd::avx512()` said yes; a test
+    /// compares both ways).
+    #[inline(always)]
+    fn texel8_in<V: V8>(&self, uv: &UvIn<V>, wide: bool) -> [V; 4] {
         // No closures over lanes here: a closure lacks the caller's AVX
         // target feature, and lane operations inside it become calls.
         let base = self.image().base();
@@ -65,7 +75,7 @@ impl Sampler {
         } else {
             (V::splat(0.5) * log2_fast8(safe)).keep(in_range)
         };
-        if let Some(out) = self.texel8_one_level(lod, uv.u, uv.v) {
+        if let Some(out) = self.texel8_one_level(lod, uv.u, uv.v, wide) {
             return out;
         }
         let lods = to_arr(lod);

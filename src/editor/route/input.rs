@@ -479,16 +479,13 @@ impl Editor {
 
     /// Esc during a drag: put back what the drag changed.
     pub(in crate::internals::editor) fn cancel_drag(&mut self) {
-        match self.drag {
-            Drag::Side => {
-                let esc = Event::KeyDown {
-                    key: Key::Escape,
-                    mods: Mods::NONE,
-                };
-                self.side_mouse(&esc);
-                return;
-            }
-            _ => {}
+        if let Drag::Side = self.drag {
+            let esc = Event::KeyDown {
+                key: Key::Escape,
+                mods: Mods::NONE,
+            };
+            self.side_mouse(&esc);
+            return;
         }
         let drag = std::mem::take(&mut self.drag);
         if let Drag::Viewport = drag {

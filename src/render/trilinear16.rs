@@ -1,0 +1,293 @@
+//! Trilinear sampling of eight pixels that share a mip level pair with
+//! both levels in ONE 16-lane AVX-512 pass: lanes 0..8 are the pixels in
+//! the finer level, lanes 8..16 the same pixels in the coarser one.
+//!
+//! Why: after the level of detail, a trilinear lookup is two bilinear
+//! lookups doing identical work on different level sizes. Eight-lane code
+//! (`texel_block`) runs that work twice and passes corners and channels
+//! through memory; here the footprint, the wraps, the texel addresses and
+//! the fetch (one `vpermt2d` per corner row reads both levels' windows)
+//! run once on zmm registers, and the fixed-point filter runs on 16-bit
+//! lanes (`vpmullw`: two channels of sixteen texels per register) instead
+//! of the 32-bit multiplies of `texel_filter::bilerp`.
+//!
+//! Same bits as `texel_block`'s eight-lane path and the one-pixel
+//! `Sampler::bilinear`: the float steps are the same IEEE operations in
+//! the same order (no fused multiply-add), the wraps give the same whole
+//! numbers, and the filter is `bilerp`'s arithmetic, whose every product
+//! and sum fits a 16-bit half (see `texel_filter`), so splitting the
+//! 32-bit words into 16-bit lanes changes no result. Only callers that
+//! checked [`super::simd::avx512`] (AVX-512 F, VL, BW and DQ) may call in.
+
+#[cfg(target_arch = "x86_64")]
+pub use imp::sample;
+
+#[cfg(target_arch = "x86_64")]
+mod imp {
+    use crate::render::texel_block::OPAQUE;
+    use crate::render::texel_fetch::{fetch4, fetch_pairs};
+    use crate::render::texel_filter::UNIT;
+    use crate::scene::{MipLevel, Wrap};
+    use std::arch::x86_64::*;
+
+    /// The trilinear RGBA (R, G, B, A lanes in 0..1) of eight pixels at
+    /// reduced coordinates `s`, `t` (`Sampler::reduce8`) between `levels[0]`
+    /// and `levels[1]` (the next level), blended by `f` (λ minus the finer
+    /// level's index). `alpha`: filter the alpha channel (else it is
+    /// `OPAQUE`). The finer level must hold at most 2²⁴ texels (addresses
+    /// are exact f32 whole numbers).
+    #[target_feature(enable = "avx,avx2,avx512f,avx512vl,avx512bw,avx512dq")]
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub fn sample(
+        levels: [&MipLevel; 2],
+        s: &[f32; 8],
+        t: &[f32; 8],
+        f: &[f32; 8],
+        wrap: [Wrap; 2],
+        alpha: bool,
+    ) -> [[f32; 8]; 4] {
+        let size = |l: &MipLevel| (l.width() as f32, l.height() as f32);
+        let ((wa, ha), (wb, hb)) = (size(levels[0]), size(levels[1]));
+        // SAFETY: 8 × 4-byte loads from arrays of 8 f32.
+        let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+        let (s, t) = (twice(s), twice(t));
+        let (w, h) = (halves(wa, wb), halves(ha, hb));
+        // `Sampler::footprint8`, operation for operation.
+        let half = _mm512_set1_ps(0.5);
+        let x = _mm512_sub_ps(_mm512_mul_ps(s, w), half);
+        let y = _mm512_sub_ps(
+            _mm512_mul_ps(_mm512_sub_ps(_mm512_set1_ps(1.0), t), h),
+            half,
+        );
+        const DOWN: i32 = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
+        let (x0, y0) = (
+            _mm512_roundscale_ps::<DOWN>(x),
+            _mm512_roundscale_ps::<DOWN>(y),
+        );
+        let (fx, fy) = (_mm512_sub_ps(x, x0), _mm512_sub_ps(y, y0));
+        let two = _mm512_set1_ps(-2.0);
+        let x0 = _mm512_min_ps(_mm512_max_ps(x0, two), w);
+        let y0 = _mm512_min_ps(_mm512_max_ps(y0, two), h);
+        let (xa, xb) = wrap2(x0, w, wrap[0]);
+        let (ya, yb) = wrap2(y0, h, wrap[1]);
+        // Texel addresses (exact: whole numbers below 2²⁴).
+        let (ra, rb) = (_mm512_mul_ps(ya, w), _mm512_mul_ps(yb, w));
+        let top = _mm512_cvttps_epi32(_mm512_add_ps(ra, xa));
+        let bottom = _mm512_cvttps_epi32(_mm512_add_ps(rb, xa));
+        let pairs = _mm512_cmp_ps_mask::<_CMP_EQ_OQ>(_mm512_sub_ps(xb, xa), _mm512_set1_ps(1.0));
+        let windows = if pairs == 0xFFFF {
+            match (window(levels, top), window(levels, bottom)) {
+                (Some((tl, tr)), Some((bl, br))) => Some([tl, tr, bl, br]),
+                _ => None,
+            }
+        } else {
+            None
+        };
+        let corners = match windows {
+            Some(c) => c,
+            None => {
+                let tr = _mm512_cvttps_epi32(_mm512_add_ps(ra, xb));
+                let br = _mm512_cvttps_epi32(_mm512_add_ps(rb, xb));
+                gather(levels, pairs == 0xFFFF, [top, tr, bottom, br])
+            }
+        };
+        let [rb, ga] = bilerp16(corners, weights(fx), weights(fy));
+        // Channels to 0..1, then the level blend a + (b − a)·f per channel.
+        // SAFETY: an 8 × 4-byte load from an array of 8 f32.
+        let f = unsafe { _mm256_loadu_ps(f.as_ptr()) };
+        let low = |p: __m512i| _mm512_and_si512(p, _mm512_set1_epi32(0xFFFF));
+        let high = |p: __m512i| _mm512_srli_epi32::<16>(p);
+        let mut out = [[0.0f32; 8]; 4];
+        let chans = [low(rb), low(ga), high(rb), high(ga)];
+        for (o, &c) in out.iter_mut().zip(&chans).take(if alpha { 4 } else { 3 }) {
+            let v = _mm512_mul_ps(_mm512_cvtepi32_ps(c), _mm512_set1_ps(UNIT));
+            let (a, b) = (_mm512_castps512_ps256(v), _mm512_extractf32x8_ps::<1>(v));
+            let v = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), f));
+            // SAFETY: an 8 × 4-byte store into an array of 8 f32.
+            unsafe { _mm256_storeu_ps(o.as_mut_ptr(), v) };
+        }
+        if !alpha {
+            out[3] = [OPAQUE; 8];
+        }
+        out
+    }
+
+    /// The four corners by per-level fetches (`texel_fetch`): for blocks
+    /// whose rows span more than sixteen texels or cross a wrap seam
+    /// (`pairs`: no lane does; then the right corners are read beside the
+    /// left ones). Out of line, so that [`sample`] stays small enough to
+    /// inline into the shading loop.
+    #[target_feature(enable = "avx,avx2,avx512f,avx512vl")]
+    #[inline(never)]
+    #[cold]
+    fn gather(levels: [&MipLevel; 2], pairs: bool, idx: [__m512i; 4]) -> [__m512i; 4] {
+        let idx = [
+            lanes8(idx[0]),
+            lanes8(idx[1]),
+            lanes8(idx[2]),
+            lanes8(idx[3]),
+        ];
+        let level = |l: usize| {
+            let px = levels[l].pixels();
+            if pairs {
+                fetch_pairs(px, &idx[0][l], &idx[2][l])
+            } else {
+                fetch4(px, &[idx[0][l], idx[1][l], idx[2][l], idx[3][l]])
+            }
+        };
+        join(&level(0), &level(1))
+    }
+
+    /// Eight lanes in both halves.
+    #[target_feature(enable = "avx512f,avx512dq")]
+    #[inline]
+    fn twice(v: __m256) -> __m512 {
+        _mm512_insertf32x8::<1>(_mm512_castps256_ps512(v), v)
+    }
+
+    /// `a` in the lower eight lanes, `b` in the upper eight.
+    #[target_feature(enable = "avx512f,avx512dq")]
+    #[inline]
+    fn halves(a: f32, b: f32) -> __m512 {
+        _mm512_insertf32x8::<1>(_mm512_set1_ps(a), _mm256_set1_ps(b))
+    }
+
+    /// `texel_block::wrap2` on sixteen lanes of whole numbers in −2..=n:
+    /// the texel indices i and i + 1 wrapped into 0..n. Repeat takes one
+    /// period up or down, then (for n = 1, where that is not enough) the
+    /// clamp to 0..=n − 1; i + 1 is then the wrapped i plus one, or 0 at
+    /// n — the same whole numbers as wrapping i + 1 itself.
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    fn wrap2(i: __m512, n: __m512, mode: Wrap) -> (__m512, __m512) {
+        let (zero, one) = (_mm512_setzero_ps(), _mm512_set1_ps(1.0));
+        let last = _mm512_sub_ps(n, one);
+        match mode {
+            Wrap::Clamp => {
+                let j = _mm512_add_ps(i, one);
+                (
+                    _mm512_min_ps(_mm512_max_ps(i, zero), last),
+                    _mm512_min_ps(_mm512_max_ps(j, zero), last),
+                )
+            }
+            _ => {
+                let below = _mm512_cmp_ps_mask::<_CMP_LT_OQ>(i, zero);
+                let above = _mm512_cmp_ps_mask::<_CMP_LE_OQ>(n, i);
+                let once = _mm512_mask_add_ps(i, below, i, n);
+                let once = _mm512_mask_sub_ps(once, above, once, n);
+                let a = _mm512_min_ps(_mm512_max_ps(once, zero), last);
+                let j = _mm512_add_ps(a, one);
+                let seam = _mm512_cmp_ps_mask::<_CMP_EQ_OQ>(j, n);
+                (a, _mm512_mask_mov_ps(j, seam, zero))
+            }
+        }
+    }
+
+    /// Sub-texel fractions as 8-bit weights (`texel_filter::weight`:
+    /// f·256 + ½, truncated) in both 16-bit halves of each lane.
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    fn weights(f: __m512) -> __m512i {
+        let w = _mm512_cvttps_epi32(_mm512_add_ps(
+            _mm512_mul_ps(f, _mm512_set1_ps(256.0)),
+            _mm512_set1_ps(0.5),
+        ));
+        _mm512_or_si512(w, _mm512_slli_epi32::<16>(w))
+    }
+
+    /// `texel_filter::bilerp` on sixteen lanes of RGBA8 corners (top left,
+    /// top right, bottom left, bottom right) with weights from
+    /// [`weights`]: `[R | B << 16, G | A << 16]` per lane, each channel in
+    /// 0..=255·256. Every product and sum fits its 16-bit half, so the
+    /// 16-bit multiplies give `bilerp`'s words exactly.
+    #[target_feature(enable = "avx512f,avx512bw")]
+    #[inline]
+    fn bilerp16(c: [__m512i; 4], wx: __m512i, wy: __m512i) -> [__m512i; 2] {
+        let unit = _mm512_set1_epi16(256);
+        let (ix, iy) = (_mm512_sub_epi16(unit, wx), _mm512_sub_epi16(unit, wy));
+        let round = _mm512_set1_epi16(0x80);
+        let lowbytes = _mm512_set1_epi32(0x00FF_00FF);
+        let rb = |w: __m512i| _mm512_and_si512(w, lowbytes);
+        let ga = |w: __m512i| _mm512_srli_epi16::<8>(w);
+        // Horizontal: 8.8 fixed point per channel, rounded to 8 bits.
+        let row = |a: __m512i, b: __m512i| {
+            let sum = _mm512_add_epi16(_mm512_mullo_epi16(a, ix), _mm512_mullo_epi16(b, wx));
+            _mm512_srli_epi16::<8>(_mm512_add_epi16(sum, round))
+        };
+        let (top_rb, top_ga) = (row(rb(c[0]), rb(c[1])), row(ga(c[0]), ga(c[1])));
+        let (bot_rb, bot_ga) = (row(rb(c[2]), rb(c[3])), row(ga(c[2]), ga(c[3])));
+        // Vertical: 8 bits times a weight, up to 255·256 per channel.
+        let col = |a: __m512i, b: __m512i| {
+            _mm512_add_epi16(_mm512_mullo_epi16(a, iy), _mm512_mullo_epi16(b, wy))
+        };
+        [col(top_rb, bot_rb), col(top_ga, bot_ga)]
+    }
+
+    /// Both levels' texel pairs of one corner row (`i`: left texel indices,
+    /// lanes 0..8 in the finer level, 8..16 in the coarser) when each
+    /// level's eight pairs lie within sixteen texels of the smaller of its
+    /// first and last lane's: two 64-byte loads and one two-table
+    /// `vpermt2d` per side; `None` otherwise (the caller gathers).
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    fn window(levels: [&MipLevel; 2], i: __m512i) -> Option<(__m512i, __m512i)> {
+        let l = lanes8(i);
+        let first = [l[0][0].min(l[0][7]), l[1][0].min(l[1][7])];
+        let fits = |k: usize| first[k] >= 0 && first[k] as usize + 16 <= levels[k].pixels().len();
+        if !fits(0) || !fits(1) {
+            return None;
+        }
+        let start =
+            _mm512_inserti64x4::<1>(_mm512_set1_epi32(first[0]), _mm256_set1_epi32(first[1]));
+        let rel = _mm512_sub_epi32(i, start);
+        // Every lane in 0..=14 (unsigned: negative lanes fail), so lane
+        // k's pair is words rel[k] and rel[k] + 1 of its level's sixteen.
+        if _mm512_cmple_epu32_mask(rel, _mm512_set1_epi32(14)) != 0xFFFF {
+            return None;
+        }
+        // SAFETY: texels first[k]..first[k] + 16 lie inside level k
+        // (checked above); each load reads exactly those 64 bytes.
+        let (ta, tb) = unsafe {
+            (
+                _mm512_loadu_si512(levels[0].pixels().as_ptr().add(first[0] as usize).cast()),
+                _mm512_loadu_si512(levels[1].pixels().as_ptr().add(first[1] as usize).cast()),
+            )
+        };
+        // Indices 16..32 pick from the second table (the coarser level).
+        let idx = _mm512_add_epi32(
+            rel,
+            _mm512_inserti64x4::<1>(_mm512_setzero_si512(), _mm256_set1_epi32(16)),
+        );
+        let right = _mm512_add_epi32(idx, _mm512_set1_epi32(1));
+        Some((
+            _mm512_permutex2var_epi32(ta, idx, tb),
+            _mm512_permutex2var_epi32(ta, right, tb),
+        ))
+    }
+
+    /// The two halves of sixteen i32 lanes as arrays.
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    fn lanes8(v: __m512i) -> [[i32; 8]; 2] {
+        let mut out = [[0i32; 8]; 2];
+        // SAFETY: a 64-byte store into 2 × 8 i32.
+        unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), v) };
+        out
+    }
+
+    /// Corners fetched per level (`fetch_pairs`/`fetch4`) as sixteen lanes.
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    fn join(a: &[[u32; 8]; 4], b: &[[u32; 8]; 4]) -> [__m512i; 4] {
+        std::array::from_fn(|c| {
+            // SAFETY: 32-byte loads from arrays of 8 u32.
+            unsafe {
+                _mm512_inserti64x4::<1>(
+                    _mm512_castsi256_si512(_mm256_loadu_si256(a[c].as_ptr().cast())),
+                    _mm256_loadu_si256(b[c].as_ptr().cast()),
+                )
+            }
+        })
+    }
+}
