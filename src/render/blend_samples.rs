@@ -1,46 +1,67 @@
-//! One transparent triangle blended into a multisampled tile, after the
-//! shading pass: one walk over the triangle's pixels for all samples (a
-//! sample's edge values are the first sample's plus a constant per
-//! triangle: edge functions are linear and exact integers), the fragment
-//! shaded once per pixel at the first sample it covers in front, and
-//! blended into each such sample. A pixel of a `flat` block covered at
-//! every sample blends into the first plane only (every sample held the
-//! same colour and gets the same blend), so the block stays flat and the
-//! resolve keeps its one-plane sum; any other pixel spreads its block
-//! first. The weights, depth tests and blends are those of one sample at
-//! a time, in the same order per sample, so no bit changes.
+//! One transparent triangle blended into a tile, after the shading pass:
+//! one walk over the triangle's pixels for all samples (a sample's edge
+//! values are the first sample's plus a constant per triangle: edge
+//! functions are linear and exact integers), each fragment shaded once per
+//! pixel at the first sample it covers in front, eight fragments lit
+//! together (the lighting's lanes do a lone pixel's arithmetic, so the
+//! same bits as one at a time), and blended into each covered sample.
+//! Under multisampling a pixel of a `flat` block covered at every sample
+//! blends into the first plane only (every sample held the same colour and
+//! gets the same blend), so the block stays flat and the resolve keeps its
+//! one-plane sum; any other pixel spreads its block first. Weights, depth
+//! tests and blends are those of one sample at a time, so no bit changes.
 
+use super::clip::{A_COLOR, A_NORMAL, A_POS};
 use super::fragment::{PLANE, TILE};
-use super::prepare::{Tri, SUBPIXEL};
+use super::prepare::{Item, Tri, INV_W, SUBPIXEL};
 use super::samples::SamplePlanes;
+use super::shade::shade8;
+use super::simd::{Lanes, Sse8, V8};
+use super::surface;
 use glam::Vec3;
 
 /// The tile's rectangle `[x0, y0, x1, y1)` (as `raster::Rect`).
 type Rect = [i32; 4];
 
-/// Blends `t` into the tile `rect` at the samples `offs` (SUBPIXEL units
-/// from the pixel centre, at most 8) where it is in front of `depth`
-/// (which transparent triangles test but do not write). `color_at(b1, b2)`
-/// gives the fragment's colour and opacity at the first covered sample's
-/// weights; `masks`: an opacity of 0 is alpha-tested away (glTF MASK).
+/// A transparent triangle and what its fragments need: its item, the eye,
+/// and whether an opacity of 0 is alpha-tested away (glTF MASK).
+pub struct Transparent<'a> {
+    pub t: &'a Tri,
+    pub item: &'a Item,
+    pub eye: Vec3,
+    pub masks: bool,
+}
+
+/// Up to eight fragments waiting to be shaded together: the pixel, the
+/// samples covered in front, the weights at the first of them.
+#[derive(Default)]
+struct Pending {
+    n: usize,
+    i: [usize; 8],
+    mask: [u32; 8],
+    b1: [f32; 8],
+    b2: [f32; 8],
+}
+
+/// Blends `tr` into the tile `rect` at the samples `offs` (SUBPIXEL units
+/// from the pixel centre, 1 to 8 of them) where it is in front of `depth`
+/// (which transparent triangles test but do not write).
 pub fn blend_triangle(
-    t: &Tri,
+    tr: &Transparent,
     rect: Rect,
     offs: &[(i64, i64)],
     depth: &[f32],
     planes: &mut SamplePlanes,
-    (id, masks): (u32, bool),
-    color_at: impl Fn(f32, f32) -> (Vec3, f32),
 ) {
+    let t = tr.t;
     let x0 = t.bbox[0].max(rect[0]);
     let y0 = t.bbox[1].max(rect[1]);
     let x1 = t.bbox[2].min(rect[2]);
     let y1 = t.bbox[3].min(rect[3]);
-    if x0 >= x1 || y0 >= y1 {
+    if x0 >= x1 || y0 >= y1 || offs.is_empty() {
         return;
     }
     let ns = offs.len().min(8);
-    let full = (1u32 << ns) - 1;
     let px = x0 as i64 * SUBPIXEL + SUBPIXEL / 2;
     let py = y0 as i64 * SUBPIXEL + SUBPIXEL / 2;
     // Edges at the first sample of (x0, y0), their steps, and each
@@ -64,6 +85,7 @@ pub fn blend_triangle(
     let dmin: [i64; 3] = std::array::from_fn(|k| d[..ns].iter().map(|d| d[k]).min().unwrap_or(0));
     let dmax: [i64; 3] = std::array::from_fn(|k| d[..ns].iter().map(|d| d[k]).max().unwrap_or(0));
     let inv_area = 1.0 / t.area() as f32;
+    let mut pending = Pending::default();
     for y in y0..y1 {
         let mut e = row;
         let line = (y - rect[1]) as usize * TILE as usize;
@@ -96,23 +118,88 @@ pub fn blend_triangle(
             if mask == 0 {
                 continue;
             }
-            let (c, alpha) = color_at(w.0, w.1);
-            if masks && alpha == 0.0 {
-                continue;
-            }
-            if mask == full && planes.is_flat(i) {
-                planes.blend(i, c, alpha, id);
-                continue;
-            }
-            planes.unflat(i);
-            for s in 0..ns {
-                if mask >> s & 1 == 1 {
-                    planes.blend(s * PLANE + i, c, alpha, id);
-                }
+            let k = pending.n;
+            pending.i[k] = i;
+            pending.mask[k] = mask;
+            (pending.b1[k], pending.b2[k]) = w;
+            pending.n += 1;
+            if pending.n == 8 {
+                flush(tr, &mut pending, ns, planes);
             }
         }
         for (r, s) in row.iter_mut().zip(step_y) {
             *r += s;
         }
     }
+    flush(tr, &mut pending, ns, planes);
+}
+
+/// Shades the pending fragments and blends each into its samples (each
+/// pixel is touched once per triangle, so their order does not matter).
+fn flush(tr: &Transparent, pending: &mut Pending, ns: usize, planes: &mut SamplePlanes) {
+    let n = std::mem::take(&mut pending.n);
+    if n == 0 {
+        return;
+    }
+    let colors = colors(tr, pending, n);
+    let full = (1u32 << ns) - 1;
+    let id = tr.item.id;
+    for (k, &(c, alpha)) in colors.iter().enumerate().take(n) {
+        if tr.masks && alpha == 0.0 {
+            continue;
+        }
+        let (i, mask) = (pending.i[k], pending.mask[k]);
+        if mask == full && planes.is_flat(i) {
+            planes.blend(i, c, alpha, id);
+            continue;
+        }
+        planes.unflat(i);
+        for s in 0..ns {
+            if mask >> s & 1 == 1 {
+                planes.blend(s * PLANE + i, c, alpha, id);
+            }
+        }
+    }
+}
+
+/// Colour and opacity of the first `n` pending fragments. Untextured
+/// items: the attribute planes and the lighting on eight lanes, each lane
+/// the arithmetic of `Tri::attrs_at` and `shade::shade` for its pixel;
+/// textured ones through the one-pixel `surface::shade_textured`.
+fn colors(tr: &Transparent, p: &Pending, n: usize) -> [(Vec3, f32); 8] {
+    let (t, item, eye) = (tr.t, tr.item, tr.eye);
+    let mut out = [(Vec3::ZERO, item.material.alpha); 8];
+    if item.textured {
+        for (k, o) in out.iter_mut().enumerate().take(n) {
+            *o = surface::shade_textured(item, t, p.b1[k], p.b2[k], eye);
+        }
+        return out;
+    }
+    let (b1, b2) = (Sse8::load(&p.b1), Sse8::load(&p.b2));
+    let plane =
+        |j: usize| Sse8::splat(t.base[j]) + b1 * Sse8::splat(t.d1[j]) + b2 * Sse8::splat(t.d2[j]);
+    let s = Sse8::splat(1.0) / plane(INV_W);
+    let attr = |j: usize| plane(j) * s;
+    let three = |j: usize| [attr(j), attr(j + 1), attr(j + 2)];
+    let color = three(A_COLOR);
+    let rgb = if item.unlit {
+        color
+    } else {
+        shade8(
+            &item.material,
+            &item.lights,
+            eye,
+            three(A_POS),
+            three(A_NORMAL),
+            color,
+        )
+    };
+    let mut lanes = [[0.0f32; 8]; 3];
+    for (l, v) in lanes.iter_mut().zip(rgb) {
+        v.store(l);
+    }
+    for (k, o) in out.iter_mut().enumerate().take(n) {
+        o.0 = Vec3::new(lanes[0][k], lanes[1][k], lanes[2][k]);
+    }
+    out
 }

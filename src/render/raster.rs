@@ -13,7 +13,6 @@ use super::samples::SamplePlanes;
 use super::shade::shade;
 use super::shading;
 use super::simd::{self, Sse8, V8};
-use super::surface;
 use glam::Vec3;
 
 pub use super::fragment::{PLANE, TILE, TILE_H};
@@ -174,14 +173,16 @@ impl Edges {
 
 /// Calls `f(x, y, b1, b2)` for every pixel of `rect` that the triangle
 /// covers; `b1`, `b2` are the screen-space barycentric weights of vertices 1
-/// and 2.
-#[inline]
+/// and 2 (the tests' reference walk; drawing uses [`for_each_pixel_at`]
+/// and `blend_samples`, which step the same edges).
+#[cfg(test)]
 pub fn for_each_pixel(t: &Tri, rect: Rect, f: impl FnMut(i32, i32, f32, f32)) {
     for_each_pixel_at(t, rect, (0, 0), f)
 }
 
-/// [`for_each_pixel`] testing the sample at `off` of each pixel instead of
-/// its centre.
+/// Calls `f(x, y, b1, b2)` for every pixel of `rect` whose sample at `off`
+/// (SUBPIXEL units from its centre) the triangle covers; `b1`, `b2` are
+/// the screen-space barycentric weights of vertices 1 and 2 there.
 #[inline]
 pub fn for_each_pixel_at(
     t: &Tri,
@@ -265,7 +266,7 @@ unsafe fn depth_pass_avx<const NS: usize>(
 /// whole at a sample when every edge is non-negative at both ends there
 /// (edge functions are linear, so a sample's edges are the first sample's
 /// plus a constant per triangle); only blocks on an edge test each pixel.
-/// Weights and depth are computed exactly as [`for_each_pixel`] does, per
+/// Weights and depth are computed exactly as [`for_each_pixel_at`] does, per
 /// pixel and sample, and each sample plane sees the triangles in bin
 /// order, so the blocks change no bit.
 #[inline(always)]
@@ -667,42 +668,14 @@ pub fn draw_tile(
     for &ti in &bin.transparent {
         let t = &p.transparent[ti as usize];
         let item = &p.items[t.item as usize];
-        // Alpha-tested (glTF MASK) pixels below the cutoff are not drawn.
-        let masks = item.texture.as_ref().is_some_and(|s| s.masks());
-        // Colour and alpha of a fragment (textures may vary the alpha).
-        let color_at = |w1: f32, w2: f32| {
-            if item.textured {
-                surface::shade_textured(item, t, w1, w2, eye)
-            } else {
-                (
-                    shade_attrs(item, &t.attrs_at(w1, w2), eye),
-                    item.material.alpha,
-                )
-            }
-        };
-        if ns == 1 {
-            for_each_pixel(t, rect, |x, y, w1, w2| {
-                let z = t.depth_at(w1, w2);
-                let i = at(x, y);
-                if z < depth[i] && z >= 0.0 {
-                    let (c, alpha) = color_at(w1, w2);
-                    if !(masks && alpha == 0.0) {
-                        planes.blend(i, c, alpha, item.id);
-                    }
-                }
-            });
-            continue;
-        }
-        // One walk for all samples, one shading per pixel.
-        blend_samples::blend_triangle(
+        let tr = blend_samples::Transparent {
             t,
-            rect,
-            offsets,
-            depth,
-            &mut planes,
-            (item.id, masks),
-            color_at,
-        );
+            item,
+            eye,
+            // Alpha-tested (glTF MASK) pixels below the cutoff are not drawn.
+            masks: item.texture.as_ref().is_some_and(|s| s.masks()),
+        };
+        blend_samples::blend_triangle(&tr, rect, offsets, depth, &mut planes);
     }
     resolve_tile(rect, scratch, target);
 }
