@@ -831,3 +831,44 @@ fn tab_types_into_the_next_field_and_scrolls_it_into_view() {
     key(&mut ed, Key::Tab, Mods::NONE);
     assert_eq!((ed.current_frame(), typing(&ed)), (12.0, None));
 }
+
+/// Enter, or a click on another field, with nothing typed leaves the
+/// value as it was: no undo step, and on an animated property nothing
+/// left pending for K (it used to record the unchanged value).
+#[test]
+fn enter_or_clicking_away_with_nothing_typed_records_nothing() {
+    use animed::internals::editor::fields::FieldId;
+    let (mut ed, _) = zigzag();
+    let steps = ed.history().labels().count();
+    let untouched = |ed: &Editor| {
+        ed.text_edit().is_none()
+            && ed.history().labels().count() == steps
+            && ed.pending().is_none()
+            && !ed.status().text.contains("Pending")
+    };
+    let tx = find(&ed, "Field(Translation(0))");
+    click(&mut ed, tx);
+    assert_eq!(
+        ed.text_edit().map(|e| e.field),
+        Some(FieldId::Translation(0))
+    );
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert!(untouched(&ed), "Enter with nothing typed records nothing");
+    // A click on another field ends the first one the same way.
+    click(&mut ed, tx);
+    let ty = find(&ed, "Field(Translation(1))");
+    click(&mut ed, ty);
+    let typing = ed.text_edit().map(|e| e.field);
+    assert_eq!(typing, Some(FieldId::Translation(1)));
+    key(&mut ed, Key::Escape, Mods::NONE);
+    assert!(
+        untouched(&ed),
+        "clicking away with nothing typed records nothing"
+    );
+    // Something typed still records (the track is animated: pending).
+    click(&mut ed, tx);
+    ed.handle(Event::Text("2".into()));
+    key(&mut ed, Key::Enter, Mods::NONE);
+    assert_eq!(ed.history().labels().count(), steps + 1);
+    assert!(ed.pending().is_some() && ed.status().text.contains("Pending"));
+}

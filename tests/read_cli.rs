@@ -140,13 +140,17 @@ fn animation_flag_on_a_one_clip_file() {
 /// `animed info --strict tests/data/vrml97_bad/FILE` exits 3, warns at
 /// `FILE:at:` with `what`, and says why it failed.
 fn assert_flagged(file: &str, at: &str, what: &str) {
-    let path = format!("tests/data/vrml97_bad/{file}");
-    let (code, out, err) = animed(&["info", "--strict", &path]);
-    assert_eq!(code, 3, "{file}: {out}{err}");
+    assert_flagged_at(&format!("tests/data/vrml97_bad/{file}"), at, what);
+}
+
+/// [`assert_flagged`] for the file at `path`.
+fn assert_flagged_at(path: &str, at: &str, what: &str) {
+    let (code, out, err) = animed(&["info", "--strict", path]);
+    assert_eq!(code, 3, "{path}: {out}{err}");
     let want = format!("{path}:{at}: ");
     assert!(
         out.lines().any(|l| l.contains(&want) && l.contains(what)),
-        "{file}: no warning '{want}…{what}' in\n{out}"
+        "{path}: no warning '{want}…{what}' in\n{out}"
     );
     assert!(err.contains("--strict"), "{err}");
 }
@@ -179,6 +183,33 @@ fn openvrml_bad_files_are_flagged_with_locations() {
     // A valid file passes --strict.
     let (code, out, err) = animed(&["info", "--strict", "assets/demo.wrl"]);
     assert_eq!(code, 0, "{out}{err}");
+}
+
+/// X3D files get the same checks against X3D's own node table
+/// (`format/syntax/x3d_table.rs`), in both encodings: `info --strict`
+/// exits 3 and names the place.
+#[test]
+fn x3d_routes_is_and_fields_are_checked_against_x3ds_nodes() {
+    for (file, at, what) in [
+        ("route-type-mismatch.x3dv", "7:1", "SFFloat to SFVec3f"),
+        (
+            "unknown-field.x3dv",
+            "5:13",
+            "Transform has no field 'translate'",
+        ),
+        (
+            "route-to-field.x3d",
+            "28:3",
+            "'bboxCenter' is a field of Transform",
+        ),
+        (
+            "route-to-field.x3d",
+            "16:11",
+            "children is MFNode but shown is SFBool",
+        ),
+    ] {
+        assert_flagged_at(&format!("tests/data/x3d_bad/{file}"), at, what);
+    }
 }
 
 /// `animed info FILE | head` once panicked with "failed printing to stdout:

@@ -185,6 +185,67 @@ fn text2_labels_keep_their_pixel_size_and_face_the_viewer() {
 /// nothing. Counting the anchors alone put it at z 4.18.
 #[test]
 fn text2_files_are_framed_as_coin_frames_them() {
+    let scene = text_iv();
+    let pose = animed::internals::anim::evaluate(&scene, 0.0);
+    let v = animed::internals::render::View::view_all_for_picture(&scene, &pose, &pose, 160, 120);
+    let coin = glam::Vec3::new(-0.0828, -0.0247, 5.4395);
+    assert!((v.eye - coin).length() < 0.05, "{} vs Coin's {coin}", v.eye);
+}
+
+/// The viewer's view-all and the editor's frame-all count Text2 labels as
+/// `animed render` does for a picture of their size: the viewer's camera
+/// is Coin's for text.iv, and the editor frames the box that holds the
+/// labels' pixel rectangles, which reaches past their anchors.
+#[test]
+fn viewer_and_editor_frame_text2_labels_as_render_does() {
+    use animed::internals::render::{scene_bounds, scene_bounds_for_picture};
+    let scene = text_iv();
+    let pose = animed::internals::anim::evaluate(&scene, 0.0);
+    let eye = animed::internals::viewer::Eye::ViewAll;
+    let v = eye.view(&scene, &pose, &[], 160, 120);
+    let coin = glam::Vec3::new(-0.0828, -0.0247, 5.4395);
+    assert!(
+        (v.eye - coin).length() < 0.05,
+        "viewer {} vs Coin's {coin}",
+        v.eye
+    );
+
+    // A label inside the view Coin's box is taken with (text.iv's labels
+    // at y = ±1 are outside it at the editor's viewport size and count
+    // nothing there, as in `render`), reaching right of its anchor.
+    let src = "#Inventor V2.1 ascii\nSeparator { Font { size 20 } Cube { }\n\
+               Separator { Transform { translation 1 0 -2 } Text2 { string \"a long label\" } } }";
+    let scene = animed::internals::format::load_bytes(src.as_bytes(), Path::new("label.iv"))
+        .unwrap()
+        .scene;
+    let pose = animed::internals::anim::evaluate(&scene, 0.0);
+    let e = animed::internals::editor::Editor::new(scene.clone(), None, 640, 480);
+    let vp = e.layout().viewport;
+    let (w, h) = (vp.w.max(1) as u32, vp.h.max(1) as u32);
+    let (lo, hi) = scene_bounds_for_picture(&scene, &pose, w, h).unwrap();
+    let (alo, ahi) = scene_bounds(&scene, &pose).unwrap();
+    assert!(
+        hi.x > ahi.x + 0.1 && lo.x <= alo.x,
+        "{lo} {hi} vs anchors {alo} {ahi}"
+    );
+    let centre = (lo + hi) * 0.5;
+    let cam = e.camera();
+    assert!(
+        (cam.target - centre).length() < 1e-4,
+        "{} vs {centre}",
+        cam.target
+    );
+    let r = (hi - lo).length() * 0.5;
+    let want = r / (cam.fov_y * 0.5).sin() * 1.1;
+    assert!(
+        (cam.distance - want).abs() < 1e-3,
+        "{} vs {want}",
+        cam.distance
+    );
+}
+
+/// Coin's text.iv: eight Text2 labels at a cube's corners.
+fn text_iv() -> Scene {
     let mut src =
         String::from("#Inventor V2.1 ascii\nSeparator { Font { name \"Courier-Bold\" size 20 }\n");
     for (at, text, right) in [
@@ -203,11 +264,7 @@ fn text2_files_are_framed_as_coin_frames_them() {
         );
     }
     src += " Cube { }\n}\n";
-    let scene = animed::internals::format::load_bytes(src.as_bytes(), Path::new("text.iv"))
+    animed::internals::format::load_bytes(src.as_bytes(), Path::new("text.iv"))
         .unwrap()
-        .scene;
-    let pose = animed::internals::anim::evaluate(&scene, 0.0);
-    let v = animed::internals::render::View::view_all_for_picture(&scene, &pose, &pose, 160, 120);
-    let coin = glam::Vec3::new(-0.0828, -0.0247, 5.4395);
-    assert!((v.eye - coin).length() < 0.05, "{} vs Coin's {coin}", v.eye);
+        .scene
 }

@@ -9,8 +9,10 @@ use crate::anim::Animation;
 use crate::anim::Property;
 use crate::editor::fields::FieldId;
 use crate::editor::keystrip::KeyRef;
+use crate::editor::material::{MatBase, MatField};
+use crate::editor::rig::state::MorphBase;
 use crate::input::OrbitCamera;
-use crate::scene::{Node, NodeId};
+use crate::scene::{Material, MaterialId, Node, NodeId, Settings};
 
 /// What the keys components (key strip, graph editor) see of the editor
 /// alike: the animation, the selected object and its name, the current
@@ -94,6 +96,65 @@ pub enum Intent {
     /// The IK drag ended: record its pose, or keep it pending on animated
     /// joints until K.
     IkDone,
+    /// Show material `id` as `value` while a drag changes `props` (kept
+    /// pending over their tracks until recorded or dropped).
+    ShowMaterial {
+        id: MaterialId,
+        props: Vec<Property>,
+        value: Box<Material>,
+    },
+    /// Set material field `field` to `value`, from `base`, by the record
+    /// rules (`material/route.rs`): a typed value or a drag's release.
+    SetMaterial {
+        field: MatField,
+        base: Box<MatBase>,
+        value: f32,
+    },
+    /// Drop the material change a drag showed (Esc).
+    DropMaterial,
+    /// Show the morph weights `base` started from with weight `index` at
+    /// `value` while a slider is dragged (kept pending like a material).
+    ShowWeight {
+        base: Box<MorphBase>,
+        index: u8,
+        value: f32,
+    },
+    /// Set weight `index` to `value`, from `base`, by the record rules
+    /// (`rig/morph.rs`).
+    SetWeight {
+        base: Box<MorphBase>,
+        index: u8,
+        value: f32,
+    },
+    /// Drop the weights a slider drag showed (Esc).
+    DropWeights,
+    /// Rename the playing clip to what was typed.
+    RenameClip(String),
+    /// Show node `id` as `node` while one of its fields is dragged (not
+    /// recorded; a change left pending on its tracks stays).
+    PreviewNode { id: NodeId, node: Box<Node> },
+    /// Record node `id` becoming `after` as one undo step with the record
+    /// rules for `props` (record mode keys them; otherwise a change on an
+    /// animated property is left pending for K). `before`: what a drag
+    /// started from, put back first so undo returns to it.
+    SetNode {
+        label: String,
+        id: NodeId,
+        before: Option<Box<Node>>,
+        after: Box<Node>,
+        props: Vec<Property>,
+    },
+    /// Show these scene settings (a drag on fps or len; not recorded).
+    PreviewSettings(Settings),
+    /// Record the scene settings `before` → `after` as one undo step.
+    SetSettings {
+        label: String,
+        before: Settings,
+        after: Settings,
+    },
+    /// The scene's length was typed: say how many keys lie after its end
+    /// (and cut the preview range to it).
+    NoteKeysAfterEnd,
 }
 
 /// A component's answer to one event.

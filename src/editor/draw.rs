@@ -1,9 +1,10 @@
 //! Painting the whole window: viewport layer, overlay, panels, timeline,
 //! and the modal browser or dialog on top.
 
-use super::fields::FieldValue;
 use super::gesture::Drag;
 use super::panel::{Widget, WidgetKind};
+use super::rig::clip_ui::ClipField;
+use super::rig::morph_ui::MorphRows;
 use super::{Editor, Mode};
 use crate::render::Frame;
 use crate::ui::text;
@@ -105,22 +106,28 @@ impl Editor {
             theme::TEXT_DIM,
             l.toolbar.right() - x - 2,
         );
-        // The side panel's lists and the key panel paint themselves.
+        // The side panel's lists and its faces (key panel, material rows)
+        // paint themselves; the morph sliders and the clip field too,
+        // where the node rows and the scene section place them.
+        // The scene section and node face first: the clips' and the other
+        // faces' buttons sit on their title rows.
+        let own = self.draw_side_sections(p);
         let sp = self.side_panel();
-        let key_panel = self.key_panel_shown();
+        let face = self.material_panel().is_some() || self.key_panel_shown();
         let theirs = |w: &Widget| {
             let (x, y) = (w.rect.x as f32, w.rect.y as f32);
             sp.objects.contains(x, y)
                 || sp.lights.contains(x, y)
-                || (key_panel && sp.props.contains(x, y))
+                || (face && sp.props.contains(x, y))
+                || own.contains(w)
         };
+        let (morph, clip, look) = (self.morph_ctx(), self.clip_ctx(), self.side_look());
         for w in widgets.iter().filter(|w| !theirs(w)) {
-            self.draw_widget(p, w);
+            if !MorphRows::paint(p, w, &morph, &look) && !ClipField::paint(p, w, &clip, &look) {
+                self.draw_widget(p, w);
+            }
         }
-        if key_panel {
-            self.draw_key_panel(p);
-        }
-        self.draw_material_extras(p);
+        self.draw_face(p);
         self.draw_side(p);
     }
 
@@ -156,43 +163,22 @@ impl Editor {
                     None => self.field_text(*id, text::fit_chars(w.rect.w - 5)),
                 };
                 widgets::field(p, w.rect, &text, hot, editing.is_some());
-                if let super::fields::FieldId::Morph(i) = id {
-                    self.draw_morph_bar(p, w.rect, *i);
-                }
             }
             // The side panel paints its rows (`side_ui.rs`).
             WidgetKind::Row { .. } | WidgetKind::Entry(_) | WidgetKind::PathInput => {}
         }
     }
 
+    /// The text of a field of the controls bar (the side panel's faces
+    /// paint their own fields).
     fn field_text(&self, id: super::fields::FieldId, max_chars: usize) -> String {
-        use super::fields::FieldId;
-        if id == FieldId::ClipName {
-            return self.clip_name();
-        }
-        if let FieldId::Material(f) = id {
-            return self.material_text(f, max_chars);
-        }
-        if let FieldId::Preview(_) = id {
-            let v = self.preview_field(id);
-            return v.map_or(String::new(), |x| super::fields::format_fit(x, max_chars));
-        }
-        if let FieldId::Morph(i) = id {
-            let v = self.morph_text(i);
-            return v.map_or(String::new(), |x| super::fields::format_fit(x, max_chars));
-        }
-        let v = if id == FieldId::Frame {
-            Some(FieldValue::Number(self.frame))
-        } else if id.is_setting() {
-            id.read_settings(&self.scene.settings)
-        } else {
-            self.selection
-                .and_then(|s| id.read_node(&self.posed_node(s)))
-        };
-        match v {
-            Some(FieldValue::Number(x)) => super::fields::format_fit(x, max_chars),
-            Some(v) => v.display(),
-            None => String::new(),
+        use super::fields::{format_fit, FieldId};
+        match id {
+            FieldId::Preview(_) => self
+                .preview_field(id)
+                .map_or(String::new(), |x| format_fit(x, max_chars)),
+            FieldId::Frame => format_fit(self.frame, max_chars),
+            _ => String::new(),
         }
     }
 

@@ -1,14 +1,14 @@
 //! The editor's one gesture in progress: whatever a mouse press started
-//! (the viewport's, the key strip's, the graph editor's, the key panel's,
-//! the side panel's, a field drag, seek, the ruler's and the strip's own)
+//! (the viewport's, the key strip's, the graph editor's, the side
+//! panel's, a controls bar field, seek, the ruler's and the strip's own)
 //! is ONE value of [`Drag`], so a mouse move or release goes to exactly
 //! the part that holds the gesture instead of every part being asked in
 //! turn. A component that keeps its own drag state (viewport, key strip,
-//! graph, key panel, side panel) is named by a marker here. Also what a field drag started from.
-//! Routing lives in `route/input.rs`.
+//! graph, side panel with its faces — every field of the side panel is
+//! a face's) is named by a marker here. Routing lives in `route/input.rs`.
 
+use super::field_press::FieldPress;
 use super::fields::FieldId;
-use crate::scene::{Node, NodeId, Settings};
 
 /// State kept between mouse down and up.
 #[derive(Clone, Debug, Default)]
@@ -24,19 +24,15 @@ pub(super) enum Drag {
     Keys,
     /// The graph editor took the press; it keeps its own drag state.
     Graph,
-    /// The key panel took a press on one of its fields; it keeps its own
-    /// drag state (`keypanel.rs`).
-    KeyPanel,
     /// The side panel took a press on an object row (a drag re-parents
-    /// it); it keeps its own drag state (`side_ui.rs`).
+    /// it) or on a field of one of its faces (key panel, material rows,
+    /// morph sliders, the clip name, the node's rows, the scene section);
+    /// it keeps its own drag state (`side_ui.rs`, `side_faces.rs`).
     Side,
-    /// Pressed on a field: a click starts typing, a drag changes the value.
-    Field {
-        id: FieldId,
-        start_x: f32,
-        moved: bool,
-        base: Base,
-    },
+    /// Pressed on the controls bar's Frame field (a drag scrubs) or a
+    /// preview range field (typed only); a click types
+    /// (`route/time_field.rs`).
+    TimeField(FieldPress<FieldId, f32>),
     /// Dragging the current-frame cursor on the ruler.
     Seek,
     /// Middle button over the ruler or key strip: pans the frames shown.
@@ -47,24 +43,9 @@ pub(super) enum Drag {
     StripResize { y0: f32, h0: i32 },
 }
 
-/// What a field drag started from (to compute values and the command).
-#[derive(Clone, Debug)]
-pub(super) enum Base {
-    Node(NodeId, Box<Node>),
-    Settings(Settings),
-    Frame(f32),
-    /// A morph slider (`rig/morph.rs`).
-    Morph(Box<super::rig::state::MorphBase>),
-    /// The clip name field (`rig/clips.rs`): typed, never dragged.
-    Clip,
-    /// A material field (`material/`).
-    Material(Box<super::material::MatBase>),
-    /// A preview range field (`route/timeline.rs`): typed, never dragged.
-    Preview,
-}
-
-/// Pixels the mouse may move before a press counts as a drag.
-pub(super) const DRAG_SLOP: f32 = 3.0;
+/// Pixels the mouse may move before a press counts as a drag (kept with
+/// the field gesture, the lower file).
+pub(super) use super::field_press::DRAG_SLOP;
 
 /// Files the writers can produce.
 pub(super) fn is_writable_type(p: &std::path::Path) -> bool {

@@ -13,6 +13,7 @@
 //! routing in `route/keyprops.rs`.
 
 use super::component::{Intent, Response};
+use super::field_press::FieldPress;
 use super::fields::{clamp_note, format_fit, format_number, FieldId, FieldValue};
 use super::keyprops::*;
 use super::keystrip::{row_name, KeyRef};
@@ -37,23 +38,12 @@ pub struct KeyPanel {
     /// are selected ("Keys" comes back; selecting keys comes back too).
     pub node_shown: bool,
     /// A press on one of its fields, until the mouse is released.
-    press: Option<FieldPress>,
+    press: Option<FieldPress<KeyField, PressBase>>,
 }
 
-/// A press on a key field: a click starts typing, a drag changes the
-/// value from what the animation and selection were at the press.
-#[derive(Clone, Debug)]
-struct FieldPress {
-    field: KeyField,
-    start_x: f32,
-    moved: bool,
-    base: Animation,
-    keys: Vec<KeyRef>,
-}
-
-/// Pixels the mouse may move before a press on a field counts as a drag
-/// (the editor's `gesture::DRAG_SLOP`).
-const DRAG_SLOP: f32 = 3.0;
+/// What a key field's drag starts from: the animation and the selected
+/// keys at the press.
+type PressBase = (Animation, Vec<KeyRef>);
 
 /// What happens to the key panel: a click on one of its buttons, the
 /// mouse pressed on one of its fields (the editor found which), moved
@@ -159,43 +149,37 @@ impl KeyPanel {
                 if keys.is_empty() {
                     return Response::ignored();
                 }
-                self.press = Some(FieldPress {
-                    field,
-                    start_x: x,
-                    moved: false,
-                    base: ctx.anim.clone(),
-                    keys: keys.clone(),
-                });
+                let base = (ctx.anim.clone(), keys.clone());
+                self.press = Some(FieldPress::new(field, x, base));
                 Response::taken()
             }
             KeyEvent::Move { x } => {
                 let Some(p) = &mut self.press else {
                     return Response::ignored();
                 };
-                let dx = x - p.start_x;
-                if !p.moved && dx.abs() < DRAG_SLOP {
+                let Some(dx) = p.drag_dx(x) else {
                     return Response::taken();
-                }
-                p.moved = true;
+                };
                 let r = Response::redraw().with(Intent::StopPlayback);
-                let Some(v0) = Self::number(p.field, &p.base, &p.keys) else {
+                let (base, keys) = &p.base;
+                let Some(v0) = Self::number(p.field, base, keys) else {
                     return r;
                 };
-                let v = v0 + dx * p.field.drag_step(p.keys[0].property);
-                match set_field(&p.base, &p.keys, p.field, v) {
+                let v = v0 + dx * p.field.drag_step(keys[0].property);
+                match set_field(base, keys, p.field, v) {
                     Ok((anim, refs)) => r.with(Intent::Preview(anim)).with(Intent::ShowKeys(refs)),
                     Err(_) => r,
                 }
             }
             KeyEvent::Release => match self.press.take() {
                 None => Response::ignored(),
-                Some(p) if p.moved => Response::redraw().with(Intent::Commit {
+                Some(p) if p.moved() => Response::redraw().with(Intent::Commit {
                     label: format!("Drag key {:?}", FieldId::Key(p.field)),
-                    before: p.base,
+                    before: p.base.0,
                     after: ctx.anim.clone(),
                 }),
                 // A click: type into the field, starting from its number.
-                Some(p) => match Self::number(p.field, &p.base, &p.keys) {
+                Some(p) => match Self::number(p.field, &p.base.0, &p.base.1) {
                     Some(v) => Response::redraw().with(Intent::Type {
                         field: FieldId::Key(p.field),
                         text: FieldValue::Number(v).display(),
@@ -204,9 +188,9 @@ impl KeyPanel {
                 },
             },
             KeyEvent::Cancel => match self.press.take() {
-                Some(p) if p.moved => Response::redraw()
-                    .with(Intent::Preview(p.base))
-                    .with(Intent::ShowKeys(p.keys)),
+                Some(p) if p.moved() => Response::redraw()
+                    .with(Intent::Preview(p.base.0))
+                    .with(Intent::ShowKeys(p.base.1)),
                 Some(_) => Response::taken(),
                 None => Response::ignored(),
             },

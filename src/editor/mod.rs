@@ -24,6 +24,7 @@ pub mod create;
 pub mod dialog;
 pub mod disk;
 mod draw;
+pub mod field_press;
 pub mod fields;
 mod gesture;
 pub mod gizmo;
@@ -41,6 +42,7 @@ pub mod manip;
 pub mod material;
 pub mod menu;
 pub mod motion_path;
+pub mod node_props;
 mod onion;
 pub mod ops;
 pub mod panel;
@@ -50,11 +52,13 @@ pub mod recovery;
 pub mod request;
 pub mod rig;
 mod route;
+pub mod scene_section;
 mod screen;
 pub mod script;
 pub mod search;
 mod sel_outline;
 pub mod shell;
+pub mod side_faces;
 pub mod side_ui;
 mod split;
 mod strip_tips;
@@ -116,6 +120,9 @@ struct Playback {
 struct SceneLayer {
     key: Option<LayerKey>,
     frame: Frame,
+    /// The picture with the selection outlined (`sel_outline.rs`), made
+    /// again when the layer or the selection changes.
+    outlined: Option<sel_outline::Outlined>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -158,8 +165,6 @@ pub struct Editor {
     viewport: viewport_ui::Viewport,
     /// Key strip: selected keys, fold state, clipboard, strip drags.
     keys: keystrip::KeyStrip,
-    /// The key panel (whether "Object" put the node's properties back).
-    key_panel: keypanel::KeyPanel,
     /// Onion skin switch and its cached copies.
     onion: onion::Onion,
     /// The graph editor (taken out while it handles an event; created
@@ -234,7 +239,6 @@ impl Editor {
             pending: None,
             viewport: viewport_ui::Viewport::default(),
             keys: keystrip::KeyStrip::default(),
-            key_panel: keypanel::KeyPanel::default(),
             onion: onion::Onion::default(),
             graph: None,
             timeline: timeline::Timeline::default(),
@@ -263,6 +267,7 @@ impl Editor {
             layer: SceneLayer {
                 key: None,
                 frame: Frame::new(1, 1, glam::Vec3::ZERO),
+                outlined: None,
             },
             painter: Painter::new(),
             rig: rig::state::RigState::default(),
@@ -527,11 +532,15 @@ impl Editor {
         self.disk_stamp = stamp;
     }
 
-    /// Looks at everything drawn (lights too when there is nothing else).
+    /// Looks at everything drawn (lights too when there is nothing else);
+    /// Text2 labels count as `animed render` counts them for a picture of
+    /// the viewport's size.
     pub fn frame_all(&mut self) {
+        let vp = self.layout().viewport;
+        let (w, h) = (vp.w.max(1) as u32, vp.h.max(1) as u32);
         let b = {
             let pose = self.pose().clone();
-            crate::render::scene_bounds(&self.scene, &pose)
+            crate::render::scene_bounds_for_picture(&self.scene, &pose, w, h)
                 .or_else(|| ops::scene_bounds(&self.scene, &pose))
         };
         let (c, r) = ops::sphere(b);

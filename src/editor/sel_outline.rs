@@ -1,12 +1,20 @@
-//! The selection outline's rings: which pixels of a selection mask are
-//! inside it, touch it (the outline), or lie two pixels away (the dark
-//! edge behind the outline). Classifying every viewport pixel by looking
-//! at its 5×5 neighbourhood cost more than half of an editor frame at
-//! 1280×720, so this works only inside the mask's bounding box grown by
-//! two pixels and finds the neighbourhoods by separable dilation: a row
-//! pass (3 and 5 wide, from running counts) then a column pass (rows
-//! ORed). The rings are the same as the neighbourhood test's, pixel for
-//! pixel.
+//! The selection outline: which pixels of the viewport layer are inside
+//! the selection, touch it (the outline) or lie two pixels away (the dark
+//! edge behind the outline), and the layer's picture with that outline
+//! drawn in, kept until the layer or the selection changes.
+//!
+//! Classifying every viewport pixel by its 5×5 neighbourhood cost more
+//! than half of an editor frame at 1280×720, and even a byte-per-pixel
+//! separable dilation over the selection's box was a fifth of it. So the
+//! selection is kept as bit rows over its bounding box grown by two
+//! pixels, dilated 64 pixels at a time by shifts (rows) and ORs
+//! (columns). The rings are the same as the neighbourhood test's, pixel
+//! for pixel, and they are drawn once per layer and selection, not once
+//! per window redraw.
+
+use crate::render::Frame;
+use crate::scene::NodeId;
+use crate::ui::theme;
 
 /// Where a pixel lies relative to the selection's silhouette.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -19,63 +27,153 @@ pub enum Ring {
     Far,
 }
 
-/// Calls `put(x, y, ring)` for every pixel of the `w`×`h` row-major `mask`
-/// that is inside, touches (8-neighbourhood) or lies at Chebyshev distance
-/// 2 from a set pixel; pixels beyond the image count as unset.
-pub fn for_each_ring(mask: &[bool], w: usize, h: usize, mut put: impl FnMut(usize, usize, Ring)) {
-    let Some((bx0, by0, bx1, by1)) = set_bounds(mask, w, w, h, |&m| m) else {
-        return;
-    };
-    let (x0, x1) = (bx0.saturating_sub(2), (bx1 + 2).min(w - 1));
-    let (y0, y1) = (by0.saturating_sub(2), (by1 + 2).min(h - 1));
-    let rw = x1 - x0 + 1;
-    let rows = y1 - y0 + 1;
-    // Row pass: whether a set pixel lies within 1 (near) or 2 (wide)
-    // columns, from a running count along the row (columns outside the
-    // grown box hold no set pixel).
-    let mut near = vec![false; rw * rows];
-    let mut wide = vec![false; rw * rows];
-    let mut count = vec![0u32; rw + 1];
-    for ry in 0..rows {
-        let src = &mask[(y0 + ry) * w + x0..(y0 + ry) * w + x1 + 1];
-        for (i, &m) in src.iter().enumerate() {
-            count[i + 1] = count[i] + m as u32;
-        }
-        let span = |rx: usize, r: usize| count[(rx + r + 1).min(rw)] > count[rx.saturating_sub(r)];
-        for rx in 0..rw {
-            near[ry * rw + rx] = span(rx, 1);
-            wide[ry * rw + rx] = span(rx, 2);
-        }
-    }
-    // Column pass: the row results of the rows within 1 (2) above and
-    // below, ORed; rows outside the grown box hold no set pixel.
-    let mut near_col = vec![false; rw];
-    let mut wide_col = vec![false; rw];
-    let or_rows = |dst: &mut [bool], rows_of: &[bool], ry: usize, r: usize| {
-        dst.fill(false);
-        for y in ry.saturating_sub(r)..=(ry + r).min(rows - 1) {
-            for (d, &s) in dst.iter_mut().zip(&rows_of[y * rw..(y + 1) * rw]) {
-                *d |= s;
+/// The set cells of a grid as bit rows over their bounding box grown by
+/// two cells (clamped to the grid): bit `i` of word `k` of row `r` is
+/// cell (`x0 + 64k + i`, `y0 + r`).
+pub struct Silhouette {
+    /// The set cells' bounding box (x0, y0, x1, y1), inclusive.
+    bounds: (usize, usize, usize, usize),
+    x0: usize,
+    y0: usize,
+    /// Columns and rows of the grown box.
+    w: usize,
+    h: usize,
+    /// Words per bit row.
+    words: usize,
+    bits: Vec<u64>,
+}
+
+impl Silhouette {
+    /// The cells of the first `w` columns and `h` rows of a row-major
+    /// grid (rows `stride` cells apart) for which `set` holds; `None`
+    /// when none does.
+    pub fn find<T>(
+        cells: &[T],
+        stride: usize,
+        w: usize,
+        h: usize,
+        set: impl Fn(&T) -> bool,
+    ) -> Option<Silhouette> {
+        let bounds = set_bounds(cells, stride, w, h, &set)?;
+        let (bx0, by0, bx1, by1) = bounds;
+        let (x0, x1) = (bx0.saturating_sub(2), (bx1 + 2).min(w - 1));
+        let (y0, y1) = (by0.saturating_sub(2), (by1 + 2).min(h - 1));
+        let (gw, gh) = (x1 - x0 + 1, y1 - y0 + 1);
+        let words = gw.div_ceil(64);
+        let mut bits = vec![0u64; words * gh];
+        for y in by0..=by1 {
+            let row = &cells[y * stride + bx0..=y * stride + bx1];
+            let out = &mut bits[(y - y0) * words..(y - y0 + 1) * words];
+            for (i, c) in row.iter().enumerate() {
+                let x = bx0 - x0 + i;
+                out[x / 64] |= (set(c) as u64) << (x % 64);
             }
         }
-    };
-    for ry in 0..rows {
-        or_rows(&mut near_col, &near, ry, 1);
-        or_rows(&mut wide_col, &wide, ry, 2);
-        let y = y0 + ry;
-        for rx in 0..rw {
-            let ring = if mask[y * w + x0 + rx] {
-                Ring::Inside
-            } else if near_col[rx] {
-                Ring::Near
-            } else if wide_col[rx] {
-                // Nothing within one pixel, so the set pixel within two
-                // lies exactly two away.
-                Ring::Far
-            } else {
-                continue;
-            };
-            put(x0 + rx, y, ring);
+        Some(Silhouette {
+            bounds,
+            x0,
+            y0,
+            w: gw,
+            h: gh,
+            words,
+            bits,
+        })
+    }
+
+    /// The set cells' bounding box (x0, y0, x1, y1), inclusive.
+    pub fn bounds(&self) -> (usize, usize, usize, usize) {
+        self.bounds
+    }
+
+    /// Calls `put(x, y, ring)` for every cell that is set, touches a set
+    /// cell (8-neighbourhood) or lies at Chebyshev distance 2 from one;
+    /// cells beyond the grid count as unset.
+    pub fn for_each_ring(&self, mut put: impl FnMut(usize, usize, Ring)) {
+        let (words, h) = (self.words, self.h);
+        // Row dilations by 1 and 2 cells (shifts with the carry from the
+        // neighbouring word); bits past the box's last column are dropped
+        // below.
+        let mut d1 = vec![0u64; self.bits.len()];
+        let mut d2 = vec![0u64; self.bits.len()];
+        for r in 0..h {
+            let row = &self.bits[r * words..(r + 1) * words];
+            for k in 0..words {
+                let m = row[k];
+                let lo = if k > 0 { row[k - 1] } else { 0 };
+                let hi = if k + 1 < words { row[k + 1] } else { 0 };
+                let one = m | m << 1 | lo >> 63 | m >> 1 | hi << 63;
+                d1[r * words + k] = one;
+                d2[r * words + k] = one | m << 2 | lo >> 62 | m >> 2 | hi << 62;
+            }
+        }
+        let last = match self.w % 64 {
+            0 => u64::MAX,
+            n => (1u64 << n) - 1,
+        };
+        let or_rows = |d: &[u64], r: usize, reach: usize, k: usize| {
+            (r.saturating_sub(reach)..=(r + reach).min(h - 1)).fold(0, |a, y| a | d[y * words + k])
+        };
+        for r in 0..h {
+            for k in 0..words {
+                let m = self.bits[r * words + k];
+                let near = or_rows(&d1, r, 1, k);
+                let mut wide = or_rows(&d2, r, 2, k);
+                if k + 1 == words {
+                    wide &= last;
+                }
+                while wide != 0 {
+                    let i = wide.trailing_zeros() as usize;
+                    wide &= wide - 1;
+                    let bit = 1u64 << i;
+                    let ring = if m & bit != 0 {
+                        Ring::Inside
+                    } else if near & bit != 0 {
+                        Ring::Near
+                    } else {
+                        // Nothing within one cell, so the set cell within
+                        // two lies exactly two away.
+                        Ring::Far
+                    };
+                    put(self.x0 + 64 * k + i, self.y0 + r, ring);
+                }
+            }
+        }
+    }
+}
+
+/// The viewport layer's picture with the selection outlined from outside
+/// (a ring of the selection colour with a dark ring beyond it, so it shows
+/// on light and dark backgrounds) and its inside tinted only lightly, so
+/// the object's own colour stays readable (issue 17 item 7); plus the
+/// selection's pixel box, which sizes the handles.
+pub struct Outlined {
+    pub node: NodeId,
+    /// The selection's visible pixels' box (x0, y0, x1, y1), inclusive.
+    pub bounds: Option<(usize, usize, usize, usize)>,
+    /// The layer's colour with the outline drawn in.
+    pub color: Vec<u32>,
+}
+
+impl Outlined {
+    /// Outlines the pixels of `layer` whose id `mine` accepts.
+    pub fn new(node: NodeId, layer: &Frame, mine: impl Fn(u32) -> bool) -> Outlined {
+        let (w, h) = (layer.width as usize, layer.height as usize);
+        let mut color = layer.color.clone();
+        let found = Silhouette::find(&layer.ids, w, w, h, |&id| mine(id));
+        if let Some(s) = &found {
+            s.for_each_ring(|x, y, ring| {
+                let c = &mut color[y * w + x];
+                *c = match ring {
+                    Ring::Inside => theme::blend(*c, theme::SELECTED, 1, 8),
+                    Ring::Near => theme::SELECTED,
+                    Ring::Far => theme::blend(*c, 0x000000, 1, 2),
+                };
+            });
+        }
+        Outlined {
+            node,
+            bounds: found.map(|s| s.bounds()),
+            color,
         }
     }
 }
@@ -84,7 +182,7 @@ pub fn for_each_ring(mask: &[bool], w: usize, h: usize, mut put: impl FnMut(usiz
 /// first `w` columns and `h` rows of a row-major grid (rows `stride`
 /// cells apart) for which `set` holds; found row by row, from each end
 /// of the row, with no division per cell.
-pub fn set_bounds<T>(
+fn set_bounds<T>(
     cells: &[T],
     stride: usize,
     w: usize,
@@ -108,7 +206,7 @@ pub fn set_bounds<T>(
 
 #[cfg(test)]
 mod tests {
-    use super::{for_each_ring, set_bounds, Ring};
+    use super::{set_bounds, Ring, Silhouette};
 
     /// The neighbourhood test the rings replace, one pixel at a time.
     fn by_neighbourhood(mask: &[bool], w: usize, h: usize, x: usize, y: usize) -> Option<Ring> {
@@ -135,9 +233,11 @@ mod tests {
 
     fn rings(mask: &[bool], w: usize, h: usize) -> Vec<Option<Ring>> {
         let mut out = vec![None; w * h];
-        for_each_ring(mask, w, h, |x, y, r| {
-            assert!(out[y * w + x].replace(r).is_none(), "({x}, {y}) twice");
-        });
+        if let Some(s) = Silhouette::find(mask, w, w, h, |&m| m) {
+            s.for_each_ring(|x, y, r| {
+                assert!(out[y * w + x].replace(r).is_none(), "({x}, {y}) twice");
+            });
+        }
         out
     }
 
@@ -169,7 +269,7 @@ mod tests {
             seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
             seed >> 8
         };
-        for (w, h) in [(1, 1), (1, 7), (9, 1), (13, 11), (32, 5)] {
+        for (w, h) in [(1, 1), (1, 7), (9, 1), (13, 11), (32, 5), (66, 4), (130, 5)] {
             for density in [0, 2, 20, 128, 250] {
                 let mask: Vec<bool> = (0..w * h).map(|_| next() % 256 < density).collect();
                 let got = rings(&mask, w, h);

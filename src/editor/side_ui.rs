@@ -6,15 +6,24 @@
 //! out and paints the two lists, places the properties' rows (scrolled
 //! and clipped, `props_view.rs`), answers the wheel and presses on its
 //! rows ([`Side::handle`] → [`Response`]) and draws its scroll bars. It
+//! holds the faces with fields of their own (`side_faces.rs` routes their
+//! field gesture), the scene section and node face among them. It
 //! never names the `Editor`: [`SideCtx`] is the snapshot it sees, and
 //! `route/side.rs` routes to it and applies what it returns. Clicks on
 //! its buttons and on/off boxes go through their widgets' actions like
 //! every other widget's.
 
 use super::component::{Intent, Response};
+use super::field_press::DRAG_SLOP;
+use super::keypanel::KeyPanel;
+use super::material::rows_ui::MatRows;
+use super::node_props::{NodeCtx, NodeProps};
 use super::ops::NewLight;
 use super::panel::{button, label, w, Action, List, Widget, WidgetKind};
 use super::props_view::{Look, PropsView};
+use super::rig::clip_ui::ClipField;
+use super::rig::morph_ui::MorphRows;
+use super::scene_section::{SceneCtx, SceneSection};
 use crate::input::{Event, Key, MouseButton};
 use crate::scene::NodeId;
 use crate::ui::layout::ROW;
@@ -50,6 +59,17 @@ pub struct Side {
     pub revealed: Option<(NodeId, Rect)>,
     /// An object row pressed and maybe being dragged.
     row_drag: Option<RowDrag>,
+    /// The faces that are components of their own (`side_faces.rs`
+    /// routes to them): the key panel, the material rows, the morph
+    /// sliders, the clip name field.
+    pub keys: KeyPanel,
+    pub material: MatRows,
+    pub morph: MorphRows,
+    pub clip: ClipField,
+    /// The properties' node face and the scene section (`node_props.rs`,
+    /// `scene_section.rs`), faces too.
+    pub node: NodeProps,
+    pub scene: SceneSection,
 }
 
 /// A press on an object row: past the slop it drags the object, to drop
@@ -62,10 +82,6 @@ struct RowDrag {
     to: (f32, f32),
     moved: bool,
 }
-
-/// Pixels the mouse may move before a press on a row counts as a drag
-/// (the editor's `gesture::DRAG_SLOP`).
-const DRAG_SLOP: f32 = 3.0;
 
 impl Side {
     /// First visible body row of the properties showing `now`, when
@@ -354,6 +370,26 @@ impl Side {
                 false,
             )),
         }
+    }
+
+    /// Paints the scene section and, when the properties show it
+    /// (`node_shown`), the node face where `view` places its rows; first,
+    /// as other parts' widgets sit on their title rows. Returns the
+    /// widgets they painted, for the editor to leave out.
+    pub fn draw_sections(
+        &self,
+        p: &mut Painter,
+        (scene, node): (&SceneCtx, &NodeCtx),
+        node_view: Option<&PropsView>,
+        look: &Look,
+    ) -> Vec<Widget> {
+        self.scene.draw(p, scene, look);
+        let mut own = self.scene.own_widgets(scene);
+        if let Some(view) = node_view {
+            self.node.draw(p, node, view, look);
+            own.extend(self.node.shown(node, view));
+        }
+        own
     }
 
     /// Paints the two lists (headers, add buttons, rows, on/off boxes),

@@ -3,7 +3,7 @@
 //! gizmos, and picking.
 
 use super::manip::ARROW_PX;
-use super::sel_outline::{for_each_ring, set_bounds, Ring};
+use super::sel_outline::Outlined;
 use super::{gizmo, ops, Editor, LayerKey};
 use crate::input::camera::Projector;
 use crate::render::{self, Frame, RenderOptions};
@@ -45,7 +45,7 @@ impl Editor {
     /// big objects keep full-size handles.
     pub(super) fn handle_projector(&mut self) -> Projector {
         let proj = self.projector();
-        match self.selection.and_then(|s| self.selection_px_radius(s)) {
+        match self.selection_px_radius() {
             Some(r) if handle_scale(r) < 1.0 => proj.for_handles(handle_scale(r), r + 2.0),
             _ => proj,
         }
@@ -63,13 +63,11 @@ impl Editor {
     }
 
     /// Half the larger side of the box around the selected subtree's
-    /// visible pixels in the viewport layer (`None` when none shows).
-    fn selection_px_radius(&mut self, sel: NodeId) -> Option<f32> {
+    /// visible pixels in the viewport layer (`None` when nothing is
+    /// selected or none of it shows).
+    fn selection_px_radius(&mut self) -> Option<f32> {
         self.update_layer();
-        let mine = self.subtree_ids(sel);
-        let lf = &self.layer.frame;
-        let (w, h) = (lf.width as usize, lf.height as usize);
-        let (x0, y0, x1, y1) = set_bounds(&lf.ids, w, w, h, |&id| mine(id))?;
+        let (x0, y0, x1, y1) = self.layer.outlined.as_ref()?.bounds?;
         Some(((x1 - x0).max(y1 - y0) + 1) as f32 * 0.5)
     }
 
@@ -94,8 +92,19 @@ impl Editor {
         self.aa = samples;
     }
 
-    /// Re-renders the viewport layer when its inputs changed.
+    /// Re-renders the viewport layer when its inputs changed, and outlines
+    /// the selection in it when the layer or the selection changed.
     pub(super) fn update_layer(&mut self) {
+        self.update_scene_layer();
+        let sel = self.selection;
+        if self.layer.outlined.as_ref().map(|o| o.node) != sel {
+            self.layer.outlined =
+                sel.map(|sel| Outlined::new(sel, &self.layer.frame, self.subtree_ids(sel)));
+        }
+    }
+
+    /// Re-renders the scene and the grid when their inputs changed.
+    fn update_scene_layer(&mut self) {
         let vp = self.layout().viewport;
         let (w, h) = (vp.w.max(1) as u32, vp.h.max(1) as u32);
         let key = LayerKey {
@@ -115,7 +124,10 @@ impl Editor {
         let view = self.camera.view(w, h, radius);
         let opts = self.layer_options(w, h);
         let pose = self.pose().clone();
-        let mut frame = render::render(&self.scene, &pose, &view, &opts);
+        // Into the last layer's buffers: a new 1280×720 frame with depth and
+        // ids costs its zero-fill and page faults on every redraw.
+        let mut frame = std::mem::replace(&mut self.layer.frame, Frame::new(0, 0, Vec3::ZERO));
+        render::render_into(&self.scene, &pose, &view, &opts, &mut frame);
         if frame.width != w || frame.height != h {
             // A renderer that returned another size: keep the layout sane.
             frame = Frame::new(w, h, opts.background);
@@ -126,6 +138,7 @@ impl Editor {
         }
         self.layer.frame = frame;
         self.layer.key = Some(key);
+        self.layer.outlined = None;
     }
 
     /// Forgets the cached viewport picture (benchmarks force re-renders).
@@ -133,47 +146,21 @@ impl Editor {
         self.layer.key = None;
     }
 
-    /// Copies the viewport layer into `frame` and outlines the selection.
+    /// Copies the viewport layer, with the selection outlined, into `frame`.
     pub(super) fn blit_viewport(&self, frame: &mut Frame, vp: Rect) {
         let lf = &self.layer.frame;
+        let color = match &self.layer.outlined {
+            Some(o) if Some(o.node) == self.selection => &o.color,
+            _ => &lf.color,
+        };
         let fw = frame.width as usize;
         let rows = vp.h.min(lf.height as i32).max(0) as usize;
         let n = vp.w.min(lf.width as i32).max(0) as usize;
         for y in 0..rows {
             let dst = (vp.y as usize + y) * fw + vp.x as usize;
             let src = y * lf.width as usize;
-            frame.color[dst..dst + n].copy_from_slice(&lf.color[src..src + n]);
+            frame.color[dst..dst + n].copy_from_slice(&color[src..src + n]);
         }
-        if let Some(sel) = self.selection {
-            self.outline(frame, vp, sel);
-        }
-    }
-
-    /// Outlines the selected subtree's silhouette from outside (a ring of
-    /// the selection colour with a dark ring beyond it, so it shows on
-    /// light and dark backgrounds) and tints its inside only lightly, so
-    /// the object's own colour stays readable (issue 17 item 7).
-    fn outline(&self, frame: &mut Frame, vp: Rect, sel: NodeId) {
-        let mine = self.subtree_ids(sel);
-        let lf = &self.layer.frame;
-        let w = (lf.width as usize).min(vp.w.max(0) as usize);
-        let h = (lf.height as usize).min(vp.h.max(0) as usize);
-        let lw = lf.width as usize;
-        let mut mask = Vec::with_capacity(w * h);
-        for y in 0..h {
-            let row = &lf.ids[y * lw..y * lw + w];
-            mask.extend(row.iter().map(|&id| mine(id)));
-        }
-        let fw = frame.width as usize;
-        for_each_ring(&mask, w, h, |x, y, ring| {
-            let o = (vp.y as usize + y) * fw + vp.x as usize + x;
-            let c = frame.color[o];
-            frame.color[o] = match ring {
-                Ring::Inside => theme::blend(c, theme::SELECTED, 1, 8),
-                Ring::Near => theme::SELECTED,
-                Ring::Far => theme::blend(c, 0x000000, 1, 2),
-            };
-        });
     }
 
     /// Light gizmos and the axis indicator, clipped to the viewport.
@@ -295,7 +282,7 @@ fn draw_grid(frame: &mut Frame, proj: &Projector, radius: f32) {
             (Vec3::new(t, 0.0, -ext), Vec3::new(t, 0.0, ext), cz),
         ] {
             if let Some((pa, pb)) = proj.segment(a, b) {
-                line::wu_line(&mut frame.color, (w, h), pa, pb, c, 0.8, &keep);
+                line::wu_line(&mut frame.color, (w, h), pa, pb, c, 0.8, keep);
             }
         }
     }

@@ -214,6 +214,23 @@ fn label_box(
     Some(XfBox { lo, hi, m: world })
 }
 
+/// The world box of a Text2 label whose glyphs span `positions` (local
+/// units, `units_per_pixel` of them a pixel) under `world`, as view-all of
+/// a `picture` counts it ([`label_box`]); `None` when that view-all would
+/// not count it.
+pub(super) fn label_world(
+    positions: &[Vec3],
+    world: Mat4,
+    units_per_pixel: f32,
+    picture: (u32, u32),
+) -> Option<(Vec3, Vec3)> {
+    if units_per_pixel <= 0.0 {
+        return None;
+    }
+    let (lo, hi) = points_bounds(positions)?;
+    label_box(lo, hi, world, units_per_pixel, picture).map(|b| b.world())
+}
+
 /// World-space bounds of every visible shape, merged as Coin merges them
 /// (see the module doc); `None` when nothing is visible. `picture`: the
 /// picture's size in pixels when view-all frames one (Text2 labels then

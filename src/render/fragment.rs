@@ -63,7 +63,8 @@ pub struct Shaded<'a> {
     /// Under multisampling, per block of eight pixels: whether every sample
     /// of its pixels shows the triangle of the first sample. Such a block's
     /// colours and ids are kept in the first plane only (the resolve and
-    /// `samples::spread_flat` know).
+    /// `samples::SamplePlanes` know; the passes after this one keep a
+    /// block flat while they write all samples of a pixel alike).
     pub flat: &'a mut [bool],
     /// Working memory of `samples::shade_others`.
     pub queue: &'a mut Vec<Leftover>,

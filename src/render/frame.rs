@@ -26,9 +26,12 @@ pub fn pack_rgb(c: Vec3) -> u32 {
 /// as `clamp` + the saturating cast do), so the bytes are identical.
 #[inline(always)]
 pub fn pack_rgb8<V: V8>(r: V, g: V, b: V) -> [u32; 8] {
-    let q = |x: V| {
+    // A function, not a closure: closures lose the caller's AVX target
+    // feature and their lane operations stop being inlined.
+    #[inline(always)]
+    fn q<V: V8>(x: V) -> [i32; 8] {
         (x.max(V::splat(0.0)).min(V::splat(1.0)) * V::splat(255.0) + V::splat(0.5)).trunc_i32()
-    };
+    }
     let (r, g, b) = (q(r), q(g), q(b));
     std::array::from_fn(|k| ((r[k] as u32) << 16) | ((g[k] as u32) << 8) | b[k] as u32)
 }

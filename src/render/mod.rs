@@ -17,6 +17,7 @@
 mod background;
 pub mod band_trace;
 pub mod bench_scenes;
+mod blend_samples;
 mod clip;
 mod coin_bounds;
 mod fragment;
@@ -45,7 +46,7 @@ mod view;
 
 pub use frame::{pack_rgb, Frame};
 pub use shade::{ShadeMaterial, WorldLight};
-pub use view::{bounding_sphere, scene_bounds, shape_bounds, View};
+pub use view::{bounding_sphere, scene_bounds, scene_bounds_for_picture, shape_bounds, View};
 
 use crate::anim::Pose;
 use crate::scene::{RenderStyle, Scene};

@@ -91,6 +91,13 @@ pub struct Tri {
 }
 
 impl Tri {
+    /// Window depth at screen-space weights b1, b2 (the depth pass's
+    /// arithmetic, one pixel).
+    #[inline]
+    pub fn depth_at(&self, b1: f32, b2: f32) -> f32 {
+        self.z[0] + b1 * (self.z[1] - self.z[0]) + b2 * (self.z[2] - self.z[0])
+    }
+
     /// Twice the signed area in SUBPIXEL² units (positive: see [`Tri`]).
     #[inline]
     pub fn area(&self) -> i64 {

@@ -5,13 +5,14 @@
 //! tile owns its pixels, so tiles can run on any thread in any order and the
 //! picture stays the same.
 
+use super::blend_samples;
 use super::clip::ATTRS;
 use super::fragment::{store_masked, Leftover, Pass, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
-use super::samples;
+use super::samples::SamplePlanes;
 use super::shade::shade;
 use super::shading;
-use super::simd::{self, Lanes, Sse8, V8};
+use super::simd::{self, Sse8, V8};
 use super::surface;
 use glam::Vec3;
 
@@ -90,10 +91,6 @@ pub struct Scratch {
     winner: Vec<u32>,
     b1: Vec<f32>,
     b2: Vec<f32>,
-    /// Per pixel, for one transparent triangle under multisampling: the
-    /// samples it covers and the weights at the first of them.
-    cover: Vec<u8>,
-    cover_b: Vec<[f32; 2]>,
     /// Per block of eight pixels under multisampling: kept in the first
     /// sample plane only (see `samples`).
     flat: Vec<bool>,
@@ -126,8 +123,6 @@ impl Scratch {
             winner: vec![NONE; n],
             b1: vec![0.0; PLANE],
             b2: vec![0.0; PLANE],
-            cover: vec![0; if samples > 1 { PLANE } else { 0 }],
-            cover_b: vec![[0.0; 2]; if samples > 1 { PLANE } else { 0 }],
             flat: vec![false; PLANE / 8],
             queue: Vec::new(),
         }
@@ -294,7 +289,7 @@ fn depth_triangle<V: V8, const NS: usize>(
         for (si, &off) in offs.iter().enumerate() {
             let plane = si * PLANE;
             for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
-                let z = depth_at(t, w1, w2);
+                let z = t.depth_at(w1, w2);
                 let i = (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
                 if z < bufs.depth[plane + i] && z >= 0.0 {
                     bufs.depth[plane + i] = z;
@@ -473,11 +468,6 @@ fn put8<T: Copy>(dst: &mut [T], px: &[T; 8]) {
     }
 }
 
-#[inline]
-fn depth_at(t: &Tri, b1: f32, b2: f32) -> f32 {
-    t.z[0] + b1 * (t.z[1] - t.z[0]) + b2 * (t.z[2] - t.z[0])
-}
-
 /// Colour of a fragment with attributes `a` of `item`.
 #[inline]
 fn shade_attrs(item: &Item, a: &[f32; ATTRS], eye: Vec3) -> Vec3 {
@@ -590,12 +580,6 @@ pub fn draw_tile(
     depth_tile(p, bin, rect, scratch);
     shade_tile(p, bin, rect, background, eye, scratch);
     let ns = scratch.samples;
-    if ns > 1 && !(bin.lines.is_empty() && bin.points.is_empty() && bin.transparent.is_empty()) {
-        let Scratch {
-            r, g, b, ids, flat, ..
-        } = scratch;
-        samples::spread_flat([r, g, b], ids, flat, ns);
-    }
     let offsets = sample_offsets(ns);
     let at = |x: i32, y: i32| (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
     let Scratch {
@@ -604,15 +588,17 @@ pub fn draw_tile(
         b,
         depth,
         ids,
-        cover,
-        cover_b,
+        flat,
         ..
     } = scratch;
-    fn put(rgb: [&mut [f32]; 3], i: usize, c: Vec3) {
-        rgb[0][i] = c.x;
-        rgb[1][i] = c.y;
-        rgb[2][i] = c.z;
-    }
+    // Flat blocks (see `samples`) stay in one plane until a pass below
+    // writes some of their samples.
+    let mut planes = SamplePlanes {
+        rgb: [r, g, b],
+        ids,
+        flat,
+        ns,
+    };
     // 3. Lines and points, depth-tested and shaded as they come; under
     // multisampling they cover samples (a band of the line's width, a square).
     let sample_px: Vec<(f32, f32)> = offsets
@@ -627,8 +613,7 @@ pub fn draw_tile(
                 let i = at(x, y);
                 if z < depth[i] && z >= 0.0 {
                     depth[i] = z;
-                    put([r, g, b], i, shade_attrs(item, &facing(a, eye), eye));
-                    ids[i] = item.id;
+                    planes.put(i, shade_attrs(item, &facing(a, eye), eye), item.id);
                 }
             });
             continue;
@@ -641,8 +626,8 @@ pub fn draw_tile(
                 if mask >> s & 1 == 1 && z < depth[j] && z >= 0.0 {
                     let c = *color.get_or_insert_with(|| shade_attrs(item, &facing(a, eye), eye));
                     depth[j] = z;
-                    put([r, g, b], j, c);
-                    ids[j] = item.id;
+                    planes.unflat(i);
+                    planes.put(j, c, item.id);
                 }
             }
         });
@@ -670,8 +655,8 @@ pub fn draw_tile(
                     let j = s * PLANE + i;
                     if pt.z < depth[j] && pt.z >= 0.0 {
                         depth[j] = pt.z;
-                        put([r, g, b], j, c);
-                        ids[j] = item.id;
+                        planes.unflat(i);
+                        planes.put(j, c, item.id);
                     }
                 }
             }
@@ -684,14 +669,6 @@ pub fn draw_tile(
         let item = &p.items[t.item as usize];
         // Alpha-tested (glTF MASK) pixels below the cutoff are not drawn.
         let masks = item.texture.as_ref().is_some_and(|s| s.masks());
-        let mut blend = |j: usize, (c, alpha): (Vec3, f32)| {
-            if masks && alpha == 0.0 {
-                return;
-            }
-            let under = Vec3::new(r[j], g[j], b[j]);
-            put([r, g, b], j, c * alpha + under * (1.0 - alpha));
-            ids[j] = item.id;
-        };
         // Colour and alpha of a fragment (textures may vary the alpha).
         let color_at = |w1: f32, w2: f32| {
             if item.textured {
@@ -705,65 +682,53 @@ pub fn draw_tile(
         };
         if ns == 1 {
             for_each_pixel(t, rect, |x, y, w1, w2| {
-                let z = depth_at(t, w1, w2);
+                let z = t.depth_at(w1, w2);
                 let i = at(x, y);
                 if z < depth[i] && z >= 0.0 {
-                    blend(i, color_at(w1, w2));
+                    let (c, alpha) = color_at(w1, w2);
+                    if !(masks && alpha == 0.0) {
+                        planes.blend(i, c, alpha, item.id);
+                    }
                 }
             });
             continue;
         }
-        // Samples covered and in front, per pixel; then one shading per
-        // pixel (at its first such sample) blended into each of them.
-        let bx = [
-            t.bbox[0].max(rect[0]),
-            t.bbox[1].max(rect[1]),
-            t.bbox[2].min(rect[2]),
-            t.bbox[3].min(rect[3]),
-        ];
-        if bx[0] >= bx[2] || bx[1] >= bx[3] {
-            continue;
-        }
-        for y in bx[1]..bx[3] {
-            for x in bx[0]..bx[2] {
-                cover[at(x, y)] = 0;
-            }
-        }
-        for (s, &off) in offsets.iter().enumerate() {
-            for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
-                let z = depth_at(t, w1, w2);
-                let i = at(x, y);
-                if z < depth[s * PLANE + i] && z >= 0.0 {
-                    if cover[i] == 0 {
-                        cover_b[i] = [w1, w2];
-                    }
-                    cover[i] |= 1 << s;
-                }
-            });
-        }
-        for y in bx[1]..bx[3] {
-            for x in bx[0]..bx[2] {
-                let i = at(x, y);
-                if cover[i] == 0 {
-                    continue;
-                }
-                let [w1, w2] = cover_b[i];
-                let c = color_at(w1, w2);
-                for s in 0..ns {
-                    if cover[i] >> s & 1 == 1 {
-                        blend(s * PLANE + i, c);
-                    }
-                }
-            }
-        }
+        // One walk for all samples, one shading per pixel.
+        blend_samples::blend_triangle(
+            t,
+            rect,
+            offsets,
+            depth,
+            &mut planes,
+            (item.id, masks),
+            color_at,
+        );
     }
     resolve_tile(rect, scratch, target);
 }
 
 /// Stage 5 of a tile: resolve its samples into the frame — the mean of
 /// the samples (a box filter), the nearest sample's depth, the id of the
-/// first sample showing one.
+/// first sample showing one. On AVX lanes where the CPU has them (the same
+/// lane operations, so the same bits).
 pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
+    #[cfg(target_arch = "x86_64")]
+    if simd::avx() {
+        // SAFETY: `simd::avx()` checked that the CPU has AVX.
+        unsafe { resolve_tile_avx(rect, scratch, target) };
+        return;
+    }
+    resolve_tile_in::<Sse8>(rect, scratch, target);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn resolve_tile_avx(rect: Rect, scratch: &Scratch, target: &mut Target) {
+    resolve_tile_in::<simd::Avx8>(rect, scratch, target);
+}
+
+#[inline(always)]
+fn resolve_tile_in<V: V8>(rect: Rect, scratch: &Scratch, target: &mut Target) {
     let tw = (rect[2] - rect[0]) as usize;
     let ns = scratch.samples;
     let Scratch {
@@ -775,7 +740,6 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
         flat,
         ..
     } = scratch;
-    let inv = 1.0 / ns as f32;
     // A colour-only frame (`render_color_into`) has no depth or ids.
     let depth_and_ids = !target.depth.is_empty();
     for (row, y) in (rect[1]..rect[3]).enumerate() {
@@ -785,8 +749,11 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
             // Eight at a time (tile rows are TILE long, so the last block
             // may read past `tw` but only `tw` pixels are written).
             for k in (0..tw).step_by(8) {
-                let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
-                let px = super::frame::pack_rgb8(ld(r), ld(g), ld(b));
+                let px = super::frame::pack_rgb8(
+                    ld::<V>(r, src + k),
+                    ld::<V>(g, src + k),
+                    ld::<V>(b, src + k),
+                );
                 put8(&mut target.color[dst + k..dst + tw], &px);
                 if !depth_and_ids {
                     continue;
@@ -806,50 +773,56 @@ pub fn resolve_tile(rect: Rect, scratch: &Scratch, target: &mut Target) {
         // Eight pixels at a time, all their samples at once (no row-long
         // sums kept in memory); the sum runs in sample order from 0, so it
         // is the same on every machine and as it always was.
-        let inv = Sse8::splat(inv);
+        let inv = V::splat(1.0 / ns as f32);
         for k in (0..tw).step_by(8) {
-            let mut acc = [Sse8::splat(0.0); 3];
-            let mut zmin = [f32::INFINITY; 8];
+            let i0 = src + k;
+            let mut acc = [V::splat(0.0); 3];
             let mut id = [0u32; 8];
-            if flat[(src + k) / 8] {
+            if flat[i0 / 8] {
                 // Kept in the first plane only (see `samples`): the same
                 // sum, of the first plane `ns` times, and its ids.
-                let ld = |c: &[f32]| Sse8::load(c[src + k..src + k + 8].try_into().expect("8"));
-                let c = [ld(r), ld(g), ld(b)];
+                let c = [ld::<V>(r, i0), ld::<V>(g, i0), ld::<V>(b, i0)];
                 for _ in 0..ns {
                     for (a, c) in acc.iter_mut().zip(c) {
                         *a = *a + c;
                     }
                 }
-                id.copy_from_slice(&ids[src + k..src + k + 8]);
-            }
-            for s in 0..ns {
-                let j = s * PLANE + src + k;
-                if depth_and_ids {
-                    for (z, d) in zmin.iter_mut().zip(&depth[j..j + 8]) {
-                        *z = z.min(*d);
+                id.copy_from_slice(&ids[i0..i0 + 8]);
+            } else {
+                for s in 0..ns {
+                    let j = s * PLANE + i0;
+                    for (a, c) in acc.iter_mut().zip([r, g, b]) {
+                        *a = *a + ld::<V>(c, j);
                     }
-                }
-                if flat[(src + k) / 8] {
-                    continue;
-                }
-                for (a, c) in acc.iter_mut().zip([r, g, b]) {
-                    *a = *a + Sse8::load(c[j..j + 8].try_into().expect("8"));
-                }
-                if depth_and_ids {
-                    for (i, d) in id.iter_mut().zip(&ids[j..j + 8]) {
-                        *i = if *i == 0 { *d } else { *i };
+                    if depth_and_ids {
+                        for (i, d) in id.iter_mut().zip(&ids[j..j + 8]) {
+                            *i = if *i == 0 { *d } else { *i };
+                        }
                     }
                 }
             }
             let px = super::frame::pack_rgb8(acc[0] * inv, acc[1] * inv, acc[2] * inv);
             put8(&mut target.color[dst + k..dst + tw], &px);
             if depth_and_ids {
+                let mut zmin = [f32::INFINITY; 8];
+                for s in 0..ns {
+                    let j = s * PLANE + i0;
+                    for (z, d) in zmin.iter_mut().zip(&depth[j..j + 8]) {
+                        *z = z.min(*d);
+                    }
+                }
                 put8(&mut target.depth[dst + k..dst + tw], &zmin);
                 put8(&mut target.ids[dst + k..dst + tw], &id);
             }
         }
     }
+}
+
+/// The eight lanes of `c` from `i` (a function, not a closure: see
+/// [`edge_lanes`]).
+#[inline(always)]
+fn ld<V: V8>(c: &[f32], i: usize) -> V {
+    V::load(c[i..i + 8].try_into().expect("8"))
 }
 
 /// Lines and points have no "side": turn their normal towards the eye.

@@ -13,13 +13,14 @@
 //! first plane `samples` times for them (the same sum, so the same bits;
 //! the sky, drawn after this per plane and the same in every plane of a
 //! pixel, may paint the unused planes of a flat block, which nothing
-//! reads), and [`spread_flat`] writes them out before anything draws into
-//! single samples (lines, points, transparent triangles).
+//! reads); [`SamplePlanes`] writes a block out only when something draws
+//! into some of its samples (lines, points, transparent triangles).
 
 use super::fragment::{
     lanes8, lanes8_mut, shade_mixed, Leftover, Pass, Shaded, Visible, NONE, PLANE, TILE,
 };
 use super::simd::V8;
+use glam::Vec3;
 
 /// Colours and ids of every sample but the first of each pixel of the
 /// tile, and the `flat` marks of its blocks.
@@ -133,25 +134,63 @@ fn spread_block<V: V8>(
     false
 }
 
-/// Writes the first plane of every `flat` block into its other `ns − 1`
-/// planes and clears the marks: for the passes that draw into single
-/// samples after the shading pass.
-pub fn spread_flat(rgb: [&mut [f32]; 3], ids: &mut [u32], flat: &mut [bool], ns: usize) {
-    let [r, g, b] = rgb;
-    for (blk, f) in flat.iter_mut().enumerate() {
-        if !std::mem::take(f) {
-            continue;
+/// A tile's colour and id planes with the `flat` marks of its blocks, for
+/// the passes that draw into single samples after the shading pass (lines,
+/// points, transparent triangles). A flat block stays flat (one plane)
+/// until a pass writes a pixel of it in some samples only; then
+/// [`SamplePlanes::unflat`] writes its first plane into the others, so
+/// the resolve keeps its one-plane sum for every block left untouched.
+pub struct SamplePlanes<'a> {
+    pub rgb: [&'a mut [f32]; 3],
+    pub ids: &'a mut [u32],
+    pub flat: &'a mut [bool],
+    pub ns: usize,
+}
+
+impl SamplePlanes<'_> {
+    /// Whether pixel `i`'s block is kept in the first plane only.
+    #[inline]
+    pub fn is_flat(&self, i: usize) -> bool {
+        self.ns > 1 && self.flat[i / 8]
+    }
+
+    /// Gives pixel `i`'s block its colours and ids in every plane (writes
+    /// the first plane into the other `ns − 1` and clears its mark), before
+    /// a pass writes some of its samples.
+    #[inline]
+    pub fn unflat(&mut self, i: usize) {
+        if !self.is_flat(i) {
+            return;
         }
+        let blk = i / 8;
+        self.flat[blk] = false;
         let i0 = blk * 8;
-        for c in [&mut *r, &mut *g, &mut *b] {
+        let [r, g, b] = &mut self.rgb;
+        for c in [&mut **r, &mut **g, &mut **b] {
             let v = *lanes8(c, i0);
-            for s in 1..ns {
-                c[s * PLANE + i0..s * PLANE + i0 + 8].copy_from_slice(&v);
+            for s in 1..self.ns {
+                *lanes8_mut(c, s * PLANE + i0) = v;
             }
         }
-        let v = *lanes8(ids, i0);
-        for s in 1..ns {
-            ids[s * PLANE + i0..s * PLANE + i0 + 8].copy_from_slice(&v);
+        let v = *lanes8(self.ids, i0);
+        for s in 1..self.ns {
+            *lanes8_mut(self.ids, s * PLANE + i0) = v;
         }
+    }
+
+    /// Writes colour `c` and `id` into sample `j` (plane-major index).
+    #[inline]
+    pub fn put(&mut self, j: usize, c: Vec3, id: u32) {
+        self.rgb[0][j] = c.x;
+        self.rgb[1][j] = c.y;
+        self.rgb[2][j] = c.z;
+        self.ids[j] = id;
+    }
+
+    /// Blends colour `c` with opacity `alpha` over sample `j`.
+    #[inline]
+    pub fn blend(&mut self, j: usize, c: Vec3, alpha: f32, id: u32) {
+        let under = Vec3::new(self.rgb[0][j], self.rgb[1][j], self.rgb[2][j]);
+        self.put(j, c * alpha + under * (1.0 - alpha), id);
     }
 }

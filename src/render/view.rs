@@ -264,6 +264,23 @@ pub fn shape_bounds(scene: &Scene, pose: &Pose) -> Vec<(NodeId, Vec3, Vec3)> {
 
 /// World-space bounding box of every visible shape in the pose.
 pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
+    bounds_in(scene, pose, None)
+}
+
+/// [`scene_bounds`] for a picture `width`×`height` pixels: Inventor Text2
+/// labels count by their pixel rectangles, as view-all of that picture
+/// counts them ([`View::view_all_for_picture`]), not by their anchors
+/// alone. What the editor frames its viewport with.
+pub fn scene_bounds_for_picture(
+    scene: &Scene,
+    pose: &Pose,
+    width: u32,
+    height: u32,
+) -> Option<(Vec3, Vec3)> {
+    bounds_in(scene, pose, Some((width, height)))
+}
+
+fn bounds_in(scene: &Scene, pose: &Pose, picture: Option<(u32, u32)>) -> Option<(Vec3, Vec3)> {
     let mut out: Option<(Vec3, Vec3)> = None;
     for (i, node) in scene.nodes.iter().enumerate() {
         let NodeKind::Shape(shape) = &node.kind else {
@@ -279,16 +296,19 @@ pub fn scene_bounds(scene: &Scene, pose: &Pose) -> Option<(Vec3, Vec3)> {
         // Deformed shapes: the bounds of the pose's vertices.
         let geo = Geometry::of(mesh, pose, NodeId(i as u32), world);
         // An Inventor Text2 label is drawn at a pixel size, not a scene
-        // size: view-all counts its anchor only, as Coin's does.
-        let label = matches!(mesh.text.as_deref(), Some(t) if t.kind == TextKind::Text2);
-        let Some((lo, hi)) = (if label {
-            Some((Vec3::ZERO, Vec3::ZERO))
-        } else {
-            points_bounds(geo.positions)
+        // size: without a picture only its anchor counts; with one, its
+        // pixel rectangle as view-all sees it (a world box).
+        let label = mesh.text.as_deref().filter(|t| t.kind == TextKind::Text2);
+        let Some((lo, hi, world)) = (match (label, picture) {
+            (Some(t), Some(px)) => {
+                super::coin_bounds::label_world(geo.positions, geo.world, t.units_per_pixel, px)
+                    .map(|(lo, hi)| (lo, hi, Mat4::IDENTITY))
+            }
+            (Some(_), None) => Some((Vec3::ZERO, Vec3::ZERO, geo.world)),
+            (None, _) => points_bounds(geo.positions).map(|(lo, hi)| (lo, hi, geo.world)),
         }) else {
             continue;
         };
-        let world = geo.world;
         for k in 0..8 {
             let c = Vec3::new(
                 if k & 1 == 0 { lo.x } else { hi.x },

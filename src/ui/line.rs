@@ -12,7 +12,7 @@ pub fn wu_line(
     b: (f32, f32),
     color: u32,
     alpha: f32,
-    keep: &dyn Fn(usize) -> bool,
+    keep: impl Fn(usize) -> bool,
 ) {
     let (w, h) = (width as i64, height as i64);
     let (mut x0, mut y0, mut x1, mut y1) = (a.0 - 0.5, a.1 - 0.5, b.0 - 0.5, b.1 - 0.5);
@@ -58,12 +58,21 @@ pub fn wu_line(
     let mut x = xs as i64;
     while x as f32 <= xe {
         let y = y0 + grad * (x as f32 - x0);
-        let yf = y.floor();
-        let frac = y - yf;
-        plot(x, yf as i64, 1.0 - frac);
-        plot(x, yf as i64 + 1, frac);
+        let yi = floor(y);
+        let frac = y - yi as f32;
+        plot(x, yi, 1.0 - frac);
+        plot(x, yi + 1, frac);
         x += 1;
     }
+}
+
+/// `y.floor() as i64` without a libm call (the SSE2 baseline has no
+/// rounding instruction, and this runs twice per grid pixel): truncation,
+/// one less for negative non-integers. Exact for every finite `f32`: past
+/// 2^23 every float is an integer, and both saturate at `i64::MIN`.
+fn floor(y: f32) -> i64 {
+    let t = y as i64;
+    t.saturating_sub(((t as f32) > y) as i64)
 }
 
 #[cfg(test)]
@@ -80,7 +89,7 @@ mod tests {
             (9.5, 2.5),
             0xffffff,
             1.0,
-            &|_| true,
+            |_| true,
         );
         assert!(buf[20..30].iter().all(|&c| c == 0xffffff));
         assert!(buf[10..20].iter().all(|&c| c == 0));
@@ -96,9 +105,41 @@ mod tests {
             (60.0, 60.0),
             0xff0000,
             1.0,
-            &|i| i % 2 == 0,
+            |i| i % 2 == 0,
         );
         assert!(buf.iter().enumerate().all(|(i, &c)| i % 2 == 0 || c == 0));
         assert!(buf.iter().any(|&c| c != 0));
+    }
+
+    #[test]
+    fn floor_matches_the_library_floor() {
+        for y in [
+            0.0f32,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            2.9999998,
+            -2.0000002,
+            1e-30,
+            -1e-30,
+            8_388_607.5,
+            -8_388_607.5,
+            3e9,
+            -3e9,
+            1e20,
+            -1e20,
+        ] {
+            assert_eq!(floor(y), y.floor() as i64, "{y}");
+        }
+        let mut bits = 0x1234_5678u32;
+        for _ in 0..100_000 {
+            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            let y = f32::from_bits(bits);
+            if y.is_finite() {
+                assert_eq!(floor(y), y.floor() as i64, "{y}");
+            }
+        }
     }
 }

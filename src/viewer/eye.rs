@@ -23,7 +23,11 @@ impl Eye {
         let aspect = w.max(1) as f32 / h.max(1) as f32;
         match self {
             Eye::Viewpoint(i) => view_for(scene, pose, cameras.get(*i).copied(), aspect),
-            Eye::ViewAll => view_for(scene, pose, None, aspect),
+            // Framed as `animed render` frames this picture size (Text2
+            // labels by their pixel rectangles, from the start pose).
+            Eye::ViewAll => {
+                View::view_all_for_picture(scene, &crate::anim::evaluate(scene, 0.0), pose, w, h)
+            }
             Eye::Orbit(c) => {
                 let radius = crate::render::bounding_sphere(scene, pose).map_or(1.0, |s| s.1);
                 c.view(w, h, radius)

@@ -10,10 +10,12 @@
 //! animatable: its wrap toggles are plain undoable edits.
 //!
 //! This file is pure data and rules (it never names the `Editor`);
-//! `thumb.rs` makes the texture thumbnail and `route.rs` holds the
-//! editor's side (widgets, edits, keys, drawing).
+//! `thumb.rs` makes the texture thumbnail, `rows_ui.rs` is the rows'
+//! component (layout, painting, its field press) and `route.rs` holds
+//! the editor's side (its snapshot, edits, keys).
 
 pub mod route;
+pub mod rows_ui;
 pub mod texture;
 pub mod thumb;
 

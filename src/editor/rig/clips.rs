@@ -16,13 +16,13 @@
 use crate::editor::command::Command;
 use crate::editor::fields::{sanitize_name, FieldId};
 use crate::editor::menu::{Menu, MenuItem};
-use crate::editor::panel::{self, Action, Widget, WidgetKind};
+use crate::editor::panel::{Action, Widget};
 use crate::editor::Editor;
 use crate::scene::{Clip, Scene};
-use crate::ui::text;
 use crate::ui::Rect;
 
 pub use super::clip_action::ClipAction;
+use super::clip_ui::{ClipCtx, ClipField};
 
 /// Most clips listed by name in the menu (the `<` `>` buttons reach all).
 const MENU_CLIPS: usize = 24;
@@ -117,55 +117,18 @@ impl Editor {
         self.scene.clips.active_name().unwrap_or("").to_string()
     }
 
+    /// What the clip name field sees (`rig/clip_ui.rs`).
+    pub(in crate::internals::editor) fn clip_ctx(&self) -> ClipCtx {
+        ClipCtx {
+            name: self.clip_name(),
+            named: !self.scene.clips.is_empty(),
+        }
+    }
+
     /// `< name > Clips` at the right of the Scene header, when the scene
-    /// has named clips.
+    /// has named clips (the component lays them out).
     pub(in crate::internals::editor) fn clip_widgets(&self, h: Rect, out: &mut Vec<Widget>) {
-        if self.scene.clips.is_empty() {
-            return;
-        }
-        let title = text::width("Scene") + 8;
-        let bw = |s: &str| text::width(s) + 4;
-        let (y, bh) = (h.y + 1, h.h - 2);
-        let mut x = h.right() - 2;
-        let menu_w = bw("Clips");
-        x -= menu_w;
-        let menu = Rect::new(x, y, menu_w, bh);
-        x -= bw(">") + 1;
-        let next = Rect::new(x, y, bw(">"), bh);
-        let field_w = (x - 1 - (h.x + title) - bw("<") - 1).min(16 * text::CHAR_W);
-        if field_w < 3 * text::CHAR_W {
-            // Too narrow: only the menu.
-            out.push(panel::button(
-                menu,
-                "Clips",
-                Action::Clip(ClipAction::Menu),
-                false,
-            ));
-            return;
-        }
-        x -= field_w + 1;
-        let field = Rect::new(x, y, field_w, bh);
-        x -= bw("<") + 1;
-        let prev = Rect::new(x, y, bw("<"), bh);
-        out.push(panel::button(
-            prev,
-            "<",
-            Action::Clip(ClipAction::Step(-1)),
-            false,
-        ));
-        out.push(panel::w(field, WidgetKind::Field(FieldId::ClipName)));
-        out.push(panel::button(
-            next,
-            ">",
-            Action::Clip(ClipAction::Step(1)),
-            false,
-        ));
-        out.push(panel::button(
-            menu,
-            "Clips",
-            Action::Clip(ClipAction::Menu),
-            false,
-        ));
+        ClipField::widgets(h, &self.clip_ctx(), out);
     }
 
     /// The clip menu at (x, y): every clip (the playing one marked) and

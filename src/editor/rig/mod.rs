@@ -11,10 +11,12 @@
 
 pub mod bones;
 pub mod clip_action;
+pub mod clip_ui;
 pub mod clips;
 pub mod ik;
 pub mod ik_drag;
 pub mod morph;
+pub mod morph_ui;
 pub mod state;
 mod view;
 

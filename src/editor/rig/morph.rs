@@ -9,17 +9,19 @@
 //! the change pending — shown until the frame changes, K keys it — and
 //! an unanimated mesh takes it as its default weights (undoable).
 //! While a slider is dragged the new weights are shown the same pending
-//! way, so the mesh deforms live.
+//! way, so the mesh deforms live. The sliders themselves (layout, paint,
+//! their press) are a component, `morph_ui.rs`; this file applies what
+//! they ask for.
 
 use crate::anim::{Animation, Property, Target, TargetRef, Value, Weights};
 use crate::editor::command::Command;
 use crate::editor::fields::FieldId;
-use crate::editor::panel::{self, Widget};
+use crate::editor::panel::Widget;
 use crate::editor::Editor;
 use crate::scene::{MeshId, Morphs, NodeId, NodeKind, Scene};
-use crate::ui::text::CHAR_W;
-use crate::ui::{theme, Painter, Rect};
+use crate::ui::Rect;
 
+use super::morph_ui::{MorphCtx, MorphRows};
 pub use super::state::{MorphBase, MorphPending};
 
 /// The mesh of shape node `id` when it has morph targets.
@@ -161,12 +163,6 @@ impl Editor {
         })
     }
 
-    /// A slider's value from its base.
-    pub(in crate::internals::editor) fn morph_value(id: FieldId, base: &MorphBase) -> Option<f32> {
-        let FieldId::Morph(i) = id else { return None };
-        base.start.as_slice().get(i as usize).copied()
-    }
-
     /// Live drag: shows the weights with slider `id` at `v`.
     pub(in crate::internals::editor) fn drag_morph(
         &mut self,
@@ -276,33 +272,21 @@ impl Editor {
         true
     }
 
-    /// One slider row: the target's name, then its weight field.
-    pub(in crate::internals::editor) fn morph_row(&self, i: u8, r: Rect, out: &mut Vec<Widget>) {
-        let Some((_, shape)) = self.selection.and_then(|s| morph_of(&self.scene, s)) else {
-            return;
+    /// What the morph sliders see (`rig/morph_ui.rs`).
+    pub(in crate::internals::editor) fn morph_ctx(&self) -> MorphCtx {
+        let Some(base) = self.morph_base() else {
+            return MorphCtx::default();
         };
-        let names = target_names(&self.scene, shape);
-        let name = names.get(i as usize).map_or("", |s| s.as_str());
-        let lw = (r.w * 2 / 5).max(5 * CHAR_W);
-        panel::field_row(out, r, name, lw, &[FieldId::Morph(i)]);
-    }
-
-    /// The slider's fill: a bar along the field's bottom edge, the weight's
-    /// share of 0..1 (clamped; the number shows values outside).
-    pub(in crate::internals::editor) fn draw_morph_bar(&self, p: &mut Painter, r: Rect, i: u8) {
-        let Some(v) = self.morph_text(i) else { return };
-        let inner = r.w - 2;
-        let fill = ((v.clamp(0.0, 1.0) * inner as f32).round() as i32).clamp(0, inner);
-        p.fill_rect(Rect::new(r.x + 1, r.bottom() - 3, inner, 2), theme::BUTTON);
-        if fill > 0 {
-            p.fill_rect(Rect::new(r.x + 1, r.bottom() - 3, fill, 2), theme::ACCENT);
+        MorphCtx {
+            names: target_names(&self.scene, base.shape),
+            base: Some(base),
         }
     }
 
-    /// The slider's text: the weight (a pending change included).
-    pub(in crate::internals::editor) fn morph_text(&self, i: u8) -> Option<f32> {
-        let (_, _, w) = self.shown_weights()?;
-        w.as_slice().get(i as usize).copied()
+    /// One slider row: the target's name, then its weight field (the
+    /// component lays it out).
+    pub(in crate::internals::editor) fn morph_row(&self, i: u8, r: Rect, out: &mut Vec<Widget>) {
+        MorphRows::row(i, r, &self.morph_ctx(), out);
     }
 }
 

@@ -4,12 +4,13 @@ use crate::editor::browser::Purpose;
 use crate::editor::browser_ui::Reply;
 use crate::editor::command::Command;
 use crate::editor::dialog::Answer;
+use crate::editor::field_press::FieldEvent;
 use crate::editor::fields::{parse_number, FieldId, FieldValue};
 #[allow(unused_imports)]
 use crate::editor::gesture::*;
-use crate::editor::keypanel::KeyEvent;
 use crate::editor::ops;
 use crate::editor::panel::{Action, WidgetKind};
+use crate::editor::side_faces::is_face_field;
 use crate::editor::{After, Dialog, Editor, Mode, Playback, TextEdit};
 use crate::input::{Event, Key, Mods, MouseButton};
 use crate::scene::RenderStyle;
@@ -138,8 +139,7 @@ impl Editor {
         let part = match &self.drag {
             Drag::Graph => self.graph_event(&ev),
             Drag::Keys => self.strip_event(&ev),
-            Drag::KeyPanel => self.key_panel_mouse(KeyEvent::Move { x }),
-            Drag::Side => self.side_event(&ev),
+            Drag::Side => self.side_mouse(&ev),
             // The viewport's gesture, or hover over its handles.
             Drag::Viewport | Drag::None => self.viewport_event(&ev),
             _ => None,
@@ -148,7 +148,7 @@ impl Editor {
             return redraw;
         }
         match self.drag.clone() {
-            Drag::Viewport | Drag::Keys | Drag::Graph | Drag::KeyPanel | Drag::Side => false,
+            Drag::Viewport | Drag::Keys | Drag::Graph | Drag::Side => false,
             Drag::None => {
                 // Hover highlight only changes the picture when the widget
                 // under the mouse changes.
@@ -156,25 +156,7 @@ impl Editor {
                 let after = self.widget_at(x, y);
                 before != after
             }
-            Drag::Field {
-                id,
-                start_x,
-                moved,
-                base,
-            } => {
-                let dx = x - start_x;
-                if !moved && dx.abs() < DRAG_SLOP {
-                    return false;
-                }
-                self.drag = Drag::Field {
-                    id,
-                    start_x,
-                    moved: true,
-                    base: base.clone(),
-                };
-                self.drag_field(id, &base, dx);
-                true
-            }
+            Drag::TimeField(_) => self.time_field_move(x),
             Drag::Seek => {
                 self.seek_to_x(x);
                 true
@@ -289,15 +271,12 @@ impl Editor {
                     return;
                 }
                 self.commit_edit();
-                if let FieldId::Key(f) = id {
-                    self.key_field_press(f, x);
-                } else if let Some(base) = self.field_base(id) {
-                    self.drag = Drag::Field {
-                        id,
-                        start_x: x,
-                        moved: false,
-                        base,
-                    };
+                if is_face_field(id) {
+                    // The side panel's faces hold their own presses.
+                    self.face_event(FieldEvent::Press { field: id, x });
+                } else {
+                    // The controls bar's Frame and preview range fields.
+                    self.time_field_press(id, x);
                 }
             }
             WidgetKind::Button { action, .. } | WidgetKind::Check { action, .. } => {
@@ -333,38 +312,14 @@ impl Editor {
                 self.strip_event(&Event::MouseUp { button, x, y, mods });
                 return;
             }
-            Drag::KeyPanel => {
-                self.key_panel_mouse(KeyEvent::Release);
-                return;
-            }
             Drag::Side => {
-                self.side_event(&Event::MouseUp { button, x, y, mods });
+                self.side_mouse(&Event::MouseUp { button, x, y, mods });
                 return;
             }
             _ => {}
         }
         match std::mem::take(&mut self.drag) {
-            Drag::Field {
-                id,
-                moved: false,
-                base,
-                ..
-            } => {
-                let text = self.field_value(id, &base).map(|v| v.display());
-                if let Some(text) = text {
-                    self.edit = Some(TextEdit {
-                        field: id,
-                        text,
-                        fresh: true,
-                    });
-                }
-            }
-            Drag::Field {
-                id,
-                moved: true,
-                base,
-                ..
-            } => self.finish_field_drag(id, base),
+            Drag::TimeField(p) => self.time_field_release(p),
             Drag::Preview { .. } => {
                 let r = self.timeline.preview;
                 self.set_preview_range(r);
@@ -419,158 +374,14 @@ impl Editor {
 
     // ----- fields -----
 
-    pub(in crate::internals::editor) fn field_base(&self, id: FieldId) -> Option<Base> {
-        if id == FieldId::Frame {
-            return Some(Base::Frame(self.frame));
-        }
-        if id.is_setting() {
-            return Some(Base::Settings(self.scene.settings.clone()));
-        }
-        if let FieldId::Key(_) = id {
-            // The key panel holds its fields' presses (`keypanel.rs`).
-            return None;
-        }
-        if let FieldId::Morph(_) = id {
-            return self.morph_base().map(|b| Base::Morph(Box::new(b)));
-        }
-        if id == FieldId::ClipName {
-            return Some(Base::Clip);
-        }
-        if let FieldId::Material(_) = id {
-            return self.material_base().map(|b| Base::Material(Box::new(b)));
-        }
-        if let FieldId::Preview(_) = id {
-            return Some(Base::Preview);
-        }
-        let sel = self.selection?;
-        // Fields edit what is shown: animated values at the current frame.
-        Some(Base::Node(sel, Box::new(self.posed_node(sel))))
-    }
-
-    pub(in crate::internals::editor) fn field_value(
-        &self,
-        id: FieldId,
-        base: &Base,
-    ) -> Option<FieldValue> {
-        match base {
-            Base::Frame(f) => Some(FieldValue::Number(*f)),
-            Base::Settings(s) => id.read_settings(s),
-            Base::Node(_, n) => id.read_node(n),
-            Base::Morph(b) => Self::morph_value(id, b).map(FieldValue::Number),
-            Base::Clip => Some(FieldValue::Text(self.clip_name())),
-            Base::Preview => self.preview_field(id).map(FieldValue::Number),
-            Base::Material(b) => match id {
-                FieldId::Material(f) => Some(FieldValue::Number(f.read(&b.start))),
-                _ => None,
-            },
-        }
-    }
-
-    /// Shows `value` in the scene as if `id` had been set (from `base`).
-    /// Returns the command that would record it.
-    pub(in crate::internals::editor) fn field_command(
-        &self,
-        id: FieldId,
-        base: &Base,
-        value: &FieldValue,
-    ) -> Option<Command> {
-        match base {
-            Base::Frame(_) | Base::Morph(_) | Base::Clip | Base::Material(_) | Base::Preview => {
-                None
-            }
-            Base::Settings(s) => {
-                let mut after = s.clone();
-                id.write_settings(&mut after, value)
-                    .then(|| Command::SetSettings {
-                        before: s.clone(),
-                        after,
-                    })
-            }
-            Base::Node(nid, n) => {
-                let mut after = n.clone();
-                id.write_node(&mut after, value).then(|| Command::SetNode {
-                    id: *nid,
-                    before: n.clone(),
-                    after,
-                })
-            }
-        }
-    }
-
-    pub(in crate::internals::editor) fn drag_field(&mut self, id: FieldId, base: &Base, dx: f32) {
-        self.stop_playback();
-        let Some(FieldValue::Number(v0)) = self.field_value(id, base) else {
-            return;
-        };
-        let v = id.clamp(v0 + dx * id.drag_step());
-        if let Base::Frame(_) = base {
-            self.frame = v.round().min(self.scene.settings.duration);
-            return;
-        }
-        if let Base::Morph(b) = base {
-            self.drag_morph(id, b, v);
-            return;
-        }
-        if let (Base::Material(b), FieldId::Material(f)) = (base, id) {
-            self.drag_material(f, b, v);
-            return;
-        }
-        if let Some(c) = self.field_command(id, base, &FieldValue::Number(v)) {
-            // Preview from the base state: the command's `after` is absolute.
-            self.preview(&c);
-        }
-    }
-
-    pub(in crate::internals::editor) fn finish_field_drag(&mut self, id: FieldId, base: Base) {
-        let label = format!("Drag {id:?}");
-        match base {
-            Base::Frame(_) | Base::Clip | Base::Preview => {}
-            Base::Material(b) => {
-                if let FieldId::Material(f) = id {
-                    self.finish_material_drag(f, &b);
-                }
-            }
-            Base::Morph(b) => {
-                let v = self.morph_pending().map(|p| p.weights);
-                let v = v.and_then(|w| {
-                    Self::morph_value(
-                        id,
-                        &crate::editor::rig::state::MorphBase {
-                            start: w,
-                            ..(*b).clone()
-                        },
-                    )
-                });
-                if let Some(v) = v {
-                    self.set_morph(id, &b, v);
-                }
-            }
-            Base::Settings(before) => {
-                let after = self.scene.settings.clone();
-                self.push_applied(&label, Command::SetSettings { before, after });
-            }
-            Base::Node(nid, before) => {
-                let after = Box::new(self.scene.node(nid).clone());
-                // Previews changed the stored node; put it back so the
-                // recorded command starts from it.
-                self.scene.nodes[nid.0 as usize] = (*before).clone();
-                let props: Vec<_> = crate::editor::record::field_property(id)
-                    .into_iter()
-                    .collect();
-                let c = Command::SetNode {
-                    id: nid,
-                    before,
-                    after,
-                };
-                let c = self.recorded(c, &props);
-                self.execute(&label, c);
-            }
-        }
-    }
-
     /// Ends typing into a field: parses and records the value.
     pub(in crate::internals::editor) fn commit_edit(&mut self) {
         let Some(edit) = self.edit.take() else { return };
+        if edit.fresh {
+            // Nothing typed: the value stands (no undo step, nothing left
+            // pending on an animated property), as Tab does.
+            return;
+        }
         let value = if edit.field.is_text() {
             FieldValue::Text(edit.text.clone())
         } else {
@@ -582,28 +393,12 @@ impl Editor {
                 }
             }
         };
-        if let (FieldId::Key(_), FieldValue::Number(x)) = (edit.field, &value) {
-            self.commit_key_field(edit.field, *x);
-            return;
-        }
-        if let (FieldId::ClipName, FieldValue::Text(t)) = (edit.field, &value) {
-            self.rename_clip(t);
+        if is_face_field(edit.field) {
+            self.face_typed(edit.field, value);
             return;
         }
         if let (FieldId::Preview(i), FieldValue::Number(x)) = (edit.field, &value) {
             self.set_preview_field(i, *x);
-            return;
-        }
-        if let (FieldId::Material(f), FieldValue::Number(x)) = (edit.field, &value) {
-            if let Some(b) = self.material_base() {
-                self.set_material(f, &b, *x);
-            }
-            return;
-        }
-        if let (FieldId::Morph(_), FieldValue::Number(x)) = (edit.field, &value) {
-            if let Some(b) = self.morph_base() {
-                self.set_morph(edit.field, &b, *x);
-            }
             return;
         }
         if edit.field == FieldId::Frame {
@@ -615,35 +410,6 @@ impl Editor {
                     let end = self.scene.settings.duration;
                     self.set_status(&format!("{n} (the scene has frames 0 to {end})"), false);
                 }
-            }
-            return;
-        }
-        let Some(base) = self.field_base(edit.field) else {
-            return;
-        };
-        match self.field_command(edit.field, &base, &value) {
-            Some(c) => {
-                self.stop_playback();
-                let props: Vec<_> = crate::editor::record::field_property(edit.field)
-                    .into_iter()
-                    .collect();
-                let c = self.recorded(c, &props);
-                self.execute(&format!("Set {:?}", edit.field), c);
-                if edit.field == FieldId::Duration {
-                    self.note_keys_after_end();
-                }
-                if let FieldValue::Number(x) = value {
-                    let kept = edit.field.clamp(x);
-                    let name = edit.field.label();
-                    if let Some(n) = crate::editor::fields::clamp_note(&name, x, kept) {
-                        self.set_status(&n, false);
-                    }
-                }
-            }
-            None => {
-                let name = edit.field.label();
-                let why = format!("{name}: cannot set '{}' here", edit.text);
-                self.set_status(&why, true)
             }
         }
     }
@@ -713,48 +479,20 @@ impl Editor {
 
     /// Esc during a drag: put back what the drag changed.
     pub(in crate::internals::editor) fn cancel_drag(&mut self) {
-        match self.drag {
-            Drag::KeyPanel => {
-                self.key_panel_mouse(KeyEvent::Cancel);
-                return;
-            }
-            Drag::Side => {
-                let esc = Event::KeyDown {
-                    key: Key::Escape,
-                    mods: Mods::NONE,
-                };
-                self.side_event(&esc);
-                return;
-            }
-            _ => {}
+        if let Drag::Side = self.drag {
+            let esc = Event::KeyDown {
+                key: Key::Escape,
+                mods: Mods::NONE,
+            };
+            self.side_mouse(&esc);
+            return;
         }
         let drag = std::mem::take(&mut self.drag);
         if let Drag::Viewport = drag {
             self.cancel_viewport();
         }
-        if let Drag::Field { id, base, .. } = drag {
-            match base {
-                Base::Frame(f) => self.frame = f,
-                Base::Clip | Base::Preview => {}
-                Base::Material(_) => self.cancel_material_drag(),
-                Base::Morph(_) => {
-                    self.rig.morph_pending = None;
-                    self.scene_rev += 1;
-                }
-                Base::Settings(s) => {
-                    self.scene.settings = s;
-                    self.scene_rev += 1;
-                }
-                Base::Node(nid, n) => {
-                    let c = Command::SetNode {
-                        id: nid,
-                        before: n.clone(),
-                        after: n,
-                    };
-                    self.preview(&c);
-                }
-            }
-            let _ = id;
+        if let Drag::TimeField(p) = drag {
+            self.time_field_cancel(p);
         }
     }
 
@@ -953,7 +691,7 @@ impl Editor {
             Action::Delete => self.delete_selection(),
             Action::Rename => {
                 if let Some(sel) = self.selection {
-                    self.key_panel.node_shown = true;
+                    self.side.keys.node_shown = true;
                     let name = self.scene.node(sel).name.clone();
                     self.edit = Some(TextEdit {
                         field: FieldId::Name,

@@ -5,6 +5,7 @@
 use crate::anim::Property;
 use crate::editor::command::Command;
 use crate::editor::component::{Intent, Response};
+use crate::editor::fields::FieldId;
 use crate::editor::record::Pending;
 use crate::editor::{Editor, TextEdit};
 use crate::scene::{Node, NodeId};
@@ -81,6 +82,55 @@ impl Editor {
                 Intent::ViewportMenu((x, y)) => self.open_context_menu(x as i32, y as i32),
                 Intent::IkPose(joints) => self.show_ik(*joints),
                 Intent::IkDone => self.ik_released(),
+                // The side panel's faces (material rows, morph sliders,
+                // clip name): applied by the record rules of their files.
+                Intent::ShowMaterial { id, props, value } => self.show_material(id, props, *value),
+                Intent::SetMaterial { field, base, value } => {
+                    self.set_material(field, &base, value)
+                }
+                Intent::DropMaterial => self.cancel_material_drag(),
+                Intent::ShowWeight { base, index, value } => {
+                    self.drag_morph(FieldId::Morph(index), &base, value)
+                }
+                Intent::SetWeight { base, index, value } => {
+                    self.set_morph(FieldId::Morph(index), &base, value)
+                }
+                Intent::DropWeights => {
+                    self.rig.morph_pending = None;
+                    self.scene_rev += 1;
+                }
+                Intent::RenameClip(name) => self.rename_clip(&name),
+                // The node face and the scene section (`node_props.rs`,
+                // `scene_section.rs`).
+                Intent::PreviewNode { id, node } => self.preview(&Command::SetNode {
+                    id,
+                    before: Box::new(self.scene.node(id).clone()),
+                    after: node,
+                }),
+                Intent::SetNode {
+                    label,
+                    id,
+                    before,
+                    after,
+                    props,
+                } => {
+                    if let Some(b) = before {
+                        self.scene.nodes[id.0 as usize] = *b;
+                    }
+                    let before = Box::new(self.scene.node(id).clone());
+                    let c = self.recorded(Command::SetNode { id, before, after }, &props);
+                    self.execute(&label, c);
+                }
+                Intent::PreviewSettings(after) => self.preview(&Command::SetSettings {
+                    before: self.scene.settings.clone(),
+                    after,
+                }),
+                Intent::SetSettings {
+                    label,
+                    before,
+                    after,
+                } => self.execute(&label, Command::SetSettings { before, after }),
+                Intent::NoteKeysAfterEnd => self.note_keys_after_end(),
             }
         }
         r.consumed.then_some(r.redraw)

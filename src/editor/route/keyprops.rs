@@ -1,18 +1,16 @@
-//! The editor's side of the key panel component (`keypanel.rs`): the
-//! context it sees, routing its buttons and the mouse on its fields to it
-//! (`Drag::KeyPanel` while it holds a press) and applying what it returns; the keys' menu commands it leaves go to the
-//! key strip and graph editor.
+//! The editor's side of the key panel component (`keypanel.rs`, a face
+//! of the side panel): the context it sees, routing its buttons to it
+//! and applying what it returns; the keys' menu commands it leaves go to
+//! the key strip and graph editor. The mouse on its fields goes through
+//! the side panel's faces (`route/faces.rs`).
 
 use crate::editor::component::Response;
-use crate::editor::fields::FieldId;
-use crate::editor::gesture::Drag;
 use crate::editor::keypanel::{KeyEvent, KeyPanelCtx};
-use crate::editor::keyprops::{KeyAction, KeyField};
-use crate::editor::panel::{label, Widget};
-use crate::editor::props_view::PropsView;
+use crate::editor::keyprops::KeyAction;
+use crate::editor::panel::Widget;
 use crate::editor::Editor;
 use crate::ui::text::CHAR_W;
-use crate::ui::{Painter, Rect};
+use crate::ui::Rect;
 
 impl Editor {
     /// What the key panel sees.
@@ -23,51 +21,23 @@ impl Editor {
         }
     }
 
-    /// Hands `ev` to the key panel and applies its answer. Whether it was
-    /// the panel's.
+    /// Hands a button's `ev` to the key panel and applies its answer.
+    /// Whether it was the panel's.
     fn key_panel_event(&mut self, ev: KeyEvent) -> bool {
-        let mut panel = std::mem::take(&mut self.key_panel);
+        let mut panel = std::mem::take(&mut self.side.keys);
         let r: Response = panel.handle(ev, &self.key_panel_ctx());
-        self.key_panel = panel;
+        self.side.keys = panel;
         self.apply_response(r).is_some()
-    }
-
-    /// A press on key field `f` at `x`: the key panel holds the mouse
-    /// until release (a drag previews, a click types).
-    pub(in crate::internals::editor) fn key_field_press(&mut self, f: KeyField, x: f32) {
-        self.key_panel_event(KeyEvent::Press { field: f, x });
-        if self.key_panel.pressed() {
-            self.drag = Drag::KeyPanel;
-        }
-    }
-
-    /// The mouse moved or came up, or Esc, while the key panel holds it
-    /// (`Drag::KeyPanel`): `Some(redraw)`.
-    pub(in crate::internals::editor) fn key_panel_mouse(&mut self, ev: KeyEvent) -> Option<bool> {
-        let mut panel = std::mem::take(&mut self.key_panel);
-        let r: Response = panel.handle(ev, &self.key_panel_ctx());
-        self.key_panel = panel;
-        if !self.key_panel.pressed() {
-            self.drag = Drag::None;
-        }
-        self.apply_response(r)
     }
 
     /// Whether the properties section shows the key panel.
     pub fn key_panel_shown(&self) -> bool {
-        self.key_panel.shown(&self.key_panel_ctx())
+        self.side.keys.shown(&self.key_panel_ctx())
     }
 
     /// Rows the key panel needs (for the side panel split).
     pub(in crate::internals::editor) fn key_panel_rows(&self) -> i32 {
-        self.key_panel.rows(&self.key_panel_ctx())
-    }
-
-    /// Enter in a key field: sets the typed number on the selected keys.
-    pub(in crate::internals::editor) fn commit_key_field(&mut self, id: FieldId, x: f32) {
-        if let FieldId::Key(field) = id {
-            self.key_panel_event(KeyEvent::Typed { field, value: x });
-        }
+        self.side.keys.rows(&self.key_panel_ctx())
     }
 
     /// Key panel buttons and the keys' menu: the panel answers its own;
@@ -89,15 +59,7 @@ impl Editor {
 
     /// The key panel's widgets in the properties section `r`.
     pub(in crate::internals::editor) fn key_panel_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
-        self.key_panel.widgets(r, &self.key_panel_ctx(), out);
-    }
-
-    /// The key panel paints itself where the side panel shows it.
-    pub(in crate::internals::editor) fn draw_key_panel(&self, p: &mut Painter) {
-        let (shown, tall) = self.props_view();
-        let view = PropsView { shown, tall };
-        self.key_panel
-            .draw(p, &self.key_panel_ctx(), &view, &self.side_look());
+        self.side.keys.widgets(r, &self.key_panel_ctx(), out);
     }
 
     /// "Keys" at the right of the node properties header while keys are
@@ -107,7 +69,7 @@ impl Editor {
         header: Rect,
         out: &mut Vec<Widget>,
     ) {
-        self.key_panel.switch(header, &self.key_panel_ctx(), out);
+        self.side.keys.switch(header, &self.key_panel_ctx(), out);
     }
 
     /// The selection's key frames as lines that fit the side panel after
@@ -130,22 +92,6 @@ impl Editor {
             }
         }
         lines
-    }
-
-    /// Line `i` of the node panel's list of the selection's key frames.
-    pub(in crate::internals::editor) fn key_list_row(
-        &self,
-        i: usize,
-        r: Rect,
-        out: &mut Vec<Widget>,
-    ) {
-        let lines = self.key_list_lines();
-        let Some(line) = lines.get(i) else { return };
-        let (a, b) = r.take_left(5 * CHAR_W);
-        if i == 0 {
-            out.push(label(a, "Keys", true));
-        }
-        out.push(label(b, line, false));
     }
 }
 

@@ -23,7 +23,7 @@ impl Editor {
     pub(in crate::internals::editor) fn set_key_selection(&mut self, keys: Vec<KeyRef>) {
         self.keys.selected = keys;
         self.remember_key_selection();
-        self.key_panel.node_shown = false;
+        self.side.keys.node_shown = false;
     }
 
     /// Notes the key selection for the current animation (nothing for an

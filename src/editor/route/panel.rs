@@ -1,41 +1,49 @@
 //! The editor's side of `panel`: the main window's widgets (toolbar, the
 //! scene section, the properties' faces the side panel places, the bottom
-//! bar) and finding the widget under the mouse.
+//! bar), the snapshots the scene section and node face see, and finding
+//! the widget under the mouse.
 
 use crate::editor::browser::Browser;
 use crate::editor::fields::FieldId;
-use crate::editor::ops;
+use crate::editor::node_props::{NodeCtx, NodeProps};
 #[allow(unused_imports)]
 use crate::editor::panel::*;
+use crate::editor::scene_section::{SceneCtx, SceneSection};
 use crate::editor::{Editor, Mode};
-use crate::scene::{LightKind, NodeKind};
-use crate::ui::layout::{CONTROLS_H, ROW};
+use crate::ui::layout::CONTROLS_H;
 use crate::ui::text::{self, CHAR_W};
 use crate::ui::Rect;
-
-/// What the properties say with nothing selected: how to start (a
-/// newcomer's first questions), as many lines as the section shows.
-const NOTHING_SELECTED: [&str; 6] = [
-    "Nothing selected",
-    "Click an object",
-    "Shift+A: add object",
-    "F3: find a command",
-    "F1: every shortcut",
-    "Ctrl+O: open a file",
-];
 
 impl Editor {
     /// Property rows the selection needs (for the side panel split).
     pub(in crate::internals::editor) fn prop_rows(&self) -> i32 {
-        match self.selection.map(|s| &self.scene.node(s).kind) {
-            // As many lines of how to start as show (they never scroll).
-            None => (NOTHING_SELECTED.len() as i32).min(self.side_panel().prop_rows_shown().max(1)),
-            Some(NodeKind::Light(l)) => match l.kind {
-                LightKind::Directional => 5,
-                LightKind::Point => 5,
-                LightKind::Spot { .. } => 7,
-            },
-            Some(_) => 5 + self.morph_rows() as i32,
+        NodeProps::rows(&self.node_ctx())
+    }
+
+    /// What the properties' node face sees: the selection as posed now,
+    /// its morph sliders and key frames.
+    pub(in crate::internals::editor) fn node_ctx(&self) -> NodeCtx {
+        NodeCtx {
+            node: self.selection.map(|s| (s, self.posed_node(s))),
+            morph_rows: self.morph_rows(),
+            key_lines: self.key_list_lines(),
+            rows_shown: self.side_panel().prop_rows_shown(),
+        }
+    }
+
+    /// What the scene section sees: its place, the settings, the clips'
+    /// row under its title.
+    pub(in crate::internals::editor) fn scene_ctx(&self) -> SceneCtx {
+        let area = self.side_panel().scene;
+        let mut clip_row = Vec::new();
+        if let Some(title) = SceneSection::title_row(area) {
+            self.clip_widgets(title, &mut clip_row);
+        }
+        SceneCtx {
+            area,
+            settings: self.scene.settings.clone(),
+            has_clips: !self.scene.clips.is_empty(),
+            clip_row,
         }
     }
 
@@ -44,7 +52,7 @@ impl Editor {
         let l = self.layout();
         let mut out = Vec::new();
         self.toolbar_widgets(l.toolbar, &mut out);
-        self.scene_widgets(self.side_panel().scene, &mut out);
+        self.scene_widgets(&mut out);
         self.side_widgets(&mut out);
         self.controls_widgets(l.controls, &mut out);
         out
@@ -102,36 +110,14 @@ impl Editor {
         }
     }
 
-    pub(in crate::internals::editor) fn scene_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
-        let mut row = if r.h >= 2 * ROW {
-            let (h, rest) = r.take_top(ROW);
-            out.push(w(h, WidgetKind::Header("Scene".into())));
-            self.clip_widgets(h, out);
-            Rect::new(rest.x + 2, rest.y + 1, rest.w - 4, ROW)
-        } else {
-            // A short panel (the graph editor open): one row, no title,
-            // the clips behind their menu button.
-            Rect::new(r.x + 2, r.y + 1, r.w - 4, ROW)
-        };
-        if r.h < 2 * ROW && !self.scene.clips.is_empty() {
-            let bw = text::width("Clips") + 4;
-            let menu = Rect::new(row.right() - bw, row.y + 1, bw, ROW - 2);
-            let clips = crate::editor::rig::clip_action::ClipAction::Menu;
-            out.push(button(menu, "Clips", Action::Clip(clips), false));
-            row.w -= bw + 2;
-        }
-        let half = row.w / 2;
-        let (a, b) = row.take_left(half);
-        field_row(out, a, "fps", 4 * CHAR_W, &[FieldId::Fps]);
-        field_row(
-            out,
-            Rect::new(b.x + 2, b.y, b.w - 2, b.h),
-            "len",
-            4 * CHAR_W,
-            &[FieldId::Duration],
-        );
+    /// The scene section's widgets (it lays them out, `scene_section.rs`).
+    pub(in crate::internals::editor) fn scene_widgets(&self, out: &mut Vec<Widget>) {
+        self.side.scene.widgets(&self.scene_ctx(), out);
     }
 
+    /// The properties' widgets in `r`: the material or key panel, or the
+    /// node face (`node_props.rs`) with the morph sliders in the room it
+    /// leaves and the switches to the other faces on its header.
     pub(in crate::internals::editor) fn prop_widgets(&self, r: Rect, out: &mut Vec<Widget>) {
         if self.material_panel().is_some() {
             self.material_widgets(r, out);
@@ -141,118 +127,14 @@ impl Editor {
             self.key_panel_widgets(r, out);
             return;
         }
-        let (h, body) = r.take_top(ROW);
-        let body = Rect::new(body.x + 2, body.y + 1, body.w - 4, body.h - 1);
-        let Some(sel) = self.selection else {
-            out.push(w(h, WidgetKind::Header("Properties".into())));
-            let lines = NOTHING_SELECTED.iter().take(self.prop_rows() as usize);
-            for (i, line) in lines.enumerate() {
-                let y = body.y + i as i32 * ROW;
-                out.push(label(Rect::new(body.x + 2, y, body.w, ROW), line, true));
-            }
+        let Some(room) = self.side.node.widgets(r, &self.node_ctx(), out) else {
             return;
         };
-        let node = self.scene.node(sel);
-        let kind = match &node.kind {
-            NodeKind::Light(l) => ops::light_kind_name(l),
-            NodeKind::Shape(_) => "Shape",
-            NodeKind::Camera(_) => "Camera",
-            NodeKind::Group => "Object",
-        };
-        out.push(w(h, WidgetKind::Header(kind.to_string())));
-        let lw = 5 * CHAR_W;
-        let mut y = body.y;
-        let mut row = |out: &mut Vec<Widget>, f: &dyn Fn(&mut Vec<Widget>, Rect)| {
-            if y + ROW <= body.bottom() + 1 {
-                f(out, Rect::new(body.x, y, body.w, ROW));
-            }
-            y += ROW;
-        };
-        row(out, &|o, r| field_row(o, r, "Name", lw, &[FieldId::Name]));
-        match &node.kind {
-            NodeKind::Light(l) => {
-                let on = l.on;
-                row(out, &|o, r| {
-                    let (a, b) = r.take_left(lw);
-                    o.push(label(a, "On", true));
-                    o.push(w(
-                        Rect::new(b.x, b.y, ROW, b.h),
-                        WidgetKind::Check {
-                            action: Action::ToggleLight(sel),
-                            on,
-                        },
-                    ));
-                    let rest = Rect::new(b.x + ROW + 4, b.y, b.w - ROW - 4, b.h);
-                    field_row(o, rest, "Int", lw, &[FieldId::LightIntensity]);
-                });
-                row(out, &|o, r| {
-                    field_row(o, r, "Col", lw, &[0, 1, 2].map(FieldId::LightColor))
-                });
-                if !matches!(l.kind, LightKind::Directional) {
-                    row(out, &|o, r| {
-                        field_row(o, r, "Loc", lw, &[0, 1, 2].map(FieldId::LightLocation))
-                    });
-                }
-                if !matches!(l.kind, LightKind::Point) {
-                    row(out, &|o, r| {
-                        field_row(o, r, "Dir", lw, &[0, 1, 2].map(FieldId::LightDirection))
-                    });
-                }
-                if matches!(l.kind, LightKind::Spot { .. }) {
-                    row(out, &|o, r| {
-                        let (a, _) = r.take_left(r.w / 2);
-                        field_row(o, a, "Cut", lw, &[FieldId::LightCutOff])
-                    });
-                }
-                row(out, &|o, r| {
-                    let bw = text::width("Delete") + 8;
-                    o.push(button(
-                        Rect::new(r.right() - bw, r.y + 1, bw, r.h - 2),
-                        "Delete",
-                        Action::Delete,
-                        false,
-                    ));
-                });
-            }
-            _ => {
-                row(out, &|o, r| {
-                    field_row(o, r, "T", lw, &[0, 1, 2].map(FieldId::Translation))
-                });
-                row(out, &|o, r| {
-                    field_row(o, r, "R", lw, &[0, 1, 2].map(FieldId::Rotation))
-                });
-                row(out, &|o, r| {
-                    field_row(o, r, "S", lw, &[0, 1, 2].map(FieldId::Scale))
-                });
-                let style = style_name(node.style);
-                row(out, &|o, r| {
-                    let (a, b) = r.take_left(lw);
-                    o.push(label(a, "Draw", true));
-                    let bw = text::width("Hidden") + 8;
-                    o.push(button(
-                        Rect::new(b.x, b.y + 1, bw, b.h - 2),
-                        style,
-                        Action::ObjectStyle,
-                        false,
-                    ));
-                    let dw = text::width("Delete") + 8;
-                    o.push(button(
-                        Rect::new(r.right() - dw, r.y + 1, dw, r.h - 2),
-                        "Delete",
-                        Action::Delete,
-                        false,
-                    ));
-                });
-            }
+        for (i, row) in room.morph.into_iter().enumerate() {
+            self.morph_row(i as u8, row, out);
         }
-        for i in 0..self.morph_rows() {
-            row(out, &|o, r| self.morph_row(i as u8, r, o));
-        }
-        for i in 0..self.key_list_lines().len() {
-            row(out, &|o, r| self.key_list_row(i, r, o));
-        }
-        self.key_panel_switch(h, out);
-        self.material_switch(h, out);
+        self.key_panel_switch(room.header, out);
+        self.material_switch(room.header, out);
     }
 
     pub(in crate::internals::editor) fn controls_widgets(&self, r: Rect, out: &mut Vec<Widget>) {

@@ -1,16 +1,16 @@
 //! The editor's side of the side panel component (`side_ui.rs`): the
 //! snapshot it sees, routing the wheel and presses on its rows to it
 //! (`Drag::Side` while it holds a row drag), applying what it returns,
-//! and the lists' reveal of the selection. Its widgets join the editor's
-//! for hit testing (`route/panel.rs` builds the scene section and the
-//! properties' faces the panel places).
+//! the lists' reveal of the selection, Tab between its fields, and
+//! painting its scene section and node face. Its widgets join the
+//! editor's for hit testing (`route/panel.rs` gathers the scene section
+//! and the properties' faces the panel places).
 
-use crate::editor::fields::{FieldId, FieldValue};
+use crate::editor::fields::FieldId;
 use crate::editor::gesture::Drag;
-use crate::editor::keypanel::KeyPanel;
 use crate::editor::ops;
 use crate::editor::panel::{Widget, WidgetKind};
-use crate::editor::props_view::Look;
+use crate::editor::props_view::{Look, PropsView};
 use crate::editor::side_ui::{LightRow, ObjectRow, Section, SectionKind, SideCtx};
 use crate::editor::{Editor, TextEdit};
 use crate::input::Event;
@@ -114,6 +114,19 @@ impl Editor {
         self.side.place_props(&ctx, all, out);
     }
 
+    /// The scene section and, when the properties show it, the node face
+    /// paint themselves; the widgets they painted, for the editor to
+    /// leave out.
+    pub(in crate::internals::editor) fn draw_side_sections(&self, p: &mut Painter) -> Vec<Widget> {
+        let node_shown = self.prop_section().kind == SectionKind::Node;
+        let (shown, tall) = self.props_view();
+        let view = PropsView { shown, tall };
+        let ctxs = (&self.scene_ctx(), &self.node_ctx());
+        let look = self.side_look();
+        self.side
+            .draw_sections(p, ctxs, node_shown.then_some(&view), &look)
+    }
+
     /// The side panel paints its lists, scroll bars and row drag.
     pub(in crate::internals::editor) fn draw_side(&self, p: &mut Painter) {
         self.side.draw(p, &self.side_ctx(), &self.side_look());
@@ -155,7 +168,7 @@ impl Editor {
     fn side_fields(&self) -> Vec<FieldId> {
         let ctx = self.side_ctx();
         let mut all = Vec::new();
-        self.scene_widgets(ctx.sections().scene, &mut all);
+        self.scene_widgets(&mut all);
         self.prop_widgets(self.side.props_view(&ctx).tall, &mut all);
         let field = |w: Widget| match w.kind {
             WidgetKind::Field(id) => Some(id),
@@ -166,13 +179,8 @@ impl Editor {
 
     /// The text typing into field `id` starts from: its value now.
     fn field_start_text(&self, id: FieldId) -> Option<String> {
-        if let FieldId::Key(f) = id {
-            let keys = self.selected_keys();
-            let v = KeyPanel::number(f, &self.scene.animation, &keys)?;
-            return Some(FieldValue::Number(v).display());
-        }
-        let base = self.field_base(id)?;
-        self.field_value(id, &base).map(|v| v.display())
+        // Every field of the side panel is a face's (`side_faces.rs`).
+        self.face_start_text(id)
     }
 
     /// Scrolls the properties until a widget `wanted` shows (as a user

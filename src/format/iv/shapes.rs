@@ -483,9 +483,32 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
                 }
                 _ => None,
             };
-            mesh_from_points(pts, cols).ok()
+            let mut mesh = mesh_from_points(pts, cols).ok()?;
+            match point_normals(inp.normal_binding, &inp.normals, pts.len()) {
+                Ok(normals) => mesh.normals = normals,
+                Err(e) => msgs.push((
+                    n.pos,
+                    format!("PointSet: normals ignored (drawn unlit): {e}"),
+                )),
+            }
+            Some(mesh)
         }
         _ => None,
+    }
+}
+
+/// The normals of a PointSet's `count` points (none: drawn unlit in its
+/// base colour, `Builder::shape`). As Coin draws them (probed through
+/// pivy): OVERALL gives every point the first normal; any other binding
+/// one normal per point, counted from the first normal whatever the
+/// `startIndex`; a point whose normal faces away from the light gets the
+/// ambient term only.
+fn point_normals(bind: Bind, normals: &[Vec3], count: usize) -> Result<Vec<Vec3>, String> {
+    match bind {
+        _ if normals.is_empty() || count == 0 => Ok(Vec::new()),
+        Bind::Overall => Ok(vec![normals[0]; count]),
+        _ if normals.len() < count => Err(format!("{} normals for {count} points", normals.len())),
+        _ => Ok(normals[..count].to_vec()),
     }
 }
 

@@ -11,10 +11,28 @@
 //! file for PROTOs, EXTERNPROTOs and Script nodes; a node whose
 //! interface is unknown is not checked.
 
-use super::node_table::Access;
+use super::node_table::{Access, Entry};
 
 /// One interface entry: access, type, name.
 pub type Decl<'a> = (Access, &'a str, &'a str);
+
+/// One declaration of a file's interface (a PROTO's, a Script's): access,
+/// type, name.
+pub type Typed = (Access, String, String);
+
+/// Borrowed view of typed declarations.
+pub fn view(t: &[Typed]) -> Vec<Decl<'_>> {
+    t.iter()
+        .map(|(a, ty, n)| (*a, ty.as_str(), n.as_str()))
+        .collect()
+}
+
+/// A built-in node's table entries as typed declarations.
+pub fn owned(t: &[Entry]) -> Vec<Typed> {
+    t.iter()
+        .map(|(a, ty, n)| (*a, ty.to_string(), n.to_string()))
+        .collect()
+}
 
 /// The access and type of `name` on a node with interface `iface`: a
 /// declared field or event, or an exposedField's `set_x` (eventIn) or
@@ -95,6 +113,20 @@ pub fn route_problems(from: &End, to: &End) -> Vec<String> {
     out.extend(a.err());
     out.extend(b.err());
     out
+}
+
+/// What is wrong with giving `field` a value in a node of type `kind`
+/// with interface `iface`: a name the node does not have, or an event
+/// (events take no value, §4.10.2).
+pub fn field_problem(kind: &str, iface: &[Decl], field: &str) -> Option<String> {
+    match member(iface, field) {
+        Some((Access::Field | Access::Exposed, _)) => None,
+        Some((a, _)) => Some(format!(
+            "'{field}' is {} of {kind} and takes no value in a node body (§4.10.2)",
+            a.with_article()
+        )),
+        None => Some(format!("{kind} has no field '{field}'")),
+    }
 }
 
 /// What is wrong with `field IS name` in a node of type `kind` with

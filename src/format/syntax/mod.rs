@@ -6,10 +6,11 @@
 //! parser serves all three dialects and unknown nodes cost nothing.
 
 mod checks;
-mod events;
-mod node_table;
+pub(crate) mod events;
+pub(crate) mod node_table;
 mod parser;
 mod proto;
+pub(crate) mod x3d_table;
 
 pub use parser::{parse, Options, Rewrite};
 pub use proto::{expand, ProtoDef};

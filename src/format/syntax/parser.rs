@@ -8,6 +8,7 @@
 use super::checks;
 use super::node_table::Access;
 use super::proto::{expand, ProtoDef};
+use super::x3d_table;
 use super::{AstNode, Field, NodeRef, Parsed, Route, Unit, Value, X3dHead};
 use crate::format::lexer::{LexError, Lexer, Pos, Tok};
 use crate::format::limits::{self, Limit, LimitError};
@@ -104,6 +105,10 @@ pub(super) struct Parser<'a> {
     /// they are read; then by node (kept alive beside its address).
     script_decls: Vec<Vec<Typed>>,
     node_ifaces: HashMap<*const AstNode, (NodeRef, Rc<Vec<Typed>>)>,
+    /// X3D nodes the reader's rewrite gave another type (IndexedTriangleSet
+    /// → IndexedFaceSet…), by node, with the type the file wrote: what
+    /// ROUTEs to them are checked against.
+    written_kinds: HashMap<*const AstNode, (NodeRef, String)>,
     warnings: Vec<(Pos, String)>,
     head: X3dHead,
     /// The engine output the last field value was connected from
@@ -123,6 +128,7 @@ pub fn parse(src: &[u8], opts: Options) -> Parsed {
         ifaces: Vec::new(),
         script_decls: Vec::new(),
         node_ifaces: HashMap::new(),
+        written_kinds: HashMap::new(),
         warnings: Vec::new(),
         head: X3dHead::default(),
         connection: None,
@@ -403,7 +409,7 @@ impl Parser<'_> {
         if self.depth > self.opts.max_depth {
             return Err(self.too_deep(pos));
         }
-        let script = kind == "Script";
+        let script = x3d_table::declares_fields(&kind);
         if script {
             self.script_decls.push(Vec::new());
         }
@@ -441,9 +447,11 @@ impl Parser<'_> {
                 self.warn(f.pos, msg);
             }
         }
+        let mut written = None;
         if let Some(def) = proto {
             self.expand_into(&def, &mut node)?;
         } else if let Some(rewrite) = self.opts.rewrite {
+            written = Some(node.kind.clone());
             self.rewrite(rewrite, &mut node);
         }
         // PROTO expansion can nest far deeper than the text: what counts is
@@ -454,6 +462,10 @@ impl Parser<'_> {
         let node = Rc::new(node);
         if script {
             self.keep_script_interface(&node);
+        }
+        if let Some(kind) = written.filter(|k| *k != node.kind) {
+            self.written_kinds
+                .insert(Rc::as_ptr(&node), (node.clone(), kind));
         }
         Ok(node)
     }
@@ -644,6 +656,7 @@ impl Parser<'_> {
             _ if checks::is_event_name(field) && !self.is_proto_name(kind) => Some(format!(
                 "'{field}' is an event and takes no value in a node body (§4.10.2)"
             )),
+            _ if own.is_none() && !self.is_proto_name(kind) => self.unknown_field(kind, field),
             _ => None,
         };
         if let Some(m) = msg {

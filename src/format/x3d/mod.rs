@@ -16,6 +16,10 @@ mod nodes;
 pub(crate) mod spline_keys;
 pub mod write;
 mod xml;
+mod xml_checks;
+
+#[cfg(test)]
+mod check_tests;
 
 pub use xml::is_xml;
 

@@ -13,14 +13,20 @@
 //! there); positions are its line:column.
 
 use super::nodes;
+use super::xml_checks::{self, RouteEnd};
 use crate::format::lexer::Pos;
 use crate::format::limits::{self, Limit, LimitError};
+use crate::format::syntax::events::Typed;
 use crate::format::syntax::{self, AstNode, Field, NodeRef, Parsed, ProtoDef, Route, Unit, Value};
 use roxmltree::{Document, Node};
 use std::collections::HashMap;
 use std::rc::Rc;
 
 type PResult<T> = Result<T, (Pos, String)>;
+
+/// A node's interface (X3D's table, a ProtoDeclare's fields, a Script's
+/// declarations), shared.
+type Iface = Rc<Vec<Typed>>;
 
 /// Whether the bytes look like an X3D XML document (an XML declaration or
 /// an `<X3D` root, after any byte-order mark, blanks and comments).
@@ -37,6 +43,11 @@ struct Scope {
     protos: HashMap<String, Rc<ProtoDef>>,
     externs: Vec<String>,
     routes: Vec<Route>,
+    /// Each DEF name's node type as the file wrote it (before the rewrite)
+    /// and its interface when known: what ROUTEs are checked against.
+    kinds: HashMap<String, (String, Option<Iface>)>,
+    /// The typed interfaces of this scope's ProtoDeclares.
+    proto_ifaces: HashMap<String, Rc<Vec<Typed>>>,
 }
 
 impl Scope {
@@ -46,6 +57,8 @@ impl Scope {
             protos: HashMap::new(),
             externs: Vec::new(),
             routes: Vec::new(),
+            kinds: HashMap::new(),
+            proto_ifaces: HashMap::new(),
         }
     }
 }
@@ -56,6 +69,9 @@ struct Reader<'d, 'i> {
     parsed: Parsed,
     depth: usize,
     max_depth: usize,
+    /// The interfaces of the ProtoDeclares whose bodies are being read,
+    /// innermost last: what a `<connect>` is checked against.
+    body_ifaces: Vec<Rc<Vec<Typed>>>,
 }
 
 /// Parses an X3D XML document into the generic node tree. A syntax error
@@ -110,6 +126,7 @@ pub fn parse(bytes: &[u8]) -> Parsed {
         parsed: Parsed::default(),
         depth: 0,
         max_depth: limits::depth_left() as usize,
+        body_ifaces: Vec::new(),
     };
     let root = doc.root_element();
     let result = r.document(root);
@@ -406,6 +423,13 @@ impl Reader<'_, '_> {
         self.scopes.last()?.defs.get(name).cloned()
     }
 
+    fn find_proto_iface(&self, name: &str) -> Option<Rc<Vec<Typed>>> {
+        self.scopes
+            .iter()
+            .rev()
+            .find_map(|s| s.proto_ifaces.get(name).cloned())
+    }
+
     fn find_proto(&self, name: &str) -> Option<Rc<ProtoDef>> {
         self.scopes
             .iter()
@@ -443,10 +467,15 @@ impl Reader<'_, '_> {
             });
             return Err((pos, err.to_string()));
         }
-        let r = if tag == "ProtoInstance" {
-            self.proto_instance(e, pos)
+        let (r, written) = if tag == "ProtoInstance" {
+            let name = e.attribute("name").unwrap_or("").to_string();
+            let iface = self.find_proto_iface(&name);
+            (self.proto_instance(e, pos), (name, iface))
         } else {
-            self.plain_node(e, &tag, pos).map(Some)
+            match self.plain_node(e, &tag, pos) {
+                Ok((n, iface)) => (Ok(Some(n)), (tag.clone(), iface)),
+                Err(err) => (Err(err), (tag.clone(), None)),
+            }
         };
         self.depth -= 1;
         let Some(node) = r? else { return Ok(None) };
@@ -467,6 +496,7 @@ impl Reader<'_, '_> {
         });
         if let Some(def) = &node.def {
             let def = def.clone();
+            self.scope().kinds.insert(def.clone(), written);
             self.scope().defs.insert(def, node.clone());
         }
         Ok(Some((container, node)))
@@ -488,9 +518,21 @@ impl Reader<'_, '_> {
         Ok(())
     }
 
-    fn plain_node(&mut self, e: Node, tag: &str, pos: Pos) -> PResult<NodeRef> {
+    /// An element that is a built-in (or unknown) node, and its interface
+    /// when X3D's table knows its type.
+    fn plain_node(
+        &mut self,
+        e: Node,
+        tag: &str,
+        pos: Pos,
+    ) -> PResult<(NodeRef, Option<Rc<Vec<Typed>>>)> {
         let mut fields = Vec::new();
         self.attributes(e, pos, &mut fields)?;
+        for (p, m) in xml_checks::attribute_problems(tag, &fields) {
+            self.warn(p, m);
+        }
+        let mut declared = Vec::new();
+        let mut connects = Vec::new();
         let mut children: Vec<(String, NodeRef)> = Vec::new();
         for c in e.children().filter(|c| c.is_element()) {
             let cpos = self.pos(c);
@@ -509,6 +551,7 @@ impl Reader<'_, '_> {
                             self.warn(kp, "IS outside a ProtoBody; ignored");
                             continue;
                         }
+                        connects.push((nf.to_string(), pf.to_string(), self.pos(k)));
                         fields.push(Field {
                             name: nf.to_string(),
                             value: Value::Is(pf.to_string()),
@@ -518,6 +561,7 @@ impl Reader<'_, '_> {
                 }
                 // Script / shader interface declarations: their values.
                 "field" => {
+                    declared.extend(xml_checks::typed_decl(c));
                     if let Some((name, Some(v))) = self.field_decl(c)? {
                         fields.push(Field {
                             name,
@@ -557,10 +601,31 @@ impl Reader<'_, '_> {
             proto: None,
             height,
         };
+        let iface = xml_checks::builtin(tag, &declared);
+        self.check_connects(tag, iface.as_deref().map(|v| v.as_slice()), &connects);
         let head = self.parsed.x3d.clone();
         nodes::rewrite(&mut node, &head, &mut self.parsed.warnings);
         node.height = AstNode::height_of(&node.fields, None);
-        Ok(Rc::new(node))
+        Ok((Rc::new(node), iface))
+    }
+
+    /// Warns about each `<connect nodeField protoField>` of a node of type
+    /// `kind` (interface `iface`) whose fields do not fit (see
+    /// `xml_checks::connect_problem`).
+    fn check_connects(
+        &mut self,
+        kind: &str,
+        iface: Option<&[Typed]>,
+        connects: &[(String, String, Pos)],
+    ) {
+        let (Some(node), Some(proto)) = (iface, self.body_ifaces.last().cloned()) else {
+            return;
+        };
+        for (nf, pf, p) in connects {
+            if let Some(m) = xml_checks::connect_problem(kind, node, nf, &proto, pf) {
+                self.warn(*p, m);
+            }
+        }
     }
 
     /// A child element of a node: a ROUTE, a PROTO, or a child node.
@@ -595,6 +660,7 @@ impl Reader<'_, '_> {
                     to_field: a("toField"),
                     pos,
                 };
+                self.check_route(&from, &r.from_field, &to, &r.to_field, pos);
                 self.scope().routes.push(r);
             }
             (f, _) => {
@@ -604,6 +670,32 @@ impl Reader<'_, '_> {
                     format!("ROUTE names undefined node '{missing}', ignored"),
                 );
             }
+        }
+    }
+
+    /// Warns about a ROUTE between the DEF names `from` and `to` whose
+    /// fields do not fit (see `xml_checks::route_problems`).
+    fn check_route(&mut self, from: &str, ff: &str, to: &str, tf: &str, pos: Pos) {
+        let kinds = &self.scopes.last().expect("the file scope").kinds;
+        let (Some((fk, fi)), Some((tk, ti))) = (kinds.get(from), kinds.get(to)) else {
+            return;
+        };
+        let problems = xml_checks::route_problems(
+            &RouteEnd {
+                node: from,
+                kind: fk,
+                iface: fi.as_deref().map(|v| v.as_slice()),
+                field: ff,
+            },
+            &RouteEnd {
+                node: to,
+                kind: tk,
+                iface: ti.as_deref().map(|v| v.as_slice()),
+                field: tf,
+            },
+        );
+        for m in problems {
+            self.warn(pos, m);
         }
     }
 
@@ -651,10 +743,12 @@ impl Reader<'_, '_> {
         let mut fields = Vec::new();
         let mut body = Vec::new();
         let mut routes = Vec::new();
+        let mut typed = Vec::new();
         for c in d.children().filter(|c| c.is_element()) {
             match c.tag_name().name() {
                 "ProtoInterface" => {
                     for f in c.children().filter(|f| f.has_tag_name("field")) {
+                        typed.extend(xml_checks::typed_decl(f));
                         if let Some(decl) = self.field_decl(f)? {
                             fields.push(decl);
                         }
@@ -663,8 +757,10 @@ impl Reader<'_, '_> {
                 "ProtoBody" => {
                     self.depth += 1;
                     self.scopes.push(Scope::new());
+                    self.body_ifaces.push(Rc::new(typed.clone()));
                     let mut all = Vec::new();
                     let r = self.statements(c, &mut Vec::new(), &mut all);
+                    self.body_ifaces.pop();
                     let scope = self.scopes.pop().unwrap_or_else(Scope::new);
                     self.depth -= 1;
                     // The body's nodes whatever their containerField: the
@@ -684,6 +780,9 @@ impl Reader<'_, '_> {
             body,
             routes,
         };
+        self.scope()
+            .proto_ifaces
+            .insert(name.clone(), Rc::new(typed));
         self.scope().protos.insert(name, Rc::new(def));
         Ok(())
     }
@@ -698,6 +797,7 @@ impl Reader<'_, '_> {
             return Ok(None);
         };
         let mut fields = Vec::new();
+        let mut connects = Vec::new();
         for c in e.children().filter(|c| c.is_element()) {
             let cpos = self.pos(c);
             match c.tag_name().name() {
@@ -725,6 +825,7 @@ impl Reader<'_, '_> {
                         if let (Some(nf), Some(pf)) =
                             (k.attribute("nodeField"), k.attribute("protoField"))
                         {
+                            connects.push((nf.to_string(), pf.to_string(), self.pos(k)));
                             fields.push(Field {
                                 name: nf.to_string(),
                                 value: Value::Is(pf.to_string()),
@@ -739,6 +840,8 @@ impl Reader<'_, '_> {
                 }
             }
         }
+        let iface = self.find_proto_iface(&name);
+        self.check_connects(&name, iface.as_deref().map(|v| v.as_slice()), &connects);
         let mut node = AstNode {
             kind: name,
             def: e.attribute("DEF").map(str::to_string),

@@ -2,37 +2,27 @@
 //! interface a node has — a built-in VRML97 node's (`node_table`), a PROTO
 //! or EXTERNPROTO's as declared, a Script's own fields plus what it
 //! declares — and the warnings, at the ROUTE statement or the IS field.
-//! VRML97 only: X3D nodes have other interfaces (not in the table), so an
-//! X3D file keeps the coarser node/non-node IS check of `checks`.
+//! An X3D file (classic encoding) is checked against X3D's own node table
+//! (`x3d_table`), by the node type the file wrote (before the reader's
+//! rewrite maps it onto a VRML97 node), and also gets a warning for a
+//! field name its node does not have.
 
 use super::super::checks;
-use super::super::events::{self, Decl, End};
+use super::super::events::{self, End};
 use super::super::node_table::{self, Access};
+use super::super::x3d_table;
 use super::super::NodeRef;
 use super::Parser;
 use crate::format::lexer::Pos;
 use std::rc::Rc;
 
-/// One declaration of a file's interface: access, type, name.
-pub type Typed = (Access, String, String);
-
-/// Borrowed view of typed declarations for `events`.
-fn view(t: &[Typed]) -> Vec<Decl<'_>> {
-    t.iter()
-        .map(|(a, ty, n)| (*a, ty.as_str(), n.as_str()))
-        .collect()
-}
-
-fn owned(t: &[node_table::Entry]) -> Vec<Typed> {
-    t.iter()
-        .map(|(a, ty, n)| (*a, ty.to_string(), n.to_string()))
-        .collect()
-}
+pub use super::super::events::Typed;
+use super::super::events::{owned, view};
 
 impl Parser<'_> {
     /// Whether the field-level rules of this module apply.
     fn checks_interfaces(&self) -> bool {
-        self.opts.vrml97 && !self.opts.x3d
+        self.opts.vrml97
     }
 
     /// Keeps a PROTO or EXTERNPROTO interface (keyword, type, name) for the
@@ -57,7 +47,7 @@ impl Parser<'_> {
         name: &str,
     ) -> Option<(Access, String)> {
         let access = Access::from_keyword(kw)?;
-        if kind != "Script" {
+        if !x3d_table::declares_fields(kind) {
             return None;
         }
         let decls = self.script_decls.last_mut()?;
@@ -77,7 +67,8 @@ impl Parser<'_> {
     }
 
     /// The interface of nodes of type `kind`: a PROTO or EXTERNPROTO in
-    /// scope (nearest first), else a built-in node's.
+    /// scope (nearest first), else a built-in node's (X3D's table in an
+    /// X3D file).
     fn interface_of_kind(&self, kind: &str) -> Option<Vec<Typed>> {
         let declared = self
             .scopes
@@ -86,13 +77,35 @@ impl Parser<'_> {
             .find_map(|s| s.interfaces.get(kind).cloned());
         match declared {
             Some(d) => Some(d.as_ref().clone()),
+            None if self.opts.x3d => x3d_table::builtin(kind).as_deref().map(owned),
             None => node_table::builtin(kind).map(owned),
         }
     }
 
+    /// The type the file wrote for `node` (an X3D node keeps it when the
+    /// rewrite renamed it).
+    fn written_kind<'n>(&'n self, node: &'n NodeRef) -> &'n str {
+        match self.written_kinds.get(&Rc::as_ptr(node)) {
+            Some((_, k)) => k,
+            None => &node.kind,
+        }
+    }
+
+    /// The message for a field named `field` in a built-in X3D node of
+    /// type `kind` that has no such field, or has it as an event (which
+    /// takes no value). VRML97 files are not checked so; nodes that
+    /// declare fields (Script, shaders) have their own names checked when
+    /// declared.
+    pub(super) fn unknown_field(&self, kind: &str, field: &str) -> Option<String> {
+        if !self.opts.x3d || x3d_table::declares_fields(kind) {
+            return None;
+        }
+        events::field_problem(kind, &x3d_table::builtin(kind)?, field)
+    }
+
     /// The interface of one node: its type's, plus what a Script declares.
     fn interface_of(&self, node: &NodeRef) -> Option<Vec<Typed>> {
-        let mut iface = self.interface_of_kind(&node.kind)?;
+        let mut iface = self.interface_of_kind(self.written_kind(node))?;
         if let Some((_, d)) = self.node_ifaces.get(&Rc::as_ptr(node)) {
             iface.extend(d.iter().cloned());
         }
@@ -121,13 +134,13 @@ impl Parser<'_> {
         let problems = events::route_problems(
             &End {
                 node: a,
-                kind: &from.kind,
+                kind: self.written_kind(from),
                 field: f,
                 iface: fv.as_deref(),
             },
             &End {
                 node: b,
-                kind: &to.kind,
+                kind: self.written_kind(to),
                 field: g,
                 iface: tv.as_deref(),
             },
