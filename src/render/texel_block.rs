@@ -183,8 +183,12 @@ impl Sampler {
 #[inline(always)]
 pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V, alpha: bool) -> [V; 4] {
     let (scale, half) = (V::splat(256.0), V::splat(0.5));
-    let wx = (fx * scale + half).trunc_i32();
-    let wy = (fy * scale + half).trunc_i32();
+    // Weights in 0..=256 (`weight`'s range; `trunc_i32` gives i32::MIN
+    // where a clamped coordinate overflowed to ±∞ and the fraction is NaN:
+    // there both texels of that axis are the same edge texel, so any
+    // weight gives the one-pixel result, and `bilerp` must not overflow).
+    let wx = (fx * scale + half).trunc_i32().map(|w| w.clamp(0, 256));
+    let wy = (fy * scale + half).trunc_i32().map(|w| w.clamp(0, 256));
     // Integer lanes (LLVM vectorises these loops with the caller's
     // instruction set).
     let mut ch = [[0.0f32; 8]; 4];
@@ -338,6 +342,48 @@ mod tests {
         }
         // Each kind of block went through the one-level path most times.
         assert!(taken.iter().all(|&n| n > 250), "{taken:?}");
+    }
+
+    /// Clamped coordinates so large that s·w overflows to ±∞ (a NaN
+    /// fraction) read the edge texel in every path, without overflowing
+    /// the filter's integer arithmetic (`256 − 0x8000_0000` in u32, a
+    /// panic wherever overflow checks are on).
+    #[test]
+    fn huge_clamped_coordinates_read_the_edge() {
+        let img = image(64, 32, [53, 29, 11]);
+        let mut tex = Texture::new(ImageId(0));
+        (tex.wrap_s, tex.wrap_t) = (Wrap::Clamp, Wrap::Clamp);
+        let s = Sampler::new(&tex, &img);
+        let big = 3.0e38f32;
+        let mut lanes = [[0.0f32; 8]; 6];
+        lanes[0] = [big, -big, 0.5, big, -big, 0.25, 0.75, big];
+        lanes[1] = [0.5, 0.5, big, -big, big, -big, 0.5, big];
+        // Magnified (one level) and blended between levels 1 and 2.
+        for scale in [0.2 / 64.0, 5.0 / 64.0] {
+            lanes[2] = [scale; 8];
+            lanes[5] = [scale * 0.5; 8];
+            assert_lanes_match(&s, &lanes, &format!("scale {scale}"));
+            let lods: [f32; 8] = std::array::from_fn(|k| {
+                s.lod(Vec2::new(lanes[2][k], 0.0), Vec2::new(0.0, lanes[5][k]))
+            });
+            let (u, v) = (Sse8::load(&lanes[0]), Sse8::load(&lanes[1]));
+            let one = s.texel8_one_level(Sse8::load(&lods), u, v, false);
+            let one = one
+                .expect("one level pair")
+                .map(|c| to_arr(c).map(f32::to_bits));
+            for k in 0..8 {
+                let want = s.texel(
+                    Vec2::new(lanes[0][k], lanes[1][k]),
+                    Vec2::new(lanes[2][k], 0.0),
+                    Vec2::new(0.0, lanes[5][k]),
+                );
+                assert_eq!(
+                    [one[0][k], one[1][k], one[2][k], one[3][k]],
+                    want.to_array().map(f32::to_bits),
+                    "lane {k}"
+                );
+            }
+        }
     }
 
     /// Lanes on different levels are left to the per-lane path.

@@ -39,6 +39,8 @@ pub struct Sampler {
     opaque: bool,
     filter: Filter,
     alpha_cutoff: Option<f32>,
+    /// See [`Sampler::lanes_cover`].
+    lanes: bool,
 }
 
 impl Sampler {
@@ -57,6 +59,10 @@ impl Sampler {
             opaque: !image.has_alpha(),
             filter: t.filter,
             alpha_cutoff: t.alpha_cutoff,
+            lanes: t.transform.is_identity()
+                && t.filter == Filter::default()
+                && t.wrap_s != Wrap::Mirror
+                && t.wrap_t != Wrap::Mirror,
         }
     }
 
@@ -75,12 +81,10 @@ impl Sampler {
         self.opaque
     }
     /// Whether the eight-lane path (`texture_lanes`) covers this sampler:
-    /// repeat/clamp wraps, trilinear filtering, no transform.
+    /// repeat/clamp wraps, trilinear filtering, no transform (worked out
+    /// once in `new`: it is asked for every block).
     pub(super) fn lanes_cover(&self) -> bool {
-        self.identity
-            && self.filter == Filter::default()
-            && self.wrap_s != Wrap::Mirror
-            && self.wrap_t != Wrap::Mirror
+        self.lanes
     }
 
     /// Whether pixels are alpha-tested (glTF MASK): then a pixel of alpha

@@ -36,10 +36,16 @@ mod imp {
     /// level's index). `alpha`: filter the alpha channel (else it is
     /// `OPAQUE`). The finer level must hold at most 2²⁴ texels (addresses
     /// are exact f32 whole numbers).
-    #[target_feature(enable = "avx,avx2,avx512f,avx512vl,avx512bw,avx512dq")]
-    #[inline]
-    #[allow(clippy::too_many_arguments)]
-    pub fn sample(
+    ///
+    /// Not a `#[target_feature]` function, so that it can be
+    /// `#[inline(always)]`: LLVM would not inline it into the shading loop
+    /// (a call per block, its inputs and outputs through memory); inlined
+    /// there, its intrinsics take the loop's AVX-512 features.
+    ///
+    /// # Safety
+    /// The CPU must have AVX-512 F, VL, BW and DQ (`simd::avx512()`).
+    #[inline(always)]
+    pub unsafe fn sample(
         levels: [&MipLevel; 2],
         s: &[f32; 8],
         t: &[f32; 8],
@@ -47,8 +53,8 @@ mod imp {
         wrap: [Wrap; 2],
         alpha: bool,
     ) -> [[f32; 8]; 4] {
-        let size = |l: &MipLevel| (l.width() as f32, l.height() as f32);
-        let ((wa, ha), (wb, hb)) = (size(levels[0]), size(levels[1]));
+        let (wa, ha) = (levels[0].width() as f32, levels[0].height() as f32);
+        let (wb, hb) = (levels[1].width() as f32, levels[1].height() as f32);
         // SAFETY: 8 × 4-byte loads from arrays of 8 f32.
         let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
         let (s, t) = (twice(s), twice(t));
@@ -96,10 +102,14 @@ mod imp {
         // Channels to 0..1, then the level blend a + (b − a)·f per channel.
         // SAFETY: an 8 × 4-byte load from an array of 8 f32.
         let f = unsafe { _mm256_loadu_ps(f.as_ptr()) };
-        let low = |p: __m512i| _mm512_and_si512(p, _mm512_set1_epi32(0xFFFF));
-        let high = |p: __m512i| _mm512_srli_epi32::<16>(p);
         let mut out = [[0.0f32; 8]; 4];
-        let chans = [low(rb), low(ga), high(rb), high(ga)];
+        let low = _mm512_set1_epi32(0xFFFF);
+        let chans = [
+            _mm512_and_si512(rb, low),
+            _mm512_and_si512(ga, low),
+            _mm512_srli_epi32::<16>(rb),
+            _mm512_srli_epi32::<16>(ga),
+        ];
         for (o, &c) in out.iter_mut().zip(&chans).take(if alpha { 4 } else { 3 }) {
             let v = _mm512_mul_ps(_mm512_cvtepi32_ps(c), _mm512_set1_ps(UNIT));
             let (a, b) = (_mm512_castps512_ps256(v), _mm512_extractf32x8_ps::<1>(v));
