@@ -20,6 +20,7 @@ pub mod bench_scenes;
 mod blend_samples;
 mod clip;
 mod coin_bounds;
+mod depth_blocks;
 mod fragment;
 mod frame;
 mod geometry;

@@ -7,6 +7,9 @@
 
 use super::blend_samples;
 use super::clip::ATTRS;
+use super::depth_blocks::{
+    edge_lanes, make_planes, may_own, DepthBufs, BLOCKS_PER_ROW, EMPTY, PLANES,
+};
 use super::fragment::{store_masked, Leftover, Pass, Shaded, Visible, NONE};
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
 use super::samples::SamplePlanes;
@@ -75,11 +78,13 @@ pub fn sample_offsets(samples: usize) -> &'static [(i64, i64)] {
 
 /// Per-thread working buffers for one tile: every per-sample buffer holds
 /// `samples` planes of `TILE`×`TILE_H` (sample-major), reused from tile to
-/// tile; the barycentrics one plane (the first sample's). Depth and winner
-/// are reset for every tile; the shading pass writes every colour and id
-/// (of a `flat` block, the first plane's) and every `flat` mark;
-/// barycentrics are read only where the depth pass wrote them. So reuse
-/// never changes a picture.
+/// tile; the barycentrics one plane (the first sample's). Block states
+/// and the first plane's winners are reset for every tile, and a block's
+/// other depth and winner planes before the depth pass first uses them
+/// (`depth_blocks`); the shading pass writes every colour and id (of a
+/// `flat` block, the first plane's) and every `flat` mark; barycentrics
+/// are read only where the depth pass wrote them. So reuse never changes
+/// a picture.
 pub struct Scratch {
     samples: usize,
     r: Vec<f32>,
@@ -90,12 +95,19 @@ pub struct Scratch {
     winner: Vec<u32>,
     b1: Vec<f32>,
     b2: Vec<f32>,
+    /// Per block of eight pixels: what the depth pass wrote of it
+    /// (`depth_blocks`).
+    blocks: Vec<u32>,
     /// Per block of eight pixels under multisampling: kept in the first
     /// sample plane only (see `samples`).
     flat: Vec<bool>,
     /// The shading pass's queue of triangles showing only at later samples.
     queue: Vec<Leftover>,
 }
+
+/// Depth, winner, first-sample weights and block states of a tile.
+#[cfg(test)]
+pub type DepthResults<'a> = (&'a [f32], &'a [u32], &'a [f32], &'a [f32], &'a [u32]);
 
 impl Scratch {
     /// Samples per pixel these buffers hold.
@@ -110,6 +122,13 @@ impl Scratch {
         &mut self.flat
     }
 
+    /// The depth pass's results: depth and winner planes, first-sample
+    /// weights, block states (for tests comparing it with a reference).
+    #[cfg(test)]
+    pub fn depth_results(&self) -> DepthResults<'_> {
+        (&self.depth, &self.winner, &self.b1, &self.b2, &self.blocks)
+    }
+
     pub fn new(samples: usize) -> Scratch {
         let n = samples * PLANE;
         Scratch {
@@ -122,6 +141,7 @@ impl Scratch {
             winner: vec![NONE; n],
             b1: vec![0.0; PLANE],
             b2: vec![0.0; PLANE],
+            blocks: vec![EMPTY; PLANE / 8],
             flat: vec![false; PLANE / 8],
             queue: Vec::new(),
         }
@@ -214,35 +234,31 @@ pub fn for_each_pixel_at(
     }
 }
 
-/// The depth pass's buffers, `TILE` pixels per row: depth and winner for
-/// every sample plane, the weights only for the first sample (the shading
-/// pass recomputes the few it needs at other samples, `Tri::weights_at`).
-struct DepthBufs<'a> {
-    depth: &'a mut [f32],
-    winner: &'a mut [u32],
-    b1: &'a mut [f32],
-    b2: &'a mut [f32],
-}
-
 /// Keeps, per sample of the tile, the nearest opaque triangle of `bin`
 /// (the first one on ties) with its depth, and the first sample's
 /// barycentric weights. `NS` samples per pixel at `offs` (SUBPIXEL units
-/// from the pixel centre), every triangle once for all of them.
+/// from the pixel centre), every triangle once for all of them. Blocks
+/// stay empty or owned by one triangle where they can (`depth_blocks`),
+/// unless `need_planes`: a later pass reads depth at any sample.
 fn depth_pass<const NS: usize>(
     p: &Prepared,
     bin: &Bin,
     rect: Rect,
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
+    need_planes: bool,
 ) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { depth_pass_avx::<NS>(p, bin, rect, offs, bufs) };
+        unsafe { depth_pass_avx::<NS>(p, bin, rect, offs, bufs, need_planes) };
         return;
     }
     for &ti in &bin.opaque {
-        depth_triangle::<Sse8, NS>(&p.opaque[ti as usize], ti, rect, offs, bufs);
+        depth_triangle::<Sse8, NS>(&p.opaque, ti, rect, offs, bufs);
+    }
+    if need_planes {
+        all_planes::<Sse8, NS>(&p.opaque, rect, offs, bufs);
     }
 }
 
@@ -254,9 +270,27 @@ unsafe fn depth_pass_avx<const NS: usize>(
     rect: Rect,
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
+    need_planes: bool,
 ) {
     for &ti in &bin.opaque {
-        depth_triangle::<simd::Avx8, NS>(&p.opaque[ti as usize], ti, rect, offs, bufs);
+        depth_triangle::<simd::Avx8, NS>(&p.opaque, ti, rect, offs, bufs);
+    }
+    if need_planes {
+        all_planes::<simd::Avx8, NS>(&p.opaque, rect, offs, bufs);
+    }
+}
+
+/// Writes out the sample planes of every block (see `depth_blocks`), for
+/// the passes that read depth at any sample after the shading pass.
+#[inline(always)]
+fn all_planes<V: V8, const NS: usize>(
+    tris: &[Tri],
+    rect: Rect,
+    offs: &[(i64, i64); NS],
+    bufs: &mut DepthBufs,
+) {
+    for blk in 0..bufs.blocks.len() {
+        make_planes::<V, NS>(tris, rect, offs, blk, bufs);
     }
 }
 
@@ -268,15 +302,19 @@ unsafe fn depth_pass_avx<const NS: usize>(
 /// plus a constant per triangle); only blocks on an edge test each pixel.
 /// Weights and depth are computed exactly as [`for_each_pixel_at`] does, per
 /// pixel and sample, and each sample plane sees the triangles in bin
-/// order, so the blocks change no bit.
+/// order, so the blocks change no bit. The first triangle to cover an
+/// empty block at every sample, safely in front, owns it
+/// (`depth_blocks`): only its first sample is computed; every other block
+/// it touches gets its sample planes first.
 #[inline(always)]
 fn depth_triangle<V: V8, const NS: usize>(
-    t: &Tri,
+    tris: &[Tri],
     ti: u32,
     rect: Rect,
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
 ) {
+    let t = &tris[ti as usize];
     let x0 = t.bbox[0].max(rect[0]);
     let y0 = t.bbox[1].max(rect[1]);
     let x1 = t.bbox[2].min(rect[2]);
@@ -287,6 +325,12 @@ fn depth_triangle<V: V8, const NS: usize>(
     if x1 - x0 < 6 {
         // Narrow triangles (most small ones): pixel by pixel is cheaper
         // than a block, and does the very same arithmetic.
+        let (bc0, bc1) = ((x0 - rect[0]) as usize / 8, (x1 - 1 - rect[0]) as usize / 8);
+        for row in (y0 - rect[1]) as usize..(y1 - rect[1]) as usize {
+            for bc in bc0..=bc1 {
+                make_planes::<V, NS>(tris, rect, offs, row * BLOCKS_PER_ROW + bc, bufs);
+            }
+        }
         for (si, &off) in offs.iter().enumerate() {
             let plane = si * PLANE;
             for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
@@ -333,6 +377,7 @@ fn depth_triangle<V: V8, const NS: usize>(
     );
     let inv_area = V::splat(ed.inv_area);
     let zero = V::splat(0.0);
+    let own = may_own(t, [x0, y0, x1, y1]);
     // Edge values over the blocks stay below 2⁵² in magnitude (always, for
     // triangles near the screen): lanes are then converted through exact
     // f64 (`V8::from_edge`), giving the bits of `i64 as f32` (either way
@@ -367,64 +412,79 @@ fn depth_triangle<V: V8, const NS: usize>(
                 all_in &= a + dmin[k] >= 0 && b + dmin[k] >= 0;
             }
             if !outside {
-                for (si, d) in d.iter().enumerate() {
-                    let es: [i64; 3] = std::array::from_fn(|k| e[k] + d[k]);
-                    // This sample's block: outside, or inside whole.
-                    let (mut out_s, mut in_s) = (false, all_in);
-                    if NS > 1 && !all_in {
-                        in_s = true;
-                        for k in 0..3 {
-                            let (a, b) = (es[k], es[k] + 7 * s[k]);
-                            out_s |= a < 0 && b < 0;
-                            in_s &= a >= 0 && b >= 0;
+                let blk = (row + c) / 8;
+                if own && all_in && in_box == 0xFF && bufs.blocks[blk] == EMPTY {
+                    // Covered at every sample and in front of the cleared
+                    // depth: owned, with the first sample's weights (as
+                    // below) and the winner in the first plane only.
+                    let i0 = row + c;
+                    let b1: &mut [f32; 8] = (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                    (edge_lanes::<V>(exact, e[1], s[1]) * inv_area).store(b1);
+                    let b2: &mut [f32; 8] = (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                    (edge_lanes::<V>(exact, e[2], s[2]) * inv_area).store(b2);
+                    bufs.winner[i0..i0 + 8].fill(ti);
+                    bufs.blocks[blk] = ti;
+                } else {
+                    make_planes::<V, NS>(tris, rect, offs, blk, bufs);
+                    for (si, d) in d.iter().enumerate() {
+                        let es: [i64; 3] = std::array::from_fn(|k| e[k] + d[k]);
+                        // This sample's block: outside, or inside whole.
+                        let (mut out_s, mut in_s) = (false, all_in);
+                        if NS > 1 && !all_in {
+                            in_s = true;
+                            for k in 0..3 {
+                                let (a, b) = (es[k], es[k] + 7 * s[k]);
+                                out_s |= a < 0 && b < 0;
+                                in_s &= a >= 0 && b >= 0;
+                            }
                         }
-                    }
-                    if out_s {
-                        continue;
-                    }
-                    let e1 = edge_lanes::<V>(exact, es[1], s[1]);
-                    let e2 = edge_lanes::<V>(exact, es[2], s[2]);
-                    let mut mask = in_box;
-                    if !in_s {
-                        // A lane is outside when an edge is negative there;
-                        // an integer's conversion keeps its sign (0 gives
-                        // +0), so the sign bits of the converted lanes tell.
-                        let e0 = edge_lanes::<V>(exact, es[0], s[0]);
-                        mask &= !e0.or(e1).or(e2).bits();
-                    }
-                    if mask == 0 {
-                        continue;
-                    }
-                    let w1 = e1 * inv_area;
-                    let w2 = e2 * inv_area;
-                    let z = z0 + w1 * dz1 + w2 * dz2;
-                    let i0 = si * PLANE + row + c;
-                    let depth: &mut [f32; 8] =
-                        (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
-                    let old = V::load(depth);
-                    let m = old.gt(z).and(zero.le(z)).bits() & mask;
-                    if m == 0 {
-                        continue;
-                    }
-                    store_masked(depth, z, m);
-                    if si == 0 {
-                        let b1: &mut [f32; 8] =
-                            (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
-                        store_masked(b1, w1, m);
-                        let b2: &mut [f32; 8] =
-                            (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
-                        store_masked(b2, w2, m);
-                    }
-                    let winner: &mut [u32; 8] =
-                        (&mut bufs.winner[i0..i0 + 8]).try_into().expect("8 lanes");
-                    if m == 0xFF {
-                        // Covered and nearer in all eight (inside a
-                        // triangle): one store, not eight tests.
-                        *winner = [ti; 8];
-                    } else {
-                        for (l, w) in winner.iter_mut().enumerate() {
-                            if m >> l & 1 == 1 {
-                                *w = ti;
+                        if out_s {
+                            continue;
+                        }
+                        let e1 = edge_lanes::<V>(exact, es[1], s[1]);
+                        let e2 = edge_lanes::<V>(exact, es[2], s[2]);
+                        let mut mask = in_box;
+                        if !in_s {
+                            // A lane is outside when an edge is negative there;
+                            // an integer's conversion keeps its sign (0 gives
+                            // +0), so the sign bits of the converted lanes tell.
+                            let e0 = edge_lanes::<V>(exact, es[0], s[0]);
+                            mask &= !e0.or(e1).or(e2).bits();
+                        }
+                        if mask == 0 {
+                            continue;
+                        }
+                        let w1 = e1 * inv_area;
+                        let w2 = e2 * inv_area;
+                        let z = z0 + w1 * dz1 + w2 * dz2;
+                        let i0 = si * PLANE + row + c;
+                        let depth: &mut [f32; 8] =
+                            (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
+                        let old = V::load(depth);
+                        let m = old.gt(z).and(zero.le(z)).bits() & mask;
+                        if m == 0 {
+                            continue;
+                        }
+                        store_masked(depth, z, m);
+                        if si == 0 {
+                            let b1: &mut [f32; 8] =
+                                (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                            store_masked(b1, w1, m);
+                            let b2: &mut [f32; 8] =
+                                (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                            store_masked(b2, w2, m);
+                        }
+                        let winner: &mut [u32; 8] =
+                            (&mut bufs.winner[i0..i0 + 8]).try_into().expect("8 lanes");
+                        if m == 0xFF {
+                            // Covered and nearer in all eight (inside a
+                            // triangle): one store, not eight tests.
+                            *winner = [ti; 8];
+                        } else {
+                            for (l, w) in winner.iter_mut().enumerate() {
+                                if m >> l & 1 == 1 {
+                                    *w = ti;
+                                }
                             }
                         }
                     }
@@ -438,22 +498,6 @@ fn depth_triangle<V: V8, const NS: usize>(
         for (r, s) in ed.row.iter_mut().zip(ed.step_y) {
             *r += s;
         }
-    }
-}
-
-/// Lanes `(e + l·s) as f32`, through exact f64 when `exact` (a function,
-/// not a closure: closures lose the caller's AVX target feature and their
-/// lane operations stop being inlined).
-#[inline(always)]
-fn edge_lanes<V: V8>(exact: bool, e: i64, s: i64) -> V {
-    if exact {
-        V::from_edge(e, s)
-    } else {
-        let mut a = [0.0; 8];
-        for (l, a) in a.iter_mut().enumerate() {
-            *a = (e + l as i64 * s) as f32;
-        }
-        V::load(&a)
     }
 }
 
@@ -483,28 +527,35 @@ fn shade_attrs(item: &Item, a: &[f32; ATTRS], eye: Vec3) -> Vec3 {
 
 /// Stage 1 of a tile: per sample, the nearest opaque triangle of `bin`
 /// (the first on ties) with its depth and barycentric weights.
-pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch) {
+/// With `need_planes` every sample plane of depth and winner is written
+/// out (a later pass reads depth at any sample); else blocks may stay
+/// empty or owned (`depth_blocks`), and the shading pass knows them flat.
+pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch, need_planes: bool) {
     let ns = scratch.samples;
     let Scratch {
         depth,
         winner,
         b1,
         b2,
+        blocks,
         ..
     } = scratch;
-    depth.fill(1.0);
-    winner.fill(NONE);
+    blocks.fill(EMPTY);
+    // The shading pass reads the first plane's winners of every block.
+    winner[..PLANE].fill(NONE);
     let mut bufs = DepthBufs {
         depth,
         winner,
         b1,
         b2,
+        blocks,
     };
     let offs = sample_offsets(ns);
+    let need = need_planes;
     match ns {
-        1 => depth_pass::<1>(p, bin, rect, offs.try_into().expect("1"), &mut bufs),
-        4 => depth_pass::<4>(p, bin, rect, offs.try_into().expect("4"), &mut bufs),
-        _ => depth_pass::<8>(p, bin, rect, offs.try_into().expect("8"), &mut bufs),
+        1 => depth_pass::<1>(p, bin, rect, offs.try_into().expect("1"), &mut bufs, need),
+        4 => depth_pass::<4>(p, bin, rect, offs.try_into().expect("4"), &mut bufs, need),
+        _ => depth_pass::<8>(p, bin, rect, offs.try_into().expect("8"), &mut bufs, need),
     }
 }
 
@@ -529,10 +580,19 @@ pub fn shade_tile(
         winner,
         b1,
         b2,
+        blocks,
         flat,
         queue,
         ..
     } = scratch;
+    // Blocks the depth pass left empty or owned by one triangle show the
+    // same at every sample: flat before the shading pass looks (it
+    // compares the planes of the others, `samples::shade_others`).
+    if ns > 1 {
+        for (f, &state) in flat.iter_mut().zip(blocks.iter()) {
+            *f = state != PLANES;
+        }
+    }
     let pass = Pass {
         p,
         eye,
@@ -578,7 +638,13 @@ pub fn draw_tile(
     scratch: &mut Scratch,
     target: &mut Target,
 ) {
-    depth_tile(p, bin, rect, scratch);
+    // Lines, points, transparent triangles and a frame's depth read depth
+    // at any sample.
+    let need_planes = !(bin.lines.is_empty()
+        && bin.points.is_empty()
+        && bin.transparent.is_empty()
+        && target.depth.is_empty());
+    depth_tile(p, bin, rect, scratch, need_planes);
     shade_tile(p, bin, rect, background, eye, scratch);
     let ns = scratch.samples;
     let offsets = sample_offsets(ns);

@@ -32,8 +32,12 @@ pub fn shade_others<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mu
     for row in 0..h {
         for bx in (0..w).step_by(8) {
             let i0 = row * TILE as usize + bx;
-            let flat = spread_block::<V>(pass, vis, out, i0, &mut queue);
-            out.flat[i0 / 8] = flat;
+            // Marked flat on entry: the depth pass left the block empty or
+            // owned by one triangle (`depth_blocks`), so every sample shows
+            // what the first shows and the other planes were not written.
+            if !out.flat[i0 / 8] {
+                out.flat[i0 / 8] = spread_block::<V>(pass, vis, out, i0, &mut queue);
+            }
         }
     }
     let p = pass.p;

@@ -76,7 +76,13 @@ impl Stages {
     /// The depth pass of every tile.
     pub fn raster(&mut self) {
         for (rect, bin) in self.tiles() {
-            raster::depth_tile(&self.prepared, &self.bins[bin], rect, &mut self.scratch);
+            raster::depth_tile(
+                &self.prepared,
+                &self.bins[bin],
+                rect,
+                &mut self.scratch,
+                false,
+            );
         }
     }
 
@@ -86,7 +92,13 @@ impl Stages {
         let tiles = self.tiles();
         self.flats.resize(tiles.len(), Vec::new());
         for (k, (rect, bin)) in tiles.into_iter().enumerate() {
-            raster::depth_tile(&self.prepared, &self.bins[bin], rect, &mut self.scratch);
+            raster::depth_tile(
+                &self.prepared,
+                &self.bins[bin],
+                rect,
+                &mut self.scratch,
+                false,
+            );
             raster::shade_tile(
                 &self.prepared,
                 &self.bins[bin],
