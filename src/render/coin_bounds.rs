@@ -17,7 +17,7 @@
 use super::geometry::Geometry;
 use super::view::points_bounds;
 use crate::anim::Pose;
-use crate::scene::{NodeId, NodeKind, Scene, TextKind};
+use crate::scene::{Justify, NodeId, NodeKind, Scene, TextKind, TextSpec};
 use glam::{Mat4, Vec3};
 
 /// A box in the frame of `m` (that frame → world).
@@ -157,13 +157,34 @@ fn own_box(scene: &Scene, pose: &Pose, i: usize, picture: Option<(u32, u32)>) ->
             return label_box(lo, hi, geo.world, t.units_per_pixel, px);
         }
         (Some(_), None) => (Vec3::ZERO, Vec3::ZERO),
-        (None, _) => points_bounds(geo.positions)?,
+        (None, _) => {
+            let (lo, mut hi) = points_bounds(geo.positions)?;
+            if let Some(top) = mesh.text.as_deref().and_then(text_top) {
+                hi.y = hi.y.max(top);
+            }
+            (lo, hi)
+        }
     };
     (geo.world.is_finite()).then_some(XfBox {
         lo,
         hi,
         m: geo.world,
     })
+}
+
+/// The top of a VRML97 `Text`'s box as Coin's `SoGetBoundingBoxAction`
+/// measures it: `size` above the first baseline, whatever glyphs the
+/// first line holds (probed through pivy: "x", "X", "sphere should be
+/// yellow" and two lines all reach y = size; size 2 reaches 2), where our
+/// glyphs' ink reaches ~0.7 size. Only for horizontal, top-to-bottom text
+/// with the minor justification FIRST (the default), whose first baseline
+/// is y = 0 (VRML97 §6.20.3); the rest of the box is the glyphs' own.
+fn text_top(t: &TextSpec) -> Option<f32> {
+    let plain = t.kind == TextKind::Text
+        && t.horizontal
+        && t.top_to_bottom
+        && t.justify[1] == Justify::First;
+    (plain && t.size.is_finite() && t.size > 0.0).then_some(t.size)
 }
 
 /// Coin's box of an Inventor Text2 label for view-all (`SoText2`'s
@@ -306,6 +327,63 @@ mod tests {
             hi.y - lo.y > phi.y - plo.y + 0.1,
             "{lo} {hi} vs {plo} {phi}"
         );
+    }
+
+    /// Coin's box of a VRML97 Text reaches `size` above the first baseline
+    /// (pivy: "x" at size 1 → y 0..1, at size 2 → 0..2; two lines "x", "x"
+    /// → −1..1); the rest is the glyphs' own. Other minor justifications
+    /// and vertical text keep the glyphs' box.
+    #[test]
+    fn vrml97_text_boxes_reach_size_above_the_first_baseline() {
+        use crate::scene::{Justify, Mesh, TextSpec};
+        let bounds = |spec: TextSpec| {
+            let mut s = Scene::new();
+            let material = s.add_material(Material::default());
+            // Ink of an "x" and of a second line's "x" below it.
+            let mut m = Mesh {
+                positions: vec![
+                    Vec3::new(0.02, -0.01, 0.0),
+                    Vec3::new(0.48, 0.46, 0.0),
+                    Vec3::new(0.02, -1.01, 0.0),
+                ],
+                triangles: vec![[0, 1, 2]],
+                ..Mesh::default()
+            };
+            m.text = Some(Box::new(spec));
+            let mesh = s.add_mesh(m);
+            s.add_node(
+                None,
+                Node::new("t", NodeKind::Shape(Shape { mesh, material })),
+            );
+            let pose = crate::anim::evaluate(&s, 0.0);
+            coin_scene_bounds(&s, &pose, None).unwrap()
+        };
+        let spec = |size: f32| TextSpec {
+            strings: vec!["x".into(), "x".into()],
+            size,
+            ..TextSpec::default()
+        };
+        let (lo, hi) = bounds(spec(1.0));
+        assert_eq!((lo.y, hi.y), (-1.01, 1.0));
+        assert_eq!((lo.x, hi.x), (0.02, 0.48));
+        assert_eq!(bounds(spec(2.0)).1.y, 2.0);
+        // Ink taller than `size` keeps its top.
+        assert_eq!(bounds(spec(0.25)).1.y, 0.46);
+        let middle = TextSpec {
+            justify: [Justify::Begin, Justify::Middle],
+            ..spec(1.0)
+        };
+        assert_eq!(bounds(middle).1.y, 0.46);
+        let vertical = TextSpec {
+            horizontal: false,
+            ..spec(1.0)
+        };
+        assert_eq!(bounds(vertical).1.y, 0.46);
+        let label = TextSpec {
+            kind: TextKind::AsciiText,
+            ..spec(1.0)
+        };
+        assert_eq!(bounds(label).1.y, 0.46);
     }
 
     /// Coin 4's box (pivy, SoGetBoundingBoxAction after a default

@@ -32,7 +32,6 @@ const MAX_BUILD_DEPTH: usize = limits::DEPTH_CEILING as usize;
 
 /// Nodes read and deliberately ignored (no effect on geometry here).
 const IGNORED: &[&str] = &[
-    "Complexity",
     "Font",
     "FontStyle",
     "PickStyle",
@@ -107,6 +106,8 @@ struct MeshKey {
     unlit: bool,
     /// Texture coordinates: (wanted, source, binding, baked transform).
     tex: (bool, usize, super::state::Bind, [u32; 6]),
+    /// A Sphere drawn as lines is Coin's grid at this complexity (bits).
+    grid: Option<u32>,
 }
 
 pub struct Builder {
@@ -411,6 +412,7 @@ impl Builder {
             bindings: (st.material_binding, st.normal_binding),
             hints: (st.ccw, st.solid_type, st.crease_angle.to_bits()),
             unlit: st.unlit,
+            grid: shapes::lines_grid(n, st, textured).map(f32::to_bits),
         };
         let mesh = match self.meshes.get(&key) {
             Some(m) => *m,

@@ -6,6 +6,7 @@ mod animated;
 mod binary;
 mod binary_fields;
 mod build;
+mod coin_grid;
 mod copies;
 mod file_node;
 mod kits;

@@ -10,7 +10,7 @@ use crate::format::syntax::{AstNode, NodeRef};
 use crate::scene::normals::{
     mesh_from_points, mesh_from_polylines, polyline_normals, Binding, PolyOptions, TexCoords,
 };
-use crate::scene::{primitives, Mesh, Morphs};
+use crate::scene::{primitives, Mesh, Morphs, RenderStyle};
 use glam::{Vec2, Vec3};
 use std::rc::Rc;
 
@@ -290,6 +290,13 @@ pub fn mesh(n: &NodeRef, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Me
     Some(m)
 }
 
+/// The complexity a Sphere is divided at when it is drawn as lines,
+/// untextured (Coin's grid, `coin_grid`); `None` for every other shape,
+/// which keeps our fine tessellation.
+pub fn lines_grid(n: &AstNode, st: &State, textured: bool) -> Option<f32> {
+    (n.kind == "Sphere" && st.style == RenderStyle::Lines && !textured).then_some(st.complexity)
+}
+
 fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Mesh> {
     match kind {
         "Cube" => Some(primitives::box_mesh(Vec3::new(
@@ -297,6 +304,10 @@ fn mesh_of(n: &NodeRef, kind: &str, st: &State, inp: &Inputs, msgs: &mut Msgs) -
             n.f32("height", 2.0),
             n.f32("depth", 2.0),
         ))),
+        "Sphere" if lines_grid(n, st, inp.textured).is_some() => Some(super::coin_grid::sphere(
+            n.f32("radius", 1.0),
+            st.complexity,
+        )),
         "Sphere" if inp.textured => Some(primitives::sphere_textured(n.f32("radius", 1.0))),
         "Sphere" => Some(primitives::sphere(n.f32("radius", 1.0))),
         "Cone" => {

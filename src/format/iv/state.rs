@@ -52,6 +52,9 @@ pub struct State {
     /// DrawStyle lineWidth and pointSize in pixels (0: the default).
     pub line_width: f32,
     pub point_size: f32,
+    /// Complexity's value (0…1): how finely a Sphere drawn as lines is
+    /// divided (`coin_grid`).
+    pub complexity: f32,
     /// The last Switch's whichChild (Coin's SoSwitchElement), what a
     /// Switch with whichChild −2 (SO_SWITCH_INHERIT) takes; −1 at first.
     pub switch_value: i64,
@@ -136,6 +139,7 @@ impl State {
             style: RenderStyle::Filled,
             line_width: 0.0,
             point_size: 0.0,
+            complexity: super::coin_grid::DEFAULT_COMPLEXITY,
             switch_value: -1,
             unlit: false,
             font: None,
@@ -190,6 +194,11 @@ impl State {
                 }
                 if let Some(w) = n.num("pointSize") {
                     self.point_size = w as f32;
+                }
+            }
+            "Complexity" => {
+                if let Some(v) = n.num("value") {
+                    self.complexity = v as f32;
                 }
             }
             "Font" | "FontStyle" => self.font = Some(n.clone()),

@@ -120,6 +120,34 @@ fn drawstyle_widths_and_polygon_outlines() {
     assert_eq!(mesh("Thin").edges.len(), 24);
 }
 
+/// A Sphere drawn as lines is Coin's latitude/longitude grid at the
+/// Complexity in force (rotTransDragger.iv, lod.iv); the same sphere drawn
+/// filled keeps the fine tessellation, and a Separator scopes Complexity.
+#[test]
+fn line_spheres_are_coins_grid_at_the_complexity() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF Fine Sphere {}\n DrawStyle { style LINES }\n DEF Half Sphere { radius 2 }\n Separator { Complexity { value 0.2 } DEF Coarse Sphere {} }\n DEF Again Sphere {}\n}",
+    );
+    let s = &l.scene;
+    let mesh = |name| match &s.node(s.find_node(name).unwrap()).kind {
+        NodeKind::Shape(sh) => &s.meshes[sh.mesh.0 as usize],
+        _ => panic!(),
+    };
+    let fine = mesh("Fine");
+    assert!(fine.edges.is_empty() && fine.triangles.len() > 1000);
+    // Default complexity 0.5: 15 slices, 14 bands (390 triangles in Coin).
+    let half = mesh("Half");
+    assert_eq!(half.triangles.len(), 390);
+    assert_eq!(half.edges.len(), 15 * 14 + 15 * 13);
+    assert!(half
+        .positions
+        .iter()
+        .all(|p| (p.length() - 2.0).abs() < 1e-5));
+    // 0.2: 6 slices, 5 bands.
+    assert_eq!(mesh("Coarse").triangles.len(), 48);
+    assert_eq!(mesh("Again").triangles.len(), 390);
+}
+
 /// whichChild −2 (SO_SWITCH_INHERIT) takes the last Switch's value, also
 /// a sibling's, wrapped into range, as Coin's SoSwitch does; a Separator
 /// scopes it. An open Cone is drawn two-sided (its inside shows).
