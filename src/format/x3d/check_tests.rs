@@ -65,6 +65,37 @@ fn xml_attributes_connects_and_routes_are_checked() {
     assert_eq!(spec_checks(&w).len(), 4, "{w:#?}");
 }
 
+/// A child's explicit containerField must name a field of its parent
+/// that holds nodes; each bad one is flagged at the attribute.
+#[test]
+fn xml_container_fields_name_node_fields_of_the_parent() {
+    let name = "container-field.x3d";
+    let w = warnings_of(
+        name,
+        include_bytes!("../../../tests/data/x3d_bad/container-field.x3d"),
+    );
+    flagged(
+        &w,
+        name,
+        "9:12",
+        "containerField 'kids': Transform has no field 'kids'",
+    );
+    flagged(
+        &w,
+        name,
+        "10:12",
+        "'translation' of Transform is SFVec3f, not a field that holds nodes",
+    );
+    flagged(
+        &w,
+        name,
+        "11:20",
+        "'addChildren' is an eventIn of Transform",
+    );
+    let checks: Vec<_> = w.iter().filter(|m| m.contains("containerField")).collect();
+    assert_eq!(checks.len(), 3, "{w:#?}");
+}
+
 /// The warnings that are not the scene builder's (which says what it does
 /// not animate or know: not spec checks).
 fn spec_checks(warnings: &[String]) -> Vec<&String> {

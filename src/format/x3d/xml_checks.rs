@@ -6,7 +6,10 @@
 //! the IS rules do not allow (ISO/IEC 19775-1, Concepts: PROTO definition
 //! semantics, the same table as VRML97's table 4.4); ROUTEs between fields
 //! of other types, or from/to a field that is not an event (Concepts:
-//! route semantics). Nodes whose interface is not known (vendor
+//! route semantics); a child element whose explicit `containerField`
+//! names no field of its parent, or a field that does not hold nodes, or
+//! an event (ISO/IEC 19776-1: the child goes into the parent's SFNode or
+//! MFNode field it names). Nodes whose interface is not known (vendor
 //! extensions, components outside the table) are not checked.
 
 use crate::format::lexer::Pos;
@@ -50,6 +53,28 @@ pub(super) fn attribute_problems(kind: &str, fields: &[Field]) -> Vec<(Pos, Stri
         .filter(|f| !matches!(f.value, Value::Nodes(_) | Value::Is(_)))
         .filter_map(|f| Some((f.pos, events::field_problem(kind, &iface, &f.name)?)))
         .collect()
+}
+
+/// What is wrong with a child element's explicit `containerField="name"`
+/// under a parent element of type `kind` (with what the parent declares
+/// itself, for Script and shaders): a name the parent does not have, a
+/// field that holds no nodes, or an event. `None` when the parent's type
+/// is not in the table.
+pub(super) fn container_problem(kind: &str, declared: &[Typed], name: &str) -> Option<String> {
+    let iface = builtin(kind, declared)?;
+    let iface = view(&iface);
+    let at = format!("containerField '{name}'");
+    match events::member(&iface, name) {
+        None => Some(format!("{at}: {kind} has no field '{name}'")),
+        Some((_, ty)) if ty != "SFNode" && ty != "MFNode" => Some(format!(
+            "{at}: '{name}' of {kind} is {ty}, not a field that holds nodes (SFNode or MFNode)"
+        )),
+        Some((a @ (Access::In | Access::Out), _)) => Some(format!(
+            "{at}: '{name}' is {} of {kind}; a child node goes into a field",
+            a.with_article()
+        )),
+        Some(_) => None,
+    }
 }
 
 /// What is wrong with `<connect nodeField protoField>` in a node of type
