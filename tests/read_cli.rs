@@ -309,3 +309,36 @@ fn unknown_fields_of_builtin_vrml97_nodes_are_flagged() {
         assert_flagged("unknown-builtin-fields.wrl", at, what);
     }
 }
+
+/// A value that does not fit the type a built-in node gives its field
+/// (§5: a count of numbers, a word, a string, a fraction) is warned at the
+/// value; `--strict` exits 3.
+#[test]
+fn values_that_do_not_fit_builtin_field_types_are_flagged() {
+    for (at, what) in [
+        (
+            "4:25",
+            "'translation' of Transform is SFVec3f and takes 3 numbers, found 2 numbers",
+        ),
+        (
+            "5:25",
+            "'loop' of TimeSensor is SFBool and takes TRUE or FALSE, found the number 1",
+        ),
+        (
+            "6:19",
+            "'title' of WorldInfo is SFString and takes one quoted string",
+        ),
+        (
+            "7:23",
+            "'type' of NavigationInfo is MFString and takes quoted strings, found 'EXAMINE'",
+        ),
+        (
+            "8:22",
+            "'whichChoice' of Switch is SFInt32 and takes a whole number, found the number 0.5",
+        ),
+    ] {
+        assert_flagged("field-value-types.wrl", at, what);
+    }
+    let (_, out, _) = animed(&["info", "tests/data/vrml97_bad/field-value-types.wrl"]);
+    assert_eq!(out.matches(" (§5)").count(), 5, "{out}");
+}

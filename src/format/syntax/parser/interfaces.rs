@@ -9,7 +9,7 @@
 
 use super::super::checks;
 use super::super::events::{self, End};
-use super::super::node_table::{self, Access};
+use super::super::node_table::{self, Access, Entry};
 use super::super::x3d_table;
 use super::super::NodeRef;
 use super::Parser;
@@ -100,19 +100,31 @@ impl Parser<'_> {
         if x3d_table::declares_fields(kind) {
             return None;
         }
-        let x3d = x3d_table::builtin(kind);
         if self.opts.x3d {
-            return events::field_problem(kind, &x3d?, field);
+            return events::field_problem(kind, &x3d_table::builtin(kind)?, field);
         }
         let vrml = node_table::builtin(kind)?;
         let m = events::field_problem(kind, vrml, field)?;
         // Say so when the name is X3D's (a VRML97 file written with it).
         let x3d_only = events::member(vrml, field).is_none()
-            && x3d.is_some_and(|t| events::member(&t, field).is_some());
+            && x3d_table::builtin(kind).is_some_and(|t| events::member(&t, field).is_some());
         Some(match x3d_only {
             true => format!("{m} (X3D's {kind} has it; VRML97's does not, §6)"),
             false => m,
         })
+    }
+
+    /// The type a built-in node of type `kind` gives its field (or
+    /// exposedField) `field`: VRML97's table, or X3D's in an X3D file.
+    /// `None` for events, other names and other nodes.
+    pub(super) fn builtin_field_type(&self, kind: &str, field: &str) -> Option<&'static str> {
+        let pick = |e: &Entry| {
+            (e.2 == field && matches!(e.0, Access::Field | Access::Exposed)).then_some(e.1)
+        };
+        if self.opts.x3d {
+            return x3d_table::builtin(kind)?.iter().find_map(pick);
+        }
+        node_table::builtin(kind)?.iter().find_map(pick)
     }
 
     /// The interface of one node: its type's, plus what a Script declares.
