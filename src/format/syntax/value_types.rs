@@ -113,6 +113,28 @@ pub(super) fn mismatch(kind: &str, field: &str, ty: &str, value: &Value) -> Opti
     ))
 }
 
+/// The same check for an attribute of X3D's XML encoding (ISO/IEC
+/// 19776-1), for the numeric and boolean types only: there an SFString is
+/// written unquoted, so a string's shape cannot be told, and an empty
+/// attribute is an empty list.
+pub(crate) fn xml_mismatch(kind: &str, field: &str, ty: &str, value: &Value) -> Option<String> {
+    let base = ty.get(2..)?;
+    if base != "Bool" && numbers_per_value(base).is_none() {
+        return None;
+    }
+    let value = match value {
+        Value::Strs(s) if s.iter().all(|s| s.trim().is_empty()) => Value::Empty,
+        // XML writes `true` and `false` (the reader takes either case).
+        Value::Words(w) => Value::Words(w.iter().map(|w| w.to_uppercase()).collect()),
+        v => v.clone(),
+    };
+    let m = mismatch(kind, field, ty, &value)?;
+    Some(
+        m.replace("TRUE or FALSE", "true or false")
+            .replace("TRUE and FALSE", "true and false"),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,7 +1,8 @@
 //! The X3D XML encoding's share of the spec checks the classic parser
 //! makes as it reads (`syntax::events`, with X3D's node table
 //! `syntax::x3d_table`): attributes that name no field of their element's
-//! node (or name an event, which takes no value); `<connect>` between a
+//! node (or name an event, which takes no value), or whose numbers or
+//! booleans do not fit the field's type; `<connect>` between a
 //! node field and a ProtoDeclare field of another type, or of an access
 //! the IS rules do not allow (ISO/IEC 19775-1, Concepts: PROTO definition
 //! semantics, the same table as VRML97's table 4.4); ROUTEs between fields
@@ -15,7 +16,7 @@
 use crate::format::lexer::Pos;
 use crate::format::syntax::events::{self, owned, view, End, Typed};
 use crate::format::syntax::node_table::Access;
-use crate::format::syntax::x3d_table;
+use crate::format::syntax::{value_types, x3d_table};
 use crate::format::syntax::{Field, Value};
 use roxmltree::Node;
 use std::rc::Rc;
@@ -40,7 +41,9 @@ pub(super) fn builtin(kind: &str, declared: &[Typed]) -> Option<Rc<Vec<Typed>>> 
 }
 
 /// The attribute fields of an element of type `kind` that its node does
-/// not have as a field (unknown names, or events), each with its message.
+/// not have as a field (unknown names, or events), or whose numbers or
+/// booleans do not fit the field's type (`value_types`), each with its
+/// message.
 pub(super) fn attribute_problems(kind: &str, fields: &[Field]) -> Vec<(Pos, String)> {
     if x3d_table::declares_fields(kind) {
         return Vec::new();
@@ -48,10 +51,17 @@ pub(super) fn attribute_problems(kind: &str, fields: &[Field]) -> Vec<(Pos, Stri
     let Some(iface) = x3d_table::builtin(kind) else {
         return Vec::new();
     };
+    let problem = |f: &Field| match events::field_problem(kind, &iface, &f.name) {
+        Some(m) => Some(m),
+        None => {
+            let ty = iface.iter().find(|e| e.2 == f.name)?.1;
+            value_types::xml_mismatch(kind, &f.name, ty, &f.value)
+        }
+    };
     fields
         .iter()
         .filter(|f| !matches!(f.value, Value::Nodes(_) | Value::Is(_)))
-        .filter_map(|f| Some((f.pos, events::field_problem(kind, &iface, &f.name)?)))
+        .filter_map(|f| Some((f.pos, problem(f)?)))
         .collect()
 }
 
