@@ -207,6 +207,11 @@ fn x3d_routes_is_and_fields_are_checked_against_x3ds_nodes() {
             "16:11",
             "children is MFNode but shown is SFBool",
         ),
+        (
+            "container-field.x3d",
+            "10:12",
+            "containerField 'translation': 'translation' of Transform is SFVec3f",
+        ),
     ] {
         assert_flagged_at(&format!("tests/data/x3d_bad/{file}"), at, what);
     }
@@ -289,4 +294,51 @@ fn routes_and_is_are_checked_against_node_interfaces() {
     // flagged: one ROUTE warning in that file, not two.
     let (_, out, _) = animed(&["info", "tests/data/vrml97_bad/route-script-proto-types.wrl"]);
     assert_eq!(out.matches(": ROUTE ").count(), 1, "{out}");
+}
+
+/// A field VRML97's built-in node does not have (§6), or an event given a
+/// value, is warned at the field's own line and column; `--strict` exits 3.
+#[test]
+fn unknown_fields_of_builtin_vrml97_nodes_are_flagged() {
+    for (at, what) in [
+        ("4:3", "Transform has no field 'translate'"),
+        ("6:49", "Material has no field 'diffuseColour'"),
+        ("7:31", "Box has no field 'radius'"),
+        ("10:30", "'isActive' is an eventOut of TimeSensor"),
+    ] {
+        assert_flagged("unknown-builtin-fields.wrl", at, what);
+    }
+}
+
+/// A value that does not fit the type a built-in node gives its field
+/// (§5: a count of numbers, a word, a string, a fraction) is warned at the
+/// value; `--strict` exits 3.
+#[test]
+fn values_that_do_not_fit_builtin_field_types_are_flagged() {
+    for (at, what) in [
+        (
+            "4:25",
+            "'translation' of Transform is SFVec3f and takes 3 numbers, found 2 numbers",
+        ),
+        (
+            "5:25",
+            "'loop' of TimeSensor is SFBool and takes TRUE or FALSE, found the number 1",
+        ),
+        (
+            "6:19",
+            "'title' of WorldInfo is SFString and takes one quoted string",
+        ),
+        (
+            "7:23",
+            "'type' of NavigationInfo is MFString and takes quoted strings, found 'EXAMINE'",
+        ),
+        (
+            "8:22",
+            "'whichChoice' of Switch is SFInt32 and takes a whole number, found the number 0.5",
+        ),
+    ] {
+        assert_flagged("field-value-types.wrl", at, what);
+    }
+    let (_, out, _) = animed(&["info", "tests/data/vrml97_bad/field-value-types.wrl"]);
+    assert_eq!(out.matches(" (§5)").count(), 5, "{out}");
 }

@@ -172,6 +172,34 @@ fn inventor_point_sets_with_normals_are_lit_like_coin() {
     assert_eq!(at(0.0, 0.0), [255, 0, 0], "no normals: unlit");
 }
 
+/// A line or point is lit by its normal as given, not one turned towards
+/// the eye: a normal facing away from the light gets the ambient term
+/// only. Each figure is Coin 4's for the same file (pivy, the file's light
+/// from the viewer): facing it, diffuse (1, 0.5, 0.2) + the 0.4 × 0.2
+/// ambient; facing away, that ambient alone.
+#[test]
+fn line_and_point_normals_facing_away_get_ambient_only_like_coin() {
+    let src = "#Inventor V2.1 ascii\nSeparator { OrthographicCamera { position 0 0 5 height 4 }\n\
+         DirectionalLight { direction 0 0 -1 } DrawStyle { lineWidth 6 pointSize 8 }\n\
+         Material { diffuseColor 1 0.5 0.2 ambientColor 0.4 0.4 0.4 }\n\
+         Separator { Coordinate3 { point [-1.5 1 0, 1.5 1 0, -1.5 0.5 0, 1.5 0.5 0] }\n\
+           Normal { vector [0 0 1, 0 0 1, 0 0 -1, 0 0 -1] } NormalBinding { value PER_VERTEX }\n\
+           LineSet { numVertices [2, 2] } }\n\
+         Separator { Coordinate3 { point [-1 -0.5 0, 1 -0.5 0] }\n\
+           Normal { vector [0 0 1, 0 0 -1] } NormalBinding { value PER_VERTEX }\n\
+           PointSet {} } }";
+    let f = draw_iv(src, Headlight::Off);
+    let at = |x: f32, y: f32| rgb(&f, (80.0 + x * 30.0) as usize, (60.0 - y * 30.0) as usize);
+    assert_eq!(at(0.0, 1.0), [255, 148, 71], "line facing the light");
+    assert_eq!(at(0.0, 0.5), [20, 20, 20], "line facing away: ambient only");
+    assert_eq!(at(-1.0, -0.5), [255, 148, 71], "point facing the light");
+    assert_eq!(
+        at(1.0, -0.5),
+        [20, 20, 20],
+        "point facing away: ambient only"
+    );
+}
+
 /// A lit point set: a disc of points carrying a hemisphere's normals, lit
 /// from the upper left (bright there, fading to the 0.2 × 0.2 ambient at
 /// the lower right), beside the same disc without normals (flat, in its
@@ -185,9 +213,8 @@ fn golden_inventor_lit_point_set() {
             let (x, y) = (i as f32 / 6.0, j as f32 / 6.0);
             let r2 = x * x + y * y;
             if r2 <= 1.0 {
-                // Leaning towards the viewer, so no normal lies in the
-                // view plane (where the renderer's flip of line and point
-                // normals towards the eye would decide).
+                // Leaning towards the viewer: a hemisphere seen from the
+                // front.
                 let n = glam::Vec3::new(x, y, (1.0 - r2).sqrt() + 0.5).normalize();
                 pts.push(format!("{x:.4} {y:.4} 0"));
                 nrm.push(format!("{:.4} {:.4} {:.4}", n.x, n.y, n.z));

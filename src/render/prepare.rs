@@ -33,6 +33,11 @@ pub struct Item {
     /// Lines/points without normals, or an unlit material: colour is used
     /// as is.
     pub unlit: bool,
+    /// Drawn in the Lines or Points style: its lines and points stand for
+    /// a surface's edges and corners, lit on the side that faces the eye
+    /// as the filled surface is (`raster::facing`). Line and point sets
+    /// drawn as themselves are lit by the normal as given.
+    pub surface_strokes: bool,
     /// The shading pass computes texture coordinates and their derivatives
     /// for this item and runs its texture steps (`surface::shade_lanes`;
     /// its tiles shade in the loop compiled with them). Set it when the
@@ -389,6 +394,7 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             material: smat,
             lights: item_lights,
             unlit: !has_normals,
+            surface_strokes: style != RenderStyle::Filled,
             textured: texture.is_some() || emissive.is_some(),
             texture,
             emissive,

@@ -680,7 +680,7 @@ pub fn draw_tile(
                 let i = at(x, y);
                 if z < depth[i] && z >= 0.0 {
                     depth[i] = z;
-                    planes.put(i, shade_attrs(item, &facing(a, eye), eye), item.id);
+                    planes.put(i, shade_attrs(item, &facing(item, a, eye), eye), item.id);
                 }
             });
             continue;
@@ -691,7 +691,8 @@ pub fn draw_tile(
             for s in 0..ns {
                 let j = s * PLANE + i;
                 if mask >> s & 1 == 1 && z < depth[j] && z >= 0.0 {
-                    let c = *color.get_or_insert_with(|| shade_attrs(item, &facing(a, eye), eye));
+                    let c =
+                        *color.get_or_insert_with(|| shade_attrs(item, &facing(item, a, eye), eye));
                     depth[j] = z;
                     planes.unflat(i);
                     planes.put(j, c, item.id);
@@ -702,7 +703,7 @@ pub fn draw_tile(
     for &pi in &bin.points {
         let pt: &Point = &p.points[pi as usize];
         let item = &p.items[pt.item as usize];
-        let c = shade_attrs(item, &facing(pt.attr, eye), eye);
+        let c = shade_attrs(item, &facing(item, pt.attr, eye), eye);
         let half = pt.size as f32 * 0.5;
         for y in pt.bbox[1].max(rect[1])..pt.bbox[3].min(rect[3]) {
             for x in pt.bbox[0].max(rect[0])..pt.bbox[2].min(rect[2]) {
@@ -864,8 +865,17 @@ fn ld<V: V8>(c: &[f32], i: usize) -> V {
     V::load(c[i..i + 8].try_into().expect("8"))
 }
 
-/// Lines and points have no "side": turn their normal towards the eye.
-fn facing(mut a: [f32; ATTRS], eye: Vec3) -> [f32; ATTRS] {
+/// The attributes a line or point is lit with. A line or point set is
+/// lit by its normal as given: it has no back side to light instead
+/// (OpenGL, so Coin: a normal facing away from the light gets ambient
+/// only; glTF 2.0 §3.9.7: lines and points with NORMAL are lit as any
+/// geometry). A surface drawn in the Lines or Points style is lit on the
+/// side that faces the eye, as its filled triangles are: the normal is
+/// turned towards the eye.
+fn facing(item: &Item, mut a: [f32; ATTRS], eye: Vec3) -> [f32; ATTRS] {
+    if !item.surface_strokes {
+        return a;
+    }
     let p = Vec3::new(a[0], a[1], a[2]);
     let n = Vec3::new(a[3], a[4], a[5]);
     if n.dot(eye - p) < 0.0 {

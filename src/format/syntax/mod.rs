@@ -10,6 +10,7 @@ pub(crate) mod events;
 pub(crate) mod node_table;
 mod parser;
 mod proto;
+pub(crate) mod value_types;
 pub(crate) mod x3d_table;
 
 pub use parser::{parse, Options, Rewrite};

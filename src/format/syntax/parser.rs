@@ -8,6 +8,7 @@
 use super::checks;
 use super::node_table::Access;
 use super::proto::{expand, ProtoDef};
+use super::value_types;
 use super::x3d_table;
 use super::{AstNode, Field, NodeRef, Parsed, Route, Unit, Value, X3dHead};
 use crate::format::lexer::{LexError, Lexer, Pos, Tok};
@@ -568,11 +569,7 @@ impl Parser<'_> {
             let vpos = self.lx.peek().map_or(fpos, |t| t.pos);
             let value = self.value()?;
             self.check_field(kind, &name, &value, fpos, None);
-            if self.opts.vrml97 && !self.is_proto_name(kind) {
-                if let Some(m) = checks::number_field_mismatch(&name, &value) {
-                    self.warn(vpos, m);
-                }
-            }
+            self.check_value(kind, &name, &value, vpos);
             if self.connection.is_some() {
                 self.keep_connection(&mut fields, &name, vpos);
             }
@@ -660,6 +657,25 @@ impl Parser<'_> {
             _ => None,
         };
         if let Some(m) = msg {
+            self.warn(pos, m);
+        }
+    }
+
+    /// Warns at `pos` when the value given to `field` does not fit the
+    /// type its built-in node gives it (`value_types`), or, for a node
+    /// whose fields are not known, when a name that holds numbers in every
+    /// node has a word or a string (`checks`). Never inlined (see
+    /// `declaration`).
+    #[inline(never)]
+    fn check_value(&mut self, kind: &str, field: &str, value: &Value, pos: Pos) {
+        if !self.opts.vrml97 || self.is_proto_name(kind) {
+            return;
+        }
+        let m = match self.builtin_field_type(kind, field) {
+            Some(ty) => value_types::mismatch(kind, field, ty, value),
+            None => checks::number_field_mismatch(field, value),
+        };
+        if let Some(m) = m {
             self.warn(pos, m);
         }
     }

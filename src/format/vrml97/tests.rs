@@ -212,6 +212,42 @@ Shape { geometry Box {} }
     assert_eq!(l.scene.meshes.len(), 1);
 }
 
+/// A field a built-in node (§6) does not have is flagged where it is
+/// written; the fields §6 gives them, a PROTO's declared fields, a
+/// Script's own and declared fields and an unknown node's fields are not.
+#[test]
+fn unknown_fields_of_builtin_nodes_are_warned_where_written() {
+    let l = load(
+        r#"#VRML V2.0 utf8
+PROTO P [ field SFFloat size 1 ] { Box {} }
+Transform { translation 1 0 0 scaleOrientation 0 0 1 0 bboxSize 1 1 1
+  children [ Shape { appearance Appearance { material Material { shininess 0.5 } }
+                     geometry Sphere { radius 2 } }
+             P { size 2 } ] }
+DEF S Script { url "x.js" directOutput TRUE field SFInt32 n 3 eventIn SFBool go }
+Frobnicate { colour 1 }
+Transform { translate 1 0 0 children Shape { geometry Cone { radius 1 } } }
+Viewpoint { centerOfRotation 0 1 0 }
+"#,
+    );
+    let checks: Vec<&String> = l
+        .warnings
+        .iter()
+        .filter(|w| w.contains("has no field"))
+        .collect();
+    assert_eq!(
+        checks,
+        [
+            "t.wrl:9:13: Transform has no field 'translate'",
+            "t.wrl:9:62: Cone has no field 'radius'",
+            "t.wrl:10:13: Viewpoint has no field 'centerOfRotation' \
+             (X3D's Viewpoint has it; VRML97's does not, §6)",
+        ],
+        "{:#?}",
+        l.warnings
+    );
+}
+
 #[test]
 fn deep_nesting_is_an_error_not_a_crash() {
     let mut s = String::from("#VRML V2.0 utf8\n");

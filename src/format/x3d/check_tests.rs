@@ -65,6 +65,72 @@ fn xml_attributes_connects_and_routes_are_checked() {
     assert_eq!(spec_checks(&w).len(), 4, "{w:#?}");
 }
 
+/// A child's explicit containerField must name a field of its parent
+/// that holds nodes; each bad one is flagged at the attribute.
+#[test]
+fn xml_container_fields_name_node_fields_of_the_parent() {
+    let name = "container-field.x3d";
+    let w = warnings_of(
+        name,
+        include_bytes!("../../../tests/data/x3d_bad/container-field.x3d"),
+    );
+    flagged(
+        &w,
+        name,
+        "9:12",
+        "containerField 'kids': Transform has no field 'kids'",
+    );
+    flagged(
+        &w,
+        name,
+        "10:12",
+        "'translation' of Transform is SFVec3f, not a field that holds nodes",
+    );
+    flagged(
+        &w,
+        name,
+        "11:20",
+        "'addChildren' is an eventIn of Transform",
+    );
+    let checks: Vec<_> = w.iter().filter(|m| m.contains("containerField")).collect();
+    assert_eq!(checks.len(), 3, "{w:#?}");
+}
+
+/// Numbers and booleans in attributes must fit the field's type; strings
+/// (unquoted in XML) and empty lists are not flagged.
+#[test]
+fn xml_attribute_numbers_and_booleans_fit_their_types() {
+    let xml = br#"<X3D profile="Immersive" version="4.0"><Scene>
+<Transform translation="1 2" bboxSize="1 1 1"/>
+<TimeSensor loop="1" cycleInterval="2"/>
+<TimeSensor loop="true" description="3"/>
+<Switch whichChoice="0.5"/>
+<Shape><IndexedFaceSet coordIndex="" colorIndex="0 1 -1"/></Shape>
+</Scene></X3D>"#;
+    let name = "types.x3d";
+    let w = warnings_of(name, xml);
+    flagged(
+        &w,
+        name,
+        "2:1",
+        "'translation' of Transform is SFVec3f and takes 3 numbers",
+    );
+    flagged(
+        &w,
+        name,
+        "3:1",
+        "'loop' of TimeSensor is SFBool and takes true or false",
+    );
+    flagged(
+        &w,
+        name,
+        "5:1",
+        "'whichChoice' of Switch is SFInt32 and takes a whole number",
+    );
+    let checks: Vec<_> = w.iter().filter(|m| m.contains("(§5)")).collect();
+    assert_eq!(checks.len(), 3, "{w:#?}");
+}
+
 /// The warnings that are not the scene builder's (which says what it does
 /// not animate or know: not spec checks).
 fn spec_checks(warnings: &[String]) -> Vec<&String> {

@@ -301,6 +301,19 @@ impl Reader<'_, '_> {
         }
     }
 
+    /// An element's own `containerField` attribute, with where it is.
+    fn explicit_container(&self, e: Node) -> Option<(String, Pos)> {
+        let a = e
+            .attributes()
+            .find(|a| a.name() == "containerField" && a.namespace().is_none())?;
+        let p = self.doc.text_pos_at(a.range().start);
+        let pos = Pos {
+            line: p.row,
+            column: p.col,
+        };
+        Some((a.value().to_string(), pos))
+    }
+
     fn warn(&mut self, pos: Pos, msg: impl Into<String>) {
         if self.parsed.warnings.len() < 1000 {
             self.parsed.warnings.push((pos, msg.into()));
@@ -534,6 +547,8 @@ impl Reader<'_, '_> {
         let mut declared = Vec::new();
         let mut connects = Vec::new();
         let mut children: Vec<(String, NodeRef)> = Vec::new();
+        // Explicit containerFields, checked once the declarations are in.
+        let mut containers: Vec<(String, Pos)> = Vec::new();
         for c in e.children().filter(|c| c.is_element()) {
             let cpos = self.pos(c);
             match c.tag_name().name() {
@@ -570,7 +585,15 @@ impl Reader<'_, '_> {
                         });
                     }
                 }
-                _ => self.child(c, &mut children)?,
+                _ => {
+                    containers.extend(self.explicit_container(c));
+                    self.child(c, &mut children)?
+                }
+            }
+        }
+        for (name, p) in &containers {
+            if let Some(m) = xml_checks::container_problem(tag, &declared, name) {
+                self.warn(*p, m);
             }
         }
         // Child nodes grouped by containerField, in document order.

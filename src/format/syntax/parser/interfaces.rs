@@ -4,12 +4,12 @@
 //! declares — and the warnings, at the ROUTE statement or the IS field.
 //! An X3D file (classic encoding) is checked against X3D's own node table
 //! (`x3d_table`), by the node type the file wrote (before the reader's
-//! rewrite maps it onto a VRML97 node), and also gets a warning for a
-//! field name its node does not have.
+//! rewrite maps it onto a VRML97 node). Both get a warning for a field
+//! name their built-in node does not have.
 
 use super::super::checks;
 use super::super::events::{self, End};
-use super::super::node_table::{self, Access};
+use super::super::node_table::{self, Access, Entry};
 use super::super::x3d_table;
 use super::super::NodeRef;
 use super::Parser;
@@ -91,16 +91,40 @@ impl Parser<'_> {
         }
     }
 
-    /// The message for a field named `field` in a built-in X3D node of
-    /// type `kind` that has no such field, or has it as an event (which
-    /// takes no value). VRML97 files are not checked so; nodes that
-    /// declare fields (Script, shaders) have their own names checked when
-    /// declared.
+    /// The message for a field named `field` in a built-in node of type
+    /// `kind` (VRML97's §6 table, or X3D's in an X3D file) that has no
+    /// such field, or has it as an event (which takes no value). Nodes
+    /// that declare fields (Script, shaders) have their own names checked
+    /// when declared; other nodes (vendor extensions) are not checked.
     pub(super) fn unknown_field(&self, kind: &str, field: &str) -> Option<String> {
-        if !self.opts.x3d || x3d_table::declares_fields(kind) {
+        if x3d_table::declares_fields(kind) {
             return None;
         }
-        events::field_problem(kind, &x3d_table::builtin(kind)?, field)
+        if self.opts.x3d {
+            return events::field_problem(kind, &x3d_table::builtin(kind)?, field);
+        }
+        let vrml = node_table::builtin(kind)?;
+        let m = events::field_problem(kind, vrml, field)?;
+        // Say so when the name is X3D's (a VRML97 file written with it).
+        let x3d_only = events::member(vrml, field).is_none()
+            && x3d_table::builtin(kind).is_some_and(|t| events::member(&t, field).is_some());
+        Some(match x3d_only {
+            true => format!("{m} (X3D's {kind} has it; VRML97's does not, §6)"),
+            false => m,
+        })
+    }
+
+    /// The type a built-in node of type `kind` gives its field (or
+    /// exposedField) `field`: VRML97's table, or X3D's in an X3D file.
+    /// `None` for events, other names and other nodes.
+    pub(super) fn builtin_field_type(&self, kind: &str, field: &str) -> Option<&'static str> {
+        let pick = |e: &Entry| {
+            (e.2 == field && matches!(e.0, Access::Field | Access::Exposed)).then_some(e.1)
+        };
+        if self.opts.x3d {
+            return x3d_table::builtin(kind)?.iter().find_map(pick);
+        }
+        node_table::builtin(kind)?.iter().find_map(pick)
     }
 
     /// The interface of one node: its type's, plus what a Script declares.
