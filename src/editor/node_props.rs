@@ -332,8 +332,13 @@ impl NodeProps {
                     let why = format!("{}: cannot set '{}' here", field.label(), value.display());
                     return Response::redraw().with(Intent::Status(why, true));
                 }
+                // What Enter did, said before the record rules speak
+                // (a pending change says so after it) and before a
+                // clamped value's note.
+                let said = format!("{}: {} = {}", node.name, field.label(), value.display());
                 let mut r = Response::redraw()
                     .with(Intent::StopPlayback)
+                    .with(Intent::Status(said, false))
                     .with(Intent::SetNode {
                         label: format!("Set {field:?}"),
                         id: *id,
@@ -451,6 +456,30 @@ mod tests {
         let none = NodeCtx::default();
         let r = p.handle(FieldEvent::Press { field: tx, x: 0.0 }, &none);
         assert_eq!(r, Response::ignored());
+    }
+
+    #[test]
+    fn enter_on_a_node_field_says_what_it_set_before_the_record_rules_do() {
+        let (mut p, c) = (NodeProps::default(), ctx());
+        let tx = FieldId::Translation(0);
+        let typed = FieldEvent::Typed {
+            field: tx,
+            value: FieldValue::Number(2.5),
+        };
+        let r = p.handle(typed, &c);
+        let said = r.intents.iter().position(|i| {
+            matches!(i, Intent::Status(s, false)
+                if s == &format!("Box: {} = 2.5", tx.label()))
+        });
+        let set = r
+            .intents
+            .iter()
+            .position(|i| matches!(i, Intent::SetNode { .. }));
+        // The record rules' "Pending" (an animated property) comes later.
+        assert!(
+            said.expect("a status line") < set.expect("recorded"),
+            "{r:?}"
+        );
     }
 
     #[test]

@@ -131,11 +131,19 @@ impl SceneSection {
             }
             FieldEvent::Release => match self.press.take() {
                 None => Response::ignored(),
-                Some(p) if p.moved() => Response::redraw().with(Intent::SetSettings {
-                    label: format!("Drag {:?}", p.field),
-                    before: p.base,
-                    after: ctx.settings.clone(),
-                }),
+                Some(p) if p.moved() => {
+                    let r = Response::redraw().with(Intent::SetSettings {
+                        label: format!("Drag {:?}", p.field),
+                        before: p.base,
+                        after: ctx.settings.clone(),
+                    });
+                    // A dragged length says what it left past the end,
+                    // as a typed one does.
+                    match p.field {
+                        FieldId::Duration => r.with(Intent::NoteKeysAfterEnd),
+                        _ => r,
+                    }
+                }
                 Some(p) => match p.field.read_settings(&p.base) {
                     Some(v) => Response::redraw().with(Intent::Type {
                         field: p.field,
@@ -227,6 +235,30 @@ mod tests {
         assert!(
             matches!(r.intents.last(), Some(Intent::Status(t, false)) if t.contains("set to 1"))
         );
+    }
+
+    #[test]
+    fn a_dragged_len_notes_the_keys_after_the_end_and_fps_does_not() {
+        for (field, noted) in [(FieldId::Duration, true), (FieldId::Fps, false)] {
+            let (mut s, c) = (SceneSection::default(), ctx(2 * ROW + 4));
+            s.handle(FieldEvent::Press { field, x: 50.0 }, &c);
+            let r = s.handle(FieldEvent::Move { x: 10.0 }, &c);
+            let Some(Intent::PreviewSettings(shown)) = r.intents.last() else {
+                panic!("a drag shows the settings: {r:?}")
+            };
+            let mut now = c.clone();
+            now.settings = shown.clone();
+            let r = s.handle(FieldEvent::Release, &now);
+            assert!(r
+                .intents
+                .iter()
+                .any(|i| matches!(i, Intent::SetSettings { .. })));
+            assert_eq!(
+                r.intents.contains(&Intent::NoteKeysAfterEnd),
+                noted,
+                "{field:?}: {r:?}"
+            );
+        }
     }
 
     #[test]

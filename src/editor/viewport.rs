@@ -10,6 +10,7 @@ use crate::render::{self, Frame, RenderOptions};
 use crate::scene::{NodeId, NodeKind};
 use crate::ui::{line, theme, Painter, Rect};
 use glam::Vec3;
+use rayon::prelude::*;
 
 /// Gizmo size in pixels.
 const GIZMO_PX: f32 = 18.0;
@@ -54,7 +55,7 @@ impl Editor {
     /// Whether a pixel id of the scene layer (`NodeId.0 + 1`, 0 = none)
     /// belongs to `sel`'s subtree: the selection's pixels, for its
     /// outline and its handle size.
-    fn subtree_ids(&self, sel: NodeId) -> impl Fn(u32) -> bool {
+    fn subtree_ids(&self, sel: NodeId) -> impl Fn(u32) -> bool + Sync {
         let mut mine = vec![false; self.scene.nodes.len() + 1];
         for id in ops::subtree(&self.scene, sel) {
             mine[id.0 as usize + 1] = true;
@@ -149,18 +150,33 @@ impl Editor {
     /// Copies the viewport layer, with the selection outlined, into `frame`.
     pub(super) fn blit_viewport(&self, frame: &mut Frame, vp: Rect) {
         let lf = &self.layer.frame;
-        let color = match &self.layer.outlined {
-            Some(o) if Some(o.node) == self.selection => &o.color,
-            _ => &lf.color,
-        };
+        let outlined = self
+            .layer
+            .outlined
+            .as_ref()
+            .filter(|o| Some(o.node) == self.selection);
         let fw = frame.width as usize;
         let rows = vp.h.min(lf.height as i32).max(0) as usize;
         let n = vp.w.min(lf.width as i32).max(0) as usize;
-        for y in 0..rows {
-            let dst = (vp.y as usize + y) * fw + vp.x as usize;
-            let src = y * lf.width as usize;
-            frame.color[dst..dst + n].copy_from_slice(&color[src..src + n]);
+        if fw == 0 || n == 0 {
+            return;
         }
+        let (x0, lw) = (vp.x as usize, lf.width as usize);
+        // Row by row on the threads (the window's rows below the
+        // viewport's top, as many as the layer has).
+        frame
+            .color
+            .par_chunks_mut(fw)
+            .skip(vp.y as usize)
+            .take(rows)
+            .enumerate()
+            .for_each(|(y, window_row)| {
+                let row = &mut window_row[x0..x0 + n];
+                row.copy_from_slice(&lf.color[y * lw..y * lw + n]);
+                if let Some(o) = outlined {
+                    o.draw_over(y, row);
+                }
+            });
     }
 
     /// Light gizmos and the axis indicator, clipped to the viewport.
@@ -261,14 +277,15 @@ impl Editor {
 }
 
 /// Ground grid (y = 0) drawn only over background pixels, so objects
-/// cover it. Spacing is a power of ten suited to the scene's size.
+/// cover it. Spacing is a power of ten suited to the scene's size. Its
+/// long lines were a tenth of the editor frame on one thread, waiting
+/// after the scene's render; drawn in bands of rows they share the
+/// threads, with the same pixels (`line::wu_line_in`).
 fn draw_grid(frame: &mut Frame, proj: &Projector, radius: f32) {
     let step = 10f32.powf((radius * 0.5).max(1e-3).log10().floor());
     let n = ((radius * 2.0 / step).ceil() as i32).clamp(2, 40);
     let ext = n as f32 * step;
-    let (w, h) = (frame.width, frame.height);
-    let ids = &frame.ids;
-    let keep = |i: usize| ids[i] == 0;
+    let mut lines = Vec::with_capacity(4 * n as usize + 2);
     for i in -n..=n {
         let t = i as f32 * step;
         let (cx, cz) = if i == 0 {
@@ -282,11 +299,35 @@ fn draw_grid(frame: &mut Frame, proj: &Projector, radius: f32) {
             (Vec3::new(t, 0.0, -ext), Vec3::new(t, 0.0, ext), cz),
         ] {
             if let Some((pa, pb)) = proj.segment(a, b) {
-                line::wu_line(&mut frame.color, (w, h), pa, pb, c, 0.8, keep);
+                lines.push((pa, pb, c));
             }
         }
     }
+    let (w, h) = (frame.width, frame.height);
+    let band_rows = h.div_ceil(GRID_BANDS).max(1);
+    let ids = &frame.ids;
+    let keep = |i: usize| ids[i] == 0;
+    let band_len = (band_rows * w).max(1) as usize;
+    frame
+        .color
+        .par_chunks_mut(band_len)
+        .enumerate()
+        .for_each(|(k, pixels)| {
+            let r0 = k as u32 * band_rows;
+            let band = line::Band {
+                width: w,
+                height: h,
+                rows: r0..r0 + band_rows,
+            };
+            for &(pa, pb, c) in &lines {
+                line::wu_line_in(pixels, &band, pa, pb, c, 0.8, keep);
+            }
+        });
 }
+
+/// Bands of rows the grid is drawn in: a few per thread, so a band
+/// crossed by the horizon's many lines does not leave a thread waiting.
+const GRID_BANDS: u32 = 8;
 
 /// Handle size factor for a selection `r_px` pixels in radius: full size
 /// (arrows [`ARROW_PX`] long) once the arrows reach no further than 2.5

@@ -8,11 +8,15 @@ use tiny_skia::{
 
 /// Draws the overlay onto a frame: `begin` copies the frame into an opaque
 /// pixmap, drawing calls go to the pixmap, `end` copies it back. The pixmap
-/// (and the clip mask) are kept between frames to avoid reallocating.
+/// (and the clip masks) are kept between frames to avoid reallocating.
 pub struct Painter {
     pixmap: Pixmap,
     clip: Option<Rect>,
-    mask: Option<(Rect, Mask)>,
+    /// Masks of the clips drawn with lately, newest last: a frame uses a
+    /// few clips in turn (the viewport, then none, then the panels), and
+    /// a window-sized mask built afresh on each change cost more than the
+    /// lines it clipped.
+    masks: Vec<(Rect, Mask)>,
     /// A caller's mask that replaces the clip for paths (e.g. "background
     /// pixels only" for the ground grid).
     custom: Option<Mask>,
@@ -37,7 +41,7 @@ impl Painter {
             // A 1×1 pixmap always exists (non-zero size).
             pixmap: Pixmap::new(1, 1).expect("1x1 pixmap"),
             clip: None,
-            mask: None,
+            masks: Vec::new(),
             custom: None,
         }
     }
@@ -49,7 +53,7 @@ impl Painter {
             if let Some(p) = Pixmap::new(w, h) {
                 self.pixmap = p;
             }
-            self.mask = None;
+            self.masks.clear();
         }
         self.clip = None;
         if frame.color.len() * 4 == self.pixmap.data().len() {
@@ -91,29 +95,6 @@ impl Painter {
         }
     }
 
-    /// Makes sure `self.mask` matches the clip; returns whether to use it.
-    fn ensure_mask(&mut self) -> bool {
-        let Some(clip) = self.clip else { return false };
-        let stale = !matches!(&self.mask, Some((r, _)) if *r == clip);
-        if stale {
-            let Some(mut m) = Mask::new(self.pixmap.width(), self.pixmap.height()) else {
-                return false;
-            };
-            let Some(rect) = tiny_skia::Rect::from_xywh(
-                clip.x as f32,
-                clip.y as f32,
-                clip.w.max(1) as f32,
-                clip.h.max(1) as f32,
-            ) else {
-                return false;
-            };
-            let path = PathBuilder::from_rect(rect);
-            m.fill_path(&path, FillRule::Winding, false, SkTransform::identity());
-            self.mask = Some((clip, m));
-        }
-        true
-    }
-
     /// Fills `r` with an opaque colour (integer-aligned, no anti-aliasing).
     pub fn fill_rect(&mut self, r: Rect, color: u32) {
         self.fill_rect_alpha(r, color, 255);
@@ -130,10 +111,23 @@ impl Painter {
         let src = [(color >> 16) as u8, (color >> 8) as u8, color as u8];
         if alpha == 255 {
             let px = [src[0], src[1], src[2], 255];
-            for y in r.y..r.bottom() {
-                let row = (y as usize * w + r.x as usize) * 4;
-                for d in data[row..row + r.w as usize * 4].chunks_exact_mut(4) {
-                    d.copy_from_slice(&px);
+            // Whole pixels as words (the panels' backgrounds are a good
+            // part of the window); bytes if the pixmap is not word-aligned.
+            match bytemuck::try_cast_slice_mut::<u8, u32>(data) {
+                Ok(words) => {
+                    let word = u32::from_ne_bytes(px);
+                    for y in r.y..r.bottom() {
+                        let row = y as usize * w + r.x as usize;
+                        words[row..row + r.w as usize].fill(word);
+                    }
+                }
+                Err(_) => {
+                    for y in r.y..r.bottom() {
+                        let row = (y as usize * w + r.x as usize) * 4;
+                        for d in data[row..row + r.w as usize * 4].chunks_exact_mut(4) {
+                            d.copy_from_slice(&px);
+                        }
+                    }
                 }
             }
             return;
@@ -179,11 +173,8 @@ impl Painter {
             ..Stroke::default()
         };
         let p = paint(color, 255);
-        let use_mask = self.ensure_mask();
-        let mask = match &self.custom {
-            Some(m) => Some(m),
-            None => self.mask.as_ref().filter(|_| use_mask).map(|(_, m)| m),
-        };
+        let size = (self.pixmap.width(), self.pixmap.height());
+        let mask = path_mask(&mut self.masks, &self.custom, self.clip, size);
         self.pixmap
             .stroke_path(&path, &p, &stroke, SkTransform::identity(), mask);
     }
@@ -205,11 +196,8 @@ impl Painter {
         pb.close();
         let Some(path) = pb.finish() else { return };
         let p = paint(color, alpha);
-        let use_mask = self.ensure_mask();
-        let mask = match &self.custom {
-            Some(m) => Some(m),
-            None => self.mask.as_ref().filter(|_| use_mask).map(|(_, m)| m),
-        };
+        let size = (self.pixmap.width(), self.pixmap.height());
+        let mask = path_mask(&mut self.masks, &self.custom, self.clip, size);
         self.pixmap
             .fill_path(&path, &p, FillRule::Winding, SkTransform::identity(), mask);
     }
@@ -224,11 +212,8 @@ impl Painter {
             ..Stroke::default()
         };
         let p = paint(color, 255);
-        let use_mask = self.ensure_mask();
-        let mask = match &self.custom {
-            Some(m) => Some(m),
-            None => self.mask.as_ref().filter(|_| use_mask).map(|(_, m)| m),
-        };
+        let size = (self.pixmap.width(), self.pixmap.height());
+        let mask = path_mask(&mut self.masks, &self.custom, self.clip, size);
         self.pixmap
             .stroke_path(&path, &p, &stroke, SkTransform::identity(), mask);
     }
@@ -239,11 +224,8 @@ impl Painter {
             return;
         };
         let p = paint(color, 255);
-        let use_mask = self.ensure_mask();
-        let mask = match &self.custom {
-            Some(m) => Some(m),
-            None => self.mask.as_ref().filter(|_| use_mask).map(|(_, m)| m),
-        };
+        let size = (self.pixmap.width(), self.pixmap.height());
+        let mask = path_mask(&mut self.masks, &self.custom, self.clip, size);
         self.pixmap
             .fill_path(&path, &p, FillRule::Winding, SkTransform::identity(), mask);
     }
@@ -287,5 +269,136 @@ impl Painter {
     /// Draws `s` with its top-left at (x, y).
     pub fn text(&mut self, x: i32, y: i32, s: &str, color: u32) -> i32 {
         self.text_clipped(x, y, s, color, i32::MAX / 2)
+    }
+}
+
+/// How many clip masks a painter keeps.
+const KEPT_MASKS: usize = 4;
+
+/// The mask paths are drawn through: the caller's (`custom`), else the
+/// clip's, made (and kept, newest last) when no kept mask has the clip's
+/// rectangle; none without a clip.
+fn path_mask<'a>(
+    masks: &'a mut Vec<(Rect, Mask)>,
+    custom: &'a Option<Mask>,
+    clip: Option<Rect>,
+    (w, h): (u32, u32),
+) -> Option<&'a Mask> {
+    if custom.is_some() {
+        return custom.as_ref();
+    }
+    let clip = clip?;
+    match masks.iter().position(|(r, _)| *r == clip) {
+        Some(i) => {
+            let kept = masks.remove(i);
+            masks.push(kept);
+        }
+        None => {
+            let m = clip_mask(clip, w, h)?;
+            if masks.len() == KEPT_MASKS {
+                masks.remove(0);
+            }
+            masks.push((clip, m));
+        }
+    }
+    masks.last().map(|(_, m)| m)
+}
+
+/// A `w`×`h` mask open inside `clip` only.
+fn clip_mask(clip: Rect, w: u32, h: u32) -> Option<Mask> {
+    let mut m = Mask::new(w, h)?;
+    let rect = tiny_skia::Rect::from_xywh(
+        clip.x as f32,
+        clip.y as f32,
+        clip.w.max(1) as f32,
+        clip.h.max(1) as f32,
+    )?;
+    let path = PathBuilder::from_rect(rect);
+    m.fill_path(&path, FillRule::Winding, false, SkTransform::identity());
+    Some(m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Painter;
+    use crate::render::Frame;
+    use crate::ui::Rect;
+
+    fn frame(w: u32, h: u32) -> Frame {
+        let mut f = Frame::new(w, h, glam::Vec3::ZERO);
+        for (i, c) in f.color.iter_mut().enumerate() {
+            *c = (i as u32).wrapping_mul(0x9e37_79b9) & 0xff_ffff;
+        }
+        f
+    }
+
+    #[test]
+    fn an_opaque_fill_covers_its_rectangle_only() {
+        let mut f = frame(13, 9);
+        let before = f.color.clone();
+        let mut p = Painter::new();
+        p.begin(&mut f);
+        p.fill_rect(Rect::new(2, 3, 5, 4), 0x12_34_56);
+        p.set_clip(Some(Rect::new(0, 0, 4, 9)));
+        p.fill_rect(Rect::new(-3, 8, 50, 5), 0xab_cd_ef);
+        p.end(&mut f);
+        for y in 0..9 {
+            for x in 0..13 {
+                let want = if (2..7).contains(&x) && (3..7).contains(&y) {
+                    0x12_34_56
+                } else if x < 4 && y == 8 {
+                    0xab_cd_ef
+                } else {
+                    before[(y * 13 + x) as usize]
+                };
+                assert_eq!(f.color[(y * 13 + x) as usize], want, "({x}, {y})");
+            }
+        }
+    }
+
+    /// Lines under clips used in turn, more clips than are kept, drawn by
+    /// one painter over several frames.
+    fn clipped_lines(p: &mut Painter, f: &mut Frame, clips: &[Option<Rect>]) {
+        p.begin(f);
+        for (i, &clip) in clips.iter().enumerate() {
+            p.set_clip(clip);
+            let o = i as f32 * 3.0;
+            p.line((1.0 + o, 2.0), (60.0, 37.0 - o), 0xff_80_20, 1.5);
+            p.circle((30.0, 20.0), 5.0 + o, 0x20_80_ff, 1.0);
+        }
+        p.end(f);
+    }
+
+    #[test]
+    fn kept_clip_masks_clip_as_new_ones_do() {
+        let clips = [
+            Some(Rect::new(0, 0, 40, 30)),
+            None,
+            Some(Rect::new(10, 5, 30, 30)),
+            Some(Rect::new(0, 0, 40, 30)),
+            Some(Rect::new(20, 0, 44, 12)),
+            Some(Rect::new(5, 5, 5, 5)),
+            Some(Rect::new(1, 1, 60, 38)),
+            Some(Rect::new(10, 5, 30, 30)),
+        ];
+        let mut kept = Painter::new();
+        for _ in 0..3 {
+            let mut f = frame(64, 40);
+            clipped_lines(&mut kept, &mut f, &clips);
+            // A fresh painter per clip builds every mask anew.
+            let mut want = frame(64, 40);
+            for (i, &clip) in clips.iter().enumerate() {
+                let mut fresh = Painter::new();
+                // The same line and circle as `clipped_lines` draws at i.
+                fresh.begin(&mut want);
+                fresh.set_clip(clip);
+                let o = i as f32 * 3.0;
+                fresh.line((1.0 + o, 2.0), (60.0, 37.0 - o), 0xff_80_20, 1.5);
+                fresh.circle((30.0, 20.0), 5.0 + o, 0x20_80_ff, 1.0);
+                fresh.end(&mut want);
+            }
+            assert!(f.color == want.color);
+            assert!(f.color != frame(64, 40).color, "something was drawn");
+        }
     }
 }

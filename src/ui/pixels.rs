@@ -5,6 +5,7 @@
 //! premultiplied and straight colour coincide (alpha = 255) and the
 //! conversion is a byte shuffle, exact in both directions.
 
+use rayon::prelude::*;
 use tiny_skia::Pixmap;
 
 /// Which way [`convert`] copies.
@@ -18,27 +19,35 @@ pub enum Direction {
 /// Pixels of `color` are `0x00RRGGBB`; the pixmap holds opaque RGBA.
 /// Two of these run every editor frame over the whole window, so whole
 /// pixels move as words (R and B swapped by shifts), which the compiler
-/// vectorises; a pixmap whose bytes are not word-aligned (never seen:
-/// tiny-skia itself views them as pixels) goes byte by byte.
+/// vectorises, in chunks shared by the threads; a pixmap whose bytes are
+/// not word-aligned (never seen: tiny-skia itself views them as pixels)
+/// goes byte by byte.
 pub fn convert(color: &mut [u32], pixmap: &mut Pixmap, dir: Direction) {
     let data = pixmap.data_mut();
     debug_assert_eq!(data.len(), color.len() * 4);
     match bytemuck::try_cast_slice_mut::<u8, u32>(data) {
-        Ok(words) => match dir {
-            Direction::FrameToPixmap => {
-                for (w, &c) in words.iter_mut().zip(color.iter()) {
-                    *w = u32::from_le(swap(c) | 0xff00_0000);
-                }
+        Ok(words) => {
+            let chunks = words.par_chunks_mut(CHUNK).zip(color.par_chunks_mut(CHUNK));
+            match dir {
+                Direction::FrameToPixmap => chunks.for_each(|(words, color)| {
+                    for (w, &c) in words.iter_mut().zip(color.iter()) {
+                        *w = u32::to_le(swap(c) | 0xff00_0000);
+                    }
+                }),
+                Direction::PixmapToFrame => chunks.for_each(|(words, color)| {
+                    for (&w, c) in words.iter().zip(color.iter_mut()) {
+                        *c = swap(u32::from_le(w)) & 0x00ff_ffff;
+                    }
+                }),
             }
-            Direction::PixmapToFrame => {
-                for (&w, c) in words.iter().zip(color.iter_mut()) {
-                    *c = swap(u32::from_le(w)) & 0x00ff_ffff;
-                }
-            }
-        },
+        }
         Err(_) => by_bytes(color, data, dir),
     }
 }
+
+/// Pixels per chunk of [`convert`]: a few chunks per thread for a window,
+/// each big enough that handing it to a thread costs next to nothing.
+const CHUNK: usize = 1 << 16;
 
 /// `0x00RRGGBB` <-> the little-endian word of the bytes [R, G, B, A],
 /// `0xAABBGGRR`: the low and high colour bytes trade places both ways.
