@@ -49,18 +49,39 @@ fn planes(guard: f32) -> [Vec4; 5] {
 }
 
 /// True when every vertex is strictly inside every plane (the common case:
-/// no clipping work needed).
+/// no clipping work needed). Set-up asks [`sides`] once per vertex; this is
+/// the per-triangle form the tests check it against.
+#[cfg(test)]
 pub fn inside_all(v: &[ClipVert], guard: f32) -> bool {
     let ps = planes(guard);
     v.iter().all(|v| ps.iter().all(|p| p.dot(v.clip) > 0.0))
 }
 
-/// True when all vertices are outside one plane (nothing to draw).
+/// True when all vertices are outside one plane (nothing to draw); see
+/// [`inside_all`].
+#[cfg(test)]
 pub fn outside_one(v: &[ClipVert], guard: f32) -> bool {
     planes(guard)
         .iter()
         .any(|p| v.iter().all(|v| p.dot(v.clip) < 0.0))
 }
+
+/// Which sides of the clip planes a vertex is on: bit p when it is
+/// strictly inside plane p, bit 8 + p when strictly outside (the tests
+/// [`inside_all`] and [`outside_one`] make, once per vertex: a triangle
+/// is inside all when the AND of its vertices' bits has all five low
+/// bits, outside one when it has any high bit).
+pub fn sides(clip: Vec4, guard: f32) -> u16 {
+    let mut s = 0;
+    for (k, p) in planes(guard).iter().enumerate() {
+        let d = p.dot(clip);
+        s |= ((d > 0.0) as u16) << k | ((d < 0.0) as u16) << (8 + k);
+    }
+    s
+}
+
+/// [`sides`] bits of a vertex inside every plane.
+pub const INSIDE_ALL: u16 = 0x1F;
 
 /// Clips a convex polygon; returns the clipped polygon (maybe empty).
 pub fn clip_polygon(poly: &[ClipVert], guard: f32) -> Vec<ClipVert> {
@@ -157,6 +178,34 @@ mod tests {
         ];
         assert!(inside_all(&inside, 100.0));
         assert_eq!(clip_polygon(&inside, 100.0), inside.to_vec());
+    }
+
+    /// The per-vertex `sides` bits answer both triangle tests as they do,
+    /// on vertices on, inside and outside every plane.
+    #[test]
+    fn sides_per_vertex_agree_with_the_triangle_tests() {
+        let coords = [-2.0f32, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0, 150.0, -150.0];
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut pick = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            coords[(state % coords.len() as u64) as usize]
+        };
+        let (mut inside, mut outside) = (0, 0);
+        for _ in 0..20_000 {
+            let tri = [0, 1, 2].map(|_| v(pick(), pick(), pick(), pick().abs()));
+            let both = tri.iter().fold(!0u16, |a, t| a & sides(t.clip, 100.0));
+            assert_eq!(
+                both & INSIDE_ALL == INSIDE_ALL,
+                inside_all(&tri, 100.0),
+                "{tri:?}"
+            );
+            assert_eq!(both >> 8 != 0, outside_one(&tri, 100.0), "{tri:?}");
+            inside += inside_all(&tri, 100.0) as u32;
+            outside += outside_one(&tri, 100.0) as u32;
+        }
+        assert!(inside > 100 && outside > 100, "{inside} {outside}");
     }
 
     #[test]

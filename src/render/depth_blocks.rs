@@ -21,7 +21,7 @@
 
 use super::fragment::{NONE, PLANE, TILE};
 use super::prepare::{Tri, SUBPIXEL};
-use super::simd::V8;
+use super::simd::{Lanes, Sse8, V8};
 
 /// Block state: no triangle touched it.
 pub const EMPTY: u32 = NONE;
@@ -93,7 +93,24 @@ pub fn edge_lanes<V: V8>(exact: bool, e: i64, s: i64) -> V {
 /// sample, the same conversion and float operations). `tris` are the
 /// tile's opaque triangles by index, `rect` the tile, `offs` the samples.
 #[inline(always)]
-pub fn make_planes<V: V8, const NS: usize>(
+pub fn make_planes<const NS: usize>(
+    tris: &[Tri],
+    rect: [i32; 4],
+    offs: &[(i64, i64); NS],
+    blk: usize,
+    bufs: &mut DepthBufs,
+) {
+    if bufs.blocks[blk] != PLANES {
+        write_planes(tris, rect, offs, blk, bufs);
+    }
+}
+
+/// [`make_planes`] for a block not yet in planes: out of the depth pass's
+/// loops (it runs once per block at most), on SSE2 lanes, which give the
+/// bits of every other lane width.
+#[cold]
+#[inline(never)]
+fn write_planes<const NS: usize>(
     tris: &[Tri],
     rect: [i32; 4],
     offs: &[(i64, i64); NS],
@@ -101,9 +118,6 @@ pub fn make_planes<V: V8, const NS: usize>(
     bufs: &mut DepthBufs,
 ) {
     let state = bufs.blocks[blk];
-    if state == PLANES {
-        return;
-    }
     bufs.blocks[blk] = PLANES;
     let i0 = blk * 8;
     if state == EMPTY {
@@ -117,11 +131,11 @@ pub fn make_planes<V: V8, const NS: usize>(
     let t = &tris[state as usize];
     let x = rect[0] as i64 + (i0 % TILE as usize) as i64;
     let y = rect[1] as i64 + (i0 / TILE as usize) as i64;
-    let inv_area = V::splat(1.0 / t.area() as f32);
+    let inv_area = Sse8::splat(1.0 / t.area() as f32);
     let (z0, dz1, dz2) = (
-        V::splat(t.z[0]),
-        V::splat(t.z[1] - t.z[0]),
-        V::splat(t.z[2] - t.z[0]),
+        Sse8::splat(t.z[0]),
+        Sse8::splat(t.z[1] - t.z[0]),
+        Sse8::splat(t.z[2] - t.z[0]),
     );
     for (s, &off) in offs.iter().enumerate() {
         let px = x * SUBPIXEL + SUBPIXEL / 2 + off.0;
@@ -134,8 +148,8 @@ pub fn make_planes<V: V8, const NS: usize>(
                 < 1 << 52
         };
         let exact = small(e1, s1) && small(e2, s2);
-        let w1 = edge_lanes::<V>(exact, e1, s1) * inv_area;
-        let w2 = edge_lanes::<V>(exact, e2, s2) * inv_area;
+        let w1 = edge_lanes::<Sse8>(exact, e1, s1) * inv_area;
+        let w2 = edge_lanes::<Sse8>(exact, e2, s2) * inv_area;
         let z = z0 + w1 * dz1 + w2 * dz2;
         let j = s * PLANE + i0;
         let depth: &mut [f32; 8] = (&mut bufs.depth[j..j + 8]).try_into().expect("8 lanes");

@@ -75,7 +75,7 @@ pub const PLANES: usize = ATTRS + 1;
 /// weights b1, b2 of vertices 1 and 2: `value/w = base + b1·d1 + b2·d2`
 /// (value/w and 1/w are affine in screen space), so a pixel needs two
 /// multiply-adds per attribute and one division for 1/w.
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug)]
 pub struct Tri {
     /// Fixed-point (SUBPIXEL) screen coordinates, y down.
     pub x: [i64; 3],
@@ -210,6 +210,8 @@ pub struct Prepared {
     /// Working buffers of `prepare`: transformed vertices of the current
     /// mesh and per-chunk triangle lists of the parallel setup.
     verts: Vec<ClipVert>,
+    /// The current mesh's vertices in screen space (see [`ScreenVert`]).
+    screen_verts: Vec<ScreenVert>,
     chunks: Vec<Vec<Tri>>,
 }
 
@@ -364,7 +366,9 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
                     opts,
                     textured,
                 };
-                setup_triangles(mesh, &verts, &setup, &mut out.chunks, dest);
+                project_vertices(&verts, &screen, &mut out.screen_verts);
+                let v = (&verts[..], &out.screen_verts[..]);
+                setup_triangles(mesh, v, &setup, &mut out.chunks, dest);
                 push_lines(&mut out.lines, &mesh.lines, &verts, stroke, &screen);
                 push_points(&mut out.points, &mesh.points, &verts, stroke, &screen);
             }
@@ -506,9 +510,11 @@ struct Setup<'a> {
     textured: bool,
 }
 
+/// Sets up the triangles of `mesh` from its vertices in clip space and in
+/// screen space (`verts`, the same vertices), appending them to `dest`.
 fn setup_triangles(
     mesh: &Mesh,
-    verts: &[ClipVert],
+    (verts, screen_verts): (&[ClipVert], &[ScreenVert]),
     setup: &Setup,
     bufs: &mut Vec<Vec<Tri>>,
     dest: &mut Vec<Tri>,
@@ -546,68 +552,120 @@ fn setup_triangles(
                 if t.iter().any(|&i| i as usize >= n) {
                     continue;
                 }
-                let tri = [
-                    verts[t[0] as usize],
-                    verts[t[1] as usize],
-                    verts[t[2] as usize],
-                ];
-                if clip::outside_one(&tri, screen.guard) {
+                let sv = t.map(|i| &screen_verts[i as usize]);
+                let sides = sv[0].sides & sv[1].sides & sv[2].sides;
+                if sides >> 8 != 0 {
+                    // Every vertex outside one plane.
                     continue;
                 }
-                if clip::inside_all(&tri, screen.guard) {
-                    push(screen_triangle(
-                        [&tri[0], &tri[1], &tri[2]],
-                        item,
-                        cull,
-                        screen,
-                        w,
-                        h,
-                    ));
+                if sides & clip::INSIDE_ALL == clip::INSIDE_ALL {
+                    push(screen_triangle(sv, item, cull, w, h));
                     continue;
                 }
                 // Fan the (convex) clipped polygon.
+                let tri = t.map(|i| verts[i as usize]);
                 let poly = clip::clip_polygon(&tri, screen.guard);
+                let poly: Vec<ScreenVert> =
+                    poly.iter().map(|v| ScreenVert::of(v, screen)).collect();
                 for k in 1..poly.len().saturating_sub(1) {
                     push(screen_triangle(
                         [&poly[0], &poly[k], &poly[k + 1]],
                         item,
                         cull,
-                        screen,
                         w,
                         h,
                     ));
                 }
             }
         });
-    let total: usize = bufs[..count].iter().map(Vec::len).sum();
+    append_in_parallel(dest, &bufs[..count]);
+}
+
+/// Appends the lists `parts` to `dest` in order, copying them in parallel:
+/// a 100k-triangle mesh's triangles are 25 MB, and one thread copying them
+/// was a serial stretch of every frame.
+fn append_in_parallel(dest: &mut Vec<Tri>, parts: &[Vec<Tri>]) {
+    let total: usize = parts.iter().map(Vec::len).sum();
     dest.reserve(total);
-    for b in &bufs[..count] {
-        dest.extend_from_slice(b);
+    let old = dest.len();
+    let mut rest = &mut dest.spare_capacity_mut()[..total];
+    let mut slots = Vec::with_capacity(parts.len());
+    for part in parts {
+        let (here, after) = std::mem::take(&mut rest).split_at_mut(part.len());
+        slots.push(here);
+        rest = after;
+    }
+    slots
+        .into_par_iter()
+        .zip(parts.par_iter())
+        .for_each(|(slot, part)| {
+            for (s, t) in slot.iter_mut().zip(part) {
+                s.write(*t);
+            }
+        });
+    // SAFETY: the `total` slots after the old length were reserved above
+    // and each written exactly once (the slots are split to the parts'
+    // lengths, which sum to `total`).
+    unsafe { dest.set_len(old + total) };
+}
+
+/// A vertex in screen space, worked out once per vertex for the
+/// triangles sharing it (about six in a mesh) rather than once per
+/// triangle corner: the very operations `screen_triangle` made per corner,
+/// so the same bits.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ScreenVert {
+    /// Fixed-point (SUBPIXEL) screen position, y down.
+    x: i64,
+    y: i64,
+    /// Window depth.
+    z: f32,
+    /// Every attribute divided by w, then 1/w: the vertex's values of the
+    /// triangle planes (see [`Tri`]).
+    planes: [f32; PLANES],
+    /// Which sides of the clip planes it is on (`clip::sides`).
+    sides: u16,
+    /// Its projection is finite (else no triangle through it is drawn).
+    finite: bool,
+}
+
+impl ScreenVert {
+    /// Projects `v` through `screen`.
+    fn of(v: &ClipVert, screen: &Screen) -> ScreenVert {
+        let (sx, sy, sz, iw) = screen.project(v.clip);
+        let mut planes = [iw; PLANES];
+        for (p, a) in planes.iter_mut().zip(v.attr) {
+            *p = a * iw;
+        }
+        ScreenVert {
+            x: round_i64(sx * SUBPIXEL as f32),
+            y: round_i64(sy * SUBPIXEL as f32),
+            z: sz,
+            planes,
+            sides: clip::sides(v.clip, screen.guard),
+            finite: sx.is_finite() && sy.is_finite() && sz.is_finite(),
+        }
     }
 }
 
-fn screen_triangle(
-    v: [&ClipVert; 3],
-    item: u32,
-    cull: bool,
-    screen: &Screen,
-    w: i32,
-    h: i32,
-) -> Option<Tri> {
-    let mut x = [0i64; 3];
-    let mut y = [0i64; 3];
-    let mut z = [0f32; 3];
-    let mut inv_w = [0f32; 3];
-    for k in 0..3 {
-        let (sx, sy, sz, iw) = screen.project(v[k].clip);
-        if !(sx.is_finite() && sy.is_finite() && sz.is_finite()) {
-            return None;
-        }
-        x[k] = round_i64(sx * SUBPIXEL as f32);
-        y[k] = round_i64(sy * SUBPIXEL as f32);
-        z[k] = sz;
-        inv_w[k] = iw;
+/// Every vertex of a mesh in screen space, in parallel.
+fn project_vertices(verts: &[ClipVert], screen: &Screen, out: &mut Vec<ScreenVert>) {
+    verts
+        .par_iter()
+        .map(|v| ScreenVert::of(v, screen))
+        .collect_into_vec(out);
+}
+
+/// The screen triangle through three projected vertices, oriented (see
+/// [`Tri`]), with its planes; `None` when it is degenerate, culled as a
+/// back face (`cull`), not finite or outside the `w`×`h` frame.
+fn screen_triangle(v: [&ScreenVert; 3], item: u32, cull: bool, w: i32, h: i32) -> Option<Tri> {
+    if !v.iter().all(|v| v.finite) {
+        return None;
     }
+    let mut x = v.map(|v| v.x);
+    let mut y = v.map(|v| v.y);
+    let mut z = v.map(|v| v.z);
     let area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
     if area == 0 {
         return None;
@@ -617,10 +675,11 @@ fn screen_triangle(
     if back && cull {
         return None;
     }
-    let mut attr = [v[0].attr, v[1].attr, v[2].attr];
+    let mut at = v.map(|v| v.planes);
     if back {
-        // Two-sided lighting: light the side we see.
-        for a in &mut attr {
+        // Two-sided lighting: light the side we see (n/w negated is the
+        // negated normal over w, bit for bit).
+        for a in &mut at {
             for n in &mut a[A_NORMAL..A_NORMAL + 3] {
                 *n = -*n;
             }
@@ -630,8 +689,7 @@ fn screen_triangle(
         x.swap(1, 2);
         y.swap(1, 2);
         z.swap(1, 2);
-        inv_w.swap(1, 2);
-        attr.swap(1, 2);
+        at.swap(1, 2);
     }
     let px = |f: i64| (f >> SUBPIXEL_BITS) as i32;
     let bbox = [
@@ -643,7 +701,9 @@ fn screen_triangle(
     if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
         return None;
     }
-    let (base, d1, d2) = planes(&attr, &inv_w);
+    let base = at[0];
+    let d1 = std::array::from_fn(|j| at[1][j] - at[0][j]);
+    let d2 = std::array::from_fn(|j| at[2][j] - at[0][j]);
     Some(Tri {
         x,
         y,
@@ -673,7 +733,10 @@ pub fn round_i64(x: f32) -> i64 {
     t + (f >= 0.5) as i64 - (f <= -0.5) as i64
 }
 
-/// The attribute planes of a triangle (see [`Tri`]).
+/// The attribute planes of a triangle (see [`Tri`]) from its corners'
+/// attributes and 1/w: what set-up computes from [`ScreenVert`]s, written
+/// out for the tests.
+#[cfg(test)]
 pub fn planes(
     attr: &[[f32; ATTRS]; 3],
     inv_w: &[f32; 3],
@@ -852,5 +915,77 @@ mod round_tests {
         for x in xs {
             assert_eq!(round_i64(x), x.round() as i64, "{x:e} ({:#x})", x.to_bits());
         }
+    }
+}
+
+#[cfg(test)]
+mod screen_vert_tests {
+    use super::*;
+
+    /// Triangles set up from vertices projected once ([`ScreenVert`]) have
+    /// the bits of the per-corner set-up they replace: each corner
+    /// projected and snapped, the seen side's normal, then [`planes`] of
+    /// the attributes and 1/w — front and back faces, both windings.
+    #[test]
+    fn projected_vertices_give_the_per_corner_triangles_bits() {
+        let screen = Screen {
+            w: 320.0,
+            h: 240.0,
+            guard: MAX_SCREEN / 320.0,
+            aa: false,
+        };
+        let mut state = 0x853C_49E6_748F_EA9Bu64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f32 / (1u64 << 53) as f32 * 2.0 - 1.0
+        };
+        let mut checked = [0; 2];
+        for _ in 0..5000 {
+            let verts: [ClipVert; 3] = std::array::from_fn(|_| {
+                let w = 1.0 + next().abs() * 4.0;
+                ClipVert {
+                    clip: Vec4::new(next() * w, next() * w, next() * w, w),
+                    attr: std::array::from_fn(|_| next() * 3.0),
+                }
+            });
+            let sv = verts.map(|v| ScreenVert::of(&v, &screen));
+            let got = screen_triangle([&sv[0], &sv[1], &sv[2]], 7, false, 320, 240);
+            // The per-corner reference.
+            let p = verts.map(|v| screen.project(v.clip));
+            let mut x = p.map(|p| round_i64(p.0 * SUBPIXEL as f32));
+            let mut y = p.map(|p| round_i64(p.1 * SUBPIXEL as f32));
+            let mut z = p.map(|p| p.2);
+            let mut inv_w = p.map(|p| p.3);
+            let area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+            let Some(t) = got else {
+                continue;
+            };
+            let mut attr = verts.map(|v| v.attr);
+            if area > 0 {
+                for a in &mut attr {
+                    for n in &mut a[A_NORMAL..A_NORMAL + 3] {
+                        *n = -*n;
+                    }
+                }
+            }
+            if area < 0 {
+                x.swap(1, 2);
+                y.swap(1, 2);
+                z.swap(1, 2);
+                inv_w.swap(1, 2);
+                attr.swap(1, 2);
+            }
+            let (base, d1, d2) = planes(&attr, &inv_w);
+            let bits = |a: &[f32]| a.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+            assert_eq!((t.x, t.y), (x, y));
+            assert_eq!(bits(&t.z), bits(&z));
+            assert_eq!(bits(&t.base), bits(&base));
+            assert_eq!(bits(&t.d1), bits(&d1));
+            assert_eq!(bits(&t.d2), bits(&d2));
+            checked[(area > 0) as usize] += 1;
+        }
+        assert!(checked[0] > 500 && checked[1] > 500, "{checked:?}");
     }
 }

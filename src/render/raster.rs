@@ -258,7 +258,7 @@ fn depth_pass<const NS: usize>(
         depth_triangle::<Sse8, NS>(&p.opaque, ti, rect, offs, bufs);
     }
     if need_planes {
-        all_planes::<Sse8, NS>(&p.opaque, rect, offs, bufs);
+        all_planes::<NS>(&p.opaque, rect, offs, bufs);
     }
 }
 
@@ -276,21 +276,21 @@ unsafe fn depth_pass_avx<const NS: usize>(
         depth_triangle::<simd::Avx8, NS>(&p.opaque, ti, rect, offs, bufs);
     }
     if need_planes {
-        all_planes::<simd::Avx8, NS>(&p.opaque, rect, offs, bufs);
+        all_planes::<NS>(&p.opaque, rect, offs, bufs);
     }
 }
 
 /// Writes out the sample planes of every block (see `depth_blocks`), for
 /// the passes that read depth at any sample after the shading pass.
 #[inline(always)]
-fn all_planes<V: V8, const NS: usize>(
+fn all_planes<const NS: usize>(
     tris: &[Tri],
     rect: Rect,
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
 ) {
     for blk in 0..bufs.blocks.len() {
-        make_planes::<V, NS>(tris, rect, offs, blk, bufs);
+        make_planes::<NS>(tris, rect, offs, blk, bufs);
     }
 }
 
@@ -322,13 +322,14 @@ fn depth_triangle<V: V8, const NS: usize>(
     if x0 >= x1 || y0 >= y1 {
         return;
     }
-    if x1 - x0 < 6 {
+    if x1 - x0 < 8 {
         // Narrow triangles (most small ones): pixel by pixel is cheaper
-        // than a block, and does the very same arithmetic.
+        // than a block (whose lanes are then mostly partial stores), and
+        // does the very same arithmetic.
         let (bc0, bc1) = ((x0 - rect[0]) as usize / 8, (x1 - 1 - rect[0]) as usize / 8);
         for row in (y0 - rect[1]) as usize..(y1 - rect[1]) as usize {
             for bc in bc0..=bc1 {
-                make_planes::<V, NS>(tris, rect, offs, row * BLOCKS_PER_ROW + bc, bufs);
+                make_planes::<NS>(tris, rect, offs, row * BLOCKS_PER_ROW + bc, bufs);
             }
         }
         for (si, &off) in offs.iter().enumerate() {
@@ -377,7 +378,9 @@ fn depth_triangle<V: V8, const NS: usize>(
     );
     let inv_area = V::splat(ed.inv_area);
     let zero = V::splat(0.0);
-    let own = may_own(t, [x0, y0, x1, y1]);
+    // Whether the triangle may own blocks here: asked at the first block
+    // it covers whole (small triangles never do).
+    let mut own = None;
     // Edge values over the blocks stay below 2⁵² in magnitude (always, for
     // triangles near the screen): lanes are then converted through exact
     // f64 (`V8::from_edge`), giving the bits of `i64 as f32` (either way
@@ -413,7 +416,11 @@ fn depth_triangle<V: V8, const NS: usize>(
             }
             if !outside {
                 let blk = (row + c) / 8;
-                if own && all_in && in_box == 0xFF && bufs.blocks[blk] == EMPTY {
+                if all_in
+                    && in_box == 0xFF
+                    && bufs.blocks[blk] == EMPTY
+                    && *own.get_or_insert_with(|| may_own(t, [x0, y0, x1, y1]))
+                {
                     // Covered at every sample and in front of the cleared
                     // depth: owned, with the first sample's weights (as
                     // below) and the winner in the first plane only.
@@ -425,7 +432,7 @@ fn depth_triangle<V: V8, const NS: usize>(
                     bufs.winner[i0..i0 + 8].fill(ti);
                     bufs.blocks[blk] = ti;
                 } else {
-                    make_planes::<V, NS>(tris, rect, offs, blk, bufs);
+                    make_planes::<NS>(tris, rect, offs, blk, bufs);
                     for (si, d) in d.iter().enumerate() {
                         let es: [i64; 3] = std::array::from_fn(|k| e[k] + d[k]);
                         // This sample's block: outside, or inside whole.
@@ -540,9 +547,18 @@ pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch, ne
         blocks,
         ..
     } = scratch;
-    blocks.fill(EMPTY);
-    // The shading pass reads the first plane's winners of every block.
-    winner[..PLANE].fill(NONE);
+    if ns == 1 {
+        // One sample: a block left in one plane saves only its depth, and
+        // writing the owner's depth out when another triangle comes costs
+        // more; every block has its plane from the start.
+        depth.fill(1.0);
+        winner.fill(NONE);
+        blocks.fill(PLANES);
+    } else {
+        blocks.fill(EMPTY);
+        // The shading pass reads the first plane's winners of every block.
+        winner[..PLANE].fill(NONE);
+    }
     let mut bufs = DepthBufs {
         depth,
         winner,
