@@ -18,15 +18,24 @@ use super::texture_lanes::UvIn;
 
 /// The triangles a block's lanes show, with their screen-space weights.
 pub struct BlockPlanes<'p, V> {
-    /// One triangle per run of neighbouring lanes showing it (a triangle
-    /// showing in lanes apart gets one run per stretch: the same numbers).
-    tris: [&'p Tri; 8],
-    /// Lane masks of `tris[1..n]` (the first run is the default, so its
-    /// mask is not needed).
-    masks: [V; 8],
-    n: usize,
+    /// The triangle of the first run of lanes (of all lanes, in the
+    /// common block that shows one triangle).
+    first: &'p Tri,
+    /// The other runs, when there are any: kept apart so that a block of
+    /// one triangle fills no per-run arrays.
+    more: Option<Runs<'p, V>>,
     b1: V,
     b2: V,
+}
+
+/// The runs after the first: each a triangle and the mask of the lanes
+/// that show it.
+struct Runs<'p, V> {
+    /// One triangle per run of neighbouring lanes showing it (a triangle
+    /// showing in lanes apart gets one run per stretch: the same numbers).
+    tris: [&'p Tri; 7],
+    masks: [V; 7],
+    n: usize,
 }
 
 /// Position, normal and colour planes, then 1/w: what every lit pixel
@@ -46,53 +55,21 @@ const USED: [usize; 10] = [
 
 impl<'p, V: V8> BlockPlanes<'p, V> {
     /// The triangles `win[k]` of the lanes of `group` (not empty) at
-    /// weights (`b1`, `b2`). Lanes outside `group` get the planes of a
-    /// neighbouring run: harmless values the caller does not keep.
+    /// weights (`b1`, `b2`). Lanes outside `group` get the planes of the
+    /// first triangle: harmless values the caller does not keep.
     #[inline(always)]
     pub fn new(p: &'p Prepared, win: &[u32; 8], group: u32, b1: V, b2: V) -> Self {
         debug_assert!(group & 0xFF != 0);
         let group = group & 0xFF;
         let first = win[group.trailing_zeros() as usize];
-        let mut tris = [&p.opaque[first as usize]; 8];
-        let mut bits = [0u32; 8];
-        let mut n = 1;
-        if group == 0xFF {
-            // Every lane: a run starts where the winner changes.
-            let mut starts = 0u32;
-            for k in 1..8 {
-                starts |= ((win[k] != win[k - 1]) as u32) << k;
-            }
-            let mut from = 0;
-            while starts != 0 {
-                let k = starts.trailing_zeros();
-                starts &= starts - 1;
-                bits[n - 1] = (1 << k) - (1 << from);
-                tris[n] = &p.opaque[win[k as usize] as usize];
-                (from, n) = (k, n + 1);
-            }
-            bits[n - 1] = 0x100 - (1 << from);
+        let more = if *win == [first; 8] {
+            None
         } else {
-            let mut last = first;
-            for (k, &t) in win.iter().enumerate() {
-                if group >> k & 1 == 0 {
-                    continue;
-                }
-                if t != last {
-                    tris[n] = &p.opaque[t as usize];
-                    last = t;
-                    n += 1;
-                }
-                bits[n - 1] |= 1 << k;
-            }
-        }
-        let mut masks = [V::splat(0.0); 8];
-        for r in 1..n {
-            masks[r] = V::from_bits(bits[r]);
-        }
+            Some(Runs::new(p, win, group, first))
+        };
         BlockPlanes {
-            tris,
-            masks,
-            n,
+            first: &p.opaque[first as usize],
+            more,
             b1,
             b2,
         }
@@ -102,14 +79,15 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
     /// coefficients.
     #[inline(always)]
     pub fn plane(&self, j: usize) -> V {
-        let t = self.tris[0];
         let at = |t: &Tri| (t.base[j], t.d1[j], t.d2[j]);
-        let (base, d1, d2) = at(t);
+        let (base, d1, d2) = at(self.first);
         let mut v = V::splat(base) + self.b1 * V::splat(d1) + self.b2 * V::splat(d2);
-        for r in 1..self.n {
-            let (base, d1, d2) = at(self.tris[r]);
-            let x = V::splat(base) + self.b1 * V::splat(d1) + self.b2 * V::splat(d2);
-            v = V::select(self.masks[r], x, v);
+        if let Some(runs) = &self.more {
+            for r in 0..runs.n {
+                let (base, d1, d2) = at(runs.tris[r]);
+                let x = V::splat(base) + self.b1 * V::splat(d1) + self.b2 * V::splat(d2);
+                v = V::select(runs.masks[r], x, v);
+            }
         }
         v
     }
@@ -117,9 +95,11 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
     /// Lane by lane, `c` of the lane's triangle.
     #[inline(always)]
     fn pick(&self, c: impl Fn(&Tri) -> f32) -> V {
-        let mut v = V::splat(c(self.tris[0]));
-        for r in 1..self.n {
-            v = V::select(self.masks[r], V::splat(c(self.tris[r])), v);
+        let mut v = V::splat(c(self.first));
+        if let Some(runs) = &self.more {
+            for r in 0..runs.n {
+                v = V::select(runs.masks[r], V::splat(c(runs.tris[r])), v);
+            }
         }
         v
     }
@@ -170,6 +150,37 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
             du_dy: (guy - u * gqy) * s,
             dv_dy: (gvy - v * gqy) * s,
         }
+    }
+}
+
+impl<'p, V: V8> Runs<'p, V> {
+    /// The runs after the first of the lanes of `group`, whose first lane
+    /// shows `first` (a block showing more than one triangle). Lanes
+    /// outside `group` are in no run's mask.
+    #[inline(always)]
+    fn new(p: &'p Prepared, win: &[u32; 8], group: u32, first: u32) -> Self {
+        let mut tris = [&p.opaque[first as usize]; 7];
+        let mut bits = [0u32; 7];
+        let mut n = 0;
+        let mut last = first;
+        for (k, &t) in win.iter().enumerate() {
+            if group >> k & 1 == 0 {
+                continue;
+            }
+            if t != last {
+                tris[n] = &p.opaque[t as usize];
+                last = t;
+                n += 1;
+            }
+            if n > 0 {
+                bits[n - 1] |= 1 << k;
+            }
+        }
+        let mut masks = [V::splat(0.0); 7];
+        for (m, &b) in masks.iter_mut().zip(&bits).take(n) {
+            *m = V::from_bits(b);
+        }
+        Runs { tris, masks, n }
     }
 }
 
@@ -325,7 +336,7 @@ mod mixed_tests {
             let b1: [f32; 8] = std::array::from_fn(|_| rnd() + 0.5);
             let b2: [f32; 8] = std::array::from_fn(|_| rnd() + 0.5);
             let mixed = BlockPlanes::new(&p, &win, group, Sse8::load(&b1), Sse8::load(&b2));
-            assert!(mixed.n > 1);
+            assert!(mixed.more.as_ref().is_some_and(|r| r.n > 0));
             let (a, s) = mixed.attributes(true);
             let uv = mixed.uv_in(s);
             for k in (0..8).filter(|k| group >> k & 1 == 1) {
@@ -336,7 +347,7 @@ mod mixed_tests {
                     Sse8::splat(b1[k]),
                     Sse8::splat(b2[k]),
                 );
-                assert_eq!(alone.n, 1);
+                assert!(alone.more.is_none());
                 let (a1, s1) = alone.attributes(true);
                 let uv1 = alone.uv_in(s1);
                 for j in 0..10 {
