@@ -16,13 +16,13 @@
 //! What a pixel's colour is made of (texture, lighting, emissive map) is
 //! `surface::shade_lanes`; this file gathers the lanes. Texture
 //! coordinates (perspective-correct, with their screen-space derivatives
-//! for the mip level, [`uv_in`]) are computed only for textured items, and
+//! for the mip level, `block_planes`) are computed only for textured items, and
 //! the loop of a tile without textured triangles is compiled without any
 //! texture code (`TEX = false`).
 
-use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
+use super::block_planes::BlockPlanes;
 use super::lanes::Pair;
-use super::prepare::{Item, Prepared, Tri, INV_W};
+use super::prepare::{Item, Prepared};
 use super::simd::V8;
 use super::surface::shade_lanes;
 use super::texture_lanes::UvIn;
@@ -227,25 +227,6 @@ pub fn shade_mixed<V: V8, const TEX: bool>(
     (rgb, lane_id)
 }
 
-/// The next distinct triangle among the lanes of `rest` and the mask of
-/// the lanes showing it (removed from `rest`).
-#[inline(always)]
-fn next_tri<'p>(p: &'p Prepared, win: &[u32; 8], rest: &mut u32) -> (&'p Tri, u32) {
-    let t = win[rest.trailing_zeros() as usize];
-    let mut mask = 0u32;
-    for (k, &wk) in win.iter().enumerate() {
-        mask |= ((*rest >> k & 1 == 1 && wk == t) as u32) << k;
-    }
-    *rest &= !mask;
-    (&p.opaque[t as usize], mask)
-}
-
-/// `base + b1·d1 + b2·d2` of plane `j` of `t`, per lane.
-#[inline(always)]
-fn plane<V: V8>(t: &Tri, j: usize, b1: V, b2: V) -> V {
-    V::splat(t.base[j]) + b1 * V::splat(t.d1[j]) + b2 * V::splat(t.d2[j])
-}
-
 /// Interpolates and lights the lanes of `group` (all of one item).
 #[inline(always)]
 fn shade_group<V: V8, const TEX: bool>(
@@ -260,14 +241,15 @@ fn shade_group<V: V8, const TEX: bool>(
     // No closures over lanes in this file: a closure is a function of its
     // own without the caller's AVX target feature, and lane operations
     // inside it stop being inlined (a call per instruction).
-    let (a, s) = attributes(p, win, group, b1, b2);
+    let planes = BlockPlanes::new(p, win, group, b1, b2);
+    let (a, s) = planes.attributes(reads_colour::<TEX>(item));
     let mut v = [s; 9];
     for (v, a) in v.iter_mut().zip(a) {
         *v = a * s;
     }
     let uv_store;
     let uv: &[UvIn<V>] = if TEX && item.textured {
-        uv_store = [uv_in(p, win, group, b1, b2, s)];
+        uv_store = [planes.uv_in(s)];
         &uv_store
     } else {
         &[]
@@ -282,45 +264,11 @@ fn shade_group<V: V8, const TEX: bool>(
     )
 }
 
-/// Plane indices [`attributes`] evaluates: position, normal, colour, 1/w.
-const USED: [usize; 10] = [
-    A_POS,
-    A_POS + 1,
-    A_POS + 2,
-    A_NORMAL,
-    A_NORMAL + 1,
-    A_NORMAL + 2,
-    A_COLOR,
-    A_COLOR + 1,
-    A_COLOR + 2,
-    INV_W,
-];
-
-/// The [`USED`] planes (value/w, then 1/w) of the lanes of `group`, each
-/// from its own triangle, and `s` = w (1 over the last plane): attribute j
-/// is `a[j] · s`, perspective-correct. Lanes outside `group` carry harmless
-/// values of the first triangle's planes.
+/// Whether the shading of `item` reads the interpolated colour: not when
+/// its texture replaces it (then the colour planes are not evaluated).
 #[inline(always)]
-fn attributes<V: V8>(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V) -> ([V; 10], V) {
-    let mut a = [V::splat(0.0); 10];
-    let mut rest = group;
-    let mut first = true;
-    while rest != 0 {
-        let (t, mask) = next_tri(p, win, &mut rest);
-        if first {
-            for (v, &j) in a.iter_mut().zip(&USED) {
-                *v = plane(t, j, b1, b2);
-            }
-            first = false;
-        } else {
-            let m = V::from_bits(mask);
-            for (v, &j) in a.iter_mut().zip(&USED) {
-                *v = V::select(m, plane(t, j, b1, b2), *v);
-            }
-        }
-    }
-    let s = V::splat(1.0) / a[9];
-    (a, s)
+fn reads_colour<const TEX: bool>(item: &Item) -> bool {
+    !(TEX && item.textured && item.texture.as_ref().is_some_and(|s| s.replaces_diffuse()))
 }
 
 /// The item that two neighbouring blocks of a row (`i0`, `i0 + 8`) show
@@ -334,9 +282,15 @@ fn pair_item(p: &Prepared, winner: &[u32], i0: usize) -> Option<u32> {
         return None;
     }
     let item = p.opaque[first as usize].item;
+    // A triangle's item is looked up where the winner changes, not per
+    // pixel (blocks of small triangles show several).
+    let mut last = first;
     for &t in &win[1..] {
-        if t != first && (t == NONE || p.opaque[t as usize].item != item) {
-            return None;
+        if t != last {
+            if t == NONE || p.opaque[t as usize].item != item {
+                return None;
+            }
+            last = t;
         }
     }
     (!p.items[item as usize].unlit).then_some(item)
@@ -362,18 +316,20 @@ fn shade_pair<V: V8, const TEX: bool>(
         V::load(lanes8(vis.b1, i0 + 8)),
         V::load(lanes8(vis.b2, i0 + 8)),
     );
-    let (a, sa) = attributes(p, &wa, 0xFF, b1a, b2a);
-    let (b, sb) = attributes(p, &wb, 0xFF, b1b, b2b);
+    let (pa, pb) = (
+        BlockPlanes::new(p, &wa, 0xFF, b1a, b2a),
+        BlockPlanes::new(p, &wb, 0xFF, b1b, b2b),
+    );
+    let colour = reads_colour::<TEX>(it);
+    let (a, sa) = pa.attributes(colour);
+    let (b, sb) = pb.attributes(colour);
     let mut v = [Pair(sa, sb); 9];
     for (j, v) in v.iter_mut().enumerate() {
         *v = Pair(a[j] * sa, b[j] * sb);
     }
     let uv_store;
     let uv: &[UvIn<V>] = if TEX && it.textured {
-        uv_store = [
-            uv_in(p, &wa, 0xFF, b1a, b2a, sa),
-            uv_in(p, &wb, 0xFF, b1b, b2b, sb),
-        ];
+        uv_store = [pa.uv_in(sa), pb.uv_in(sb)];
         &uv_store
     } else {
         &[]
@@ -391,157 +347,4 @@ fn shade_pair<V: V8, const TEX: bool>(
         c.1.store(lanes8_mut(dst, i0 + 8));
     }
     out.ids[i0..i0 + 16].fill(it.id);
-}
-
-/// Perspective-correct texture coordinates of the lanes of `group` and
-/// their screen-space derivatives (per pixel step in x and in y), from
-/// which the sampler picks the mip level (e.g. ρ = max(|∂uv/∂x|, |∂uv/∂y|)
-/// in texels, OpenGL 4.6 §8.14.1). `s` is 1/q, the reciprocal of the
-/// interpolated 1/w, per lane.
-///
-/// With `q = 1/w` and `U = u/w` both affine in screen space,
-/// `u = U/q` and `∂u/∂x = (∂U/∂x − u·∂q/∂x)/q`.
-#[inline(always)]
-fn uv_in<V: V8>(p: &Prepared, win: &[u32; 8], group: u32, b1: V, b2: V, s: V) -> UvIn<V> {
-    // Per lane: U, V planes and the constant gradients of U, V and q.
-    let mut m = [V::splat(0.0); 8];
-    let mut rest = group;
-    let mut first = true;
-    while rest != 0 {
-        let (t, mask) = next_tri(p, win, &mut rest);
-        let g = t.grad;
-        let vals = [
-            plane(t, A_UV, b1, b2),
-            plane(t, A_UV + 1, b1, b2),
-            V::splat(g.uv[0][0]),
-            V::splat(g.uv[1][0]),
-            V::splat(g.q[0]),
-            V::splat(g.uv[0][1]),
-            V::splat(g.uv[1][1]),
-            V::splat(g.q[1]),
-        ];
-        if first {
-            m = vals;
-            first = false;
-        } else {
-            let mk = V::from_bits(mask);
-            for (o, v) in m.iter_mut().zip(vals) {
-                *o = V::select(mk, v, *o);
-            }
-        }
-    }
-    let (u, v) = (m[0] * s, m[1] * s);
-    UvIn {
-        u,
-        v,
-        du_dx: (m[2] - u * m[4]) * s,
-        dv_dx: (m[3] - v * m[4]) * s,
-        du_dy: (m[5] - u * m[7]) * s,
-        dv_dy: (m[6] - v * m[7]) * s,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::render::clip::ATTRS;
-    use crate::render::prepare::{planes, SUBPIXEL};
-    use crate::render::simd::{Lanes, Sse8};
-    use crate::render::tri_gradients::Gradients;
-
-    /// Screen positions, 1/w and texture coordinates of three vertices.
-    type Corners = ([(f32, f32); 3], [f32; 3], [[f32; 2]; 3]);
-
-    /// A triangle with texture coordinates and very different depths at
-    /// its corners, in a one-triangle `Prepared`.
-    fn textured() -> (Prepared, Corners) {
-        let xy = [(2.0, 3.0), (60.0, 10.0), (12.0, 50.0)];
-        let inv_w = [1.0, 0.25, 0.5];
-        let uv = [[0.0, 0.0], [4.0, 1.0], [1.0, 3.0]];
-        let mut attr = [[0.0; ATTRS]; 3];
-        for k in 0..3 {
-            attr[k][A_UV] = uv[k][0];
-            attr[k][A_UV + 1] = uv[k][1];
-        }
-        let (base, d1, d2) = planes(&attr, &inv_w);
-        let fx = |v: f32| (v * SUBPIXEL as f32) as i64;
-        let mut tri = Tri {
-            x: xy.map(|p| fx(p.0)),
-            y: xy.map(|p| fx(p.1)),
-            z: [0.5; 3],
-            base,
-            d1,
-            d2,
-            item: 0,
-            bbox: [0, 0, 64, 64],
-            grad: Gradients::default(),
-        };
-        tri.grad = Gradients::of(&tri.x, &tri.y, &tri.d1, &tri.d2);
-        let mut p = Prepared::default();
-        p.opaque.push(tri);
-        (p, (xy, inv_w, uv))
-    }
-
-    /// Perspective-correct uv at a screen point, from the vertices.
-    fn exact_uv(
-        xy: &[(f32, f32); 3],
-        inv_w: &[f32; 3],
-        uv: &[[f32; 2]; 3],
-        x: f64,
-        y: f64,
-    ) -> [f64; 2] {
-        let p = xy.map(|(a, b)| (a as f64, b as f64));
-        let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[1].1 - p[0].1) * (p[2].0 - p[0].0);
-        let b1 = ((x - p[0].0) * (p[2].1 - p[0].1) - (y - p[0].1) * (p[2].0 - p[0].0)) / area;
-        let b2 = ((p[1].0 - p[0].0) * (y - p[0].1) - (p[1].1 - p[0].1) * (x - p[0].0)) / area;
-        let w = [1.0 - b1 - b2, b1, b2];
-        let q: f64 = (0..3).map(|k| w[k] * inv_w[k] as f64).sum();
-        let f = |c: usize| {
-            (0..3)
-                .map(|k| w[k] * inv_w[k] as f64 * uv[k][c] as f64)
-                .sum::<f64>()
-                / q
-        };
-        [f(0), f(1)]
-    }
-
-    #[test]
-    fn texture_coordinates_and_derivatives_are_perspective_correct() {
-        let (p, (xy, inv_w, uv)) = textured();
-        let t = &p.opaque[0];
-        let mut checked = 0;
-        crate::render::raster::for_each_pixel(t, [0, 0, 64, 64], |x, y, b1, b2| {
-            let q = t.base[INV_W] + b1 * t.d1[INV_W] + b2 * t.d2[INV_W];
-            let lanes = uv_in(
-                &p,
-                &[0; 8],
-                0xFF,
-                Sse8::splat(b1),
-                Sse8::splat(b2),
-                Sse8::splat(1.0) / Sse8::splat(q),
-            );
-            let get = |v: Sse8| {
-                let mut a = [0.0; 8];
-                v.store(&mut a);
-                a[0] as f64
-            };
-            let (cx, cy) = (x as f64 + 0.5, y as f64 + 0.5);
-            let want = exact_uv(&xy, &inv_w, &uv, cx, cy);
-            assert!((get(lanes.u) - want[0]).abs() < 1e-4, "u at {x},{y}");
-            assert!((get(lanes.v) - want[1]).abs() < 1e-4, "v at {x},{y}");
-            // Central differences of the exact mapping.
-            let h = 1e-3;
-            let dx = exact_uv(&xy, &inv_w, &uv, cx + h, cy);
-            let dx0 = exact_uv(&xy, &inv_w, &uv, cx - h, cy);
-            let dy = exact_uv(&xy, &inv_w, &uv, cx, cy + h);
-            let dy0 = exact_uv(&xy, &inv_w, &uv, cx, cy - h);
-            let close = |a: f64, b: f64| (a - b).abs() < 1e-3 * (1.0 + b.abs());
-            assert!(close(get(lanes.du_dx), (dx[0] - dx0[0]) / (2.0 * h)));
-            assert!(close(get(lanes.dv_dx), (dx[1] - dx0[1]) / (2.0 * h)));
-            assert!(close(get(lanes.du_dy), (dy[0] - dy0[0]) / (2.0 * h)));
-            assert!(close(get(lanes.dv_dy), (dy[1] - dy0[1]) / (2.0 * h)));
-            checked += 1;
-        });
-        assert!(checked > 500);
-    }
 }

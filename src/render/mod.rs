@@ -18,6 +18,7 @@ mod background;
 pub mod band_trace;
 pub mod bench_scenes;
 mod blend_samples;
+mod block_planes;
 mod clip;
 mod coin_bounds;
 mod depth_blocks;

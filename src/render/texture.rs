@@ -313,6 +313,14 @@ impl Sampler {
         }
     }
 
+    /// Whether the texel replaces the diffuse colour outright (VRML97's
+    /// RGB and RGBA textures, §4.14.3 table 4.5): the interpolated colour
+    /// is then never read.
+    #[inline]
+    pub fn replaces_diffuse(&self) -> bool {
+        self.model == TextureModel::Vrml97 && self.components >= 3
+    }
+
     /// Whether [`Sampler::after_lighting`] changes anything.
     #[inline]
     pub fn acts_after_lighting(&self) -> bool {
