@@ -18,11 +18,21 @@ impl Editor {
         }
         let l = self.layout();
         self.update_layer();
-        self.blit_viewport(frame, l.viewport);
-        self.blit_onion(frame, l.viewport);
         // The painter is moved out so `self` can be borrowed while drawing.
         let mut p = std::mem::take(&mut self.painter);
-        p.begin(frame);
+        if self.onion_shown() {
+            // The copies blend over the layer in the frame.
+            self.blit_viewport(frame, l.viewport);
+            self.blit_onion(frame, l.viewport);
+            p.begin(frame);
+        } else {
+            // Straight from the layer into the painter's pixmap: a copy
+            // of the viewport into the frame was a pass over most of the
+            // window in every redraw. (Onion off: this drops its copies.)
+            self.blit_onion(frame, l.viewport);
+            let (r, rows) = self.viewport_rows(l.viewport);
+            p.begin_with(frame, r, rows);
+        }
         self.draw_viewport_overlay(&mut p);
         self.draw_motion_path(&mut p);
         self.draw_bones(&mut p);

@@ -147,36 +147,43 @@ impl Editor {
         self.layer.key = None;
     }
 
-    /// Copies the viewport layer, with the selection outlined, into `frame`.
-    pub(super) fn blit_viewport(&self, frame: &mut Frame, vp: Rect) {
+    /// The part of the viewport `vp` the layer covers, and what row `y`
+    /// of it shows: the layer, with the selection outlined.
+    pub(super) fn viewport_rows(&self, vp: Rect) -> (Rect, impl Fn(usize, &mut [u32]) + Sync + '_) {
         let lf = &self.layer.frame;
         let outlined = self
             .layer
             .outlined
             .as_ref()
             .filter(|o| Some(o.node) == self.selection);
+        let rows = vp.h.min(lf.height as i32).max(0);
+        let n = vp.w.min(lf.width as i32).max(0);
+        let lw = lf.width as usize;
+        let row = move |y: usize, out: &mut [u32]| {
+            out.copy_from_slice(&lf.color[y * lw..y * lw + out.len()]);
+            if let Some(o) = outlined {
+                o.draw_over(y, out);
+            }
+        };
+        (Rect::new(vp.x, vp.y, n, rows), row)
+    }
+
+    /// Copies the viewport layer, with the selection outlined, into `frame`.
+    pub(super) fn blit_viewport(&self, frame: &mut Frame, vp: Rect) {
+        let (r, row) = self.viewport_rows(vp);
         let fw = frame.width as usize;
-        let rows = vp.h.min(lf.height as i32).max(0) as usize;
-        let n = vp.w.min(lf.width as i32).max(0) as usize;
-        if fw == 0 || n == 0 {
+        if fw == 0 || r.w == 0 {
             return;
         }
-        let (x0, lw) = (vp.x as usize, lf.width as usize);
-        // Row by row on the threads (the window's rows below the
-        // viewport's top, as many as the layer has).
+        let (x0, n) = (r.x as usize, r.w as usize);
+        // Row by row on the threads.
         frame
             .color
             .par_chunks_mut(fw)
-            .skip(vp.y as usize)
-            .take(rows)
+            .skip(r.y as usize)
+            .take(r.h as usize)
             .enumerate()
-            .for_each(|(y, window_row)| {
-                let row = &mut window_row[x0..x0 + n];
-                row.copy_from_slice(&lf.color[y * lw..y * lw + n]);
-                if let Some(o) = outlined {
-                    o.draw_over(y, row);
-                }
-            });
+            .for_each(|(y, window_row)| row(y, &mut window_row[x0..x0 + n]));
     }
 
     /// Light gizmos and the axis indicator, clipped to the viewport.

@@ -1,4 +1,4 @@
-use super::pixels::{convert, Direction};
+use super::pixels::{convert, convert_with, Direction};
 use super::text;
 use super::Rect;
 use crate::render::Frame;
@@ -48,6 +48,14 @@ impl Painter {
 
     /// Starts drawing over `frame`.
     pub fn begin(&mut self, frame: &mut Frame) {
+        self.fit(frame);
+        if frame.color.len() * 4 == self.pixmap.data().len() {
+            convert(&mut frame.color, &mut self.pixmap, Direction::FrameToPixmap);
+        }
+    }
+
+    /// A pixmap of `frame`'s size, no clip.
+    fn fit(&mut self, frame: &Frame) {
         let (w, h) = (frame.width.max(1), frame.height.max(1));
         if self.pixmap.width() != w || self.pixmap.height() != h {
             if let Some(p) = Pixmap::new(w, h) {
@@ -56,8 +64,35 @@ impl Painter {
             self.masks.clear();
         }
         self.clip = None;
+    }
+
+    /// [`Painter::begin`] over `frame` with rectangle `r` showing other
+    /// pixels: `row(y, out)` writes row `y` of `r` as `0x00RRGGBB`. The
+    /// frame gets them at [`Painter::end`] (or now, when there is no
+    /// pixmap to draw on). A rectangle not inside the frame shows none.
+    pub fn begin_with(
+        &mut self,
+        frame: &mut Frame,
+        r: Rect,
+        row: impl Fn(usize, &mut [u32]) + Sync,
+    ) {
+        self.fit(frame);
+        let (w, h) = (frame.width as i32, frame.height as i32);
+        let inside = r.x >= 0 && r.y >= 0 && r.w >= 0 && r.h >= 0;
+        let fits = inside && r.x + r.w <= w && r.y + r.h <= h;
+        let rect = match fits {
+            true => (r.x as usize, r.y as usize, r.w as usize, r.h as usize),
+            false => (0, 0, 0, 0),
+        };
+        let fw = frame.width as usize;
         if frame.color.len() * 4 == self.pixmap.data().len() {
-            convert(&mut frame.color, &mut self.pixmap, Direction::FrameToPixmap);
+            convert_with(&frame.color, fw, &mut self.pixmap, rect, row);
+            return;
+        }
+        let (x0, y0, rw, rh) = rect;
+        for y in 0..rh {
+            let at = (y0 + y) * fw + x0;
+            row(y, &mut frame.color[at..at + rw]);
         }
     }
 

@@ -45,6 +45,50 @@ pub fn convert(color: &mut [u32], pixmap: &mut Pixmap, dir: Direction) {
     }
 }
 
+/// [`convert`] from the frame to the pixmap, except in rectangle `r`
+/// (x, y, w, h, inside the frame's `width` columns), whose pixels
+/// `row(y, out)` writes instead (row `y` of `r`, as `0x00RRGGBB`): the
+/// editor's viewport goes from its layer straight into the pixmap,
+/// rather than into the frame and then, converted, into the pixmap.
+pub fn convert_with(
+    color: &[u32],
+    width: usize,
+    pixmap: &mut Pixmap,
+    (x0, y0, w, h): (usize, usize, usize, usize),
+    row: impl Fn(usize, &mut [u32]) + Sync,
+) {
+    let data = pixmap.data_mut();
+    debug_assert_eq!(data.len(), color.len() * 4);
+    let Ok(words) = bytemuck::try_cast_slice_mut::<u8, u32>(data) else {
+        let mut color = color.to_vec();
+        for (y, r) in color.chunks_mut(width.max(1)).skip(y0).take(h).enumerate() {
+            row(y, &mut r[x0..x0 + w]);
+        }
+        return by_bytes(&mut color, data, Direction::FrameToPixmap);
+    };
+    let to_pixmap = |out: &mut [u32], from: &[u32]| {
+        for (o, &c) in out.iter_mut().zip(from) {
+            *o = u32::to_le(swap(c) | 0xff00_0000);
+        }
+    };
+    let rows = words
+        .par_chunks_mut(width.max(1))
+        .zip(color.par_chunks(width.max(1)));
+    rows.enumerate().for_each(|(y, (out, from))| {
+        if !(y0..y0 + h).contains(&y) {
+            return to_pixmap(out, from);
+        }
+        let (left, rest) = out.split_at_mut(x0);
+        let (mid, right) = rest.split_at_mut(w);
+        to_pixmap(left, &from[..x0]);
+        row(y - y0, mid);
+        for o in mid.iter_mut() {
+            *o = u32::to_le(swap(*o) | 0xff00_0000);
+        }
+        to_pixmap(right, &from[x0 + w..]);
+    });
+}
+
 /// Pixels per chunk of [`convert`]: a few chunks per thread for a window,
 /// each big enough that handing it to a thread costs next to nothing.
 const CHUNK: usize = 1 << 16;
@@ -102,5 +146,31 @@ mod tests {
         convert(&mut a, &mut pm, Direction::PixmapToFrame);
         by_bytes(&mut b, &mut bytes, Direction::PixmapToFrame);
         assert_eq!((&a, &b), (&orig, &orig));
+    }
+
+    #[test]
+    fn a_rectangle_written_in_place_is_the_frame_with_it_copied_in() {
+        let (w, h) = (37usize, 11usize);
+        let frame: Vec<u32> = (0..(w * h) as u32)
+            .map(|i| i.wrapping_mul(0x9e37_79b9) & 0xff_ffff)
+            .collect();
+        let inset: Vec<u32> = (0..(w * h) as u32)
+            .map(|i| i.wrapping_mul(0x85eb_ca6b) & 0xff_ffff)
+            .collect();
+        for r in [(3, 2, 20, 7), (0, 0, w, h), (36, 10, 1, 1), (5, 4, 0, 3)] {
+            let (x0, y0, rw, rh) = r;
+            let mut copied = frame.clone();
+            for y in 0..rh {
+                let at = (y0 + y) * w + x0;
+                copied[at..at + rw].copy_from_slice(&inset[y * w..y * w + rw]);
+            }
+            let mut want = Pixmap::new(w as u32, h as u32).unwrap();
+            convert(&mut copied, &mut want, Direction::FrameToPixmap);
+            let mut got = Pixmap::new(w as u32, h as u32).unwrap();
+            convert_with(&frame, w, &mut got, r, |y, out| {
+                out.copy_from_slice(&inset[y * w..y * w + out.len()]);
+            });
+            assert!(got.data() == want.data(), "{r:?}");
+        }
     }
 }
