@@ -547,10 +547,11 @@ pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch, ne
         blocks,
         ..
     } = scratch;
-    if ns == 1 {
+    if ns == 1 || need_planes {
         // One sample: a block left in one plane saves only its depth, and
         // writing the owner's depth out when another triangle comes costs
-        // more; every block has its plane from the start.
+        // more; a later pass reading depth at any sample would need every
+        // block written out. Every block has its planes from the start.
         depth.fill(1.0);
         winner.fill(NONE);
         blocks.fill(PLANES);
