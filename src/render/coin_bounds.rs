@@ -153,7 +153,7 @@ fn own_box(scene: &Scene, pose: &Pose, i: usize, picture: Option<(u32, u32)>) ->
         .filter(|t| t.kind == TextKind::Text2 && t.units_per_pixel > 0.0);
     let (lo, hi) = match (label, picture) {
         (Some(t), Some(px)) => {
-            let (lo, hi) = points_bounds(geo.positions)?;
+            let (lo, hi) = label_extent(t, geo.positions)?;
             return label_box(lo, hi, geo.world, t.units_per_pixel, px);
         }
         (Some(_), None) => (Vec3::ZERO, Vec3::ZERO),
@@ -235,21 +235,36 @@ fn label_box(
     Some(XfBox { lo, hi, m: world })
 }
 
-/// The world box of a Text2 label whose glyphs span `positions` (local
-/// units, `units_per_pixel` of them a pixel) under `world`, as view-all of
-/// a `picture` counts it ([`label_box`]); `None` when that view-all would
-/// not count it.
+/// A Text2 label's box in its local units: the whole pixels of its bitmap
+/// (`text::bitmap::pixel_box`, as Coin's box is the union of its glyph
+/// bitmaps), or the box of `positions` for a label drawn from outlines.
+fn label_extent(t: &TextSpec, positions: &[Vec3]) -> Option<(Vec3, Vec3)> {
+    let u = t.units_per_pixel;
+    match crate::format::text::bitmap::pixel_box(t) {
+        Some((lo, hi)) if u.is_finite() && u > 0.0 => Some((
+            Vec3::new(lo[0] * u, lo[1] * u, 0.0),
+            Vec3::new(hi[0] * u, hi[1] * u, 0.0),
+        )),
+        _ => points_bounds(positions),
+    }
+}
+
+/// The world box of the Text2 label `t` whose glyphs span `positions`
+/// (local units, `t.units_per_pixel` of them a pixel) under `world`, as
+/// view-all of a `picture` counts it ([`label_box`]); `None` when that
+/// view-all would not count it.
 pub(super) fn label_world(
+    t: &TextSpec,
     positions: &[Vec3],
     world: Mat4,
-    units_per_pixel: f32,
     picture: (u32, u32),
 ) -> Option<(Vec3, Vec3)> {
     // NaN or infinite scales too (speed's review).
+    let units_per_pixel = t.units_per_pixel;
     if !units_per_pixel.is_finite() || units_per_pixel <= 0.0 {
         return None;
     }
-    let (lo, hi) = points_bounds(positions)?;
+    let (lo, hi) = label_extent(t, positions)?;
     label_box(lo, hi, world, units_per_pixel, picture).map(|b| b.world())
 }
 

@@ -1,9 +1,11 @@
 //! Text as geometry: the embedded fonts (`font`), glyph outlines to
 //! triangles with holes (`tessellate`), lines and justification
-//! (`layout`), and the mesh (`mesh`). The readers turn their Text nodes
+//! (`layout`), the mesh (`mesh`), and Inventor `Text2` labels as bitmaps
+//! (`bitmap`). The readers turn their Text nodes
 //! into a [`TextSpec`](crate::scene::TextSpec) and call [`text_mesh`];
 //! the spec stays on the mesh so writers can write the node again.
 
+pub mod bitmap;
 pub mod font;
 pub mod layout;
 pub mod mesh;
