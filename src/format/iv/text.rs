@@ -222,11 +222,7 @@ pub fn size_text2(scene: &mut Scene) {
         let bitmap = (spec.units_per_pixel > 0.0)
             .then(|| crate::format::text::bitmap::label_mesh(&spec, spec.units_per_pixel, true))
             .flatten();
-        if let Some(mut built) = bitmap
-            .map(Ok)
-            .unwrap_or_else(|| text_mesh(&drawn, true))
-            .ok()
-        {
+        if let Ok(mut built) = bitmap.map_or_else(|| text_mesh(&drawn, true), Ok) {
             built.name = std::mem::take(&mut m.name);
             *m = built;
         }
