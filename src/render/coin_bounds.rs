@@ -158,9 +158,22 @@ fn own_box(scene: &Scene, pose: &Pose, i: usize, picture: Option<(u32, u32)>) ->
         }
         (Some(_), None) => (Vec3::ZERO, Vec3::ZERO),
         (None, _) => {
-            let (lo, mut hi) = points_bounds(geo.positions)?;
+            let (mut lo, mut hi) = points_bounds(geo.positions)?;
             if let Some(top) = mesh.text.as_deref().and_then(text_top) {
                 hi.y = hi.y.max(top);
+            }
+            // Coin's box of a text spans its lines' advances along x, not
+            // the ink (probed through pivy with the Liberation faces: a
+            // VRML97 "x" is 0.5 wide at size 1, its advance; Text3 "Maxi"
+            // centred at size 10 spans ±10.625, the sum of its advances as
+            // Coin rounds them at 40 ppem; the font's sum is 21.11).
+            if let Some([x0, x1]) = mesh
+                .text
+                .as_deref()
+                .and_then(crate::format::text::advance_span)
+            {
+                lo.x = lo.x.min(x0);
+                hi.x = hi.x.max(x1);
             }
             (lo, hi)
         }
@@ -380,8 +393,12 @@ mod tests {
         };
         let (lo, hi) = bounds(spec(1.0));
         assert_eq!((lo.y, hi.y), (-1.01, 1.0));
-        assert_eq!((lo.x, hi.x), (0.02, 0.48));
-        assert_eq!(bounds(spec(2.0)).1.y, 2.0);
+        // Along x the box is the line's advance (a serif "x" is 0.5 em
+        // wide), not its ink, as in Coin.
+        assert_eq!((lo.x, hi.x), (0.0, 0.5));
+        assert_eq!(bounds(spec(2.0)).1, Vec3::new(1.0, 2.0, 0.0));
+        // Ink reaching past the advance keeps its extent.
+        assert_eq!(bounds(spec(0.25)).1.x, 0.48);
         // Ink taller than `size` keeps its top.
         assert_eq!(bounds(spec(0.25)).1.y, 0.46);
         let middle = TextSpec {
@@ -393,7 +410,9 @@ mod tests {
             horizontal: false,
             ..spec(1.0)
         };
-        assert_eq!(bounds(vertical).1.y, 0.46);
+        // Vertical text keeps its ink along x.
+        let (vlo, vhi) = bounds(vertical);
+        assert_eq!((vhi.y, vlo.x), (0.46, 0.02));
         let label = TextSpec {
             kind: TextKind::AsciiText,
             ..spec(1.0)

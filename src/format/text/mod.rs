@@ -46,6 +46,14 @@ pub fn mesh_of_spec(
 
 use crate::scene::{FontFamily, Justify, TextSpec};
 
+/// The x span of a horizontal text's line advances in its local units
+/// (`layout::Layout::advance_x`), for bounds that count a line's box as
+/// its advances, as Coin's do; `None` for vertical text or no glyph.
+pub fn advance_span(spec: &TextSpec) -> Option<[f32; 2]> {
+    let font = font::Font::new(spec.family, spec.bold, spec.italic);
+    layout::layout(spec, &font).advance_x
+}
+
 /// Replaces values no text can be drawn with (non-finite or non-positive
 /// size, non-finite or negative spacing) by the defaults, saying so.
 pub fn sanitize(spec: &mut TextSpec, default_size: f32, msgs: &mut Vec<String>) {
