@@ -926,9 +926,41 @@ pub fn for_each_line_pixel(l: &Line, rect: Rect, mut f: impl FnMut(i32, i32, f32
     } else {
         (rect[1], rect[3])
     };
-    // Pixels whose centre c = k + 0.5 satisfies lo ≤ c < hi.
-    let first = ((lo - 0.5).ceil() as i32).max(r_lo);
-    let last = ((hi - 0.5).ceil() as i32).min(r_hi);
+    // OpenGL's diamond-exit rule (2.1 §3.4.1): a pixel is drawn when the
+    // segment leaves its diamond |x − xc| + |y − yc| < ½, so the pixel whose
+    // diamond holds the start is drawn and the one whose diamond holds the
+    // end is not, whichever way the segment runs (centres map to centres
+    // between our y-down rows and OpenGL's y-up window, so the rule reads
+    // the same here). Between the ends, the pixel of each column (row) is
+    // the one whose centre line the segment crosses from the start up to,
+    // not at, the end. A polyline's shared vertex is so drawn once, by the
+    // segment leaving it. Wide lines keep the centre rule at their ends.
+    let centre = |k: i32| {
+        let c = k as f32 + 0.5;
+        if dm >= 0.0 {
+            lo <= c && c < hi
+        } else {
+            lo < c && c <= hi
+        }
+    };
+    let in_diamond = |m: f32, o: f32| {
+        (m - (m.floor() + 0.5)).abs() + (o - (o.floor() + 0.5)).abs() < 0.5
+    };
+    let thin = l.width == 1;
+    let (ks, ke) = (m0.floor() as i32, m1.floor() as i32);
+    let start_in = thin && in_diamond(m0, o0);
+    let end_in = thin && in_diamond(m1, o0 + od);
+    let drawn = |k: i32| {
+        if end_in && k == ke {
+            false
+        } else if start_in && k == ks {
+            true
+        } else {
+            centre(k)
+        }
+    };
+    let first = ((lo.floor() as i32) - 1).max(r_lo);
+    let last = ((hi.floor() as i32) + 2).min(r_hi);
     if dm == 0.0 {
         // A degenerate segment: one pixel.
         let (x, y) = (l.x[0].floor() as i32, l.y[0].floor() as i32);
@@ -938,8 +970,10 @@ pub fn for_each_line_pixel(l: &Line, rect: Rect, mut f: impl FnMut(i32, i32, f32
         return;
     }
     let shift = (l.width - 1) as f32 * 0.5;
-    for k in first..last {
-        let t = (k as f32 + 0.5 - m0) / dm;
+    for k in (first..last).filter(|&k| drawn(k)) {
+        // A start pixel drawn for its diamond may lie before the centre
+        // line's crossing: its attributes are the start's.
+        let t = ((k as f32 + 0.5 - m0) / dm).clamp(0.0, 1.0);
         let o = (o0 + t * od - shift).floor() as i32;
         let (o_lo, o_hi) = if x_major {
             (rect[1], rect[3])
@@ -1195,6 +1229,47 @@ mod tests {
         let mut whole = Vec::new();
         for_each_line_pixel(&l, [0, 0, 64, 64], |x, y, _, _| whole.push((x, y)));
         assert_eq!(split, whole);
+    }
+
+    /// OpenGL's diamond-exit rule: a segment draws the pixel whose diamond
+    /// holds its start and not the one whose diamond holds its end,
+    /// whichever way it runs; in between, the centre-line crossings.
+    #[test]
+    fn lines_draw_their_start_pixel_not_their_end_pixel() {
+        let line = |x: f32, y: [f32; 2]| Line {
+            x: [x, x],
+            y,
+            z: [0.5, 0.5],
+            inv_w: [1.0, 1.0],
+            attr: [[0.0; ATTRS]; 2],
+            item: 0,
+            width: 1,
+            bbox: [0, 0, 64, 64],
+        };
+        let rows = |x, y| {
+            let mut rows = Vec::new();
+            for_each_line_pixel(&line(x, y), [0, 0, 64, 64], |_, y, _, _| rows.push(y));
+            rows
+        };
+        let span = |r: std::ops::Range<i32>| r.collect::<Vec<_>>();
+        // Ends on centres 2.5 and 9.5: down stops before row 9, up before 2.
+        assert_eq!(rows(5.5, [2.5, 9.5]), span(2..9));
+        assert_eq!(rows(5.5, [9.5, 2.5]), span(3..10));
+        // Ends inside their diamonds but off the centres: the same rows.
+        assert_eq!(rows(5.5, [2.2, 9.7]), span(2..9));
+        assert_eq!(rows(5.5, [9.7, 2.2]), span(3..10));
+        // A start past its row's centre still draws its row when the
+        // diamond holds it (0.2 + 0 < ½), not when it lies near the pixel's
+        // corner (0.2 + 0.4 > ½): then the centre lines decide.
+        assert_eq!(rows(5.5, [2.7, 9.5]), span(2..9));
+        assert_eq!(rows(5.9, [2.7, 9.5]), span(3..9));
+        // Down then back up: the ends once each, the 6 rows between twice.
+        let mut both = rows(5.5, [2.5, 9.5]);
+        both.extend(rows(5.5, [9.5, 2.5]));
+        both.sort();
+        let mut once = both.clone();
+        once.dedup();
+        assert_eq!((both.len(), once.len()), (14, 8));
     }
 
     /// A line 2 pixels wide covers, in each column, the pixel it crosses
