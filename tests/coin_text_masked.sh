@@ -60,9 +60,12 @@ iou() {
   awk -v i="$i" -v u="$u" 'BEGIN { if (u == 0) print "nan"; else printf "%.4f", i / u }'
 }
 
-# Both renderers' pictures of $1 into $TMP/coin_$2.png and $TMP/animed_$2.png.
+# Both renderers' pictures of $1 into $TMP/coin_$2.png and $TMP/animed_$2.png;
+# Coin's (and its camera) through tests/coin_render_font.py, as in
+# tests/coin_corpus.sh, so it draws each text in animed's face.
 both() {
-  (cd "$DIR" && timeout 60 "${PY[@]}" "$SHARED/tools/coin_render.py" "$1" "$TMP/coin_$2.png" $W $H \
+  (cd "$DIR" && timeout 60 "${PY[@]}" "$ROOT/tests/coin_render_font.py" "$SHARED/tools/coin_render.py" \
+    "$1" "$TMP/coin_$2.png" $W $H \
     --time 0 --headlight auto --bg $BG >/dev/null 2>&1)
   timeout 60 "$ANIMED" render "$1" --time 0 --size ${W}x${H} --bg $BG --headlight auto \
     -o "$TMP/animed_$2.png" >/dev/null 2>&1
@@ -73,7 +76,7 @@ for rel in "$@"; do
   DIR=$(dirname "$f")
   kind=wrl
   zcat -f "$f" | head -c 20 | grep -q Inventor && kind=iv
-  cam=$(cd "$DIR" && "${PY[@]}" "$ROOT/tests/coin_camera.py" "$f" $W $H $kind 2>/dev/null)
+  cam=$(cd "$DIR" && "${PY[@]}" "$ROOT/tests/coin_render_font.py" "$ROOT/tests/coin_camera.py" "$f" $W $H $kind 2>/dev/null)
   if [ -z "$cam" ]; then
     echo "$rel: Coin gave no camera"
     continue

@@ -342,3 +342,31 @@ fn values_that_do_not_fit_builtin_field_types_are_flagged() {
     let (_, out, _) = animed(&["info", "tests/data/vrml97_bad/field-value-types.wrl"]);
     assert_eq!(out.matches(" (§5)").count(), 5, "{out}");
 }
+
+/// `info --strict` fails on what the file breaks, not on what animed does
+/// not support or cannot find (`format/warn_kind.rs`): a VRML97 file with
+/// only a Script and a missing texture passes, its warnings still printed;
+/// one more unknown field fails it, and the count says which is which.
+#[test]
+fn strict_counts_spec_breaks_not_animeds_limits() {
+    let dir = std::env::temp_dir().join(format!("animed-strict-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let limits = "#VRML V2.0 utf8\nScript { }\nShape { appearance Appearance { \
+                  texture ImageTexture { url \"gone.png\" } } geometry Box { } }\n";
+    let ok = dir.join("limits.wrl");
+    std::fs::write(&ok, limits).unwrap();
+    let (code, out, err) = animed(&["info", "--strict", ok.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}{err}");
+    let all = format!("{out}{err}");
+    assert!(all.contains("Script is not supported"), "{all}");
+    assert!(all.contains("gone.png"), "{all}");
+    let bad = dir.join("bad.wrl");
+    std::fs::write(&bad, format!("{limits}Transform {{ translate 1 0 0 }}\n")).unwrap();
+    let (code, out, err) = animed(&["info", "--strict", bad.to_str().unwrap()]);
+    assert_eq!(code, 3, "{out}{err}");
+    assert!(err.contains("--strict: 1 warning(s)"), "{err}");
+    assert!(
+        err.contains("(2 more about what animed does not support"),
+        "{err}"
+    );
+}

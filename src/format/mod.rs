@@ -31,6 +31,7 @@ pub mod syntax;
 pub mod text;
 pub mod textures;
 pub mod vrml97;
+pub mod warn_kind;
 pub mod x3d;
 
 pub use error::LoadError;

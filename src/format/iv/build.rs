@@ -332,6 +332,17 @@ impl Builder {
             }
             "AsciiText" | "Text2" | "Text3" => self.text(n, st, cur, name),
             k if IGNORED.contains(&k) => {}
+            // Inventor 2.1 node classes animed does not draw (The Inventor
+            // Mentor ch. 15 draggers and manipulators, ch. 8 NURBS): a
+            // valid file, only not supported here.
+            k if k.ends_with("Dragger")
+                || k.ends_with("Manip")
+                || k.starts_with("Nurbs")
+                || k.starts_with("IndexedNurbs") =>
+            {
+                let msg = format!("{k} is not supported; skipped");
+                self.warn_once(k, n.pos, &msg);
+            }
             k => {
                 let declared = n.field("fields").is_some();
                 let msg = if declared {

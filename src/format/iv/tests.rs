@@ -560,3 +560,26 @@ fn file_nodes_draw_in_the_including_state() {
     assert!(w.contains("missing.iv"), "{w}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Inventor's own draggers and NURBS nodes are valid nodes
+/// animed does not draw: "not supported" (which `info --strict` does not
+/// count), where a made-up node is "unknown".
+#[test]
+fn standard_nodes_not_drawn_are_unsupported_not_unknown() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator { TrackballDragger { } IndexedNurbsSurface { } \
+         NurbsSurface { } Crank { } Cube { } }\n",
+    );
+    for k in ["TrackballDragger", "IndexedNurbsSurface", "NurbsSurface"] {
+        let w = l
+            .warnings
+            .iter()
+            .find(|w| w.contains(&format!(" {k} ")))
+            .unwrap_or_else(|| panic!("{k}: {:?}", l.warnings));
+        assert!(w.contains("is not supported; skipped"), "{w}");
+        assert!(!crate::format::warn_kind::breaks_the_spec(w), "{w}");
+    }
+    let w = l.warnings.iter().find(|w| w.contains("Crank")).unwrap();
+    assert!(w.contains("unknown node 'Crank' skipped"), "{w}");
+    assert!(crate::format::warn_kind::breaks_the_spec(w), "{w}");
+}
