@@ -29,6 +29,7 @@ pub mod job;
 mod label;
 mod lanes;
 mod log2_lanes;
+mod narrow_depth;
 mod prepare;
 mod raster;
 mod samples;

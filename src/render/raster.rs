@@ -11,6 +11,7 @@ use super::depth_blocks::{
     edge_lanes, make_planes, may_own, DepthBufs, BLOCKS_PER_ROW, EMPTY, PLANES,
 };
 use super::fragment::{store_masked, Leftover, Pass, Shaded, Visible, NONE};
+use super::narrow_depth::{narrow_depth, NarrowBufs};
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
 use super::samples::SamplePlanes;
 use super::shade::shade;
@@ -193,8 +194,8 @@ impl Edges {
 
 /// Calls `f(x, y, b1, b2)` for every pixel of `rect` that the triangle
 /// covers; `b1`, `b2` are the screen-space barycentric weights of vertices 1
-/// and 2 (the tests' reference walk; drawing uses [`for_each_pixel_at`]
-/// and `blend_samples`, which step the same edges).
+/// and 2 (the tests' reference walk; drawing steps the same edges in
+/// lanes: the depth pass, `narrow_depth`, `blend_samples`).
 #[cfg(test)]
 pub fn for_each_pixel(t: &Tri, rect: Rect, f: impl FnMut(i32, i32, f32, f32)) {
     for_each_pixel_at(t, rect, (0, 0), f)
@@ -202,7 +203,9 @@ pub fn for_each_pixel(t: &Tri, rect: Rect, f: impl FnMut(i32, i32, f32, f32)) {
 
 /// Calls `f(x, y, b1, b2)` for every pixel of `rect` whose sample at `off`
 /// (SUBPIXEL units from its centre) the triangle covers; `b1`, `b2` are
-/// the screen-space barycentric weights of vertices 1 and 2 there.
+/// the screen-space barycentric weights of vertices 1 and 2 there (the
+/// tests' reference walk, one pixel at a time).
+#[cfg(test)]
 #[inline]
 pub fn for_each_pixel_at(
     t: &Tri,
@@ -314,9 +317,9 @@ fn depth_triangle<V: V8, const NS: usize, const BLOCKS: bool>(
         return;
     }
     if x1 - x0 < 8 {
-        // Narrow triangles (most small ones): pixel by pixel is cheaper
-        // than a block (whose lanes are then mostly partial stores), and
-        // does the very same arithmetic.
+        // Narrow triangles (most small ones): a row at a time in one
+        // window of eight lanes (`narrow_depth`), cheaper than the aligned
+        // blocks it would straddle, with the very same arithmetic.
         if BLOCKS {
             let (bc0, bc1) = ((x0 - rect[0]) as usize / 8, (x1 - 1 - rect[0]) as usize / 8);
             for row in (y0 - rect[1]) as usize..(y1 - rect[1]) as usize {
@@ -333,21 +336,13 @@ fn depth_triangle<V: V8, const NS: usize, const BLOCKS: bool>(
                 }
             }
         }
-        for (si, &off) in offs.iter().enumerate() {
-            let plane = si * PLANE;
-            for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
-                let z = t.depth_at(w1, w2);
-                let i = (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
-                if z < depth[plane + i] && z >= 0.0 {
-                    depth[plane + i] = z;
-                    winner[plane + i] = ti;
-                    if si == 0 {
-                        b1[i] = w1;
-                        b2[i] = w2;
-                    }
-                }
-            });
-        }
+        let bufs = &mut NarrowBufs {
+            depth,
+            winner,
+            b1,
+            b2,
+        };
+        narrow_depth::<V, NS>(t, ti, rect, [x0, y0, x1, y1], offs, bufs);
         return;
     }
     // First block column (relative to the tile) and its screen x.
