@@ -17,6 +17,7 @@
 mod background;
 pub mod band_trace;
 pub mod bench_scenes;
+mod binning;
 mod blend_samples;
 mod block_planes;
 mod clip;
@@ -29,6 +30,7 @@ pub mod job;
 mod label;
 mod lanes;
 mod log2_lanes;
+mod narrow_depth;
 mod prepare;
 mod raster;
 mod samples;
@@ -182,7 +184,7 @@ fn render_frame(
 #[derive(Default)]
 struct FrameScratch {
     prepared: prepare::Prepared,
-    bins: Vec<raster::Bin>,
+    bins: binning::Bins,
 }
 
 static SCRATCH: Mutex<Vec<FrameScratch>> = Mutex::new(Vec::new());
@@ -207,13 +209,14 @@ impl FrameScratch {
 /// copies them into `frame`.
 fn draw(
     p: &prepare::Prepared,
-    bins: &mut Vec<raster::Bin>,
+    bins: &mut binning::Bins,
     opts: &RenderOptions,
     eye: Vec3,
     frame: &mut Frame,
 ) {
     let (w, h) = (opts.width as i32, opts.height as i32);
-    let tiles_x = bin_tiles(p, bins, w, h);
+    binning::bin_tiles(p, bins, w, h);
+    let (tiles_x, bins) = (bins.tiles_x, &bins.tiles);
     // Bands of one tile row each run in parallel; a band draws its tiles left
     // to right straight into its rows of the frame.
     let band = raster::TILE_H as usize * w as usize;
@@ -278,49 +281,6 @@ fn draw(
         // bands, and the last run decided when the frame was done).
         bands.with_max_len(1).for_each(draw_band);
     }
-}
-
-/// Bins the prepared primitives into the `TILE`×`TILE_H` tiles of a `w`×`h` frame
-/// (row-major, each list in drawing order); returns the tiles per row.
-fn bin_tiles(p: &prepare::Prepared, bins: &mut Vec<raster::Bin>, w: i32, h: i32) -> i32 {
-    let tiles_x = (w + raster::TILE - 1) / raster::TILE;
-    let tiles_y = (h + raster::TILE_H - 1) / raster::TILE_H;
-    bins.resize_with((tiles_x * tiles_y) as usize, raster::Bin::default);
-    for b in bins.iter_mut() {
-        b.clear();
-    }
-    /// Appends each primitive's index to the bins its box touches; a
-    /// `textured` one (an opaque triangle of a textured item) marks them
-    /// so their shading loop has the texture steps compiled in.
-    fn bin_all(
-        bins: &mut [raster::Bin],
-        tiles_x: i32,
-        boxes: impl Iterator<Item = ([i32; 4], bool)>,
-        pick: fn(&mut raster::Bin) -> &mut Vec<u32>,
-    ) {
-        for (i, (b, textured)) in boxes.enumerate() {
-            let (tx0, ty0) = (b[0] / raster::TILE, b[1] / raster::TILE_H);
-            let (tx1, ty1) = ((b[2] - 1) / raster::TILE, (b[3] - 1) / raster::TILE_H);
-            for ty in ty0..=ty1 {
-                for tx in tx0..=tx1 {
-                    let bin = &mut bins[(ty * tiles_x + tx) as usize];
-                    bin.textured |= textured;
-                    pick(bin).push(i as u32);
-                }
-            }
-        }
-    }
-    let opaque = p.opaque.iter();
-    let textured = |t: &prepare::Tri| (t.bbox, p.items[t.item as usize].textured);
-    bin_all(bins, tiles_x, opaque.map(textured), |b| &mut b.opaque);
-    let transparent = p.transparent.iter().map(|t| (t.bbox, false));
-    bin_all(bins, tiles_x, transparent, |b| &mut b.transparent);
-    let lines = p.lines.iter().map(|l| (l.bbox, false));
-    bin_all(bins, tiles_x, lines, |b| &mut b.lines);
-    let points = p.points.iter().map(|q| (q.bbox, false));
-    bin_all(bins, tiles_x, points, |b| &mut b.points);
-
-    tiles_x
 }
 
 /// A rayon pool per requested thread count, built once and reused (the

@@ -11,6 +11,7 @@ use super::depth_blocks::{
     edge_lanes, make_planes, may_own, DepthBufs, BLOCKS_PER_ROW, EMPTY, PLANES,
 };
 use super::fragment::{store_masked, Leftover, Pass, Shaded, Visible, NONE};
+use super::narrow_depth::{narrow_depth, NarrowBufs};
 use super::prepare::{Item, Line, Point, Prepared, Tri, SUBPIXEL};
 use super::samples::SamplePlanes;
 use super::shade::shade;
@@ -193,8 +194,8 @@ impl Edges {
 
 /// Calls `f(x, y, b1, b2)` for every pixel of `rect` that the triangle
 /// covers; `b1`, `b2` are the screen-space barycentric weights of vertices 1
-/// and 2 (the tests' reference walk; drawing uses [`for_each_pixel_at`]
-/// and `blend_samples`, which step the same edges).
+/// and 2 (the tests' reference walk; drawing steps the same edges in
+/// lanes: the depth pass, `narrow_depth`, `blend_samples`).
 #[cfg(test)]
 pub fn for_each_pixel(t: &Tri, rect: Rect, f: impl FnMut(i32, i32, f32, f32)) {
     for_each_pixel_at(t, rect, (0, 0), f)
@@ -202,7 +203,9 @@ pub fn for_each_pixel(t: &Tri, rect: Rect, f: impl FnMut(i32, i32, f32, f32)) {
 
 /// Calls `f(x, y, b1, b2)` for every pixel of `rect` whose sample at `off`
 /// (SUBPIXEL units from its centre) the triangle covers; `b1`, `b2` are
-/// the screen-space barycentric weights of vertices 1 and 2 there.
+/// the screen-space barycentric weights of vertices 1 and 2 there (the
+/// tests' reference walk, one pixel at a time).
+#[cfg(test)]
 #[inline]
 pub fn for_each_pixel_at(
     t: &Tri,
@@ -237,60 +240,41 @@ pub fn for_each_pixel_at(
 /// Keeps, per sample of the tile, the nearest opaque triangle of `bin`
 /// (the first one on ties) with its depth, and the first sample's
 /// barycentric weights. `NS` samples per pixel at `offs` (SUBPIXEL units
-/// from the pixel centre), every triangle once for all of them. Blocks
-/// stay empty or owned by one triangle where they can (`depth_blocks`),
-/// unless `need_planes`: a later pass reads depth at any sample.
-fn depth_pass<const NS: usize>(
+/// from the pixel centre), every triangle once for all of them. With
+/// `BLOCKS`, blocks stay empty or owned by one triangle where they can
+/// (`depth_blocks`); without, every block has its planes from the start
+/// and the pass never looks at the block states (their checks and the
+/// buffers' reloads around them cost a one-sample frame about a quarter
+/// of its depth pass).
+fn depth_pass<const NS: usize, const BLOCKS: bool>(
     p: &Prepared,
     bin: &Bin,
     rect: Rect,
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
-    need_planes: bool,
 ) {
     #[cfg(target_arch = "x86_64")]
     if simd::avx() {
         // SAFETY: `simd::avx()` checked that the CPU has AVX.
-        unsafe { depth_pass_avx::<NS>(p, bin, rect, offs, bufs, need_planes) };
+        unsafe { depth_pass_avx::<NS, BLOCKS>(p, bin, rect, offs, bufs) };
         return;
     }
     for &ti in &bin.opaque {
-        depth_triangle::<Sse8, NS>(&p.opaque, ti, rect, offs, bufs);
-    }
-    if need_planes {
-        all_planes::<NS>(&p.opaque, rect, offs, bufs);
+        depth_triangle::<Sse8, NS, BLOCKS>(&p.opaque, ti, rect, offs, bufs);
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn depth_pass_avx<const NS: usize>(
+unsafe fn depth_pass_avx<const NS: usize, const BLOCKS: bool>(
     p: &Prepared,
     bin: &Bin,
     rect: Rect,
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
-    need_planes: bool,
 ) {
     for &ti in &bin.opaque {
-        depth_triangle::<simd::Avx8, NS>(&p.opaque, ti, rect, offs, bufs);
-    }
-    if need_planes {
-        all_planes::<NS>(&p.opaque, rect, offs, bufs);
-    }
-}
-
-/// Writes out the sample planes of every block (see `depth_blocks`), for
-/// the passes that read depth at any sample after the shading pass.
-#[inline(always)]
-fn all_planes<const NS: usize>(
-    tris: &[Tri],
-    rect: Rect,
-    offs: &[(i64, i64); NS],
-    bufs: &mut DepthBufs,
-) {
-    for blk in 0..bufs.blocks.len() {
-        make_planes::<NS>(tris, rect, offs, blk, bufs);
+        depth_triangle::<simd::Avx8, NS, BLOCKS>(&p.opaque, ti, rect, offs, bufs);
     }
 }
 
@@ -307,13 +291,23 @@ fn all_planes<const NS: usize>(
 /// (`depth_blocks`): only its first sample is computed; every other block
 /// it touches gets its sample planes first.
 #[inline(always)]
-fn depth_triangle<V: V8, const NS: usize>(
+fn depth_triangle<V: V8, const NS: usize, const BLOCKS: bool>(
     tris: &[Tri],
     ti: u32,
     rect: Rect,
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
 ) {
+    // The buffers as locals: kept in registers (or loaded once) across
+    // the stores into them, where fields reached through `bufs` were
+    // loaded again at every block.
+    let DepthBufs {
+        depth,
+        winner,
+        b1,
+        b2,
+        blocks,
+    } = bufs;
     let t = &tris[ti as usize];
     let x0 = t.bbox[0].max(rect[0]);
     let y0 = t.bbox[1].max(rect[1]);
@@ -323,30 +317,32 @@ fn depth_triangle<V: V8, const NS: usize>(
         return;
     }
     if x1 - x0 < 8 {
-        // Narrow triangles (most small ones): pixel by pixel is cheaper
-        // than a block (whose lanes are then mostly partial stores), and
-        // does the very same arithmetic.
-        let (bc0, bc1) = ((x0 - rect[0]) as usize / 8, (x1 - 1 - rect[0]) as usize / 8);
-        for row in (y0 - rect[1]) as usize..(y1 - rect[1]) as usize {
-            for bc in bc0..=bc1 {
-                make_planes::<NS>(tris, rect, offs, row * BLOCKS_PER_ROW + bc, bufs);
+        // Narrow triangles (most small ones): a row at a time in one
+        // window of eight lanes (`narrow_depth`), cheaper than the aligned
+        // blocks it would straddle, with the very same arithmetic.
+        if BLOCKS {
+            let (bc0, bc1) = ((x0 - rect[0]) as usize / 8, (x1 - 1 - rect[0]) as usize / 8);
+            for row in (y0 - rect[1]) as usize..(y1 - rect[1]) as usize {
+                for bc in bc0..=bc1 {
+                    let blk = row * BLOCKS_PER_ROW + bc;
+                    let bufs = &mut DepthBufs {
+                        depth,
+                        winner,
+                        b1,
+                        b2,
+                        blocks,
+                    };
+                    make_planes::<NS>(tris, rect, offs, blk, bufs);
+                }
             }
         }
-        for (si, &off) in offs.iter().enumerate() {
-            let plane = si * PLANE;
-            for_each_pixel_at(t, rect, off, |x, y, w1, w2| {
-                let z = t.depth_at(w1, w2);
-                let i = (y - rect[1]) as usize * TILE as usize + (x - rect[0]) as usize;
-                if z < bufs.depth[plane + i] && z >= 0.0 {
-                    bufs.depth[plane + i] = z;
-                    bufs.winner[plane + i] = ti;
-                    if si == 0 {
-                        bufs.b1[i] = w1;
-                        bufs.b2[i] = w2;
-                    }
-                }
-            });
-        }
+        let bufs = &mut NarrowBufs {
+            depth,
+            winner,
+            b1,
+            b2,
+        };
+        narrow_depth::<V, NS>(t, ti, rect, [x0, y0, x1, y1], offs, bufs);
         return;
     }
     // First block column (relative to the tile) and its screen x.
@@ -416,23 +412,33 @@ fn depth_triangle<V: V8, const NS: usize>(
             }
             if !outside {
                 let blk = (row + c) / 8;
-                if all_in
+                if BLOCKS
+                    && all_in
                     && in_box == 0xFF
-                    && bufs.blocks[blk] == EMPTY
+                    && blocks[blk] == EMPTY
                     && *own.get_or_insert_with(|| may_own(t, [x0, y0, x1, y1]))
                 {
                     // Covered at every sample and in front of the cleared
                     // depth: owned, with the first sample's weights (as
                     // below) and the winner in the first plane only.
                     let i0 = row + c;
-                    let b1: &mut [f32; 8] = (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                    let b1: &mut [f32; 8] = (&mut b1[i0..i0 + 8]).try_into().expect("8 lanes");
                     (edge_lanes::<V>(exact, e[1], s[1]) * inv_area).store(b1);
-                    let b2: &mut [f32; 8] = (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                    let b2: &mut [f32; 8] = (&mut b2[i0..i0 + 8]).try_into().expect("8 lanes");
                     (edge_lanes::<V>(exact, e[2], s[2]) * inv_area).store(b2);
-                    bufs.winner[i0..i0 + 8].fill(ti);
-                    bufs.blocks[blk] = ti;
+                    winner[i0..i0 + 8].fill(ti);
+                    blocks[blk] = ti;
                 } else {
-                    make_planes::<NS>(tris, rect, offs, blk, bufs);
+                    if BLOCKS {
+                        let bufs = &mut DepthBufs {
+                            depth,
+                            winner,
+                            b1,
+                            b2,
+                            blocks,
+                        };
+                        make_planes::<NS>(tris, rect, offs, blk, bufs);
+                    }
                     for (si, d) in d.iter().enumerate() {
                         let es: [i64; 3] = std::array::from_fn(|k| e[k] + d[k]);
                         // This sample's block: outside, or inside whole.
@@ -466,7 +472,7 @@ fn depth_triangle<V: V8, const NS: usize>(
                         let z = z0 + w1 * dz1 + w2 * dz2;
                         let i0 = si * PLANE + row + c;
                         let depth: &mut [f32; 8] =
-                            (&mut bufs.depth[i0..i0 + 8]).try_into().expect("8 lanes");
+                            (&mut depth[i0..i0 + 8]).try_into().expect("8 lanes");
                         let old = V::load(depth);
                         let m = old.gt(z).and(zero.le(z)).bits() & mask;
                         if m == 0 {
@@ -475,14 +481,14 @@ fn depth_triangle<V: V8, const NS: usize>(
                         store_masked(depth, z, m);
                         if si == 0 {
                             let b1: &mut [f32; 8] =
-                                (&mut bufs.b1[i0..i0 + 8]).try_into().expect("8 lanes");
+                                (&mut b1[i0..i0 + 8]).try_into().expect("8 lanes");
                             store_masked(b1, w1, m);
                             let b2: &mut [f32; 8] =
-                                (&mut bufs.b2[i0..i0 + 8]).try_into().expect("8 lanes");
+                                (&mut b2[i0..i0 + 8]).try_into().expect("8 lanes");
                             store_masked(b2, w2, m);
                         }
                         let winner: &mut [u32; 8] =
-                            (&mut bufs.winner[i0..i0 + 8]).try_into().expect("8 lanes");
+                            (&mut winner[i0..i0 + 8]).try_into().expect("8 lanes");
                         if m == 0xFF {
                             // Covered and nearer in all eight (inside a
                             // triangle): one store, not eight tests.
@@ -568,11 +574,13 @@ pub fn depth_tile(p: &Prepared, bin: &Bin, rect: Rect, scratch: &mut Scratch, ne
         blocks,
     };
     let offs = sample_offsets(ns);
-    let need = need_planes;
-    match ns {
-        1 => depth_pass::<1>(p, bin, rect, offs.try_into().expect("1"), &mut bufs, need),
-        4 => depth_pass::<4>(p, bin, rect, offs.try_into().expect("4"), &mut bufs, need),
-        _ => depth_pass::<8>(p, bin, rect, offs.try_into().expect("8"), &mut bufs, need),
+    let b = &mut bufs;
+    match (ns, need_planes) {
+        (1, _) => depth_pass::<1, false>(p, bin, rect, offs.try_into().expect("1"), b),
+        (4, true) => depth_pass::<4, false>(p, bin, rect, offs.try_into().expect("4"), b),
+        (4, false) => depth_pass::<4, true>(p, bin, rect, offs.try_into().expect("4"), b),
+        (_, true) => depth_pass::<8, false>(p, bin, rect, offs.try_into().expect("8"), b),
+        (_, false) => depth_pass::<8, true>(p, bin, rect, offs.try_into().expect("8"), b),
     }
 }
 

@@ -9,8 +9,9 @@
 //! Drawing a frame through [`super::render_into`] does the same work, on
 //! the thread pool and with lines, points and transparent triangles.
 
+use super::binning::{self, Bins};
 use super::prepare::{self, Prepared};
-use super::raster::{self, Bin, Rect, Scratch, Target, TILE, TILE_H};
+use super::raster::{self, Rect, Scratch, Target, TILE, TILE_H};
 use super::{Frame, RenderOptions, View};
 use crate::anim::Pose;
 use crate::scene::Scene;
@@ -18,8 +19,7 @@ use crate::scene::Scene;
 /// A prepared frame and the buffers its stages work in.
 pub struct Stages {
     prepared: Prepared,
-    bins: Vec<Bin>,
-    tiles_x: i32,
+    bins: Bins,
     opts: RenderOptions,
     view: View,
     scratch: Scratch,
@@ -36,8 +36,7 @@ impl Stages {
     pub fn new(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions) -> Stages {
         let mut s = Stages {
             prepared: Prepared::default(),
-            bins: Vec::new(),
-            tiles_x: 0,
+            bins: Bins::default(),
             opts: opts.clone(),
             view: *view,
             scratch: Scratch::new(opts.samples()),
@@ -52,7 +51,7 @@ impl Stages {
     pub fn setup(&mut self, scene: &Scene, pose: &Pose) {
         prepare::prepare(scene, pose, &self.view, &self.opts, &mut self.prepared);
         let (w, h) = (self.opts.width as i32, self.opts.height as i32);
-        self.tiles_x = super::bin_tiles(&self.prepared, &mut self.bins, w, h);
+        binning::bin_tiles(&self.prepared, &mut self.bins, w, h);
     }
 
     /// Every tile's rectangle and bin index.
@@ -60,14 +59,14 @@ impl Stages {
         let (w, h) = (self.opts.width as i32, self.opts.height as i32);
         let mut out = Vec::new();
         for ty in 0..(h + TILE_H - 1) / TILE_H {
-            for tx in 0..self.tiles_x {
+            for tx in 0..self.bins.tiles_x {
                 let rect = [
                     tx * TILE,
                     ty * TILE_H,
                     ((tx + 1) * TILE).min(w),
                     ((ty + 1) * TILE_H).min(h),
                 ];
-                out.push((rect, (ty * self.tiles_x + tx) as usize));
+                out.push((rect, (ty * self.bins.tiles_x + tx) as usize));
             }
         }
         out
@@ -78,7 +77,7 @@ impl Stages {
         for (rect, bin) in self.tiles() {
             raster::depth_tile(
                 &self.prepared,
-                &self.bins[bin],
+                &self.bins.tiles[bin],
                 rect,
                 &mut self.scratch,
                 false,
@@ -94,14 +93,14 @@ impl Stages {
         for (k, (rect, bin)) in tiles.into_iter().enumerate() {
             raster::depth_tile(
                 &self.prepared,
-                &self.bins[bin],
+                &self.bins.tiles[bin],
                 rect,
                 &mut self.scratch,
                 false,
             );
             raster::shade_tile(
                 &self.prepared,
-                &self.bins[bin],
+                &self.bins.tiles[bin],
                 rect,
                 bg,
                 eye,
