@@ -379,6 +379,45 @@ mod tests {
         assert!(taken.iter().all(|&n| n > 250), "{taken:?}");
     }
 
+    /// Blocks as the shading pass sees them — eight neighbouring pixels,
+    /// coordinates a fixed step apart, one to three texels per pixel so
+    /// the lanes blend two levels — give every lane `texel`'s exact bits,
+    /// inside the texture (one pair of 16-texel windows per row for both
+    /// rows) and across its seams and edges (the general corners).
+    #[test]
+    #[allow(clippy::needless_range_loop)]
+    fn neighbouring_lanes_match_one_pixel_bit_for_bit() {
+        let mut seed = 4242u32;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32
+        };
+        for (w, h) in [(64, 32), (50, 30), (256, 256)] {
+            let img = image(w, h, [53, 29, 11]);
+            for wrap in [(Wrap::Repeat, Wrap::Repeat), (Wrap::Clamp, Wrap::Clamp)] {
+                let mut tex = Texture::new(ImageId(0));
+                (tex.wrap_s, tex.wrap_t) = wrap;
+                let s = Sampler::new(&tex, &img);
+                for round in 0..400 {
+                    // Texels per pixel in the base level: 1 to 3.
+                    let step = (1.0 + 2.0 * rnd()) / w as f32;
+                    let (u0, v0) = ((rnd() - 0.2) * 1.4, (rnd() - 0.2) * 1.4);
+                    let dv = (rnd() - 0.5) * 0.2 / h as f32;
+                    let mut lanes = [[0.0f32; 8]; 6];
+                    for k in 0..8 {
+                        lanes[0][k] = u0 + step * k as f32;
+                        lanes[1][k] = v0 + dv * k as f32;
+                        lanes[2][k] = step;
+                        lanes[3][k] = dv;
+                        lanes[4][k] = 0.0;
+                        lanes[5][k] = step * 0.7;
+                    }
+                    assert_lanes_match(&s, &lanes, &format!("{w}x{h} {wrap:?} round {round}"));
+                }
+            }
+        }
+    }
+
     /// Clamped coordinates so large that s·w overflows to ±∞ (a NaN
     /// fraction) read the edge texel in every path, without overflowing
     /// the filter's integer arithmetic (`256 − 0x8000_0000` in u32, a
