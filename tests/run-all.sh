@@ -15,6 +15,10 @@ command -v import >/dev/null 2>&1 || need_pkgs+=(imagemagick)
 command -v view3dscene >/dev/null 2>&1 || need_pkgs+=(view3dscene libgl1-mesa-dri)
 /usr/bin/python3 -c 'import pivy, PySide2, OpenGL' >/dev/null 2>&1 \
   || need_pkgs+=(inventor-clients python3-pivy python3-pyside2.qtgui python3-opengl)
+# The faces animed embeds (assets/fonts/README.md), for Coin's text in
+# tests/coin_corpus.sh (tests/coin_render_font.py says why).
+[ -f /usr/share/fonts/truetype/liberation2/LiberationSerif-Regular.ttf ] \
+  || need_pkgs+=(fonts-liberation2)
 if [ ${#need_pkgs[@]} -gt 0 ]; then
   if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
     echo "run-all: installing ${need_pkgs[*]} (window smoke test, reference renderers)"

@@ -153,14 +153,27 @@ fn own_box(scene: &Scene, pose: &Pose, i: usize, picture: Option<(u32, u32)>) ->
         .filter(|t| t.kind == TextKind::Text2 && t.units_per_pixel > 0.0);
     let (lo, hi) = match (label, picture) {
         (Some(t), Some(px)) => {
-            let (lo, hi) = points_bounds(geo.positions)?;
+            let (lo, hi) = label_extent(t, geo.positions)?;
             return label_box(lo, hi, geo.world, t.units_per_pixel, px);
         }
         (Some(_), None) => (Vec3::ZERO, Vec3::ZERO),
         (None, _) => {
-            let (lo, mut hi) = points_bounds(geo.positions)?;
+            let (mut lo, mut hi) = points_bounds(geo.positions)?;
             if let Some(top) = mesh.text.as_deref().and_then(text_top) {
                 hi.y = hi.y.max(top);
+            }
+            // Coin's box of a text spans its lines' advances along x, not
+            // the ink (probed through pivy with the Liberation faces: a
+            // VRML97 "x" is 0.5 wide at size 1, its advance; Text3 "Maxi"
+            // centred at size 10 spans ±10.625, the sum of its advances as
+            // Coin rounds them at 40 ppem; the font's sum is 21.11).
+            if let Some([x0, x1]) = mesh
+                .text
+                .as_deref()
+                .and_then(crate::format::text::advance_span)
+            {
+                lo.x = lo.x.min(x0);
+                hi.x = hi.x.max(x1);
             }
             (lo, hi)
         }
@@ -235,21 +248,36 @@ fn label_box(
     Some(XfBox { lo, hi, m: world })
 }
 
-/// The world box of a Text2 label whose glyphs span `positions` (local
-/// units, `units_per_pixel` of them a pixel) under `world`, as view-all of
-/// a `picture` counts it ([`label_box`]); `None` when that view-all would
-/// not count it.
+/// A Text2 label's box in its local units: the whole pixels of its bitmap
+/// (`text::bitmap::pixel_box`, as Coin's box is the union of its glyph
+/// bitmaps), or the box of `positions` for a label drawn from outlines.
+fn label_extent(t: &TextSpec, positions: &[Vec3]) -> Option<(Vec3, Vec3)> {
+    let u = t.units_per_pixel;
+    match crate::format::text::bitmap::pixel_box(t) {
+        Some((lo, hi)) if u.is_finite() && u > 0.0 => Some((
+            Vec3::new(lo[0] * u, lo[1] * u, 0.0),
+            Vec3::new(hi[0] * u, hi[1] * u, 0.0),
+        )),
+        _ => points_bounds(positions),
+    }
+}
+
+/// The world box of the Text2 label `t` whose glyphs span `positions`
+/// (local units, `t.units_per_pixel` of them a pixel) under `world`, as
+/// view-all of a `picture` counts it ([`label_box`]); `None` when that
+/// view-all would not count it.
 pub(super) fn label_world(
+    t: &TextSpec,
     positions: &[Vec3],
     world: Mat4,
-    units_per_pixel: f32,
     picture: (u32, u32),
 ) -> Option<(Vec3, Vec3)> {
     // NaN or infinite scales too (speed's review).
+    let units_per_pixel = t.units_per_pixel;
     if !units_per_pixel.is_finite() || units_per_pixel <= 0.0 {
         return None;
     }
-    let (lo, hi) = points_bounds(positions)?;
+    let (lo, hi) = label_extent(t, positions)?;
     label_box(lo, hi, world, units_per_pixel, picture).map(|b| b.world())
 }
 
@@ -365,8 +393,12 @@ mod tests {
         };
         let (lo, hi) = bounds(spec(1.0));
         assert_eq!((lo.y, hi.y), (-1.01, 1.0));
-        assert_eq!((lo.x, hi.x), (0.02, 0.48));
-        assert_eq!(bounds(spec(2.0)).1.y, 2.0);
+        // Along x the box is the line's advance (a serif "x" is 0.5 em
+        // wide), not its ink, as in Coin.
+        assert_eq!((lo.x, hi.x), (0.0, 0.5));
+        assert_eq!(bounds(spec(2.0)).1, Vec3::new(1.0, 2.0, 0.0));
+        // Ink reaching past the advance keeps its extent.
+        assert_eq!(bounds(spec(0.25)).1.x, 0.48);
         // Ink taller than `size` keeps its top.
         assert_eq!(bounds(spec(0.25)).1.y, 0.46);
         let middle = TextSpec {
@@ -378,7 +410,9 @@ mod tests {
             horizontal: false,
             ..spec(1.0)
         };
-        assert_eq!(bounds(vertical).1.y, 0.46);
+        // Vertical text keeps its ink along x.
+        let (vlo, vhi) = bounds(vertical);
+        assert_eq!((vhi.y, vlo.x), (0.46, 0.02));
         let label = TextSpec {
             kind: TextKind::AsciiText,
             ..spec(1.0)

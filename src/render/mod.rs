@@ -36,6 +36,7 @@ mod shade;
 mod shading;
 mod simd;
 pub mod stages;
+mod stroke_faces;
 mod surface;
 mod texel_block;
 mod texel_fetch;

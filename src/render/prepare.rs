@@ -8,6 +8,7 @@ use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::geometry::Geometry;
 use super::label::label_matrix;
 use super::shade::{ShadeMaterial, WorldLight};
+use super::stroke_faces;
 use super::texture::Sampler;
 use super::tri_gradients::Gradients;
 use super::{RenderOptions, View};
@@ -33,10 +34,12 @@ pub struct Item {
     /// Lines/points without normals, or an unlit material: colour is used
     /// as is.
     pub unlit: bool,
-    /// Drawn in the Lines or Points style: its lines and points stand for
-    /// a surface's edges and corners, lit on the side that faces the eye
-    /// as the filled surface is (`raster::facing`). Line and point sets
-    /// drawn as themselves are lit by the normal as given.
+    /// Drawn in the Lines or Points style and not solid: its lines and
+    /// points stand for a two-sided surface's edges and corners, lit on the
+    /// side that faces the eye as the filled surface is (`raster::facing`).
+    /// A solid surface draws only its front faces' edges and corners
+    /// (`stroke_faces`), and they, like line and point sets drawn as
+    /// themselves, are lit by the normal as given.
     pub surface_strokes: bool,
     /// The shading pass computes texture coordinates and their derivatives
     /// for this item and runs its texture steps (`surface::shade_lanes`;
@@ -385,8 +388,15 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
                     edges.extend(&mesh.edges);
                 }
                 edges.extend(&mesh.lines);
+                if mesh.solid {
+                    edges = stroke_faces::front_edges(&mesh.triangles, &edges, &verts);
+                }
                 push_lines(&mut out.lines, &edges, &verts, stroke, &screen);
                 push_points(&mut out.points, &mesh.points, &verts, stroke, &screen);
+            }
+            RenderStyle::Points if mesh.solid => {
+                let front = stroke_faces::front_corners(&mesh.triangles, &verts);
+                push_points(&mut out.points, &front, &verts, stroke, &screen);
             }
             RenderStyle::Points | RenderStyle::Hidden => {
                 let all: Vec<u32> = (0..mesh.positions.len() as u32).collect();
@@ -398,7 +408,9 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
             material: smat,
             lights: item_lights,
             unlit: !has_normals,
-            surface_strokes: style != RenderStyle::Filled,
+            // A solid surface's strokes are its front faces' (above), lit
+            // one-sided as Coin lights them.
+            surface_strokes: style != RenderStyle::Filled && !mesh.solid,
             textured: texture.is_some() || emissive.is_some(),
             texture,
             emissive,

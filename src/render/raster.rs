@@ -886,9 +886,10 @@ fn ld<V: V8>(c: &[f32], i: usize) -> V {
 /// lit by its normal as given: it has no back side to light instead
 /// (OpenGL, so Coin: a normal facing away from the light gets ambient
 /// only; glTF 2.0 §3.9.7: lines and points with NORMAL are lit as any
-/// geometry). A surface drawn in the Lines or Points style is lit on the
-/// side that faces the eye, as its filled triangles are: the normal is
-/// turned towards the eye.
+/// geometry). A surface that is not solid, drawn in the Lines or Points
+/// style, is lit on the side that faces the eye, as its filled triangles
+/// are: the normal is turned towards the eye. (A solid one draws only its
+/// front faces' strokes, lit as given: `stroke_faces`.)
 fn facing(item: &Item, mut a: [f32; ATTRS], eye: Vec3) -> [f32; ATTRS] {
     if !item.surface_strokes {
         return a;

@@ -300,10 +300,8 @@ fn bounds_in(scene: &Scene, pose: &Pose, picture: Option<(u32, u32)>) -> Option<
         // pixel rectangle as view-all sees it (a world box).
         let label = mesh.text.as_deref().filter(|t| t.kind == TextKind::Text2);
         let Some((lo, hi, world)) = (match (label, picture) {
-            (Some(t), Some(px)) => {
-                super::coin_bounds::label_world(geo.positions, geo.world, t.units_per_pixel, px)
-                    .map(|(lo, hi)| (lo, hi, Mat4::IDENTITY))
-            }
+            (Some(t), Some(px)) => super::coin_bounds::label_world(t, geo.positions, geo.world, px)
+                .map(|(lo, hi)| (lo, hi, Mat4::IDENTITY)),
             (Some(_), None) => Some((Vec3::ZERO, Vec3::ZERO, geo.world)),
             (None, _) => points_bounds(geo.positions).map(|(lo, hi)| (lo, hi, geo.world)),
         }) else {

@@ -257,6 +257,16 @@ fn consecutive(faces: &[Vec<u32>]) -> Vec<Vec<u32>> {
 pub fn mesh(n: &NodeRef, st: &State, inp: &Inputs, msgs: &mut Msgs) -> Option<Mesh> {
     let kind = n.kind.as_str();
     let mut m = mesh_of(n, kind, st, inp, msgs)?;
+    // Coin culls no primitive of its own accord: only ShapeHints SOLID with
+    // a known vertex ordering turns culling on (for every shape). Filled, a
+    // closed primitive looks the same either way; drawn as lines or points
+    // its back edges and corners show unless the hints cull them
+    // (`render::stroke_faces`).
+    if matches!(kind, "Cube" | "Sphere" | "Cone" | "Cylinder")
+        && matches!(st.style, RenderStyle::Lines | RenderStyle::Points)
+    {
+        m.solid &= options(st).solid;
+    }
     if inp.textured && !m.triangles.is_empty() {
         if let TexInput::Plane(ds, dt) = inp.tex {
             m.texcoords = m

@@ -170,6 +170,24 @@ fn inherited_switch_values_and_open_primitives() {
     assert!(!solid("Open") && solid("Closed"));
 }
 
+/// Drawn as lines or points, a closed primitive is culled only where
+/// ShapeHints says SOLID with a known ordering (Coin culls no primitive of
+/// its own accord), so its back edges show otherwise; filled, it stays
+/// solid (the same picture, and half the triangles drawn).
+#[test]
+fn primitives_as_lines_are_culled_only_under_solid_hints() {
+    let l = load(
+        "#Inventor V2.1 ascii\nSeparator {\n DEF Filled Cube {}\n DrawStyle { style LINES }\n DEF Bare Cube {}\n DEF Grid Sphere {}\n ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID }\n DEF Hinted Cube {}\n DrawStyle { style POINTS }\n DEF Dots Cylinder {}\n ShapeHints { vertexOrdering UNKNOWN_ORDERING shapeType SOLID }\n DEF Unordered Cone {}\n}",
+    );
+    let s = &l.scene;
+    let solid = |n| match &s.node(s.find_node(n).unwrap()).kind {
+        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].solid,
+        _ => panic!(),
+    };
+    assert!(solid("Filled") && solid("Hinted") && solid("Dots"));
+    assert!(!solid("Bare") && !solid("Grid") && !solid("Unordered"));
+}
+
 /// Without a Coordinate3 the coordinates are Coin's default, one point at
 /// the origin: a PointSet draws it and a LineSet's bounds hold it (Toolmaker
 /// `newManips.iv` is framed on it in Coin).

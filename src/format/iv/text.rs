@@ -216,8 +216,13 @@ pub fn size_text2(scene: &mut Scene) {
             drawn.size = spec.size * per_pixel / scale;
             spec.units_per_pixel = per_pixel / scale;
         }
-        // The budget was asked for the same glyphs at the first build.
-        if let Ok(mut built) = text_mesh(&drawn, true) {
+        // A label is drawn from its bitmap (`text::bitmap`), `size`
+        // pixels high; one too large for a bitmap keeps its outlines. The
+        // budget was asked for the same glyphs at the first build.
+        let bitmap = (spec.units_per_pixel > 0.0)
+            .then(|| crate::format::text::bitmap::label_mesh(&spec, spec.units_per_pixel, true))
+            .flatten();
+        if let Ok(mut built) = bitmap.map_or_else(|| text_mesh(&drawn, true), Ok) {
             built.name = std::mem::take(&mut m.name);
             *m = built;
         }
@@ -312,15 +317,17 @@ mod tests {
             false,
         );
         let m = text_meshes(&l.scene);
-        // The cube's diagonal (24·√2 ≈ 33.9) spans 240 pixels, so 10-pixel
-        // text is about 1.41 units high (an 'M' is 0.655 em).
-        let (lo, hi) = m[0].bounds().unwrap();
-        let h = hi.y - lo.y;
-        assert!((h - 0.655 * 33.94 / 24.0).abs() < 0.05, "{h}");
+        // The cube's diagonal (24·√2 ≈ 33.9) spans 240 pixels, so one
+        // pixel is about 0.141 units; 10-pixel text is drawn from its
+        // bitmap (`text::bitmap`), where an 'M' (0.655 em) takes 7 whole
+        // pixel rows.
         let spec = m[0].text.as_ref().unwrap();
         assert_eq!(spec.size, 10.0);
         // The renderer draws it 10 pixels high through this scale.
         assert!((spec.units_per_pixel - 33.94 / 240.0).abs() < 1e-3);
+        let (lo, hi) = m[0].bounds().unwrap();
+        let rows = (hi.y - lo.y) / spec.units_per_pixel;
+        assert!((rows - 7.0).abs() < 1e-4, "{rows}");
     }
 
     #[test]

@@ -31,6 +31,10 @@ pub struct Layout {
     /// Start of the first string's baseline, the texture origin (§6.47:
     /// "the origin of the first string, as determined by the justification").
     pub origin: [f32; 2],
+    /// Horizontal text: the x span of its non-empty lines' advances (pen
+    /// start to pen end), the width a line box has whatever its glyphs'
+    /// ink; `None` for vertical text or no glyph.
+    pub advance_x: Option<[f32; 2]>,
 }
 
 /// Lays out `spec` with `font`. Non-finite or non-positive sizes and
@@ -130,6 +134,13 @@ fn horizontal(spec: &TextSpec, font: &Font) -> Layout {
         let start = major_offset(spec.justify[0], len, dir);
         if i == 0 {
             out.origin = [start.min(start + dir * len), y];
+        }
+        if !glyphs.is_empty() {
+            let (a, b) = (start.min(start + dir * len), start.max(start + dir * len));
+            out.advance_x = Some(match out.advance_x {
+                Some([lo, hi]) => [lo.min(a), hi.max(b)],
+                None => [a, b],
+            });
         }
         for &(g, pen) in glyphs {
             let adv = font.advance(g) * size * s;
@@ -301,12 +312,15 @@ mod tests {
         let (_, hi) = x_range(
             &Layout {
                 glyphs: l.glyphs[..2].to_vec(),
-                origin: [0.0; 2],
+                ..Layout::default()
             },
             &f,
             1.0,
         );
         assert!((hi - 8.0 * w).abs() < 1e-5, "{hi}");
+        // The advance span covers the stretched line.
+        let [a0, a1] = l.advance_x.unwrap();
+        assert!(a0 == 0.0 && (a1 - 8.0 * w).abs() < 1e-5, "{a0} {a1}");
         assert_eq!(l.glyphs[0].scale, [4.0, 1.0]);
         assert_eq!(l.glyphs[2].scale, [1.0, 1.0]);
         // maxExtent 2w: the longest (the 8w line) is compressed to 2w, and

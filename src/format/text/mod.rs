@@ -1,9 +1,11 @@
 //! Text as geometry: the embedded fonts (`font`), glyph outlines to
 //! triangles with holes (`tessellate`), lines and justification
-//! (`layout`), and the mesh (`mesh`). The readers turn their Text nodes
+//! (`layout`), the mesh (`mesh`), and Inventor `Text2` labels as bitmaps
+//! (`bitmap`). The readers turn their Text nodes
 //! into a [`TextSpec`](crate::scene::TextSpec) and call [`text_mesh`];
 //! the spec stays on the mesh so writers can write the node again.
 
+pub mod bitmap;
 pub mod font;
 pub mod layout;
 pub mod mesh;
@@ -43,6 +45,14 @@ pub fn mesh_of_spec(
 }
 
 use crate::scene::{FontFamily, Justify, TextSpec};
+
+/// The x span of a horizontal text's line advances in its local units
+/// (`layout::Layout::advance_x`), for bounds that count a line's box as
+/// its advances, as Coin's do; `None` for vertical text or no glyph.
+pub fn advance_span(spec: &TextSpec) -> Option<[f32; 2]> {
+    let font = font::Font::new(spec.family, spec.bold, spec.italic);
+    layout::layout(spec, &font).advance_x
+}
 
 /// Replaces values no text can be drawn with (non-finite or non-positive
 /// size, non-finite or negative spacing) by the defaults, saying so.
