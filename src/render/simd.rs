@@ -328,6 +328,24 @@ pub trait V8: Lanes {
     fn from_i32(a: [f32; 8]) -> Self {
         Self::load(&a)
     }
+    /// The lanes as one AVX register, for code that checked the CPU
+    /// (the texture sampler's AVX-512 pass): a register move for
+    /// [`Avx8`], a trip through memory for other lanes.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn to_m256(self) -> std::arch::x86_64::__m256 {
+        let mut a = [0.0f32; 8];
+        self.store(&mut a);
+        // SAFETY: 32 bytes either way, and every bit pattern is valid.
+        unsafe { std::mem::transmute::<[f32; 8], std::arch::x86_64::__m256>(a) }
+    }
+    /// Lanes from one AVX register (the inverse of [`V8::to_m256`]).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn from_m256(v: std::arch::x86_64::__m256) -> Self {
+        // SAFETY: 32 bytes either way, and every bit pattern is valid.
+        Self::load(&unsafe { std::mem::transmute::<std::arch::x86_64::__m256, [f32; 8]>(v) })
+    }
 }
 
 /// [`Lanes::map2`] for eight lanes: through arrays, lane by lane.
@@ -560,6 +578,14 @@ mod avx_lanes {
                 let hi = _mm256_add_pd(base, _mm256_mul_pd(_mm256_set_pd(7.0, 6.0, 5.0, 4.0), st));
                 Avx8(_mm256_set_m128(_mm256_cvtpd_ps(hi), _mm256_cvtpd_ps(lo)))
             }
+        }
+        #[inline(always)]
+        fn to_m256(self) -> __m256 {
+            self.0
+        }
+        #[inline(always)]
+        fn from_m256(v: __m256) -> Self {
+            Avx8(v)
         }
         /// `f32::floor` by ROUNDPS (AVX has it; SSE2 does not): the same
         /// bits as the default's truncation steps, in one instruction (the

@@ -37,10 +37,17 @@ pub fn shade_lanes<V: V8, L: Blocks<V>, const TEX: bool>(
     let mut diffuse = color;
     let mut texels = [[V::splat(1.0); 4]; 2];
     if let (true, Some(s)) = (textured, &item.texture) {
-        for (k, (uv, texel)) in uv.iter().zip(&mut texels).take(L::N).enumerate() {
-            *texel = s.texel8(uv);
-            let d = s.before_lighting8(texel, block(&diffuse, k));
+        // Kept for after the lighting only where a model acts there: the
+        // copy of four lanes into the array costs a stalled reload
+        // (narrow stores read back by wide loads) on every block.
+        let keep = s.acts_after_lighting();
+        for (k, uv) in uv.iter().take(L::N).enumerate() {
+            let texel = s.texel8(uv);
+            let d = s.before_lighting8(&texel, block(&diffuse, k));
             set_block(&mut diffuse, k, d);
+            if keep {
+                texels[k] = texel;
+            }
         }
     }
     // Unlit (no normals): the unlit colour is the lit colour, so the

@@ -36,10 +36,9 @@ impl Sampler {
     /// with `simd::avx512()`) two levels blend in one 16-lane AVX-512 pass
     /// (`trilinear16`), else in two eight-lane passes: the same bits
     /// either way.
-    #[inline(always)]
+    #[cfg(test)]
     pub(super) fn texel8_one_level<V: V8>(&self, lod: V, u: V, v: V, wide: bool) -> Option<[V; 4]> {
-        let levels = self.image().levels();
-        let last = levels.len() - 1;
+        let last = self.image().levels().len() - 1;
         // `Sampler::sample`'s choice: level `lod as usize` and the next,
         // or the last level alone from `lod ≥ last` on. Truncating
         // min(lod, last) names both cases by one number per lane.
@@ -47,7 +46,35 @@ impl Sampler {
         if i.iter().any(|&k| k != i[0]) {
             return None;
         }
-        let i = i[0] as usize;
+        self.texel8_at_level(i[0] as usize, lod, u, v, wide)
+    }
+
+    /// [`Sampler::texel8_one_level`] for lanes whose level pair was
+    /// guessed to start at level `i` (`None` where any lane's level is
+    /// another). Why a guess: the level's size starts the long chain of
+    /// the footprint, fetch and filter; named before the level of detail
+    /// is known (from the exponent of ρ², `texture_lanes`), that chain
+    /// does not wait for λ's polynomial, which only the blend fraction at
+    /// the end needs. The check below is a branch, which the CPU predicts,
+    /// not a wait.
+    #[inline(always)]
+    pub(super) fn texel8_at_level<V: V8>(
+        &self,
+        i: usize,
+        lod: V,
+        u: V,
+        v: V,
+        wide: bool,
+    ) -> Option<[V; 4]> {
+        let levels = self.image().levels();
+        let last = levels.len() - 1;
+        if i > last {
+            return None;
+        }
+        let exact = lod.min(V::splat(last as f32)).trunc_i32();
+        if exact.iter().any(|&k| k != i as i32) {
+            return None;
+        }
         let level = &levels[i];
         if level.width() as u64 * level.height() as u64 > EXACT_TEXELS {
             return None;
@@ -61,19 +88,27 @@ impl Sampler {
         let _ = wide;
         #[cfg(target_arch = "x86_64")]
         if blend && wide {
-            let (sa, ta, fa) = (to_arr(s), to_arr(t), to_arr(f));
             let levels = [level, &levels[i + 1]];
             let wrap = [self.wrap_s(), self.wrap_t()];
             // SAFETY: the caller checked `simd::avx512()` (AVX-512 F, VL,
             // BW, DQ); the finer level holds at most 2²⁴ texels (above).
-            let out = unsafe { trilinear16::sample(levels, &sa, &ta, &fa, wrap, !self.opaque()) };
+            let out = unsafe {
+                trilinear16::sample(
+                    levels,
+                    s.to_m256(),
+                    t.to_m256(),
+                    f.to_m256(),
+                    wrap,
+                    !self.opaque(),
+                )
+            };
             // (Not `out.map(..)`: a closure lacks the caller's target
-            // features, and `V::load` inside it becomes a call.)
+            // features, and lane operations inside it become calls.)
             return Some([
-                V::load(&out[0]),
-                V::load(&out[1]),
-                V::load(&out[2]),
-                V::load(&out[3]),
+                V::from_m256(out[0]),
+                V::from_m256(out[1]),
+                V::from_m256(out[2]),
+                V::from_m256(out[3]),
             ]);
         }
         let a = self.bilinear_level8(level, s, t);
@@ -214,7 +249,7 @@ pub(super) fn filter<V: V8>(corner: &[[u32; 8]; 4], fx: V, fy: V, alpha: bool) -
 }
 
 /// The lanes as an array.
-#[cfg(any(target_arch = "x86_64", test))]
+#[cfg(test)]
 #[inline(always)]
 fn to_arr<V: V8>(v: V) -> [f32; 8] {
     let mut a = [0.0; 8];
@@ -344,6 +379,45 @@ mod tests {
         assert!(taken.iter().all(|&n| n > 250), "{taken:?}");
     }
 
+    /// Blocks as the shading pass sees them — eight neighbouring pixels,
+    /// coordinates a fixed step apart, one to three texels per pixel so
+    /// the lanes blend two levels — give every lane `texel`'s exact bits,
+    /// inside the texture (one pair of 16-texel windows per row for both
+    /// rows) and across its seams and edges (the general corners).
+    #[test]
+    #[allow(clippy::needless_range_loop)]
+    fn neighbouring_lanes_match_one_pixel_bit_for_bit() {
+        let mut seed = 4242u32;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32
+        };
+        for (w, h) in [(64, 32), (50, 30), (256, 256)] {
+            let img = image(w, h, [53, 29, 11]);
+            for wrap in [(Wrap::Repeat, Wrap::Repeat), (Wrap::Clamp, Wrap::Clamp)] {
+                let mut tex = Texture::new(ImageId(0));
+                (tex.wrap_s, tex.wrap_t) = wrap;
+                let s = Sampler::new(&tex, &img);
+                for round in 0..400 {
+                    // Texels per pixel in the base level: 1 to 3.
+                    let step = (1.0 + 2.0 * rnd()) / w as f32;
+                    let (u0, v0) = ((rnd() - 0.2) * 1.4, (rnd() - 0.2) * 1.4);
+                    let dv = (rnd() - 0.5) * 0.2 / h as f32;
+                    let mut lanes = [[0.0f32; 8]; 6];
+                    for k in 0..8 {
+                        lanes[0][k] = u0 + step * k as f32;
+                        lanes[1][k] = v0 + dv * k as f32;
+                        lanes[2][k] = step;
+                        lanes[3][k] = dv;
+                        lanes[4][k] = 0.0;
+                        lanes[5][k] = step * 0.7;
+                    }
+                    assert_lanes_match(&s, &lanes, &format!("{w}x{h} {wrap:?} round {round}"));
+                }
+            }
+        }
+    }
+
     /// Clamped coordinates so large that s·w overflows to ±∞ (a NaN
     /// fraction) read the edge texel in every path, without overflowing
     /// the filter's integer arithmetic (`256 − 0x8000_0000` in u32, a
@@ -396,5 +470,14 @@ mod tests {
         assert!(s.texel8_one_level(lod, z, z, false).is_none());
         let lod = Sse8::load(&[0.5, 0.0, 0.25, 0.75, 0.5, 0.5, 0.5, 0.999]);
         assert!(s.texel8_one_level(lod, z, z, false).is_some());
+        // A wrong guess of the level is refused, a right one taken, and
+        // it gives the one-level path's bits.
+        assert!(s.texel8_at_level(1, lod, z, z, false).is_none());
+        assert!(s.texel8_at_level(9, lod, z, z, false).is_none());
+        let bits = |o: Option<[Sse8; 4]>| o.map(|c| c.map(|v| to_arr(v).map(f32::to_bits)));
+        assert_eq!(
+            bits(s.texel8_at_level(0, lod, z, z, false)),
+            bits(s.texel8_one_level(lod, z, z, false))
+        );
     }
 }

@@ -75,7 +75,7 @@ impl Sampler {
         } else {
             (V::splat(0.5) * log2_fast8(safe)).keep(in_range)
         };
-        if let Some(out) = self.texel8_one_level(lod, uv.u, uv.v, wide) {
+        if let Some(out) = self.texel8_at_level(level_guess(safe), lod, uv.u, uv.v, wide) {
             return out;
         }
         let lods = to_arr(lod);
@@ -216,6 +216,19 @@ pub fn lane<V: V8>(t: &[V; 4], k: usize) -> Vec4 {
         to_arr(t[2])[k],
         to_arr(t[3])[k],
     )
+}
+
+/// The mip level a block's λ most likely starts at: ⌊e/2⌋ for lane 0's
+/// ρ² (`safe`, in (1, f32::MAX]) = 2ᵉ·m, m in [1, 2). λ = ½·(e + log2 m)
+/// and log2 m lies in [0, 1), so ⌊λ⌋ = ⌊e/2⌋ but for the polynomial's
+/// rounding next to m = 2; the caller checks every lane's exact level
+/// against it (a block whose lanes need other levels fails that check).
+/// Only the exponent's bits: a few steps, where λ itself is a chain of a
+/// dozen.
+#[inline(always)]
+fn level_guess<V: V8>(safe: V) -> usize {
+    let x = to_arr(safe)[0];
+    (((x.to_bits() >> 23).wrapping_sub(127)) >> 1) as usize
 }
 
 /// The lanes as an array.

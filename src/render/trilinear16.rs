@@ -47,16 +47,14 @@ mod imp {
     #[inline(always)]
     pub unsafe fn sample(
         levels: [&MipLevel; 2],
-        s: &[f32; 8],
-        t: &[f32; 8],
-        f: &[f32; 8],
+        s: __m256,
+        t: __m256,
+        f: __m256,
         wrap: [Wrap; 2],
         alpha: bool,
-    ) -> [[f32; 8]; 4] {
+    ) -> [__m256; 4] {
         let (wa, ha) = (levels[0].width() as f32, levels[0].height() as f32);
         let (wb, hb) = (levels[1].width() as f32, levels[1].height() as f32);
-        // SAFETY: 8 × 4-byte loads from arrays of 8 f32.
-        let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
         let (s, t) = (twice(s), twice(t));
         let (w, h) = (halves(wa, wb), halves(ha, hb));
         // `Sampler::footprint8`, operation for operation.
@@ -72,6 +70,63 @@ mod imp {
             _mm512_roundscale_ps::<DOWN>(y),
         );
         let (fx, fy) = (_mm512_sub_ps(x, x0), _mm512_sub_ps(y, y0));
+        // Every footprint inside its level (0 ≤ x0 ≤ w − 2, the same for
+        // y; false for NaN and ±∞): clamping and wrapping leave x0, x0 + 1,
+        // y0 and y0 + 1 as they are, and the bottom row's texels are the
+        // top row's plus one row, so one set of window indices serves both
+        // rows. Blocks on a seam or an edge take `corners`.
+        let zero = _mm512_setzero_ps();
+        let two = _mm512_set1_ps(2.0);
+        let inside = _mm512_cmp_ps_mask::<_CMP_LE_OQ>(zero, x0)
+            & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(x0, _mm512_sub_ps(w, two))
+            & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(zero, y0)
+            & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(y0, _mm512_sub_ps(h, two));
+        let windows = if inside == 0xFFFF {
+            // Texel addresses (exact: whole numbers below 2²⁴), as
+            // `corners` computes them for these lanes.
+            let top = _mm512_cvttps_epi32(_mm512_add_ps(_mm512_mul_ps(y0, w), x0));
+            rows(levels, top)
+        } else {
+            None
+        };
+        let corners = match windows {
+            Some(c) => c,
+            None => corners(levels, x0, y0, w, h, wrap),
+        };
+        let [rb, ga] = bilerp16(corners, weights(fx), weights(fy));
+        // Channels to 0..1, then the level blend a + (b − a)·f per channel.
+        let mut out = [_mm256_set1_ps(OPAQUE); 4];
+        let low = _mm512_set1_epi32(0xFFFF);
+        let chans = [
+            _mm512_and_si512(rb, low),
+            _mm512_and_si512(ga, low),
+            _mm512_srli_epi32::<16>(rb),
+            _mm512_srli_epi32::<16>(ga),
+        ];
+        for (o, &c) in out.iter_mut().zip(&chans).take(if alpha { 4 } else { 3 }) {
+            let v = _mm512_mul_ps(_mm512_cvtepi32_ps(c), _mm512_set1_ps(UNIT));
+            let (a, b) = (_mm512_castps512_ps256(v), _mm512_extractf32x8_ps::<1>(v));
+            *o = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), f));
+        }
+        out
+    }
+
+    /// The four corners (top left, top right, bottom left, bottom right)
+    /// of every lane at floored texel coordinates `x0`, `y0` in levels of
+    /// `w`×`h` texels: clamped and wrapped (`texel_block`'s footprint, on
+    /// sixteen lanes), then fetched by two windows per row or gathered.
+    /// Out of line: [`sample`] takes it only for blocks on a seam or an
+    /// edge of the texture.
+    #[target_feature(enable = "avx,avx2,avx512f,avx512vl,avx512bw,avx512dq")]
+    #[inline(never)]
+    fn corners(
+        levels: [&MipLevel; 2],
+        x0: __m512,
+        y0: __m512,
+        w: __m512,
+        h: __m512,
+        wrap: [Wrap; 2],
+    ) -> [__m512i; 4] {
         let two = _mm512_set1_ps(-2.0);
         let x0 = _mm512_min_ps(_mm512_max_ps(x0, two), w);
         let y0 = _mm512_min_ps(_mm512_max_ps(y0, two), h);
@@ -90,37 +145,14 @@ mod imp {
         } else {
             None
         };
-        let corners = match windows {
+        match windows {
             Some(c) => c,
             None => {
                 let tr = _mm512_cvttps_epi32(_mm512_add_ps(ra, xb));
                 let br = _mm512_cvttps_epi32(_mm512_add_ps(rb, xb));
                 gather(levels, pairs == 0xFFFF, [top, tr, bottom, br])
             }
-        };
-        let [rb, ga] = bilerp16(corners, weights(fx), weights(fy));
-        // Channels to 0..1, then the level blend a + (b − a)·f per channel.
-        // SAFETY: an 8 × 4-byte load from an array of 8 f32.
-        let f = unsafe { _mm256_loadu_ps(f.as_ptr()) };
-        let mut out = [[0.0f32; 8]; 4];
-        let low = _mm512_set1_epi32(0xFFFF);
-        let chans = [
-            _mm512_and_si512(rb, low),
-            _mm512_and_si512(ga, low),
-            _mm512_srli_epi32::<16>(rb),
-            _mm512_srli_epi32::<16>(ga),
-        ];
-        for (o, &c) in out.iter_mut().zip(&chans).take(if alpha { 4 } else { 3 }) {
-            let v = _mm512_mul_ps(_mm512_cvtepi32_ps(c), _mm512_set1_ps(UNIT));
-            let (a, b) = (_mm512_castps512_ps256(v), _mm512_extractf32x8_ps::<1>(v));
-            let v = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), f));
-            // SAFETY: an 8 × 4-byte store into an array of 8 f32.
-            unsafe { _mm256_storeu_ps(o.as_mut_ptr(), v) };
         }
-        if !alpha {
-            out[3] = [OPAQUE; 8];
-        }
-        out
     }
 
     /// The four corners by per-level fetches (`texel_fetch`): for blocks
@@ -274,6 +306,62 @@ mod imp {
             _mm512_permutex2var_epi32(ta, idx, tb),
             _mm512_permutex2var_epi32(ta, right, tb),
         ))
+    }
+
+    /// Both rows' corners (top left, top right, bottom left, bottom right)
+    /// when every lane's footprint lies inside its level (`top`: the top
+    /// left texel indices; the bottom row is one level row further): the
+    /// top row's windows as in [`window`], and the bottom row's from the
+    /// same indices one row on. `None` where [`window`] gives none or the
+    /// bottom windows would leave a level (the caller gathers).
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    fn rows(levels: [&MipLevel; 2], top: __m512i) -> Option<[__m512i; 4]> {
+        let l = lanes8(top);
+        let first = [l[0][0].min(l[0][7]), l[1][0].min(l[1][7])];
+        let fits = |k: usize| {
+            first[k] >= 0
+                && first[k] as usize + levels[k].width() as usize + 16 <= levels[k].pixels().len()
+        };
+        if !fits(0) || !fits(1) {
+            return None;
+        }
+        let start =
+            _mm512_inserti64x4::<1>(_mm512_set1_epi32(first[0]), _mm256_set1_epi32(first[1]));
+        let rel = _mm512_sub_epi32(top, start);
+        // Every lane in 0..=14 (unsigned: negative lanes fail), so lane
+        // k's pair is words rel[k] and rel[k] + 1 of its level's sixteen.
+        if _mm512_cmple_epu32_mask(rel, _mm512_set1_epi32(14)) != 0xFFFF {
+            return None;
+        }
+        let (pa, pb) = (
+            levels[0].pixels()[first[0] as usize..].as_ptr(),
+            levels[1].pixels()[first[1] as usize..].as_ptr(),
+        );
+        let (wa, wb) = (levels[0].width() as usize, levels[1].width() as usize);
+        // SAFETY: texels first[k]..first[k] + 16 and the sixteen one row
+        // further lie inside level k (checked above); each load reads
+        // exactly one such run of 64 bytes.
+        let (ta, tb, ba, bb) = unsafe {
+            (
+                _mm512_loadu_si512(pa.cast()),
+                _mm512_loadu_si512(pb.cast()),
+                _mm512_loadu_si512(pa.add(wa).cast()),
+                _mm512_loadu_si512(pb.add(wb).cast()),
+            )
+        };
+        // Indices 16..32 pick from the second table (the coarser level).
+        let idx = _mm512_add_epi32(
+            rel,
+            _mm512_inserti64x4::<1>(_mm512_setzero_si512(), _mm256_set1_epi32(16)),
+        );
+        let right = _mm512_add_epi32(idx, _mm512_set1_epi32(1));
+        Some([
+            _mm512_permutex2var_epi32(ta, idx, tb),
+            _mm512_permutex2var_epi32(ta, right, tb),
+            _mm512_permutex2var_epi32(ba, idx, bb),
+            _mm512_permutex2var_epi32(ba, right, bb),
+        ])
     }
 
     /// The two halves of sixteen i32 lanes as arrays.
