@@ -951,9 +951,8 @@ pub fn for_each_line_pixel(l: &Line, rect: Rect, mut f: impl FnMut(i32, i32, f32
             lo < c && c <= hi
         }
     };
-    let in_diamond = |m: f32, o: f32| {
-        (m - (m.floor() + 0.5)).abs() + (o - (o.floor() + 0.5)).abs() < 0.5
-    };
+    let in_diamond =
+        |m: f32, o: f32| (m - (m.floor() + 0.5)).abs() + (o - (o.floor() + 0.5)).abs() < 0.5;
     let thin = l.width == 1;
     let (ks, ke) = (m0.floor() as i32, m1.floor() as i32);
     let start_in = thin && in_diamond(m0, o0);
