@@ -163,11 +163,16 @@ fn inherited_switch_values_and_open_primitives() {
     assert!(found("B0"));
     // The Separator's whichChild 0 stays inside it.
     assert!(!found("C0") && found("C1"));
-    let solid = |n| match &s.node(s.find_node(n).unwrap()).kind {
-        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].solid,
-        _ => panic!(),
-    };
+    let solid = |n| mesh_is_solid(s, n);
     assert!(!solid("Open") && solid("Closed"));
+}
+
+/// Whether the shape node `name` of `s` has a solid (culled) mesh.
+fn mesh_is_solid(s: &crate::scene::Scene, name: &str) -> bool {
+    match &s.node(s.find_node(name).unwrap()).kind {
+        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].solid,
+        _ => panic!("{name} is not a shape"),
+    }
 }
 
 /// Drawn as lines or points, a closed primitive is culled only where
@@ -180,10 +185,7 @@ fn primitives_as_lines_are_culled_only_under_solid_hints() {
         "#Inventor V2.1 ascii\nSeparator {\n DEF Filled Cube {}\n DrawStyle { style LINES }\n DEF Bare Cube {}\n DEF Grid Sphere {}\n ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID }\n DEF Hinted Cube {}\n DrawStyle { style POINTS }\n DEF Dots Cylinder {}\n ShapeHints { vertexOrdering UNKNOWN_ORDERING shapeType SOLID }\n DEF Unordered Cone {}\n}",
     );
     let s = &l.scene;
-    let solid = |n| match &s.node(s.find_node(n).unwrap()).kind {
-        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].solid,
-        _ => panic!(),
-    };
+    let solid = |n| mesh_is_solid(s, n);
     assert!(solid("Filled") && solid("Hinted") && solid("Dots"));
     assert!(!solid("Bare") && !solid("Grid") && !solid("Unordered"));
 }
@@ -214,10 +216,7 @@ fn see_through_primitives_are_two_sided() {
         "#Inventor V2.1 ascii\nSeparator {\n DEF Opaque Sphere {}\n Separator { Material { transparency 0.5 } DEF Glass Sphere {} }\n Separator { Texture2 { image 1 2 4 0xFF0000FF 0x00FF0080 } DEF Holes Cube {} }\n Separator { Texture2 { image 1 2 3 0xFF0000 0x00FF00 } DEF Painted Cube {} }\n}",
     );
     let s = &l.scene;
-    let solid = |n| match &s.node(s.find_node(n).unwrap()).kind {
-        NodeKind::Shape(sh) => s.meshes[sh.mesh.0 as usize].solid,
-        _ => panic!(),
-    };
+    let solid = |n| mesh_is_solid(s, n);
     assert!(solid("Opaque") && solid("Painted"));
     assert!(!solid("Glass") && !solid("Holes"));
 }
