@@ -66,8 +66,7 @@ impl Sampler {
         v: V,
         wide: bool,
     ) -> Option<[V; 4]> {
-        let levels = self.image().levels();
-        let last = levels.len() - 1;
+        let last = self.image().levels().len() - 1;
         if i > last {
             return None;
         }
@@ -75,6 +74,24 @@ impl Sampler {
         if exact.iter().any(|&k| k != i as i32) {
             return None;
         }
+        self.texel8_levels(i, lod, u, v, wide)
+    }
+
+    /// [`Sampler::texel8_at_level`] once the level pair is known to start
+    /// at level `i` in every lane (`lod` truncates to `i`, or `i` is the
+    /// last level and no lane's `lod` is below it): `None` only for a
+    /// level too large to address in f32 lanes.
+    #[inline(always)]
+    pub(super) fn texel8_levels<V: V8>(
+        &self,
+        i: usize,
+        lod: V,
+        u: V,
+        v: V,
+        wide: bool,
+    ) -> Option<[V; 4]> {
+        let levels = self.image().levels();
+        let last = levels.len() - 1;
         let level = &levels[i];
         if level.width() as u64 * level.height() as u64 > EXACT_TEXELS {
             return None;
@@ -259,7 +276,7 @@ fn to_arr<V: V8>(v: V) -> [f32; 8] {
 
 /// A mask of the finite lanes.
 #[inline(always)]
-fn finite<V: V8>(x: V) -> V {
+pub(super) fn finite<V: V8>(x: V) -> V {
     Lanes::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
 }
 
