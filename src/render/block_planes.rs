@@ -139,9 +139,9 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
     /// ∂q/∂x and ∂q/∂y are ±0, and where u and v are finite the
     /// derivatives are `∂U/∂x · s` in every lane (the sign of a zero
     /// aside, which no reader sees: the sampler squares them). They are
-    /// then given once as [`UvIn::flat`], and the lanes are spared the
-    /// per-lane arithmetic; other blocks, and lanes with non-finite
-    /// coordinates, take the general formula.
+    /// then also given once as [`UvIn::flat`], from which the sampler's
+    /// level of detail comes once per triangle; other blocks, and lanes
+    /// with non-finite coordinates, take the general formula.
     #[inline(always)]
     pub fn uv_in(&self, s: V) -> UvIn<V> {
         let (u, v) = (self.plane(A_UV) * s, self.plane(A_UV + 1) * s);
@@ -151,17 +151,20 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
             && t.d2[INV_W] == 0.0
             && finite(u).and(finite(v)).bits() == 0xFF
         {
-            let s = 1.0 / t.base[INV_W];
             let g = t.grad.uv;
-            let d = [g[0][0] * s, g[1][0] * s, g[0][1] * s, g[1][1] * s];
+            let g = [g[0][0], g[1][0], g[0][1], g[1][1]];
             return UvIn {
                 u,
                 v,
-                du_dx: V::splat(d[0]),
-                dv_dx: V::splat(d[1]),
-                du_dy: V::splat(d[2]),
-                dv_dy: V::splat(d[3]),
-                flat: Some(Flat { d, tri: self.tri }),
+                du_dx: V::splat(g[0]) * s,
+                dv_dx: V::splat(g[1]) * s,
+                du_dy: V::splat(g[2]) * s,
+                dv_dy: V::splat(g[3]) * s,
+                flat: Some(Flat {
+                    g,
+                    q: t.base[INV_W],
+                    tri: self.tri,
+                }),
                 tex_lod: None,
             };
         }

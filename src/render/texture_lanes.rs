@@ -33,19 +33,21 @@ pub struct UvIn<V> {
     pub du_dy: V,
     pub dv_dy: V,
     /// Set where every lane has the same derivatives, as on a triangle
-    /// without perspective (`BlockPlanes::uv_in`). The lanes above hold
-    /// them too.
+    /// without perspective, and finite `u` and `v` (`BlockPlanes::uv_in`).
+    /// The lanes above hold the derivatives too.
     pub flat: Option<Flat>,
     /// The level of detail of every lane in the item's texture, when the
     /// caller knows it ([`FlatLod`]): [`Sampler::texel8_lod`] reads it.
     pub tex_lod: Option<f32>,
 }
 
-/// Derivatives shared by every lane of a block.
+/// Derivatives shared by every lane of a block: `g` / `q`.
 #[derive(Clone, Copy, Debug)]
 pub struct Flat {
-    /// du/dx, dv/dx, du/dy, dv/dy.
-    pub d: [f32; 4],
+    /// ∂(u/w)/∂x, ∂(v/w)/∂x, ∂(u/w)/∂y, ∂(v/w)/∂y (`Tri::grad`).
+    pub g: [f32; 4],
+    /// 1/w, the same over the triangle.
+    pub q: f32,
     /// The triangle (index into `Prepared::opaque`) they belong to.
     pub tri: u32,
 }
@@ -81,7 +83,9 @@ impl FlatLod {
     #[inline(always)]
     pub fn of(&mut self, flat: &Flat, s: &Sampler) -> f32 {
         if flat.tri != self.tri {
-            let d = flat.d;
+            // The lanes' derivatives: ∂U/∂x · s with s = 1/q.
+            let inv_q = 1.0 / flat.q;
+            let d = flat.g.map(|g| g * inv_q);
             self.lod = s.lod(Vec2::new(d[0], d[1]), Vec2::new(d[2], d[3]));
             self.tri = flat.tri;
         }
@@ -177,7 +181,9 @@ impl Sampler {
             // `texel8_at_level`'s level (λ is finite and ≥ 0).
             let last = (self.image().levels().len() - 1) as f32;
             let i = lod.min(last) as usize;
-            if let Some(out) = self.texel8_levels(i, V::splat(lod), uv.u, uv.v, wide) {
+            // Flat lanes were checked finite (`BlockPlanes::uv_in`).
+            let finite = uv.flat.is_some();
+            if let Some(out) = self.texel8_levels((i, V::splat(lod)), (uv.u, uv.v), finite, wide) {
                 return out;
             }
         }
