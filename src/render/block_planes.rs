@@ -246,6 +246,16 @@ mod tests {
         let xy = [(2.0, 3.0), (60.0, 10.0), (12.0, 50.0)];
         let inv_w = [1.0, 0.25, 0.5];
         let uv = [[0.0, 0.0], [4.0, 1.0], [1.0, 3.0]];
+        (one_triangle(xy, inv_w, uv), (xy, inv_w, uv))
+    }
+
+    /// A one-triangle `Prepared`: screen corners `xy` (pixels), 1/w and
+    /// texture coordinates per corner, its gradients set.
+    pub(super) fn one_triangle(
+        xy: [(f32, f32); 3],
+        inv_w: [f32; 3],
+        uv: [[f32; 2]; 3],
+    ) -> Prepared {
         let mut attr = [[0.0; ATTRS]; 3];
         for k in 0..3 {
             attr[k][A_UV] = uv[k][0];
@@ -267,7 +277,7 @@ mod tests {
         tri.grad = Gradients::of(&tri.x, &tri.y, &tri.d1, &tri.d2);
         let mut p = Prepared::default();
         p.opaque.push(tri);
-        (p, (xy, inv_w, uv))
+        p
     }
 
     /// Perspective-correct uv at a screen point, from the vertices.
@@ -331,13 +341,11 @@ mod tests {
 #[cfg(test)]
 mod flat_tests {
     use super::*;
-    use crate::render::clip::ATTRS;
-    use crate::render::prepare::{planes, SUBPIXEL};
+    use crate::render::prepare::SUBPIXEL;
     use crate::render::simd::{Lanes, Sse8};
     use crate::render::texture::Sampler;
     use crate::render::texture_lanes::tests::image;
     use crate::render::texture_lanes::FlatLod;
-    use crate::render::tri_gradients::Gradients;
     use crate::scene::{ImageId, Texture, Wrap};
 
     /// A one-triangle `Prepared` with 1/w `inv_w` at the corners and
@@ -345,28 +353,8 @@ mod flat_tests {
     fn tri(inv_w: [f32; 3], scale: f32, shift: [f32; 2]) -> Prepared {
         let xy = [(0.0, 0.0), (64.0, 4.0), (6.0, 32.0)];
         let uv = [[0.0, 0.0], [1.0, 0.15], [0.2, -0.9]];
-        let mut attr = [[0.0; ATTRS]; 3];
-        for k in 0..3 {
-            attr[k][A_UV] = uv[k][0] * scale + shift[0];
-            attr[k][A_UV + 1] = uv[k][1] * scale + shift[1];
-        }
-        let (base, d1, d2) = planes(&attr, &inv_w);
-        let fx = |v: f32| (v * SUBPIXEL as f32) as i64;
-        let mut t = Tri {
-            x: xy.map(|p| fx(p.0)),
-            y: xy.map(|p| fx(p.1)),
-            z: [0.5; 3],
-            base,
-            d1,
-            d2,
-            item: 0,
-            bbox: [0, 0, 64, 32],
-            grad: Gradients::default(),
-        };
-        t.grad = Gradients::of(&t.x, &t.y, &t.d1, &t.d2);
-        let mut p = Prepared::default();
-        p.opaque.push(t);
-        p
+        let uv = uv.map(|[u, v]| [u * scale + shift[0], v * scale + shift[1]]);
+        super::tests::one_triangle(xy, inv_w, uv)
     }
 
     fn bits(t: [Sse8; 4]) -> [[u32; 8]; 4] {
