@@ -89,15 +89,14 @@ mod imp {
         wrap: [Wrap; 2],
         alpha: bool,
     ) -> [__m256; 4] {
-        let (s, t) = (twice(s), twice(t));
+        // `Sampler::footprint8`, operation for operation (1 − t on the
+        // eight lanes, before they are doubled).
+        let flipped = _mm256_sub_ps(_mm256_set1_ps(1.0), t);
+        let (s, t) = (twice(s), twice(flipped));
         let (w, h) = (lanes16(&sizes.w), lanes16(&sizes.h));
-        // `Sampler::footprint8`, operation for operation.
         let half = _mm512_set1_ps(0.5);
         let x = _mm512_sub_ps(_mm512_mul_ps(s, w), half);
-        let y = _mm512_sub_ps(
-            _mm512_mul_ps(_mm512_sub_ps(_mm512_set1_ps(1.0), t), h),
-            half,
-        );
+        let y = _mm512_sub_ps(_mm512_mul_ps(t, h), half);
         const DOWN: i32 = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
         let (x0, y0) = (
             _mm512_roundscale_ps::<DOWN>(x),
@@ -254,14 +253,19 @@ mod imp {
 
     /// Sub-texel fractions as 8-bit weights (`texel_filter::weight`:
     /// f·256 + ½, truncated) in both 16-bit halves of each lane.
-    #[target_feature(enable = "avx512f")]
+    /// Both halves come from one byte shuffle of the low one (weights
+    /// are 0..=256; a NaN fraction truncates to 0x8000_0000, whose low
+    /// half is 0, the one-pixel weight of NaN).
+    #[target_feature(enable = "avx512f,avx512bw")]
     #[inline]
     fn weights(f: __m512) -> __m512i {
         let w = _mm512_cvttps_epi32(_mm512_add_ps(
             _mm512_mul_ps(f, _mm512_set1_ps(256.0)),
             _mm512_set1_ps(0.5),
         ));
-        _mm512_or_si512(w, _mm512_slli_epi32::<16>(w))
+        // Bytes 0, 1, 0, 1 of every 32-bit lane.
+        let low_twice = _mm512_set4_epi32(0x0D0C_0D0C, 0x0908_0908, 0x0504_0504, 0x0100_0100);
+        _mm512_shuffle_epi8(w, low_twice)
     }
 
     /// `texel_filter::bilerp` on sixteen lanes of RGBA8 corners (top left,
@@ -276,9 +280,9 @@ mod imp {
     /// and 64·w, which rounds `(x·y + 2¹⁴) >> 15`: with x·y = 128·(b − a)·w
     /// that is exactly `((b − a)·w + 128) >> 8`, in three steps fewer per
     /// row (both factors fit 16 signed bits: |2·(b − a)| ≤ 510, 64·w ≤
-    /// 2¹⁴). Where a fraction was NaN (`weights` gives 0x8000 in a half)
-    /// both texels of that axis are the same edge texel, so b − a = 0 and
-    /// the row is a, as the old form gave.
+    /// 2¹⁴). Where a fraction was NaN (`weights` gives weight 0, as the
+    /// one-pixel `texel_filter::weight` does) both texels of that axis are
+    /// the same edge texel anyway, so any weight gives the same words.
     #[target_feature(enable = "avx512f,avx512bw")]
     #[inline]
     fn bilerp16(c: [__m512i; 4], wx: __m512i, wy: __m512i) -> [__m512i; 2] {
