@@ -57,7 +57,7 @@ impl Sampler {
     /// does not wait for λ's polynomial, which only the blend fraction at
     /// the end needs. The check below is a branch, which the CPU predicts,
     /// not a wait.
-    #[inline(always)]
+    #[cfg(test)]
     pub(super) fn texel8_at_level<V: V8>(
         &self,
         i: usize,
@@ -66,15 +66,22 @@ impl Sampler {
         v: V,
         wide: bool,
     ) -> Option<[V; 4]> {
-        let last = self.image().levels().len() - 1;
-        if i > last {
-            return None;
-        }
-        let exact = lod.min(V::splat(last as f32)).trunc_i32();
-        if exact.iter().any(|&k| k != i as i32) {
+        if !self.pair_starts_at(i, lod) {
             return None;
         }
         self.texel8_levels((i, lod), (u, v), false, wide)
+    }
+
+    /// Whether every lane's level pair (for level of detail `lod`) starts
+    /// at level `i`: [`Sampler::texel8_at_level`]'s check.
+    #[inline(always)]
+    pub(super) fn pair_starts_at<V: V8>(&self, i: usize, lod: V) -> bool {
+        let last = self.image().levels().len() - 1;
+        if i > last {
+            return false;
+        }
+        let exact = lod.min(V::splat(last as f32)).trunc_i32();
+        exact.iter().all(|&k| k == i as i32)
     }
 
     /// [`Sampler::texel8_at_level`] once the level pair is known to start

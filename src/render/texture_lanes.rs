@@ -107,40 +107,86 @@ impl Sampler {
     /// compares both ways).
     #[inline(always)]
     pub(super) fn texel8_in<V: V8>(&self, uv: &UvIn<V>, wide: bool) -> [V; 4] {
+        self.texel8_at(uv, None, wide)
+    }
+
+    /// [`Sampler::texel8`] where every lane's level of detail is known to
+    /// be `uv.tex_lod` (see [`FlatLod`]): the mip level pair is then known
+    /// before anything else, and the level arithmetic is skipped.
+    #[inline(always)]
+    pub fn texel8_lod<V: V8>(&self, uv: &UvIn<V>) -> [V; 4] {
+        self.texel8_lod_in(uv, super::simd::avx512())
+    }
+
+    /// [`Sampler::texel8_lod`]'s work (`wide` as in [`Sampler::texel8_in`]).
+    #[inline(always)]
+    pub(super) fn texel8_lod_in<V: V8>(&self, uv: &UvIn<V>, wide: bool) -> [V; 4] {
+        self.texel8_at(uv, uv.tex_lod, wide)
+    }
+
+    /// The texel of eight lanes whose level of detail is `known` (the same
+    /// in every lane), or else worked out per lane. One body for both, so
+    /// that the shading loop holds one inlined copy of the level pair's
+    /// sampling per sampler (two copies cost code size, not bits).
+    #[inline(always)]
+    fn texel8_at<V: V8>(&self, uv: &UvIn<V>, known: Option<f32>, wide: bool) -> [V; 4] {
         // No closures over lanes here: a closure lacks the caller's AVX
         // target feature, and lane operations inside it become calls.
-        let base = self.image().base();
-        let (bw, bh) = (
-            V::splat(base.width() as f32),
-            V::splat(base.height() as f32),
-        );
-        // Level of detail as `Sampler::lod`: ρ² = max(|ddx·size|², |ddy·size|²).
-        let (xx, xy) = (uv.du_dx * bw, uv.dv_dx * bh);
-        let (yx, yy) = (uv.du_dy * bw, uv.dv_dy * bh);
-        let lx = xx * xx + xy * xy;
-        let ly = yx * yx + yy * yy;
-        let no_nan = lx.eq(lx).and(ly.eq(ly)).bits() == 0xFF;
-        if !self.lanes_cover() || !no_nan {
+        if !self.lanes_cover() {
             return self.texel8_by_lane(uv);
         }
-        // λ = ½·log2(ρ²) where ρ² > 1 (`log2_fast`'s bits, on lanes); 0 where
-        // ρ² ≤ 1, and where ρ² = ∞ (λ would not be finite).
-        let rho2 = lx.max(ly);
-        let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
-        let safe = V::select(in_range, rho2, V::splat(2.0));
-        // All magnified (the common close-up): λ = 0 without the log.
-        let lod = if in_range.bits() == 0 {
-            V::splat(0.0)
-        } else {
-            (V::splat(0.5) * log2_fast8(safe)).keep(in_range)
+        let last = self.image().levels().len() - 1;
+        // The level pair's first level, every lane's λ, and whether u and
+        // v are known finite (flat lanes were checked, `BlockPlanes::uv_in`).
+        let (i, lod, finite) = match known {
+            // `pair_starts_at`'s level (λ is finite and ≥ 0).
+            Some(l) => (l.min(last as f32) as usize, V::splat(l), uv.flat.is_some()),
+            None => {
+                let base = self.image().base();
+                let (bw, bh) = (
+                    V::splat(base.width() as f32),
+                    V::splat(base.height() as f32),
+                );
+                // Level of detail as `Sampler::lod`: ρ² = max(|ddx·size|², |ddy·size|²).
+                let (xx, xy) = (uv.du_dx * bw, uv.dv_dx * bh);
+                let (yx, yy) = (uv.du_dy * bw, uv.dv_dy * bh);
+                let lx = xx * xx + xy * xy;
+                let ly = yx * yx + yy * yy;
+                if lx.eq(lx).and(ly.eq(ly)).bits() != 0xFF {
+                    return self.texel8_by_lane(uv);
+                }
+                // λ = ½·log2(ρ²) where ρ² > 1 (`log2_fast`'s bits, on lanes); 0 where
+                // ρ² ≤ 1, and where ρ² = ∞ (λ would not be finite).
+                let rho2 = lx.max(ly);
+                let in_range = rho2.gt(V::splat(1.0)).and(rho2.le(V::splat(f32::MAX)));
+                let safe = V::select(in_range, rho2, V::splat(2.0));
+                // All magnified (the common close-up): λ = 0 without the log.
+                let lod = if in_range.bits() == 0 {
+                    V::splat(0.0)
+                } else {
+                    (V::splat(0.5) * log2_fast8(safe)).keep(in_range)
+                };
+                let i = level_guess(safe);
+                if !self.pair_starts_at(i, lod) {
+                    return self.texel8_mixed(uv, lod);
+                }
+                (i, lod, false)
+            }
         };
-        if let Some(out) = self.texel8_at_level(level_guess(safe), lod, uv.u, uv.v, wide) {
-            return out;
+        match self.texel8_levels((i, lod), (uv.u, uv.v), finite, wide) {
+            Some(out) => out,
+            None => self.texel8_mixed(uv, lod),
         }
+    }
+
+    /// Lanes on different level pairs (or a level too large for the
+    /// lanes' addresses): per lane the two levels and the blend fraction
+    /// (`Sampler::sample`), each level read by [`Sampler::bilinear8`].
+    #[inline(always)]
+    fn texel8_mixed<V: V8>(&self, uv: &UvIn<V>, lod: V) -> [V; 4] {
         let lods = to_arr(lod);
         let levels = self.image().levels();
         let last = levels.len() - 1;
-        // Per lane: the two levels and the blend fraction (`Sampler::sample`).
         let mut lv = [[0usize; 8]; 2];
         let mut frac = [0.0f32; 8];
         for k in 0..8 {
@@ -164,30 +210,6 @@ impl Sampler {
             out[c] = a[c] + (b[c] - a[c]) * f;
         }
         out
-    }
-
-    /// [`Sampler::texel8`] where every lane's level of detail is known to
-    /// be `uv.tex_lod` (see [`FlatLod`]): the mip level pair is then known
-    /// before anything else, and the level arithmetic is skipped.
-    #[inline(always)]
-    pub fn texel8_lod<V: V8>(&self, uv: &UvIn<V>) -> [V; 4] {
-        self.texel8_lod_in(uv, super::simd::avx512())
-    }
-
-    /// [`Sampler::texel8_lod`]'s work (`wide` as in [`Sampler::texel8_in`]).
-    #[inline(always)]
-    pub(super) fn texel8_lod_in<V: V8>(&self, uv: &UvIn<V>, wide: bool) -> [V; 4] {
-        if let (Some(lod), true) = (uv.tex_lod, self.lanes_cover()) {
-            // `texel8_at_level`'s level (λ is finite and ≥ 0).
-            let last = (self.image().levels().len() - 1) as f32;
-            let i = lod.min(last) as usize;
-            // Flat lanes were checked finite (`BlockPlanes::uv_in`).
-            let finite = uv.flat.is_some();
-            if let Some(out) = self.texel8_levels((i, V::splat(lod)), (uv.u, uv.v), finite, wide) {
-                return out;
-            }
-        }
-        self.texel8_in(uv, wide)
     }
 
     /// The slow path: `texel` per lane.
