@@ -610,15 +610,8 @@ impl MeshSetup<'_> {
     /// The screen triangles of `tris` (vertex indices), in order.
     fn make(&self, tris: &[[u32; 3]], mut emit: impl FnMut(Tri)) {
         let (w, h) = self.size;
-        let tri = |v: [&ScreenVert; 3]| {
-            let mut t = screen_triangle(v, self.item, self.cull, w, h)?;
-            // Textured triangles get their screen gradients as they are
-            // set up (not in a second pass over megabytes of triangles).
-            if self.textured {
-                t.grad = Gradients::of(&t.x, &t.y, &t.d1, &t.d2);
-            }
-            Some(t)
-        };
+        let flags = (self.cull, self.textured);
+        let tri = |v: [&ScreenVert; 3]| screen_triangle(v, self.item, flags, w, h);
         for t in tris {
             each_triangle(t, self.verts, self.screen, tri, &mut emit);
         }
@@ -743,9 +736,18 @@ fn drawn_box(v: [&ScreenVert; 3], cull: bool, w: i32, h: i32) -> Option<(i64, [i
 }
 
 /// The screen triangle through three projected vertices, oriented (see
-/// [`Tri`]), with its planes; `None` when [`drawn_box`] says it is not
-/// drawn.
-fn screen_triangle(v: [&ScreenVert; 3], item: u32, cull: bool, w: i32, h: i32) -> Option<Tri> {
+/// [`Tri`]), with its planes and, when `textured`, its gradients; `None`
+/// when [`drawn_box`] says it is not drawn. Inlined, so that set-up
+/// builds the 248 bytes in their slot rather than on the stack to be
+/// copied (twice) into it.
+#[inline(always)]
+fn screen_triangle(
+    v: [&ScreenVert; 3],
+    item: u32,
+    (cull, textured): (bool, bool),
+    w: i32,
+    h: i32,
+) -> Option<Tri> {
     let (area, bbox) = drawn_box(v, cull, w, h)?;
     let mut x = v.map(|v| v.x);
     let mut y = v.map(|v| v.y);
@@ -770,6 +772,13 @@ fn screen_triangle(v: [&ScreenVert; 3], item: u32, cull: bool, w: i32, h: i32) -
     let base = at[0];
     let d1 = std::array::from_fn(|j| at[1][j] - at[0][j]);
     let d2 = std::array::from_fn(|j| at[2][j] - at[0][j]);
+    // Textured triangles get their screen gradients as they are set up
+    // (not in a second pass over megabytes of triangles).
+    let grad = if textured {
+        Gradients::of(&x, &y, &d1, &d2)
+    } else {
+        Gradients::default()
+    };
     Some(Tri {
         x,
         y,
@@ -779,7 +788,7 @@ fn screen_triangle(v: [&ScreenVert; 3], item: u32, cull: bool, w: i32, h: i32) -
         d2,
         item,
         bbox,
-        grad: Gradients::default(),
+        grad,
     })
 }
 
@@ -1017,7 +1026,7 @@ mod screen_vert_tests {
                 }
             });
             let sv = verts.map(|v| ScreenVert::of(&v, &screen));
-            let got = screen_triangle([&sv[0], &sv[1], &sv[2]], 7, false, 320, 240);
+            let got = screen_triangle([&sv[0], &sv[1], &sv[2]], 7, (false, false), 320, 240);
             // The per-corner reference.
             let p = verts.map(|v| screen.project(v.clip));
             let mut x = p.map(|p| round_i64(p.0 * SUBPIXEL as f32));
