@@ -9,7 +9,8 @@
 //! chunk order to its own tiles. A tile's list is then in triangle order
 //! whatever the thread count, as one serial pass would make it.
 //! Transparent triangles, lines and points (few in any scene) keep the
-//! serial pass.
+//! serial pass. The opaque boxes come from set-up's compact list
+//! (`prepare::TriBox`), not from the triangles themselves.
 
 use super::prepare::Prepared;
 use super::raster::{Bin, TILE, TILE_H};
@@ -48,27 +49,30 @@ pub fn bin_tiles(p: &Prepared, bins: &mut Bins, w: i32, h: i32) {
     bins.tiles_x = tiles_x;
     bins.tiles
         .resize_with(tiles_x as usize * tiles_y, Bin::default);
-    let chunks = p.opaque.len().div_ceil(CHUNK);
+    // Set-up keeps each opaque triangle's box and texture flag beside it
+    // (`TriBox`): read here, they are 1 MB of a 100k-triangle frame.
+    let boxes = &p.opaque_boxes;
+    let chunks = boxes.len().div_ceil(CHUNK);
     if bins.rows.len() < chunks {
         bins.rows.resize_with(chunks, Vec::new);
     }
     bins.rows[..chunks]
         .par_iter_mut()
-        .zip(p.opaque.par_chunks(CHUNK))
+        .zip(boxes.par_chunks(CHUNK))
         .enumerate()
-        .for_each(|(c, (rows, tris))| {
+        .for_each(|(c, (rows, boxes))| {
             rows.resize_with(tiles_y, Vec::new);
             for r in rows.iter_mut() {
                 r.clear();
             }
-            for (k, t) in tris.iter().enumerate() {
+            for (k, t) in boxes.iter().enumerate() {
                 // Boxes are clamped to the frame and never empty (`prepare`).
-                let b = t.bbox;
+                let b = t.bbox.map(i32::from);
                 let reach = Reach {
                     i: (c * CHUNK + k) as u32,
                     tx0: (b[0] / TILE) as u16,
                     tx1: ((b[2] - 1) / TILE) as u16,
-                    textured: p.items[t.item as usize].textured,
+                    textured: t.textured,
                 };
                 for r in &mut rows[(b[1] / TILE_H) as usize..=((b[3] - 1) / TILE_H) as usize] {
                     r.push(reach);
@@ -123,7 +127,7 @@ fn bin_serial(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::prepare::{Item, Tri};
+    use crate::render::prepare::{Item, Tri, TriBox};
     use crate::render::shade::ShadeMaterial;
     use crate::render::tri_gradients::Gradients;
     use crate::scene::Material;
@@ -187,7 +191,7 @@ mod tests {
                     (next(12) + 1, next(12) + 1)
                 };
                 let bbox = [x0, y0, (x0 + dx).min(w), (y0 + dy).min(h)];
-                p.opaque.push(Tri {
+                let t = Tri {
                     x: [0; 3],
                     y: [0; 3],
                     z: [0.5; 3],
@@ -197,7 +201,10 @@ mod tests {
                     item: (next(7) == 0) as u32,
                     bbox,
                     grad: Gradients::default(),
-                });
+                };
+                p.opaque.push(t);
+                p.opaque_boxes
+                    .push(TriBox::of(&t, p.items[t.item as usize].textured));
             }
             bin_tiles(&p, &mut bins, w, h);
             let (tx, ty) = ((w + TILE - 1) / TILE, (h + TILE_H - 1) / TILE_H);

@@ -26,6 +26,7 @@ mod depth_blocks;
 mod fragment;
 mod frame;
 mod geometry;
+mod in_place;
 pub mod job;
 mod label;
 mod lanes;

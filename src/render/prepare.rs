@@ -6,6 +6,7 @@
 use super::background::Painter;
 use super::clip::{self, ClipVert, ATTRS, A_NORMAL};
 use super::geometry::Geometry;
+use super::in_place::extend_in_place;
 use super::label::label_matrix;
 use super::shade::{ShadeMaterial, WorldLight};
 use super::stroke_faces;
@@ -154,6 +155,28 @@ impl Tri {
     }
 }
 
+/// What binning reads of an opaque triangle: its pixel box and whether
+/// its item is textured. Kept in a list of its own beside the triangles
+/// (`Prepared::opaque_boxes`), 10 bytes where binning otherwise reads two
+/// cache lines of every 248-byte [`Tri`] just after set-up wrote them (a
+/// memory-bound 5 % of a 100k-triangle frame).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriBox {
+    /// [`Tri::bbox`] (clamped to the frame, which is at most
+    /// `MAX_SIDE` = 2¹⁴ pixels a side).
+    pub bbox: [u16; 4],
+    pub textured: bool,
+}
+
+impl TriBox {
+    pub fn of(t: &Tri, textured: bool) -> TriBox {
+        TriBox {
+            bbox: t.bbox.map(|v| v.clamp(0, u16::MAX as i32) as u16),
+            textured,
+        }
+    }
+}
+
 /// A screen-space line segment.
 #[derive(Clone, Debug)]
 pub struct Line {
@@ -204,6 +227,8 @@ pub fn stroke_pixels(w: f32) -> i32 {
 pub struct Prepared {
     pub items: Vec<Item>,
     pub opaque: Vec<Tri>,
+    /// Each opaque triangle's box, for binning (see [`TriBox`]).
+    pub opaque_boxes: Vec<TriBox>,
     /// Sorted back to front.
     pub transparent: Vec<Tri>,
     pub lines: Vec<Line>,
@@ -211,11 +236,10 @@ pub struct Prepared {
     /// The scene's gradient/panorama background, when drawn.
     pub sky: Option<Painter>,
     /// Working buffers of `prepare`: transformed vertices of the current
-    /// mesh and per-chunk triangle lists of the parallel setup.
+    /// mesh.
     verts: Vec<ClipVert>,
     /// The current mesh's vertices in screen space (see [`ScreenVert`]).
     screen_verts: Vec<ScreenVert>,
-    chunks: Vec<Vec<Tri>>,
 }
 
 struct Screen {
@@ -264,6 +288,7 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
 
     out.items.clear();
     out.opaque.clear();
+    out.opaque_boxes.clear();
     out.transparent.clear();
     out.lines.clear();
     out.points.clear();
@@ -355,13 +380,6 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
         };
         match style {
             RenderStyle::Filled => {
-                let dest = if smat.alpha < 1.0 || translucent {
-                    &mut out.transparent
-                } else {
-                    &mut out.opaque
-                };
-                // Textured triangles get their screen gradients as they are
-                // set up (not in a second pass over megabytes of triangles).
                 let textured = texture.is_some() || emissive.is_some();
                 let setup = Setup {
                     item,
@@ -371,7 +389,13 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
                 };
                 project_vertices(&verts, &screen, &mut out.screen_verts);
                 let v = (&verts[..], &out.screen_verts[..]);
-                setup_triangles(mesh, v, &setup, &mut out.chunks, dest);
+                if smat.alpha < 1.0 || translucent {
+                    let lists = (&mut out.transparent, &mut Vec::new());
+                    setup_triangles(mesh, v, &setup, lists, |_| ());
+                } else {
+                    let lists = (&mut out.opaque, &mut out.opaque_boxes);
+                    setup_triangles(mesh, v, &setup, lists, |t| TriBox::of(t, textured));
+                }
                 push_lines(&mut out.lines, &mesh.lines, &verts, stroke, &screen);
                 push_points(&mut out.points, &mesh.points, &verts, stroke, &screen);
             }
@@ -523,13 +547,16 @@ struct Setup<'a> {
 }
 
 /// Sets up the triangles of `mesh` from its vertices in clip space and in
-/// screen space (`verts`, the same vertices), appending them to `dest`.
-fn setup_triangles(
+/// screen space (`verts`, the same vertices), appending them to the first
+/// list in the mesh's order and `side` of each to the second: chunks of
+/// the mesh in parallel, each writing its triangles straight into their
+/// place (`in_place`), after a first pass that only counts them.
+fn setup_triangles<U: Copy + Send>(
     mesh: &Mesh,
-    (verts, screen_verts): (&[ClipVert], &[ScreenVert]),
+    verts: (&[ClipVert], &[ScreenVert]),
     setup: &Setup,
-    bufs: &mut Vec<Vec<Tri>>,
-    dest: &mut Vec<Tri>,
+    lists: (&mut Vec<Tri>, &mut Vec<U>),
+    side: impl Fn(&Tri) -> U + Sync,
 ) {
     let Setup {
         item,
@@ -537,88 +564,99 @@ fn setup_triangles(
         opts,
         textured,
     } = *setup;
-    let n = verts.len();
-    let cull = mesh.solid;
-    let (w, h) = (opts.width as i32, opts.height as i32);
-    // Each chunk fills its own (reused) list; appending them in chunk order
-    // keeps the scene order.
+    let mesh_setup = MeshSetup {
+        verts,
+        screen,
+        cull: mesh.solid,
+        size: (opts.width as i32, opts.height as i32),
+        item,
+        textured,
+    };
     const CHUNK: usize = 4096;
-    let count = mesh.triangles.len().div_ceil(CHUNK);
-    if bufs.len() < count {
-        bufs.resize_with(count, Vec::new);
-    }
-    mesh.triangles
-        .par_chunks(CHUNK)
-        .zip(bufs[..count].par_iter_mut())
-        .for_each(|(chunk, out)| {
-            out.clear();
-            let mut push = |t: Option<Tri>| {
-                if let Some(mut t) = t {
-                    if textured {
-                        t.grad = Gradients::of(&t.x, &t.y, &t.d1, &t.d2);
-                    }
-                    out.push(t);
-                }
-            };
-            for t in chunk {
-                if t.iter().any(|&i| i as usize >= n) {
-                    continue;
-                }
-                let sv = t.map(|i| &screen_verts[i as usize]);
-                let sides = sv[0].sides & sv[1].sides & sv[2].sides;
-                if sides >> 8 != 0 {
-                    // Every vertex outside one plane.
-                    continue;
-                }
-                if sides & clip::INSIDE_ALL == clip::INSIDE_ALL {
-                    push(screen_triangle(sv, item, cull, w, h));
-                    continue;
-                }
-                // Fan the (convex) clipped polygon.
-                let tri = t.map(|i| verts[i as usize]);
-                let poly = clip::clip_polygon(&tri, screen.guard);
-                let poly: Vec<ScreenVert> =
-                    poly.iter().map(|v| ScreenVert::of(v, screen)).collect();
-                for k in 1..poly.len().saturating_sub(1) {
-                    push(screen_triangle(
-                        [&poly[0], &poly[k], &poly[k + 1]],
-                        item,
-                        cull,
-                        w,
-                        h,
-                    ));
-                }
-            }
-        });
-    append_in_parallel(dest, &bufs[..count]);
+    let chunks: Vec<&[[u32; 3]]> = mesh.triangles.chunks(CHUNK).collect();
+    extend_in_place(
+        lists,
+        &chunks,
+        |chunk| mesh_setup.count(chunk),
+        |chunk, sink| mesh_setup.make(chunk, |t| sink.push(t, side(&t))),
+    );
 }
 
-/// Appends the lists `parts` to `dest` in order, copying them in parallel:
-/// a 100k-triangle mesh's triangles are 25 MB, and one thread copying them
-/// was a serial stretch of every frame.
-fn append_in_parallel(dest: &mut Vec<Tri>, parts: &[Vec<Tri>]) {
-    let total: usize = parts.iter().map(Vec::len).sum();
-    dest.reserve(total);
-    let old = dest.len();
-    let mut rest = &mut dest.spare_capacity_mut()[..total];
-    let mut slots = Vec::with_capacity(parts.len());
-    for part in parts {
-        let (here, after) = std::mem::take(&mut rest).split_at_mut(part.len());
-        slots.push(here);
-        rest = after;
+/// One mesh's set-up: its vertices (in clip and screen space), the
+/// screen, whether back faces are culled, the frame size, and the item
+/// and texturing of its triangles.
+struct MeshSetup<'a> {
+    verts: (&'a [ClipVert], &'a [ScreenVert]),
+    screen: &'a Screen,
+    cull: bool,
+    size: (i32, i32),
+    item: u32,
+    textured: bool,
+}
+
+impl MeshSetup<'_> {
+    /// How many triangles [`MeshSetup::make`] makes of `tris`, from the
+    /// tests alone.
+    fn count(&self, tris: &[[u32; 3]]) -> usize {
+        let (w, h) = self.size;
+        let mut n = 0;
+        for t in tris {
+            let drawn = |v: [&ScreenVert; 3]| drawn_box(v, self.cull, w, h);
+            each_triangle(t, self.verts, self.screen, drawn, |_| n += 1);
+        }
+        n
     }
-    slots
-        .into_par_iter()
-        .zip(parts.par_iter())
-        .for_each(|(slot, part)| {
-            for (s, t) in slot.iter_mut().zip(part) {
-                s.write(*t);
-            }
-        });
-    // SAFETY: the `total` slots after the old length were reserved above
-    // and each written exactly once (the slots are split to the parts'
-    // lengths, which sum to `total`).
-    unsafe { dest.set_len(old + total) };
+
+    /// The screen triangles of `tris` (vertex indices), in order.
+    fn make(&self, tris: &[[u32; 3]], mut emit: impl FnMut(Tri)) {
+        let (w, h) = self.size;
+        let flags = (self.cull, self.textured);
+        let tri = |v: [&ScreenVert; 3]| screen_triangle(v, self.item, flags, w, h);
+        for t in tris {
+            each_triangle(t, self.verts, self.screen, tri, &mut emit);
+        }
+    }
+}
+
+/// What `make` makes of each screen triangle that the mesh triangle `t`
+/// (vertex indices into `verts`) gives, passed to `emit`: itself when it
+/// is inside every clip plane, nothing when it is outside one, else the
+/// fan of its clipped polygon. Counting and setting up triangles walk the
+/// same cases.
+#[inline(always)]
+fn each_triangle<T>(
+    t: &[u32; 3],
+    (verts, screen_verts): (&[ClipVert], &[ScreenVert]),
+    screen: &Screen,
+    make: impl Fn([&ScreenVert; 3]) -> Option<T>,
+    mut emit: impl FnMut(T),
+) {
+    if t.iter()
+        .any(|&i| i as usize >= verts.len().min(screen_verts.len()))
+    {
+        return;
+    }
+    let sv = t.map(|i| &screen_verts[i as usize]);
+    let sides = sv[0].sides & sv[1].sides & sv[2].sides;
+    if sides >> 8 != 0 {
+        // Every vertex outside one plane.
+        return;
+    }
+    if sides & clip::INSIDE_ALL == clip::INSIDE_ALL {
+        if let Some(x) = make(sv) {
+            emit(x);
+        }
+        return;
+    }
+    // Fan the (convex) clipped polygon.
+    let tri = t.map(|i| verts[i as usize]);
+    let poly = clip::clip_polygon(&tri, screen.guard);
+    let poly: Vec<ScreenVert> = poly.iter().map(|v| ScreenVert::of(v, screen)).collect();
+    for k in 1..poly.len().saturating_sub(1) {
+        if let Some(x) = make([&poly[0], &poly[k], &poly[k + 1]]) {
+            emit(x);
+        }
+    }
 }
 
 /// A vertex in screen space, worked out once per vertex for the
@@ -668,25 +706,53 @@ fn project_vertices(verts: &[ClipVert], screen: &Screen, out: &mut Vec<ScreenVer
         .collect_into_vec(out);
 }
 
-/// The screen triangle through three projected vertices, oriented (see
-/// [`Tri`]), with its planes; `None` when it is degenerate, culled as a
-/// back face (`cull`), not finite or outside the `w`×`h` frame.
-fn screen_triangle(v: [&ScreenVert; 3], item: u32, cull: bool, w: i32, h: i32) -> Option<Tri> {
+/// The area (twice, signed) and pixel box of the triangle through three
+/// projected vertices when it is drawn; `None` when it is degenerate,
+/// culled as a back face (`cull`), not finite or outside the `w`×`h`
+/// frame: the tests of [`screen_triangle`], which counting asks alone.
+#[inline(always)]
+fn drawn_box(v: [&ScreenVert; 3], cull: bool, w: i32, h: i32) -> Option<(i64, [i32; 4])> {
     if !v.iter().all(|v| v.finite) {
         return None;
     }
+    let x = v.map(|v| v.x);
+    let y = v.map(|v| v.y);
+    let area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    // Counter-clockwise in the picture (y up) is negative here (y down).
+    if area == 0 || (area > 0 && cull) {
+        return None;
+    }
+    let px = |f: i64| (f >> SUBPIXEL_BITS) as i32;
+    let bbox = [
+        px(x[0].min(x[1]).min(x[2])).max(0),
+        px(y[0].min(y[1]).min(y[2])).max(0),
+        (px(x[0].max(x[1]).max(x[2])) + 1).min(w),
+        (px(y[0].max(y[1]).max(y[2])) + 1).min(h),
+    ];
+    if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
+        return None;
+    }
+    Some((area, bbox))
+}
+
+/// The screen triangle through three projected vertices, oriented (see
+/// [`Tri`]), with its planes and, when `textured`, its gradients; `None`
+/// when [`drawn_box`] says it is not drawn. Inlined, so that set-up
+/// builds the 248 bytes in their slot rather than on the stack to be
+/// copied (twice) into it.
+#[inline(always)]
+fn screen_triangle(
+    v: [&ScreenVert; 3],
+    item: u32,
+    (cull, textured): (bool, bool),
+    w: i32,
+    h: i32,
+) -> Option<Tri> {
+    let (area, bbox) = drawn_box(v, cull, w, h)?;
     let mut x = v.map(|v| v.x);
     let mut y = v.map(|v| v.y);
     let mut z = v.map(|v| v.z);
-    let area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-    if area == 0 {
-        return None;
-    }
-    // Counter-clockwise in the picture (y up) is negative here (y down).
     let back = area > 0;
-    if back && cull {
-        return None;
-    }
     let mut at = v.map(|v| v.planes);
     if back {
         // Two-sided lighting: light the side we see (n/w negated is the
@@ -703,19 +769,16 @@ fn screen_triangle(v: [&ScreenVert; 3], item: u32, cull: bool, w: i32, h: i32) -
         z.swap(1, 2);
         at.swap(1, 2);
     }
-    let px = |f: i64| (f >> SUBPIXEL_BITS) as i32;
-    let bbox = [
-        px(*x.iter().min()?).max(0),
-        px(*y.iter().min()?).max(0),
-        (px(*x.iter().max()?) + 1).min(w),
-        (px(*y.iter().max()?) + 1).min(h),
-    ];
-    if bbox[0] >= bbox[2] || bbox[1] >= bbox[3] {
-        return None;
-    }
     let base = at[0];
     let d1 = std::array::from_fn(|j| at[1][j] - at[0][j]);
     let d2 = std::array::from_fn(|j| at[2][j] - at[0][j]);
+    // Textured triangles get their screen gradients as they are set up
+    // (not in a second pass over megabytes of triangles).
+    let grad = if textured {
+        Gradients::of(&x, &y, &d1, &d2)
+    } else {
+        Gradients::default()
+    };
     Some(Tri {
         x,
         y,
@@ -725,7 +788,7 @@ fn screen_triangle(v: [&ScreenVert; 3], item: u32, cull: bool, w: i32, h: i32) -
         d2,
         item,
         bbox,
-        grad: Gradients::default(),
+        grad,
     })
 }
 
@@ -963,7 +1026,7 @@ mod screen_vert_tests {
                 }
             });
             let sv = verts.map(|v| ScreenVert::of(&v, &screen));
-            let got = screen_triangle([&sv[0], &sv[1], &sv[2]], 7, false, 320, 240);
+            let got = screen_triangle([&sv[0], &sv[1], &sv[2]], 7, (false, false), 320, 240);
             // The per-corner reference.
             let p = verts.map(|v| screen.project(v.clip));
             let mut x = p.map(|p| round_i64(p.0 * SUBPIXEL as f32));
@@ -999,5 +1062,106 @@ mod screen_vert_tests {
             checked[(area > 0) as usize] += 1;
         }
         assert!(checked[0] > 500 && checked[1] > 500, "{checked:?}");
+    }
+}
+
+#[cfg(test)]
+mod count_tests {
+    use super::*;
+
+    /// Counting a mesh's triangles gives what setting them up makes:
+    /// seeded meshes with back faces (culled or not), degenerate and
+    /// off-screen triangles, vertices behind the eye and beyond the
+    /// guard band (clipped into fans), non-finite vertices and indices
+    /// past the end. A miscount would only slow set-up down (the
+    /// in-place append falls back to a serial one), so it is checked
+    /// here.
+    #[test]
+    fn counting_agrees_with_setting_up() {
+        let opts = RenderOptions {
+            width: 320,
+            height: 240,
+            ..RenderOptions::default()
+        };
+        let screen = Screen {
+            w: 320.0,
+            h: 240.0,
+            guard: MAX_SCREEN / 320.0,
+            aa: false,
+        };
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f32 / (1u64 << 53) as f32
+        };
+        let (mut made, mut fans, mut dropped) = (0, 0, 0);
+        for mesh in 0..40 {
+            let verts: Vec<ClipVert> = (0..60)
+                .map(|k| {
+                    let w = if k % 17 == 3 {
+                        -0.5
+                    } else {
+                        0.2 + next() * 3.0
+                    };
+                    let far = if k % 13 == 5 { 1e6 } else { 1.5 };
+                    let mut clip = Vec4::new(
+                        (next() * 2.0 - 1.0) * w * far,
+                        (next() * 2.0 - 1.0) * w * 1.5,
+                        (next() * 2.2 - 1.1) * w,
+                        w,
+                    );
+                    if k == 7 {
+                        clip.x = f32::NAN;
+                    }
+                    ClipVert {
+                        clip,
+                        attr: std::array::from_fn(|_| next()),
+                    }
+                })
+                .collect();
+            let mut screen_verts = Vec::new();
+            project_vertices(&verts, &screen, &mut screen_verts);
+            let tris: Vec<[u32; 3]> = (0..300)
+                .map(|k| {
+                    let mut t = [0, 1, 2].map(|_| (next() * 60.0) as u32 % 60);
+                    if k % 50 == 0 {
+                        t[1] = 60 + k;
+                    }
+                    if k % 40 == 1 {
+                        t[2] = t[0];
+                    }
+                    t
+                })
+                .collect();
+            let setup = MeshSetup {
+                verts: (&verts, &screen_verts),
+                screen: &screen,
+                cull: mesh % 2 == 0,
+                size: (opts.width as i32, opts.height as i32),
+                item: 0,
+                textured: mesh % 3 == 0,
+            };
+            for part in tris.chunks(37) {
+                let mut n = 0;
+                setup.make(part, |_| n += 1);
+                assert_eq!(setup.count(part), n, "mesh {mesh}");
+                made += n;
+                fans += part
+                    .iter()
+                    .filter(|t| {
+                        let s = t.map(|i| screen_verts.get(i as usize).map_or(0, |v| v.sides));
+                        let s = s[0] & s[1] & s[2];
+                        s >> 8 == 0 && s & clip::INSIDE_ALL != clip::INSIDE_ALL
+                    })
+                    .count();
+                dropped += part.iter().filter(|t| setup.count(&[**t]) == 0).count();
+            }
+        }
+        assert!(
+            made > 2000 && fans > 300 && dropped > 2000,
+            "{made} {fans} {dropped}"
+        );
     }
 }

@@ -259,8 +259,33 @@ fn depth_pass<const NS: usize, const BLOCKS: bool>(
         unsafe { depth_pass_avx::<NS, BLOCKS>(p, bin, rect, offs, bufs) };
         return;
     }
-    for &ti in &bin.opaque {
+    for (k, &ti) in bin.opaque.iter().enumerate() {
+        prefetch_ahead(&p.opaque, &bin.opaque, k);
         depth_triangle::<Sse8, NS, BLOCKS>(&p.opaque, ti, rect, offs, bufs);
+    }
+}
+
+/// Triangles of a bin ahead of the one drawn whose memory is asked for
+/// early: set-up wrote them megabytes ago, so the depth pass found each
+/// one's first line cold (10 % of its time at the first load of a
+/// 100k-triangle frame), and the shading pass, reading the planes, the
+/// others.
+const AHEAD: usize = 4;
+
+/// Asks the CPU to bring every cache line of the triangle `AHEAD` places
+/// after the `k`-th of `list` into the cache (a hint: it changes no value).
+#[inline(always)]
+fn prefetch_ahead(tris: &[Tri], list: &[u32], k: usize) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(t) = list.get(k + AHEAD).and_then(|&i| tris.get(i as usize)) {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        let at = (t as *const Tri).cast::<i8>();
+        let size = std::mem::size_of::<Tri>();
+        for off in (0..size).step_by(64).chain([size - 1]) {
+            // SAFETY: `off` is inside the triangle, so the address is
+            // too; a prefetch reads nothing the program sees.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(at.wrapping_add(off)) };
+        }
     }
 }
 
@@ -273,7 +298,8 @@ unsafe fn depth_pass_avx<const NS: usize, const BLOCKS: bool>(
     offs: &[(i64, i64); NS],
     bufs: &mut DepthBufs,
 ) {
-    for &ti in &bin.opaque {
+    for (k, &ti) in bin.opaque.iter().enumerate() {
+        prefetch_ahead(&p.opaque, &bin.opaque, k);
         depth_triangle::<simd::Avx8, NS, BLOCKS>(&p.opaque, ti, rect, offs, bufs);
     }
 }
