@@ -48,12 +48,11 @@ no size (VRML97 Text takes its size from FontStyle).
 usage: coin_render_font.py TOOL in out.png [TOOL's other arguments]
 Prints what it did ("font: ...") to stderr, so the log says so.
 """
-import runpy
 import sys
 
 from pivy import coin
 
-_read_all = coin.SoDB.readAll
+from coin_graph_edit import edit_graph_on_read, run_tool
 
 # animed's families (src/format/text/mod.rs) and the fontconfig names that
 # reach its Liberation faces; the VRML97 names are Coin's own `fontstr`.
@@ -155,22 +154,12 @@ def give_fonts(scene):
     return done
 
 
-def _read_with_fonts(inp):
-    scene = _read_all(inp)
-    if scene is None:
-        return scene
-    # readAll hands the graph back unreferenced; the search paths reference
-    # it and would delete it when they go away.
-    scene.ref()
+def report_fonts(scene):
     for line in give_fonts(scene):
         print("font: " + line, file=sys.stderr)
-    scene.unrefNoDelete()
-    return scene
 
 
-coin.SoDB.readAll = staticmethod(_read_with_fonts)
+edit_graph_on_read(report_fonts)
 
 if __name__ == "__main__":
-    tool = sys.argv[1]
-    sys.argv = [tool] + sys.argv[2:]
-    runpy.run_path(tool, run_name="__main__")
+    run_tool()

@@ -14,25 +14,15 @@ The tool is run unchanged (runpy); only pivy's SoDB.readAll is wrapped so the
 graph it returns has every SoVRMLBackground taken out of its parent. Prints
 "removed N Background(s)" so the log says what was done.
 """
-import runpy
-import sys
-
 from pivy import coin
 
-_read_all = coin.SoDB.readAll
+from coin_graph_edit import edit_graph_on_read, run_tool
 
 
-def _read_without_backgrounds(inp):
-    scene = _read_all(inp)
-    if scene is None:
-        return scene
-    # readAll hands the graph back unreferenced; the search action's paths
-    # reference it and would delete it when they go away.
-    scene.ref()
+def remove_backgrounds(scene):
     ty = coin.SoType.fromName(coin.SbName("VRMLBackground"))
     if ty.isBad():
-        scene.unrefNoDelete()
-        return scene
+        return
     sa = coin.SoSearchAction()
     sa.setType(ty)
     sa.setInterest(coin.SoSearchAction.ALL)
@@ -52,14 +42,10 @@ def _read_without_backgrounds(inp):
             parent.removeChild(idx)
             removed += 1
     del pairs, paths, sa
-    scene.unrefNoDelete()
     print("removed %d Background(s)" % removed)
-    return scene
 
 
-coin.SoDB.readAll = staticmethod(_read_without_backgrounds)
+edit_graph_on_read(remove_backgrounds)
 
 if __name__ == "__main__":
-    tool = sys.argv[1]
-    sys.argv = [tool] + sys.argv[2:]
-    runpy.run_path(tool, run_name="__main__")
+    run_tool()

@@ -639,3 +639,46 @@ fn with_the_graph_open_each_list_and_the_properties_keep_a_row() {
         .iter()
         .any(|w| w.kind == WidgetKind::Header("Scene".into())));
 }
+
+/// The weights of shape `m`'s morph key at `frame`.
+fn weights_at(ed: &Editor, frame: f32) -> Vec<f32> {
+    let m = ed.scene().find_node("m").expect("the morphed shape");
+    let t = ed
+        .scene()
+        .animation
+        .track(Target {
+            of: TargetRef::Node(m),
+            property: Property::MorphWeights,
+        })
+        .expect("keyed weights");
+    match t.key(t.key_index_at(frame).expect("a key")).unwrap().value {
+        Value::Weights(w) => w.as_slice().to_vec(),
+        _ => panic!("weights keys hold weights"),
+    }
+}
+
+#[test]
+fn morph_weights_are_one_curve_per_target_and_drag_like_any_curve() {
+    // Four targets, keys at 0 and 24 (weights x, x/2, 0.3, 1-x).
+    let scene = animed::internals::anim::synthetic_deform::morphed_scene(64);
+    let mut ed = Editor::new(scene, None, W, H);
+    run(&mut ed, "select m\nkey shift+f6");
+    let before = weights_at(&ed, 24.0);
+    assert_eq!(before.len(), 4);
+    run(&mut ed, "drag-curve-key weights.2 24 0 -20");
+    let after = weights_at(&ed, 24.0);
+    assert!(after[2] > before[2] + 0.01, "{before:?} -> {after:?}");
+    for i in [0, 1, 3] {
+        assert_eq!(after[i], before[i], "only target 2 moves: {after:?}");
+    }
+    run(&mut ed, "key ctrl+z");
+    assert_eq!(weights_at(&ed, 24.0), before);
+    // Each target is its own curve, and there are only four.
+    for ch in ["weights.0", "weights.3"] {
+        run(&mut ed, &format!("click-curve-key {ch} 24"));
+    }
+    let err = script::run(&mut ed, "click-curve-key weights.4", Path::new("s"));
+    assert!(err.is_err(), "no fifth target");
+    let err = script::run(&mut ed, "click-curve-key weights.4 24", Path::new("s"));
+    assert!(err.is_err(), "no fifth target");
+}

@@ -43,7 +43,7 @@ pub fn sections() -> Vec<Section> {
         },
         Section {
             name: "textured",
-            about: "full-screen layer, trilinear-textured 3-light Blinn-Phong, beside the untextured one",
+            about: "full-screen layer, trilinear-textured 3-light Blinn-Phong, beside the untextured one (orthographic, then tilted in perspective)",
             run: bench_textured,
         },
         Section {
@@ -314,7 +314,23 @@ fn bench_textured(args: &Args) -> Result<Vec<String>, String> {
             "texturing costs {:+.0} % over the untextured shading rate (goal: under 40 %)",
             (tt / tp - 1.0) * 100.0
         ),
+        tilted_line(args),
     ])
+}
+
+/// The same comparison with the layer seen in perspective, tilted so the
+/// mip level varies over the screen and 1/w over every triangle (the
+/// orthographic layer above has one level pair and constant derivatives).
+fn tilted_line(args: &Args) -> String {
+    let plain = render_scene_time(&bench_scenes::layer_tilted(), args);
+    let textured = render_scene_time(&bench_scenes::layer_tilted_textured(), args);
+    let (tp, tt) = (plain.wall.as_secs_f64(), textured.wall.as_secs_f64());
+    format!(
+        "textured (perspective): untextured {}, textured {} per frame; costs {:+.0} %",
+        plain.describe(),
+        textured.describe(),
+        (tt / tp - 1.0) * 100.0
+    )
 }
 
 fn bench_triangles(args: &Args) -> Result<Vec<String>, String> {

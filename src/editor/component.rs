@@ -12,7 +12,7 @@ use crate::editor::keystrip::KeyRef;
 use crate::editor::material::{MatBase, MatField};
 use crate::editor::rig::state::MorphBase;
 use crate::input::OrbitCamera;
-use crate::scene::{Material, MaterialId, Node, NodeId, Settings};
+use crate::scene::{Material, MaterialId, MorphTarget, Node, NodeId, Settings};
 
 /// What the keys components (key strip, graph editor) see of the editor
 /// alike: the animation, the selected object and its name, the current
@@ -24,6 +24,9 @@ pub struct Keyed<'a> {
     /// The selected object (its keys or channels are shown).
     pub node: Option<NodeId>,
     pub node_name: String,
+    /// The selected shape's morph targets (their names label the weight
+    /// curves); empty for anything else.
+    pub morph_targets: &'a [MorphTarget],
     pub frame: f32,
     pub duration: f32,
 }

@@ -459,6 +459,7 @@ mod tests {
                 anim,
                 node: Some(NodeId(1)),
                 node_name: "Ball".into(),
+                morph_targets: &[],
                 frame: 0.0,
                 duration: 48.0,
             },

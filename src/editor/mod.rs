@@ -427,6 +427,10 @@ impl Editor {
                 .selection
                 .map(|s| ops::display_name(&self.scene, s))
                 .unwrap_or_default(),
+            morph_targets: self
+                .selection
+                .map(|s| rig::targets::targets_of(&self.scene, s))
+                .unwrap_or(&[]),
             frame: self.frame,
             duration: self.scene.settings.duration,
         }

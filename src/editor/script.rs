@@ -27,7 +27,8 @@
 //!                            `view`, `uniform`, `body`
 //! click-curve-key CH F [MODS]           click the graph editor's key of
 //!                            channel CH (`translation.y`, `rotation.z`,
-//!                            `color.g`, `intensity`) of the selection at F
+//!                            `color.g`, `intensity`, `weights.2`: morph
+//!                            target 2) of the selection at F
 //! drag-curve-key CH F DX DY [MODS]      drag that key by DX DY pixels
 //!                            (`ctrl` snaps to whole frames)
 //! drag-curve-handle CH F DX DY [MODS]   drag the tangent handle of that

@@ -51,9 +51,36 @@ fn ortho_camera(s: &mut Scene) {
 pub fn layers(layers: usize, aspect: f32) -> Scene {
     let mut s = Scene::new();
     ortho_camera(&mut s);
+    stacked(s, layers, (aspect * 1.01, 1.01))
+}
+
+/// One [`layers`] quad seen by a perspective camera tilted 50° from it
+/// (the quad is made large enough to fill the view): what
+/// `layers_textured` samples at one level pair everywhere, this samples
+/// from magnified at the bottom of the screen to about level 3 at the top,
+/// with 1/w varying over every triangle.
+pub fn layer_tilted() -> Scene {
+    let mut s = Scene::new();
+    let cam = Camera {
+        position: Vec3::new(0.0, -1.6, 1.2),
+        orientation: glam::Quat::from_rotation_x(50f32.to_radians()),
+        ..Camera::default()
+    };
+    s.add_node(None, Node::new("cam", NodeKind::Camera(cam)));
+    stacked(s, 1, (4.0, 4.0))
+}
+
+/// [`layer_tilted`] with [`layers_textured`]'s texture and coordinates.
+pub fn layer_tilted_textured() -> Scene {
+    checkered(layer_tilted(), 2.0)
+}
+
+/// `s` with [`three_lights`], the specular material and `layers` quads of
+/// half-size `half` facing +z, stacked back to front.
+fn stacked(mut s: Scene, layers: usize, half: (f32, f32)) -> Scene {
     three_lights(&mut s);
     let material = s.add_material(shiny());
-    let (hw, hh) = (aspect * 1.01, 1.01);
+    let (hw, hh) = half;
     for k in 0..layers {
         let z = -((layers - k) as f32) * 0.1;
         let mesh = Mesh {

@@ -14,13 +14,15 @@
 use super::clip::{A_COLOR, A_NORMAL, A_POS, A_UV};
 use super::prepare::{Prepared, Tri, INV_W};
 use super::simd::V8;
-use super::texture_lanes::UvIn;
+use super::texel_block::finite;
+use super::texture_lanes::{Flat, UvIn};
 
 /// The triangles a block's lanes show, with their screen-space weights.
 pub struct BlockPlanes<'p, V> {
     /// The triangle of the first run of lanes (of all lanes, in the
-    /// common block that shows one triangle).
+    /// common block that shows one triangle), and its index.
     first: &'p Tri,
+    tri: u32,
     /// The other runs, when there are any: kept apart so that a block of
     /// one triangle fills no per-run arrays.
     more: Option<Runs<'p, V>>,
@@ -69,6 +71,7 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
         };
         BlockPlanes {
             first: &p.opaque[first as usize],
+            tri: first,
             more,
             b1,
             b2,
@@ -129,9 +132,49 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
     /// With `q = 1/w` and `U = u/w` both affine in screen space,
     /// `u = U/q` and `∂u/∂x = (∂U/∂x − u·∂q/∂x)/q`; the gradients are
     /// constant per triangle (`Tri::grad`).
+    ///
+    /// A block of one triangle without perspective (its 1/w plane has
+    /// deltas of exactly zero: every orthographic view) has q = `base` in
+    /// every lane whose weights are finite, so `s` is 1/`base` there,
+    /// ∂q/∂x and ∂q/∂y are ±0, and where u and v are finite the
+    /// derivatives are `∂U/∂x · s` in every lane (the sign of a zero
+    /// aside, which no reader sees: the sampler squares them). They are
+    /// then also given once as [`UvIn::flat`], from which the sampler's
+    /// level of detail comes once per triangle; other blocks, and lanes
+    /// with non-finite coordinates, take the general formula.
     #[inline(always)]
     pub fn uv_in(&self, s: V) -> UvIn<V> {
         let (u, v) = (self.plane(A_UV) * s, self.plane(A_UV + 1) * s);
+        let t = self.first;
+        if self.more.is_none()
+            && t.d1[INV_W] == 0.0
+            && t.d2[INV_W] == 0.0
+            && finite(u).and(finite(v)).bits() == 0xFF
+        {
+            let g = t.grad.uv;
+            let g = [g[0][0], g[1][0], g[0][1], g[1][1]];
+            return UvIn {
+                u,
+                v,
+                du_dx: V::splat(g[0]) * s,
+                dv_dx: V::splat(g[1]) * s,
+                du_dy: V::splat(g[2]) * s,
+                dv_dy: V::splat(g[3]) * s,
+                flat: Some(Flat {
+                    g,
+                    q: t.base[INV_W],
+                    tri: self.tri,
+                }),
+                tex_lod: None,
+            };
+        }
+        self.uv_lanes(u, v, s)
+    }
+
+    /// [`BlockPlanes::uv_in`] by the general formula, lane by lane, for
+    /// coordinates `u`, `v` (`flat` is `None`).
+    #[inline(always)]
+    fn uv_lanes(&self, u: V, v: V, s: V) -> UvIn<V> {
         let (gux, gvx, gqx) = (
             self.pick(|t| t.grad.uv[0][0]),
             self.pick(|t| t.grad.uv[1][0]),
@@ -149,6 +192,8 @@ impl<'p, V: V8> BlockPlanes<'p, V> {
             dv_dx: (gvx - v * gqx) * s,
             du_dy: (guy - u * gqy) * s,
             dv_dy: (gvy - v * gqy) * s,
+            flat: None,
+            tex_lod: None,
         }
     }
 }
@@ -201,6 +246,16 @@ mod tests {
         let xy = [(2.0, 3.0), (60.0, 10.0), (12.0, 50.0)];
         let inv_w = [1.0, 0.25, 0.5];
         let uv = [[0.0, 0.0], [4.0, 1.0], [1.0, 3.0]];
+        (one_triangle(xy, inv_w, uv), (xy, inv_w, uv))
+    }
+
+    /// A one-triangle `Prepared`: screen corners `xy` (pixels), 1/w and
+    /// texture coordinates per corner, its gradients set.
+    pub(super) fn one_triangle(
+        xy: [(f32, f32); 3],
+        inv_w: [f32; 3],
+        uv: [[f32; 2]; 3],
+    ) -> Prepared {
         let mut attr = [[0.0; ATTRS]; 3];
         for k in 0..3 {
             attr[k][A_UV] = uv[k][0];
@@ -222,7 +277,7 @@ mod tests {
         tri.grad = Gradients::of(&tri.x, &tri.y, &tri.d1, &tri.d2);
         let mut p = Prepared::default();
         p.opaque.push(tri);
-        (p, (xy, inv_w, uv))
+        p
     }
 
     /// Perspective-correct uv at a screen point, from the vertices.
@@ -280,6 +335,118 @@ mod tests {
             checked += 1;
         });
         assert!(checked > 500);
+    }
+}
+
+#[cfg(test)]
+mod flat_tests {
+    use super::*;
+    use crate::render::prepare::SUBPIXEL;
+    use crate::render::simd::{Lanes, Sse8};
+    use crate::render::texture::Sampler;
+    use crate::render::texture_lanes::tests::image;
+    use crate::render::texture_lanes::FlatLod;
+    use crate::scene::{ImageId, Texture, Wrap};
+
+    /// A one-triangle `Prepared` with 1/w `inv_w` at the corners and
+    /// texture coordinates `scale`·(corner uv) + `shift`.
+    fn tri(inv_w: [f32; 3], scale: f32, shift: [f32; 2]) -> Prepared {
+        let xy = [(0.0, 0.0), (64.0, 4.0), (6.0, 32.0)];
+        let uv = [[0.0, 0.0], [1.0, 0.15], [0.2, -0.9]];
+        let uv = uv.map(|[u, v]| [u * scale + shift[0], v * scale + shift[1]]);
+        super::tests::one_triangle(xy, inv_w, uv)
+    }
+
+    fn bits(t: [Sse8; 4]) -> [[u32; 8]; 4] {
+        t.map(|c| {
+            let mut a = [0.0; 8];
+            c.store(&mut a);
+            a.map(f32::to_bits)
+        })
+    }
+
+    /// On a triangle without perspective every block of eight pixels gets
+    /// flat derivatives, and sampling at their one level of detail gives
+    /// the bits of the lane-by-lane derivatives, from magnified to far minified, repeated
+    /// and clamped, in the 16-lane and the 8-lane paths alike.
+    #[test]
+    fn flat_blocks_sample_the_lane_by_lane_bits() {
+        let mut flat = 0;
+        for (w, h) in [(64, 32), (50, 30), (256, 256)] {
+            let img = image(w, h, [53, 29, 11]);
+            for wrap in [Wrap::Repeat, Wrap::Clamp] {
+                let mut tex = Texture::new(ImageId(0));
+                (tex.wrap_s, tex.wrap_t) = (wrap, wrap);
+                let s = Sampler::new(&tex, &img);
+                for (scale, shift) in [(0.3, [0.1, 0.9]), (2.5, [-0.4, 0.2]), (40.0, [3.0, 1.5])] {
+                    let p = tri([0.5; 3], scale, shift);
+                    let mut lods = FlatLod::default();
+                    for y in 0..32 {
+                        for x0 in (0..64).step_by(8) {
+                            // Screen weights at the pixel centres.
+                            let t = &p.opaque[0];
+                            let area = t.area() as f32;
+                            let at = |x: i32| {
+                                let (px, py) = (
+                                    (x as f32 + 0.5) * SUBPIXEL as f32,
+                                    (y as f32 + 0.5) * SUBPIXEL as f32,
+                                );
+                                let (x, y) = (t.x.map(|v| v as f32), t.y.map(|v| v as f32));
+                                let b1 = ((px - x[0]) * (y[2] - y[0])
+                                    - (py - y[0]) * (x[2] - x[0]))
+                                    / area;
+                                let b2 = ((x[1] - x[0]) * (py - y[0])
+                                    - (y[1] - y[0]) * (px - x[0]))
+                                    / area;
+                                (b1, b2)
+                            };
+                            let b: [(f32, f32); 8] = std::array::from_fn(|k| at(x0 + k as i32));
+                            let planes = BlockPlanes::new(
+                                &p,
+                                &[0; 8],
+                                0xFF,
+                                Sse8::load(&b.map(|b| b.0)),
+                                Sse8::load(&b.map(|b| b.1)),
+                            );
+                            let (_, sl) = planes.attributes(false);
+                            let mut got = planes.uv_in(sl);
+                            let f = got.flat.expect("an affine block is flat");
+                            got.tex_lod = Some(lods.of(&f, &s));
+                            let want = planes.uv_lanes(got.u, got.v, sl);
+                            for wide in [false, crate::render::simd::avx512()] {
+                                assert_eq!(
+                                    bits(s.texel8_lod_in(&got, wide)),
+                                    bits(s.texel8_in(&want, wide)),
+                                    "{w}x{h} {wrap:?} scale {scale} at {x0},{y}"
+                                );
+                            }
+                            flat += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(flat, 3 * 2 * 3 * 32 * 8);
+    }
+
+    /// Perspective, and a lane with a non-finite coordinate, take the
+    /// lane-by-lane derivatives.
+    #[test]
+    fn perspective_and_non_finite_lanes_are_not_flat() {
+        let b = Sse8::splat(0.25);
+        let p = tri([1.0, 0.5, 0.25], 1.0, [0.0, 0.0]);
+        let planes = BlockPlanes::new(&p, &[0; 8], 0xFF, b, b);
+        let (_, s) = planes.attributes(false);
+        assert!(planes.uv_in(s).flat.is_none());
+        let p = tri([0.5; 3], 1.0, [0.0, 0.0]);
+        let mut b1 = [0.25f32; 8];
+        b1[5] = f32::INFINITY;
+        let planes = BlockPlanes::new(&p, &[0; 8], 0xFF, Sse8::load(&b1), b);
+        let (_, s) = planes.attributes(false);
+        assert!(planes.uv_in(s).flat.is_none());
+        let planes = BlockPlanes::new(&p, &[0; 8], 0xFF, b, b);
+        let (_, s) = planes.attributes(false);
+        assert!(planes.uv_in(s).flat.is_some());
     }
 }
 

@@ -25,7 +25,7 @@ use super::lanes::Pair;
 use super::prepare::{Item, Prepared};
 use super::simd::V8;
 use super::surface::shade_lanes;
-use super::texture_lanes::UvIn;
+use super::texture_lanes::{FlatLod, UvIn};
 use glam::Vec3;
 
 /// Tile width in pixels (the row stride of every tile buffer).
@@ -134,6 +134,7 @@ pub fn store_masked<V: V8>(dst: &mut [f32; 8], v: V, mask: u32) {
 pub fn shade_first<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut Shaded) {
     let (p, eye) = (pass.p, pass.eye);
     let (w, h, _) = pass.size;
+    let mut lods = FlatLod::default();
     for row in 0..h {
         let mut next = 0;
         for bx in (0..w).step_by(8) {
@@ -143,7 +144,7 @@ pub fn shade_first<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut
             let i0 = row * TILE as usize + bx;
             if bx + 8 < w {
                 if let Some(item) = pair_item(p, vis.winner, i0) {
-                    shade_pair::<V, TEX>(p, item, eye, vis, out, i0);
+                    shade_pair::<V, TEX>(p, item, eye, vis, out, i0, &mut lods);
                     next = bx + 16;
                     continue;
                 }
@@ -172,7 +173,7 @@ pub fn shade_first<V: V8, const TEX: bool>(pass: &Pass, vis: &Visible, out: &mut
                 continue;
             }
             let (b1, b2) = (V::load(lanes8(vis.b1, i0)), V::load(lanes8(vis.b2, i0)));
-            let (rgb, lane_id) = shade_mixed::<V, TEX>(p, eye, &win, lanes, b1, b2);
+            let (rgb, lane_id) = shade_mixed_in::<V, TEX>(p, eye, &win, lanes, (b1, b2), &mut lods);
             for (dst, src) in [&mut *out.r, &mut *out.g, &mut *out.b]
                 .into_iter()
                 .zip(&rgb)
@@ -201,6 +202,19 @@ pub fn shade_mixed<V: V8, const TEX: bool>(
     b1: V,
     b2: V,
 ) -> ([[f32; 8]; 3], [u32; 8]) {
+    shade_mixed_in::<V, TEX>(p, eye, win, lanes, (b1, b2), &mut FlatLod::default())
+}
+
+/// [`shade_mixed`] with the pass's [`FlatLod`].
+#[inline(always)]
+fn shade_mixed_in<V: V8, const TEX: bool>(
+    p: &Prepared,
+    eye: Vec3,
+    win: &[u32; 8],
+    lanes: u32,
+    (b1, b2): (V, V),
+    lods: &mut FlatLod,
+) -> ([[f32; 8]; 3], [u32; 8]) {
     let mut rgb = [[0.0f32; 8]; 3];
     let mut lane_id = [0u32; 8];
     let mut todo = lanes;
@@ -214,7 +228,7 @@ pub fn shade_mixed<V: V8, const TEX: bool>(
         }
         todo &= !group;
         let item = &p.items[item_ix as usize];
-        let c = shade_group::<V, TEX>(p, item, eye, win, group, b1, b2);
+        let c = shade_group::<V, TEX>(p, item, eye, (win, group), (b1, b2), lods);
         for (dst, v) in rgb.iter_mut().zip(c) {
             store_masked(dst, v, group);
         }
@@ -233,10 +247,9 @@ fn shade_group<V: V8, const TEX: bool>(
     p: &Prepared,
     item: &Item,
     eye: Vec3,
-    win: &[u32; 8],
-    group: u32,
-    b1: V,
-    b2: V,
+    (win, group): (&[u32; 8], u32),
+    (b1, b2): (V, V),
+    lods: &mut FlatLod,
 ) -> [V; 3] {
     // No closures over lanes in this file: a closure is a function of its
     // own without the caller's AVX target feature, and lane operations
@@ -249,7 +262,7 @@ fn shade_group<V: V8, const TEX: bool>(
     }
     let uv_store;
     let uv: &[UvIn<V>] = if TEX && item.textured {
-        uv_store = [planes.uv_in(s)];
+        uv_store = [with_lod(item, planes.uv_in(s), lods)];
         &uv_store
     } else {
         &[]
@@ -262,6 +275,16 @@ fn shade_group<V: V8, const TEX: bool>(
         [v[6], v[7], v[8]],
         uv,
     )
+}
+
+/// `uv` with its level of detail in `item`'s texture where its lanes are
+/// flat (`UvIn::flat`; kept per triangle in `lods`).
+#[inline(always)]
+fn with_lod<V: V8>(item: &Item, mut uv: UvIn<V>, lods: &mut FlatLod) -> UvIn<V> {
+    if let (Some(f), Some(s)) = (&uv.flat, &item.texture) {
+        uv.tex_lod = Some(lods.of(f, s));
+    }
+    uv
 }
 
 /// Whether the shading of `item` reads the interpolated colour: not when
@@ -308,6 +331,7 @@ fn shade_pair<V: V8, const TEX: bool>(
     vis: &Visible,
     out: &mut Shaded,
     i0: usize,
+    lods: &mut FlatLod,
 ) {
     let it = &p.items[item as usize];
     let (wa, wb) = (*lanes8(vis.winner, i0), *lanes8(vis.winner, i0 + 8));
@@ -329,7 +353,10 @@ fn shade_pair<V: V8, const TEX: bool>(
     }
     let uv_store;
     let uv: &[UvIn<V>] = if TEX && it.textured {
-        uv_store = [pa.uv_in(sa), pb.uv_in(sb)];
+        uv_store = [
+            with_lod(it, pa.uv_in(sa), lods),
+            with_lod(it, pb.uv_in(sb), lods),
+        ];
         &uv_store
     } else {
         &[]

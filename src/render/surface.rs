@@ -42,7 +42,7 @@ pub fn shade_lanes<V: V8, L: Blocks<V>, const TEX: bool>(
         // (narrow stores read back by wide loads) on every block.
         let keep = s.acts_after_lighting();
         for (k, uv) in uv.iter().take(L::N).enumerate() {
-            let texel = s.texel8(uv);
+            let texel = s.texel8_lod(uv);
             let d = s.before_lighting8(&texel, block(&diffuse, k));
             set_block(&mut diffuse, k, d);
             if keep {

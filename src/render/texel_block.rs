@@ -66,8 +66,7 @@ impl Sampler {
         v: V,
         wide: bool,
     ) -> Option<[V; 4]> {
-        let levels = self.image().levels();
-        let last = levels.len() - 1;
+        let last = self.image().levels().len() - 1;
         if i > last {
             return None;
         }
@@ -75,11 +74,33 @@ impl Sampler {
         if exact.iter().any(|&k| k != i as i32) {
             return None;
         }
+        self.texel8_levels((i, lod), (u, v), false, wide)
+    }
+
+    /// [`Sampler::texel8_at_level`] once the level pair is known to start
+    /// at level `i` in every lane (`lod` truncates to `i`, or `i` is the
+    /// last level and no lane's `lod` is below it): `None` only for a
+    /// level too large to address in f32 lanes. `finite`: every lane of
+    /// `u` and `v` is known to be finite (the test for it is skipped).
+    #[inline(always)]
+    pub(super) fn texel8_levels<V: V8>(
+        &self,
+        (i, lod): (usize, V),
+        (u, v): (V, V),
+        finite: bool,
+        wide: bool,
+    ) -> Option<[V; 4]> {
+        let levels = self.image().levels();
+        let last = levels.len() - 1;
         let level = &levels[i];
         if level.width() as u64 * level.height() as u64 > EXACT_TEXELS {
             return None;
         }
-        let (s, t) = self.reduce8(u, v);
+        let (s, t) = if finite {
+            self.wrap8(u, v)
+        } else {
+            self.reduce8(u, v)
+        };
         // `lod − i as f32`; a block that needs no blending (all magnified,
         // or exactly on a level) reads one level, as `sample` does.
         let f = lod - V::splat(i as f32);
@@ -87,7 +108,7 @@ impl Sampler {
         #[cfg(not(target_arch = "x86_64"))]
         let _ = wide;
         #[cfg(target_arch = "x86_64")]
-        if blend && wide {
+        if let (true, Some(sizes)) = (blend && wide, self.pair_sizes(i)) {
             let levels = [level, &levels[i + 1]];
             let wrap = [self.wrap_s(), self.wrap_t()];
             // SAFETY: the caller checked `simd::avx512()` (AVX-512 F, VL,
@@ -95,6 +116,7 @@ impl Sampler {
             let out = unsafe {
                 trilinear16::sample(
                     levels,
+                    sizes,
                     s.to_m256(),
                     t.to_m256(),
                     f.to_m256(),
@@ -128,8 +150,13 @@ impl Sampler {
     /// period.
     #[inline(always)]
     pub(super) fn reduce8<V: V8>(&self, s: V, t: V) -> (V, V) {
-        let s = s.keep(finite(s));
-        let t = t.keep(finite(t));
+        self.wrap8(s.keep(finite(s)), t.keep(finite(t)))
+    }
+
+    /// [`Sampler::reduce8`] of finite coordinates: repeating ones reduced
+    /// to one period.
+    #[inline(always)]
+    fn wrap8<V: V8>(&self, s: V, t: V) -> (V, V) {
         let s = if self.wrap_s() == Wrap::Repeat {
             s - s.floor()
         } else {
@@ -259,7 +286,7 @@ fn to_arr<V: V8>(v: V) -> [f32; 8] {
 
 /// A mask of the finite lanes.
 #[inline(always)]
-fn finite<V: V8>(x: V) -> V {
+pub(super) fn finite<V: V8>(x: V) -> V {
     Lanes::le(V::splat(-f32::MAX), x).and(x.le(V::splat(f32::MAX)))
 }
 

@@ -17,6 +17,7 @@
 
 use super::log2_lanes::log2_fast;
 use super::texel_filter::{bilerp, channels, weight};
+use super::trilinear16::PairSizes;
 use crate::scene::{Filter, Image, MipLevel, MipMode, Texture, TextureModel, Wrap};
 use glam::{Affine2, Vec2, Vec3, Vec4};
 
@@ -41,11 +42,28 @@ pub struct Sampler {
     alpha_cutoff: Option<f32>,
     /// See [`Sampler::lanes_cover`].
     lanes: bool,
+    /// Per mip level pair (level i and i + 1), its sizes for the 16-lane
+    /// pass; empty where that pass does not run (no AVX-512, or a
+    /// sampler the lanes do not cover).
+    pairs: Vec<PairSizes>,
 }
 
 impl Sampler {
     pub fn new(t: &Texture, image: &Image) -> Sampler {
         let uses_alpha = matches!(image.components(), 2 | 4) && t.model != TextureModel::Decal;
+        let lanes = t.transform.is_identity()
+            && t.filter == Filter::default()
+            && t.wrap_s != Wrap::Mirror
+            && t.wrap_t != Wrap::Mirror;
+        let pairs = if lanes && super::simd::avx512() {
+            let levels = image.levels();
+            levels
+                .windows(2)
+                .map(|l| PairSizes::of(&l[0], &l[1]))
+                .collect()
+        } else {
+            Vec::new()
+        };
         Sampler {
             image: image.clone(),
             wrap_s: t.wrap_s,
@@ -59,10 +77,8 @@ impl Sampler {
             opaque: !image.has_alpha(),
             filter: t.filter,
             alpha_cutoff: t.alpha_cutoff,
-            lanes: t.transform.is_identity()
-                && t.filter == Filter::default()
-                && t.wrap_s != Wrap::Mirror
-                && t.wrap_t != Wrap::Mirror,
+            lanes,
+            pairs,
         }
     }
 
@@ -85,6 +101,10 @@ impl Sampler {
     /// once in `new`: it is asked for every block).
     pub(super) fn lanes_cover(&self) -> bool {
         self.lanes
+    }
+    /// The sizes of level pair `i` for the 16-lane pass, if it runs.
+    pub(super) fn pair_sizes(&self, i: usize) -> Option<&PairSizes> {
+        self.pairs.get(i)
     }
 
     /// Whether pixels are alpha-tested (glTF MASK): then a pixel of alpha

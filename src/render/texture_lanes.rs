@@ -32,6 +32,65 @@ pub struct UvIn<V> {
     pub dv_dx: V,
     pub du_dy: V,
     pub dv_dy: V,
+    /// Set where every lane has the same derivatives, as on a triangle
+    /// without perspective, and finite `u` and `v` (`BlockPlanes::uv_in`).
+    /// The lanes above hold the derivatives too.
+    pub flat: Option<Flat>,
+    /// The level of detail of every lane in the item's texture, when the
+    /// caller knows it ([`FlatLod`]): [`Sampler::texel8_lod`] reads it.
+    pub tex_lod: Option<f32>,
+}
+
+/// Derivatives shared by every lane of a block: `g` / `q`.
+#[derive(Clone, Copy, Debug)]
+pub struct Flat {
+    /// ∂(u/w)/∂x, ∂(v/w)/∂x, ∂(u/w)/∂y, ∂(v/w)/∂y (`Tri::grad`).
+    pub g: [f32; 4],
+    /// 1/w, the same over the triangle.
+    pub q: f32,
+    /// The triangle (index into `Prepared::opaque`) they belong to.
+    pub tri: u32,
+}
+
+/// The level of detail of the last flat triangle (`UvIn::flat`) a tile's
+/// shading pass met, in its item's texture.
+///
+/// Why: with the derivatives constant over the triangle, so is λ; worked
+/// out per block (even as one scalar) it sits on the path to the mip
+/// level that every texel fetch waits for, and per lane it is a dozen
+/// vector steps. Kept from the triangle's first block, the blocks after it
+/// (a tile row shows one or two triangles of a large one) read a number.
+#[derive(Clone, Copy, Debug)]
+pub struct FlatLod {
+    tri: u32,
+    lod: f32,
+}
+
+impl Default for FlatLod {
+    fn default() -> Self {
+        FlatLod {
+            tri: u32::MAX,
+            lod: 0.0,
+        }
+    }
+}
+
+impl FlatLod {
+    /// λ of `flat`'s lanes in `s` (the texture of the triangle's item, the
+    /// only sampler asked through one `FlatLod`): `Sampler::lod` on the
+    /// shared derivatives, which is each lane's λ bit for bit (the lanes'
+    /// ρ², `log2_fast8` and range test are the same IEEE steps).
+    #[inline(always)]
+    pub fn of(&mut self, flat: &Flat, s: &Sampler) -> f32 {
+        if flat.tri != self.tri {
+            // The lanes' derivatives: ∂U/∂x · s with s = 1/q.
+            let inv_q = 1.0 / flat.q;
+            let d = flat.g.map(|g| g * inv_q);
+            self.lod = s.lod(Vec2::new(d[0], d[1]), Vec2::new(d[2], d[3]));
+            self.tri = flat.tri;
+        }
+        self.lod
+    }
 }
 
 impl Sampler {
@@ -47,7 +106,7 @@ impl Sampler {
     /// pass (`trilinear16`, only after `simd::avx512()` said yes; a test
     /// compares both ways).
     #[inline(always)]
-    fn texel8_in<V: V8>(&self, uv: &UvIn<V>, wide: bool) -> [V; 4] {
+    pub(super) fn texel8_in<V: V8>(&self, uv: &UvIn<V>, wide: bool) -> [V; 4] {
         // No closures over lanes here: a closure lacks the caller's AVX
         // target feature, and lane operations inside it become calls.
         let base = self.image().base();
@@ -105,6 +164,30 @@ impl Sampler {
             out[c] = a[c] + (b[c] - a[c]) * f;
         }
         out
+    }
+
+    /// [`Sampler::texel8`] where every lane's level of detail is known to
+    /// be `uv.tex_lod` (see [`FlatLod`]): the mip level pair is then known
+    /// before anything else, and the level arithmetic is skipped.
+    #[inline(always)]
+    pub fn texel8_lod<V: V8>(&self, uv: &UvIn<V>) -> [V; 4] {
+        self.texel8_lod_in(uv, super::simd::avx512())
+    }
+
+    /// [`Sampler::texel8_lod`]'s work (`wide` as in [`Sampler::texel8_in`]).
+    #[inline(always)]
+    pub(super) fn texel8_lod_in<V: V8>(&self, uv: &UvIn<V>, wide: bool) -> [V; 4] {
+        if let (Some(lod), true) = (uv.tex_lod, self.lanes_cover()) {
+            // `texel8_at_level`'s level (λ is finite and ≥ 0).
+            let last = (self.image().levels().len() - 1) as f32;
+            let i = lod.min(last) as usize;
+            // Flat lanes were checked finite (`BlockPlanes::uv_in`).
+            let finite = uv.flat.is_some();
+            if let Some(out) = self.texel8_levels((i, V::splat(lod)), (uv.u, uv.v), finite, wide) {
+                return out;
+            }
+        }
+        self.texel8_in(uv, wide)
     }
 
     /// The slow path: `texel` per lane.
@@ -268,6 +351,8 @@ pub(super) mod tests {
             dv_dx: l(3),
             du_dy: l(4),
             dv_dy: l(5),
+            flat: None,
+            tex_lod: None,
         };
         let got = s.texel8(&uv);
         for k in 0..8 {

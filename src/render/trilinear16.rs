@@ -22,8 +22,43 @@
 #[cfg(target_arch = "x86_64")]
 pub use imp::sample;
 
+use crate::scene::MipLevel;
+
+/// The sizes of a level pair as [`sample`] reads them, worked out once per
+/// sampler (`Sampler::new`): per lane the width and height (lanes 0..8 the
+/// finer level's, 8..16 the coarser one's), and both less two (the last
+/// floored coordinate whose footprint stays inside the level).
+///
+/// Why stored: built per block they were a dozen steps (two loads, two
+/// conversions, two broadcasts and an insert per size) on the path from
+/// the level to the footprint; stored, they are four 64-byte loads.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(64))]
+pub struct PairSizes {
+    pub w: [f32; 16],
+    pub h: [f32; 16],
+    pub w2: [f32; 16],
+    pub h2: [f32; 16],
+}
+
+impl PairSizes {
+    /// The sizes of `a` and the next level `b`.
+    pub fn of(a: &MipLevel, b: &MipLevel) -> PairSizes {
+        let halves = |x: u32, y: u32| std::array::from_fn(|k| if k < 8 { x } else { y } as f32);
+        let (w, h): ([f32; 16], [f32; 16]) =
+            (halves(a.width(), b.width()), halves(a.height(), b.height()));
+        PairSizes {
+            w,
+            h,
+            w2: w.map(|v| v - 2.0),
+            h2: h.map(|v| v - 2.0),
+        }
+    }
+}
+
 #[cfg(target_arch = "x86_64")]
 mod imp {
+    use super::PairSizes;
     use crate::render::texel_block::OPAQUE;
     use crate::render::texel_fetch::{fetch4, fetch_pairs};
     use crate::render::texel_filter::UNIT;
@@ -47,16 +82,15 @@ mod imp {
     #[inline(always)]
     pub unsafe fn sample(
         levels: [&MipLevel; 2],
+        sizes: &PairSizes,
         s: __m256,
         t: __m256,
         f: __m256,
         wrap: [Wrap; 2],
         alpha: bool,
     ) -> [__m256; 4] {
-        let (wa, ha) = (levels[0].width() as f32, levels[0].height() as f32);
-        let (wb, hb) = (levels[1].width() as f32, levels[1].height() as f32);
         let (s, t) = (twice(s), twice(t));
-        let (w, h) = (halves(wa, wb), halves(ha, hb));
+        let (w, h) = (lanes16(&sizes.w), lanes16(&sizes.h));
         // `Sampler::footprint8`, operation for operation.
         let half = _mm512_set1_ps(0.5);
         let x = _mm512_sub_ps(_mm512_mul_ps(s, w), half);
@@ -76,11 +110,10 @@ mod imp {
         // top row's plus one row, so one set of window indices serves both
         // rows. Blocks on a seam or an edge take `corners`.
         let zero = _mm512_setzero_ps();
-        let two = _mm512_set1_ps(2.0);
         let inside = _mm512_cmp_ps_mask::<_CMP_LE_OQ>(zero, x0)
-            & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(x0, _mm512_sub_ps(w, two))
+            & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(x0, lanes16(&sizes.w2))
             & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(zero, y0)
-            & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(y0, _mm512_sub_ps(h, two));
+            & _mm512_cmp_ps_mask::<_CMP_LE_OQ>(y0, lanes16(&sizes.h2));
         let windows = if inside == 0xFFFF {
             // Texel addresses (exact: whole numbers below 2²⁴), as
             // `corners` computes them for these lanes.
@@ -188,13 +221,6 @@ mod imp {
         _mm512_insertf32x8::<1>(_mm512_castps256_ps512(v), v)
     }
 
-    /// `a` in the lower eight lanes, `b` in the upper eight.
-    #[target_feature(enable = "avx512f,avx512dq")]
-    #[inline]
-    fn halves(a: f32, b: f32) -> __m512 {
-        _mm512_insertf32x8::<1>(_mm512_set1_ps(a), _mm256_set1_ps(b))
-    }
-
     /// `texel_block::wrap2` on sixteen lanes of whole numbers in −2..=n:
     /// the texel indices i and i + 1 wrapped into 0..n. Repeat takes one
     /// period up or down, then (for n = 1, where that is not enough) the
@@ -243,19 +269,29 @@ mod imp {
     /// [`weights`]: `[R | B << 16, G | A << 16]` per lane, each channel in
     /// 0..=255·256. Every product and sum fits its 16-bit half, so the
     /// 16-bit multiplies give `bilerp`'s words exactly.
+    ///
+    /// The horizontal step `(a·(256 − w) + b·w + 128) >> 8` is computed as
+    /// `a + ((b − a)·w + 128) >> 8` (the same whole number: `256·a` is a
+    /// multiple of 256), and that last term as `vpmulhrsw` of 2·(b − a)
+    /// and 64·w, which rounds `(x·y + 2¹⁴) >> 15`: with x·y = 128·(b − a)·w
+    /// that is exactly `((b − a)·w + 128) >> 8`, in three steps fewer per
+    /// row (both factors fit 16 signed bits: |2·(b − a)| ≤ 510, 64·w ≤
+    /// 2¹⁴). Where a fraction was NaN (`weights` gives 0x8000 in a half)
+    /// both texels of that axis are the same edge texel, so b − a = 0 and
+    /// the row is a, as the old form gave.
     #[target_feature(enable = "avx512f,avx512bw")]
     #[inline]
     fn bilerp16(c: [__m512i; 4], wx: __m512i, wy: __m512i) -> [__m512i; 2] {
         let unit = _mm512_set1_epi16(256);
-        let (ix, iy) = (_mm512_sub_epi16(unit, wx), _mm512_sub_epi16(unit, wy));
-        let round = _mm512_set1_epi16(0x80);
+        let iy = _mm512_sub_epi16(unit, wy);
+        let wx64 = _mm512_slli_epi16::<6>(wx);
         let lowbytes = _mm512_set1_epi32(0x00FF_00FF);
         let rb = |w: __m512i| _mm512_and_si512(w, lowbytes);
         let ga = |w: __m512i| _mm512_srli_epi16::<8>(w);
         // Horizontal: 8.8 fixed point per channel, rounded to 8 bits.
         let row = |a: __m512i, b: __m512i| {
-            let sum = _mm512_add_epi16(_mm512_mullo_epi16(a, ix), _mm512_mullo_epi16(b, wx));
-            _mm512_srli_epi16::<8>(_mm512_add_epi16(sum, round))
+            let d = _mm512_slli_epi16::<1>(_mm512_sub_epi16(b, a));
+            _mm512_add_epi16(a, _mm512_mulhrs_epi16(d, wx64))
         };
         let (top_rb, top_ga) = (row(rb(c[0]), rb(c[1])), row(ga(c[0]), ga(c[1])));
         let (bot_rb, bot_ga) = (row(rb(c[2]), rb(c[3])), row(ga(c[2]), ga(c[3])));
@@ -264,6 +300,25 @@ mod imp {
             _mm512_add_epi16(_mm512_mullo_epi16(a, iy), _mm512_mullo_epi16(b, wy))
         };
         [col(top_rb, bot_rb), col(top_ga, bot_ga)]
+    }
+
+    /// [`bilerp16`] on one set of corners with sixteen lanes of weights
+    /// `wx` and one `wy`, as `texel_filter::bilerp` words per lane.
+    #[cfg(test)]
+    pub fn bilerp16_for_tests(c: [u32; 4], wx: [u32; 16], wy: u32) -> [[u32; 2]; 16] {
+        let half = |w: u32| (w | w << 16) as i32;
+        // SAFETY: the test calls in only where `simd::avx512()` said yes.
+        let out = unsafe {
+            let c = c.map(|w| _mm512_set1_epi32(w as i32));
+            let wx = _mm512_loadu_si512(wx.map(half).as_ptr().cast());
+            bilerp16(c, wx, _mm512_set1_epi32(half(wy)))
+        };
+        let mut words = [[0u32; 16]; 2];
+        for (w, o) in words.iter_mut().zip(out) {
+            // SAFETY: a 64-byte store into sixteen u32.
+            unsafe { _mm512_storeu_si512(w.as_mut_ptr().cast(), o) };
+        }
+        std::array::from_fn(|k| [words[0][k], words[1][k]])
     }
 
     /// Both levels' texel pairs of one corner row (`i`: left texel indices,
@@ -317,8 +372,18 @@ mod imp {
     #[target_feature(enable = "avx512f")]
     #[inline]
     fn rows(levels: [&MipLevel; 2], top: __m512i) -> Option<[__m512i; 4]> {
-        let l = lanes8(top);
-        let first = [l[0][0].min(l[0][7]), l[1][0].min(l[1][7])];
+        // Each half's start, the smaller of its first and last lane's,
+        // in every lane of the half (on lanes: no trip through memory).
+        let first_lanes = _mm512_set_epi32(8, 8, 8, 8, 8, 8, 8, 8, 0, 0, 0, 0, 0, 0, 0, 0);
+        let last_lanes = _mm512_set_epi32(15, 15, 15, 15, 15, 15, 15, 15, 7, 7, 7, 7, 7, 7, 7, 7);
+        let start = _mm512_min_epi32(
+            _mm512_permutexvar_epi32(first_lanes, top),
+            _mm512_permutexvar_epi32(last_lanes, top),
+        );
+        let first = [
+            _mm_cvtsi128_si32(_mm512_castsi512_si128(start)),
+            _mm_cvtsi128_si32(_mm512_extracti32x4_epi32::<2>(start)),
+        ];
         let fits = |k: usize| {
             first[k] >= 0
                 && first[k] as usize + levels[k].width() as usize + 16 <= levels[k].pixels().len()
@@ -326,8 +391,6 @@ mod imp {
         if !fits(0) || !fits(1) {
             return None;
         }
-        let start =
-            _mm512_inserti64x4::<1>(_mm512_set1_epi32(first[0]), _mm256_set1_epi32(first[1]));
         let rel = _mm512_sub_epi32(top, start);
         // Every lane in 0..=14 (unsigned: negative lanes fail), so lane
         // k's pair is words rel[k] and rel[k] + 1 of its level's sixteen.
@@ -364,6 +427,14 @@ mod imp {
         ])
     }
 
+    /// Sixteen lanes of a [`PairSizes`] row.
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    fn lanes16(a: &[f32; 16]) -> __m512 {
+        // SAFETY: a 64-byte load of sixteen f32.
+        unsafe { _mm512_loadu_ps(a.as_ptr()) }
+    }
+
     /// The two halves of sixteen i32 lanes as arrays.
     #[target_feature(enable = "avx512f")]
     #[inline]
@@ -387,5 +458,50 @@ mod imp {
                 )
             }
         })
+    }
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::imp::bilerp16_for_tests as bilerp16;
+    use crate::render::texel_filter::bilerp;
+
+    /// The 16-lane filter gives `bilerp`'s words for every pair of weights
+    /// (0..=256 each) on corners with every channel difference sign and
+    /// size, the extremes (0 and 255 next to each other) included. Runs
+    /// where the CPU has AVX-512 (the only place the filter runs); this
+    /// machine's CI has it, and the test says so when it cannot run.
+    #[test]
+    fn filter_matches_bilerp_for_every_weight() {
+        if !crate::render::simd::avx512() {
+            eprintln!("filter_matches_bilerp_for_every_weight: no AVX-512 here, not run");
+            return;
+        }
+        let mut seed = 7u32;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed
+        };
+        let mut corners: Vec<[u32; 4]> = vec![
+            [0, 0xFFFF_FFFF, 0xFFFF_FFFF, 0],
+            [0xFFFF_FFFF, 0, 0, 0xFFFF_FFFF],
+            [0x00FF_00FF, 0xFF00_FF00, 0xFF00_FF00, 0x00FF_00FF],
+        ];
+        corners.extend((0..13).map(|_| [rnd(), rnd(), rnd(), rnd()]));
+        let mut checked = 0;
+        for c in &corners {
+            for wy in 0..=256u32 {
+                for wx0 in (0..=256u32).step_by(16) {
+                    // Sixteen lanes: weights wx0.. (past 256 wraps to 0).
+                    let wx: [u32; 16] = std::array::from_fn(|k| (wx0 + k as u32) % 257);
+                    let got = bilerp16(*c, wx, wy);
+                    for k in 0..16 {
+                        assert_eq!(got[k], bilerp(*c, wx[k], wy), "{c:x?} wx {} wy {wy}", wx[k]);
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 16 * 257 * 257);
     }
 }

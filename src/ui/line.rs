@@ -47,64 +47,106 @@ pub fn wu_line_in(
         band.rows.start as i64,
         band.rows.end.min(band.height) as i64,
     );
-    let (mut x0, mut y0, mut x1, mut y1) = (a.0 - 0.5, a.1 - 0.5, b.0 - 0.5, b.1 - 0.5);
-    if !(x0.is_finite() && y0.is_finite() && x1.is_finite() && y1.is_finite()) || r0 >= r1 {
+    let Some(line) = WuLine::new(a, b, (w, h)).filter(|_| r0 < r1) else {
         return;
-    }
-    let steep = (y1 - y0).abs() > (x1 - x0).abs();
-    if steep {
-        std::mem::swap(&mut x0, &mut y0);
-        std::mem::swap(&mut x1, &mut y1);
-    }
-    if x0 > x1 {
-        std::mem::swap(&mut x0, &mut x1);
-        std::mem::swap(&mut y0, &mut y1);
-    }
-    let dx = x1 - x0;
-    let grad = if dx.abs() < 1e-6 { 0.0 } else { (y1 - y0) / dx };
-    // Only walk the part of the major axis that is on screen.
-    let major_max = if steep { h } else { w } as f32;
-    let xs = x0.round().max(0.0);
-    let xe = x1.round().min(major_max - 1.0);
-    if xs > xe {
-        return;
-    }
-    let minor_at = |x: i64| y0 + grad * (x as f32 - x0);
-    // ... and of it, the part that plots into the band's rows.
-    let (xs, xe) = if steep {
-        (xs as i64).max(r0)..=(xe as i64).min(r1 - 1)
+    };
+    // Of the on-screen columns, only those that plot into the band's rows.
+    let (xs, xe) = if line.steep {
+        line.xs.max(r0)..=line.xe.min(r1 - 1)
     } else {
-        reaching_rows(xs as i64, xe as i64, grad, minor_at, r0, r1)
+        reaching_rows(line.xs, line.xe, line.grad, |x| line.minor_at(x), r0, r1)
     }
     .into_inner();
-    let mut plot = |x: i64, y: i64, cov: f32| {
-        let (px, py) = if steep { (y, x) } else { (x, y) };
+    line.walk(xs, xe, |px, py, cov| {
         if px < 0 || py < r0 || px >= w || py >= r1 {
             return;
         }
         let i = (py * w + px) as usize;
-        if !keep(i) {
-            return;
+        if keep(i) {
+            let at = i - (r0 * w) as usize;
+            buf[at] = blend(buf[at], color, cov * alpha);
         }
-        let k = (cov * alpha).clamp(0.0, 1.0);
-        let at = i - (r0 * w) as usize;
-        let d = buf[at];
-        let mix = |sh: u32| {
-            let s = ((color >> sh) & 255) as f32;
-            let t = ((d >> sh) & 255) as f32;
-            ((t + (s - t) * k + 0.5) as u32).min(255) << sh
-        };
-        buf[at] = mix(16) | mix(8) | mix(0);
-    };
-    let mut x = xs;
-    while x <= xe {
-        let y = minor_at(x);
-        let yi = floor(y);
-        let frac = y - yi as f32;
-        plot(x, yi, 1.0 - frac);
-        plot(x, yi + 1, frac);
-        x += 1;
+    });
+}
+
+/// One line's Wu walk, set up once: the major axis runs along `x` (`y`
+/// when `steep`), from left to right, over the on-screen columns
+/// `xs..=xe` only.
+struct WuLine {
+    steep: bool,
+    x0: f32,
+    y0: f32,
+    grad: f32,
+    xs: i64,
+    xe: i64,
+}
+
+impl WuLine {
+    /// `None` for a line with a non-finite end or none of it on screen.
+    fn new(a: (f32, f32), b: (f32, f32), (w, h): (i64, i64)) -> Option<WuLine> {
+        let (mut x0, mut y0, mut x1, mut y1) = (a.0 - 0.5, a.1 - 0.5, b.0 - 0.5, b.1 - 0.5);
+        if !(x0.is_finite() && y0.is_finite() && x1.is_finite() && y1.is_finite()) {
+            return None;
+        }
+        let steep = (y1 - y0).abs() > (x1 - x0).abs();
+        if steep {
+            std::mem::swap(&mut x0, &mut y0);
+            std::mem::swap(&mut x1, &mut y1);
+        }
+        if x0 > x1 {
+            std::mem::swap(&mut x0, &mut x1);
+            std::mem::swap(&mut y0, &mut y1);
+        }
+        let dx = x1 - x0;
+        let grad = if dx.abs() < 1e-6 { 0.0 } else { (y1 - y0) / dx };
+        let major_max = if steep { h } else { w } as f32;
+        let xs = x0.round().max(0.0);
+        let xe = x1.round().min(major_max - 1.0);
+        (xs <= xe).then_some(WuLine {
+            steep,
+            x0,
+            y0,
+            grad,
+            xs: xs as i64,
+            xe: xe as i64,
+        })
     }
+
+    /// The line's minor coordinate at major coordinate `x`.
+    fn minor_at(&self, x: i64) -> f32 {
+        self.y0 + self.grad * (x as f32 - self.x0)
+    }
+
+    /// Calls `plot(px, py, coverage)` with picture coordinates for the two
+    /// pixels of each major coordinate in `xs..=xe`.
+    fn walk(&self, xs: i64, xe: i64, mut plot: impl FnMut(i64, i64, f32)) {
+        let mut at = |x: i64, y: i64, cov: f32| {
+            if self.steep {
+                plot(y, x, cov)
+            } else {
+                plot(x, y, cov)
+            }
+        };
+        for x in xs..=xe {
+            let y = self.minor_at(x);
+            let yi = floor(y);
+            let frac = y - yi as f32;
+            at(x, yi, 1.0 - frac);
+            at(x, yi + 1, frac);
+        }
+    }
+}
+
+/// `color` over `under` (both `0x00RRGGBB`) at opacity `k` (clamped to
+/// 0..1), each channel rounded.
+fn blend(under: u32, color: u32, k: f32) -> u32 {
+    let k = k.clamp(0.0, 1.0);
+    let mix = |sh: u32| {
+        let s = ((color >> sh) & 255) as f32;
+        let t = ((under >> sh) & 255) as f32;
+        ((t + (s - t) * k + 0.5) as u32).min(255) << sh
+    };
+    mix(16) | mix(8) | mix(0)
 }
 
 /// The columns `xs..=xe` of a shallow line (minor coordinate `minor_at`)
@@ -233,54 +275,18 @@ mod tests {
         keep: impl Fn(usize) -> bool,
     ) {
         let (w, h) = (width as i64, height as i64);
-        let (mut x0, mut y0, mut x1, mut y1) = (a.0 - 0.5, a.1 - 0.5, b.0 - 0.5, b.1 - 0.5);
-        if !(x0.is_finite() && y0.is_finite() && x1.is_finite() && y1.is_finite()) {
+        let Some(line) = WuLine::new(a, b, (w, h)) else {
             return;
-        }
-        let steep = (y1 - y0).abs() > (x1 - x0).abs();
-        if steep {
-            std::mem::swap(&mut x0, &mut y0);
-            std::mem::swap(&mut x1, &mut y1);
-        }
-        if x0 > x1 {
-            std::mem::swap(&mut x0, &mut x1);
-            std::mem::swap(&mut y0, &mut y1);
-        }
-        let dx = x1 - x0;
-        let grad = if dx.abs() < 1e-6 { 0.0 } else { (y1 - y0) / dx };
-        let major_max = if steep { h } else { w } as f32;
-        let xs = x0.round().max(0.0);
-        let xe = x1.round().min(major_max - 1.0);
-        if xs > xe {
-            return;
-        }
-        let mut plot = |x: i64, y: i64, cov: f32| {
-            let (px, py) = if steep { (y, x) } else { (x, y) };
+        };
+        line.walk(line.xs, line.xe, |px, py, cov| {
             if px < 0 || py < 0 || px >= w || py >= h {
                 return;
             }
             let i = (py * w + px) as usize;
-            if !keep(i) {
-                return;
+            if keep(i) {
+                buf[i] = blend(buf[i], color, cov * alpha);
             }
-            let k = (cov * alpha).clamp(0.0, 1.0);
-            let d = buf[i];
-            let mix = |sh: u32| {
-                let s = ((color >> sh) & 255) as f32;
-                let t = ((d >> sh) & 255) as f32;
-                ((t + (s - t) * k + 0.5) as u32).min(255) << sh
-            };
-            buf[i] = mix(16) | mix(8) | mix(0);
-        };
-        let mut x = xs as i64;
-        while x as f32 <= xe {
-            let y = y0 + grad * (x as f32 - x0);
-            let yi = y.floor() as i64;
-            let frac = y - yi as f32;
-            plot(x, yi, 1.0 - frac);
-            plot(x, yi + 1, frac);
-            x += 1;
-        }
+        });
     }
 
     #[test]

@@ -1,12 +1,14 @@
 //! The graph editor's channels: one curve per component of an animated
 //! node property (translation x/y/z, a colour's r/g/b, a rotation's Euler
-//! angles in degrees, a scalar), and how a component's number is read from
-//! and written into a key's value.
+//! angles in degrees, a scalar, each morph target's weight), and how a
+//! component's number is read from and written into a key's value.
 
-use crate::anim::{Animation, Property, Target, TargetRef, Value, ValueKind};
+use crate::anim::{
+    Animation, Keys, Property, Target, TargetRef, Value, ValueKind, MAX_MORPH_TARGETS,
+};
 use crate::editor::fields::{euler_degrees, from_euler_degrees};
 use crate::editor::keystrip::animated_properties;
-use crate::scene::NodeId;
+use crate::scene::{MorphTarget, NodeId};
 
 /// One curve of the graph: component `comp` of `node`'s `property` track.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -24,9 +26,13 @@ impl Channel {
         }
     }
 
-    /// Short name: `translation.y`, `rotation.x`, `intensity`.
+    /// Short name: `translation.y`, `rotation.x`, `intensity`,
+    /// `weights.2` (morph target 2).
     pub fn name(&self) -> String {
         let p = self.property.name();
+        if self.is_weight() {
+            return format!("{p}.{}", self.comp);
+        }
         match components(self.property) {
             1 => p.to_string(),
             _ => {
@@ -40,9 +46,17 @@ impl Channel {
     }
 
     /// What the channel list shows: the component first, so it survives
-    /// a narrow list (`x Translation`, `Intensity`).
-    pub fn label(&self) -> String {
+    /// a narrow list (`x Translation`, `Intensity`); a weight shows its
+    /// morph target's name from `targets` (`nose_long`), or `target 2` as
+    /// the morph panel names an unnamed one.
+    pub fn label(&self, targets: &[MorphTarget]) -> String {
         let p = crate::editor::keystrip::row_name(self.property);
+        if self.is_weight() {
+            return match targets.get(self.comp as usize).map(|t| t.name.as_str()) {
+                Some(name) if !name.is_empty() => name.to_string(),
+                _ => format!("target {}", self.comp),
+            };
+        }
         match components(self.property) {
             1 => p.to_string(),
             _ => {
@@ -53,8 +67,13 @@ impl Channel {
     }
 
     /// Curve colour: x/r red, y/g green, z/b blue (as the handles); one
-    /// colour for scalars.
+    /// colour for scalars; morph weights cycle through six hues so that
+    /// neighbouring targets differ.
     pub fn color(&self) -> u32 {
+        if self.is_weight() {
+            const HUES: [u32; 6] = [0xe0c050, 0x50c8d8, 0xd070d0, 0xf09050, 0x80d080, 0x9090f0];
+            return HUES[self.comp as usize % HUES.len()];
+        }
         if components(self.property) == 1 {
             return 0xe0c050;
         }
@@ -66,14 +85,27 @@ impl Channel {
         self.property.kind() == ValueKind::Rotation
     }
 
-    /// Parses `translation.y`, `rotation.x`, `color.g`, `intensity` for
-    /// node `node` (scripts).
+    /// One morph target's weight (component `comp` of the weights).
+    pub fn is_weight(&self) -> bool {
+        self.property.kind() == ValueKind::Weights
+    }
+
+    /// Parses `translation.y`, `rotation.x`, `color.g`, `intensity`,
+    /// `weights.2` for node `node` (scripts).
     pub fn parse(node: NodeId, s: &str) -> Option<Channel> {
         let (p, c) = match s.rsplit_once('.') {
             Some((p, c)) => (p, Some(c)),
             None => (s, None),
         };
         let property = Property::parse(p)?;
+        if property.kind() == ValueKind::Weights {
+            let comp: u8 = c?.parse().ok()?;
+            return ((comp as usize) < MAX_MORPH_TARGETS).then_some(Channel {
+                node,
+                property,
+                comp,
+            });
+        }
         let n = components(property);
         let comp = match (c, n) {
             (None, 1) => 0,
@@ -88,14 +120,31 @@ impl Channel {
     }
 }
 
-/// How many curves a property has in the graph (0: booleans, not drawn).
-pub fn components(p: Property) -> u8 {
+/// How many curves a property of fixed shape has in the graph (0:
+/// booleans, not drawn; morph weights: see [`curves`]).
+fn components(p: Property) -> u8 {
     match p.kind() {
         ValueKind::Scalar => 1,
         ValueKind::Vec3 | ValueKind::Color | ValueKind::Rotation => 3,
-        // Booleans are not drawn; morph weights have their own panel.
         ValueKind::Bool | ValueKind::Weights => 0,
     }
+}
+
+/// How many curves node `id`'s `property` track has: morph weights one per
+/// target (as many as its widest key holds), other kinds [`components`].
+fn curves(anim: &Animation, id: NodeId, property: Property) -> u8 {
+    if property.kind() != ValueKind::Weights {
+        return components(property);
+    }
+    let target = Target {
+        of: TargetRef::Node(id),
+        property,
+    };
+    match anim.track(target).map(|t| &t.keys) {
+        Some(Keys::Weights(keys)) => keys.iter().map(|k| k.value.len() as u8).max(),
+        _ => None,
+    }
+    .unwrap_or(0)
 }
 
 /// The channels of node `id`'s animated properties, in property order.
@@ -103,7 +152,7 @@ pub fn channels_of(anim: &Animation, id: NodeId) -> Vec<Channel> {
     animated_properties(anim, id)
         .into_iter()
         .flat_map(|property| {
-            (0..components(property)).map(move |comp| Channel {
+            (0..curves(anim, id, property)).map(move |comp| Channel {
                 node: id,
                 property,
                 comp,
@@ -118,6 +167,7 @@ pub fn component(v: Value, comp: u8) -> Option<f32> {
         Value::Scalar(x) if comp == 0 => x,
         Value::Vec3(x) => x[comp as usize % 3],
         Value::Rotation(q) => euler_degrees(q)[comp as usize % 3],
+        Value::Weights(w) => *w.as_slice().get(comp as usize)?,
         _ => return None,
     })
 }
@@ -137,6 +187,12 @@ pub fn with_component(v: Value, comp: u8, x: f32) -> Value {
             e[comp as usize % 3] = x;
             let r = from_euler_degrees(e);
             Value::Rotation(if r.dot(q) < 0.0 { -r } else { r })
+        }
+        Value::Weights(mut w) => {
+            if let Some(c) = w.as_mut_slice().get_mut(comp as usize) {
+                *c = x;
+            }
+            Value::Weights(w)
         }
         other => other,
     }
@@ -179,5 +235,30 @@ mod tests {
         assert!((component(v, 1).unwrap() - 40.0).abs() < 1e-3);
         let v = with_component(Value::Vec3(Vec3::ONE), 2, 5.0);
         assert_eq!(v, Value::Vec3(Vec3::new(1.0, 1.0, 5.0)));
+    }
+
+    #[test]
+    fn weights_are_one_channel_per_target() {
+        let n = NodeId(5);
+        let c = Channel::parse(n, "weights.7").expect("a weight channel");
+        assert_eq!((c.property, c.comp), (Property::MorphWeights, 7));
+        assert_eq!(c.name(), "weights.7");
+        assert_eq!(Channel::parse(n, &c.name()), Some(c));
+        assert_eq!(Channel::parse(n, "weights"), None);
+        assert_eq!(Channel::parse(n, "weights.x"), None);
+        assert_eq!(Channel::parse(n, "weights.64"), None);
+        let w = crate::anim::Weights::from_slice(&[0.1, 0.2, 0.3]).unwrap();
+        let v = with_component(Value::Weights(w), 1, 0.9);
+        assert_eq!(component(v, 1), Some(0.9));
+        assert_eq!(component(v, 0), Some(0.1));
+        assert_eq!(component(v, 3), None, "past the targets");
+        assert_eq!(with_component(v, 5, 1.0), v, "past the targets: unchanged");
+        let named = [MorphTarget::new("smile", vec![], vec![])];
+        assert_eq!(Channel { comp: 0, ..c }.label(&named), "smile");
+        assert_eq!(Channel { comp: 1, ..c }.label(&named), "target 1");
+        assert_ne!(
+            Channel { comp: 0, ..c }.color(),
+            Channel { comp: 1, ..c }.color()
+        );
     }
 }

@@ -199,7 +199,13 @@ impl GraphEditor {
             }
             let color = if hidden { theme::TEXT_DIM } else { ch.color() };
             let max = a.list.w - 33;
-            p.text_clipped(a.list.x + 31, y, &ch.label(), color, max.max(CHAR_W));
+            p.text_clipped(
+                a.list.x + 31,
+                y,
+                &ch.label(ctx.morph_targets),
+                color,
+                max.max(CHAR_W),
+            );
         }
         p.fill_rect(
             Rect::new(a.list.right() - 1, a.list.y, 1, a.list.h),

@@ -18,6 +18,7 @@ pub mod ik_drag;
 pub mod morph;
 pub mod morph_ui;
 pub mod state;
+pub mod targets;
 mod view;
 
 impl crate::editor::Editor {

@@ -18,56 +18,13 @@ use crate::editor::command::Command;
 use crate::editor::fields::FieldId;
 use crate::editor::panel::Widget;
 use crate::editor::Editor;
-use crate::scene::{MeshId, Morphs, NodeId, NodeKind, Scene};
+use crate::scene::{Morphs, NodeId, Scene};
 use crate::ui::Rect;
 
 use super::morph_ui::{MorphCtx, MorphRows};
 pub use super::state::{MorphBase, MorphPending};
-
-/// The mesh of shape node `id` when it has morph targets.
-fn morph_mesh(scene: &Scene, id: NodeId) -> Option<(MeshId, &Morphs)> {
-    match &scene.nodes.get(id.0 as usize)?.kind {
-        NodeKind::Shape(s) => {
-            let m = scene.meshes.get(s.mesh.0 as usize)?.morph.as_deref()?;
-            Some((s.mesh, m))
-        }
-        _ => None,
-    }
-}
-
-/// The (track target, morphed shape) a selection edits: a morphed shape
-/// itself, or a group whose first morphed child shape it drives (glTF
-/// meshes of several primitives are a group of shapes).
-pub fn morph_of(scene: &Scene, sel: NodeId) -> Option<(NodeId, NodeId)> {
-    if morph_mesh(scene, sel).is_some() {
-        return Some((sel, sel));
-    }
-    let n = scene.nodes.get(sel.0 as usize)?;
-    if !matches!(n.kind, NodeKind::Group) {
-        return None;
-    }
-    n.children
-        .iter()
-        .copied()
-        .find(|&c| morph_mesh(scene, c).is_some())
-        .map(|c| (sel, c))
-}
-
-/// Names of the shape's morph targets ("target 2" when unnamed).
-pub fn target_names(scene: &Scene, shape: NodeId) -> Vec<String> {
-    morph_mesh(scene, shape)
-        .map(|(_, m)| {
-            m.targets()
-                .iter()
-                .enumerate()
-                .map(|(i, t)| match t.name.is_empty() {
-                    true => format!("target {i}"),
-                    false => t.name.clone(),
-                })
-                .collect()
-        })
-        .unwrap_or_default()
-}
+use super::targets::morph_mesh;
+use super::targets::{morph_of, target_names};
 
 fn weights_target(id: NodeId) -> Target {
     Target {
@@ -293,7 +250,7 @@ impl Editor {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{Mesh, MorphTarget, Node, Shape};
+    use crate::scene::{Mesh, MorphTarget, Node, NodeKind, Shape};
     use glam::Vec3;
 
     fn morphed() -> (Scene, NodeId, NodeId) {
