@@ -127,6 +127,7 @@ fn bin_serial(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::internals::render::test_rng::XorShift;
     use crate::render::prepare::{Item, Tri, TriBox};
     use crate::render::shade::ShadeMaterial;
     use crate::render::tri_gradients::Gradients;
@@ -154,13 +155,8 @@ mod tests {
     /// texture flag, frame after frame in the same buffers.
     #[test]
     fn parallel_bins_are_the_serial_bins() {
-        let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = |n: i32| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed % n as u64) as i32
-        };
+        let mut rng = XorShift::new(0x2545_F491_4F6C_DD1D);
+        let mut next = |n: i32| (rng.next_u64() % n as u64) as i32;
         let mut bins = Bins::default();
         let mut textured_tiles = 0;
         for (w, h, count) in [

@@ -131,6 +131,7 @@ pub fn clip_segment(a: &ClipVert, b: &ClipVert, guard: f32) -> Option<(ClipVert,
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::internals::render::test_rng::XorShift;
 
     fn v(x: f32, y: f32, z: f32, w: f32) -> ClipVert {
         ClipVert {
@@ -185,13 +186,8 @@ mod tests {
     #[test]
     fn sides_per_vertex_agree_with_the_triangle_tests() {
         let coords = [-2.0f32, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0, 150.0, -150.0];
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
-        let mut pick = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            coords[(state % coords.len() as u64) as usize]
-        };
+        let mut rng = XorShift::new(0x2545_F491_4F6C_DD1D);
+        let mut pick = || coords[(rng.next_u64() % coords.len() as u64) as usize];
         let (mut inside, mut outside) = (0, 0);
         for _ in 0..20_000 {
             let tri = [0, 1, 2].map(|_| v(pick(), pick(), pick(), pick().abs()));

@@ -41,6 +41,8 @@ mod simd;
 pub mod stages;
 mod stroke_faces;
 mod surface;
+#[cfg(test)]
+mod test_rng;
 mod texel_block;
 mod texel_fetch;
 mod texel_filter;

@@ -169,6 +169,7 @@ fn walk_sample(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::internals::render::test_rng::XorShift;
     use crate::render::clip::ATTRS;
     use crate::render::fragment::NONE;
     use crate::render::prepare::planes;
@@ -187,13 +188,8 @@ mod tests {
     /// the CPU has it) AVX.
     #[test]
     fn rows_of_lanes_keep_the_pixel_walks_bits() {
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = XorShift::new(0x9E37_79B9_7F4A_7C15);
+        let mut next = || rng.unit();
         let rect = [128, 64, 192, 96];
         let (mut kept, mut tris, mut walked) = (0, 0, 0);
         for scene in 0..300 {

@@ -996,6 +996,7 @@ mod round_tests {
 #[cfg(test)]
 mod screen_vert_tests {
     use super::*;
+    use crate::internals::render::test_rng::XorShift;
 
     /// Triangles set up from vertices projected once ([`ScreenVert`]) have
     /// the bits of the per-corner set-up they replace: each corner
@@ -1009,13 +1010,8 @@ mod screen_vert_tests {
             guard: MAX_SCREEN / 320.0,
             aa: false,
         };
-        let mut state = 0x853C_49E6_748F_EA9Bu64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f32 / (1u64 << 53) as f32 * 2.0 - 1.0
-        };
+        let mut rng = XorShift::new(0x853C_49E6_748F_EA9B);
+        let mut next = || rng.unit() as f32 * 2.0 - 1.0;
         let mut checked = [0; 2];
         for _ in 0..5000 {
             let verts: [ClipVert; 3] = std::array::from_fn(|_| {
@@ -1068,6 +1064,7 @@ mod screen_vert_tests {
 #[cfg(test)]
 mod count_tests {
     use super::*;
+    use crate::internals::render::test_rng::XorShift;
 
     /// Counting a mesh's triangles gives what setting them up makes:
     /// seeded meshes with back faces (culled or not), degenerate and
@@ -1089,13 +1086,8 @@ mod count_tests {
             guard: MAX_SCREEN / 320.0,
             aa: false,
         };
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f32 / (1u64 << 53) as f32
-        };
+        let mut rng = XorShift::new(0x9E37_79B9_7F4A_7C15);
+        let mut next = || rng.unit() as f32;
         let (mut made, mut fans, mut dropped) = (0, 0, 0);
         for mesh in 0..40 {
             let verts: Vec<ClipVert> = (0..60)
