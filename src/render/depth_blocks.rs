@@ -161,49 +161,20 @@ fn write_planes<const NS: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::clip::ATTRS;
-    use crate::render::prepare::{planes, Prepared};
+    use crate::render::prepare::{test_tri, Prepared};
     use crate::render::raster::{depth_tile, for_each_pixel_at, sample_offsets, Bin, Scratch};
+    use crate::render::test_rng::XorShift;
 
-    /// A triangle with corners at pixel positions `pts` and window depths `z`.
+    /// [`test_tri`] with its box clamped to the 200×100 picture.
     fn tri(pts: [(f64, f64); 3], z: [f32; 3]) -> Tri {
-        let fx = |v: f64| (v * SUBPIXEL as f64).round() as i64;
-        let (base, d1, d2) = planes(&[[0.0; ATTRS]; 3], &[1.0; 3]);
-        let mut t = Tri {
-            x: pts.map(|p| fx(p.0)),
-            y: pts.map(|p| fx(p.1)),
-            z,
-            base,
-            d1,
-            d2,
-            item: 0,
-            bbox: [0, 0, 0, 0],
-            grad: Default::default(),
-        };
-        if t.area() < 0 {
-            t.x.swap(1, 2);
-            t.y.swap(1, 2);
-            t.z.swap(1, 2);
-        }
-        let px = |f: i64| (f >> 8) as i32;
+        let mut t = test_tri(pts, z);
         t.bbox = [
-            px(*t.x.iter().min().unwrap()).max(0),
-            px(*t.y.iter().min().unwrap()).max(0),
-            (px(*t.x.iter().max().unwrap()) + 1).min(200),
-            (px(*t.y.iter().max().unwrap()) + 1).min(100),
+            t.bbox[0].max(0),
+            t.bbox[1].max(0),
+            t.bbox[2].min(200),
+            t.bbox[3].min(100),
         ];
         t
-    }
-
-    /// A small xorshift generator: the same triangles on every run.
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
     }
 
     /// Scenes of large triangles (which own blocks), small ones, ones
@@ -215,30 +186,30 @@ mod tests {
     /// one triangle (or none) at every sample of the reference.
     #[test]
     fn blocks_keep_the_per_pixel_walks_bits() {
-        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        let mut rng = XorShift::new(0x9E37_79B9_7F4A_7C15);
         let rect = [64, 32, 128, 64];
         let mut owned_seen = 0;
         for scene in 0..60 {
             let mut p = Prepared::default();
             for k in 0..1 + scene % 7 {
                 let big = k % 3 == 0;
-                let (cx, cy) = (64.0 + rng.next() * 64.0, 32.0 + rng.next() * 32.0);
+                let (cx, cy) = (64.0 + rng.unit() * 64.0, 32.0 + rng.unit() * 32.0);
                 let r = if big {
-                    40.0 + rng.next() * 80.0
+                    40.0 + rng.unit() * 80.0
                 } else {
-                    1.0 + rng.next() * 12.0
+                    1.0 + rng.unit() * 12.0
                 };
                 let pts = [0, 1, 2].map(|_| {
                     (
-                        cx + (rng.next() - 0.5) * 2.0 * r,
-                        cy + (rng.next() - 0.5) * 2.0 * r,
+                        cx + (rng.unit() - 0.5) * 2.0 * r,
+                        cy + (rng.unit() - 0.5) * 2.0 * r,
                     )
                 });
                 let z = match scene % 5 {
                     0 => [0.5; 3],
                     1 => [0.0, 0.3, 0.6],
                     2 => [0.9, 1.0, 1.2],
-                    _ => [0, 1, 2].map(|_| 0.05 + 0.9 * rng.next() as f32),
+                    _ => [0, 1, 2].map(|_| 0.05 + 0.9 * rng.unit() as f32),
                 };
                 let t = tri(pts, z);
                 if t.area() != 0 {

@@ -170,12 +170,10 @@ fn walk_sample(
 mod tests {
     use super::*;
     use crate::internals::render::test_rng::XorShift;
-    use crate::render::clip::ATTRS;
     use crate::render::fragment::NONE;
-    use crate::render::prepare::planes;
+    use crate::render::prepare::test_tri;
     use crate::render::raster::{for_each_pixel_at, sample_offsets};
     use crate::render::simd::Sse8;
-    use crate::render::tri_gradients::Gradients;
 
     /// One way of drawing a triangle's narrow box into buffers.
     type Lanes<'a> = dyn Fn(&Tri, u32, [i32; 4], &mut NarrowBufs) + 'a;
@@ -211,31 +209,7 @@ mod tests {
                     1 => [-0.2, 0.3, 0.6],
                     _ => [0, 1, 2].map(|_| next() as f32),
                 };
-                let fx = |v: f64| (v * SUBPIXEL as f64).round() as i64;
-                let (base, d1, d2) = planes(&[[0.0; ATTRS]; 3], &[1.0; 3]);
-                let mut t = Tri {
-                    x: pts.map(|p| fx(p.0)),
-                    y: pts.map(|p| fx(p.1)),
-                    z,
-                    base,
-                    d1,
-                    d2,
-                    item: 0,
-                    bbox: [0; 4],
-                    grad: Gradients::default(),
-                };
-                if t.area() < 0 {
-                    t.x.swap(1, 2);
-                    t.y.swap(1, 2);
-                    t.z.swap(1, 2);
-                }
-                let px = |f: i64| (f >> 8) as i32;
-                t.bbox = [
-                    px(*t.x.iter().min().unwrap()),
-                    px(*t.y.iter().min().unwrap()),
-                    px(*t.x.iter().max().unwrap()) + 1,
-                    px(*t.y.iter().max().unwrap()) + 1,
-                ];
+                let t = test_tri(pts, z);
                 let far = (0..3)
                     .any(|k| t.edge(k, 188 * SUBPIXEL, 80 * SUBPIXEL).0.unsigned_abs() >= 1 << 51);
                 walked += far as usize;

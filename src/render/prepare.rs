@@ -942,6 +942,39 @@ fn push_points(out: &mut Vec<Point>, idx: &[u32], verts: &[ClipVert], k: Stroke,
     }
 }
 
+/// A triangle with no attributes, corners at pixel positions `pts` and
+/// window depths `z`, turned to the positive winding, its box the pixels
+/// its corners span (unclamped): what the depth-pass tests draw.
+#[cfg(test)]
+pub fn test_tri(pts: [(f64, f64); 3], z: [f32; 3]) -> Tri {
+    let fx = |v: f64| (v * SUBPIXEL as f64).round() as i64;
+    let (base, d1, d2) = planes(&[[0.0; ATTRS]; 3], &[1.0; 3]);
+    let mut t = Tri {
+        x: pts.map(|p| fx(p.0)),
+        y: pts.map(|p| fx(p.1)),
+        z,
+        base,
+        d1,
+        d2,
+        item: 0,
+        bbox: [0; 4],
+        grad: Gradients::default(),
+    };
+    if t.area() < 0 {
+        t.x.swap(1, 2);
+        t.y.swap(1, 2);
+        t.z.swap(1, 2);
+    }
+    let px = |f: i64| (f >> 8) as i32;
+    t.bbox = [
+        px(*t.x.iter().min().unwrap()),
+        px(*t.y.iter().min().unwrap()),
+        px(*t.x.iter().max().unwrap()) + 1,
+        px(*t.y.iter().max().unwrap()) + 1,
+    ];
+    t
+}
+
 #[cfg(test)]
 mod round_tests {
     use super::round_i64;
