@@ -200,7 +200,7 @@ mod tests {
                 };
                 p.opaque.push(t);
                 p.opaque_boxes
-                    .push(TriBox::of(&t, p.items[t.item as usize].textured));
+                    .push(TriBox::of_box(&t.bbox, p.items[t.item as usize].textured));
             }
             bin_tiles(&p, &mut bins, w, h);
             let (tx, ty) = ((w + TILE - 1) / TILE, (h + TILE_H - 1) / TILE_H);

@@ -169,9 +169,10 @@ pub struct TriBox {
 }
 
 impl TriBox {
-    pub fn of(t: &Tri, textured: bool) -> TriBox {
+    /// The box of a triangle whose [`Tri::bbox`] is `bbox`.
+    pub fn of_box(bbox: &[i32; 4], textured: bool) -> TriBox {
         TriBox {
-            bbox: t.bbox.map(|v| v.clamp(0, u16::MAX as i32) as u16),
+            bbox: bbox.map(|v| v.clamp(0, u16::MAX as i32) as u16),
             textured,
         }
     }
@@ -394,7 +395,8 @@ pub fn prepare(scene: &Scene, pose: &Pose, view: &View, opts: &RenderOptions, ou
                     setup_triangles(mesh, v, &setup, lists, |_| ());
                 } else {
                     let lists = (&mut out.opaque, &mut out.opaque_boxes);
-                    setup_triangles(mesh, v, &setup, lists, |t| TriBox::of(t, textured));
+                    let side = |bbox: &[i32; 4]| TriBox::of_box(bbox, textured);
+                    setup_triangles(mesh, v, &setup, lists, side);
                 }
                 push_lines(&mut out.lines, &mesh.lines, &verts, stroke, &screen);
                 push_points(&mut out.points, &mesh.points, &verts, stroke, &screen);
@@ -548,7 +550,7 @@ struct Setup<'a> {
 
 /// Sets up the triangles of `mesh` from its vertices in clip space and in
 /// screen space (`verts`, the same vertices), appending them to the first
-/// list in the mesh's order and `side` of each to the second: chunks of
+/// list in the mesh's order and `side` of each box to the second: chunks of
 /// the mesh in parallel, each writing its triangles straight into their
 /// place (`in_place`), after a first pass that only counts them.
 fn setup_triangles<U: Copy + Send>(
@@ -556,7 +558,7 @@ fn setup_triangles<U: Copy + Send>(
     verts: (&[ClipVert], &[ScreenVert]),
     setup: &Setup,
     lists: (&mut Vec<Tri>, &mut Vec<U>),
-    side: impl Fn(&Tri) -> U + Sync,
+    side: impl Fn(&[i32; 4]) -> U + Sync,
 ) {
     let Setup {
         item,
@@ -569,29 +571,30 @@ fn setup_triangles<U: Copy + Send>(
         screen,
         cull: mesh.solid,
         size: (opts.width as i32, opts.height as i32),
-        item,
-        textured,
     };
+    let tri_flags = (item, textured);
     const CHUNK: usize = 4096;
     let chunks: Vec<&[[u32; 3]]> = mesh.triangles.chunks(CHUNK).collect();
     extend_in_place(
         lists,
         &chunks,
         |chunk| mesh_setup.count(chunk),
-        |chunk, sink| mesh_setup.make(chunk, |t| sink.push(t, side(&t))),
+        |chunk, sink| {
+            mesh_setup.make(chunk, |v, drawn| {
+                // SAFETY: `write_triangle` writes every field.
+                unsafe { sink.push_with(|slot| side(&write_triangle(v, drawn, tri_flags, slot))) }
+            })
+        },
     );
 }
 
 /// One mesh's set-up: its vertices (in clip and screen space), the
-/// screen, whether back faces are culled, the frame size, and the item
-/// and texturing of its triangles.
+/// screen, whether back faces are culled, and the frame size.
 struct MeshSetup<'a> {
     verts: (&'a [ClipVert], &'a [ScreenVert]),
     screen: &'a Screen,
     cull: bool,
     size: (i32, i32),
-    item: u32,
-    textured: bool,
 }
 
 impl MeshSetup<'_> {
@@ -607,13 +610,18 @@ impl MeshSetup<'_> {
         n
     }
 
-    /// The screen triangles of `tris` (vertex indices), in order.
-    fn make(&self, tris: &[[u32; 3]], mut emit: impl FnMut(Tri)) {
+    /// The drawn screen triangles of `tris` (vertex indices), in order:
+    /// their corners and what [`drawn_box`] says of them, for `emit` to
+    /// write (`write_triangle`) where they go.
+    fn make(&self, tris: &[[u32; 3]], mut emit: impl FnMut([&ScreenVert; 3], Drawn)) {
         let (w, h) = self.size;
-        let flags = (self.cull, self.textured);
-        let tri = |v: [&ScreenVert; 3]| screen_triangle(v, self.item, flags, w, h);
         for t in tris {
-            each_triangle(t, self.verts, self.screen, tri, &mut emit);
+            let drawn = |v: [&ScreenVert; 3]| {
+                let d = drawn_box(v, self.cull, w, h)?;
+                emit(v, d);
+                Some(())
+            };
+            each_triangle(t, self.verts, self.screen, drawn, |()| ());
         }
     }
 }
@@ -628,7 +636,7 @@ fn each_triangle<T>(
     t: &[u32; 3],
     (verts, screen_verts): (&[ClipVert], &[ScreenVert]),
     screen: &Screen,
-    make: impl Fn([&ScreenVert; 3]) -> Option<T>,
+    mut make: impl FnMut([&ScreenVert; 3]) -> Option<T>,
     mut emit: impl FnMut(T),
 ) {
     if t.iter()
@@ -706,12 +714,16 @@ fn project_vertices(verts: &[ClipVert], screen: &Screen, out: &mut Vec<ScreenVer
         .collect_into_vec(out);
 }
 
+/// What [`drawn_box`] finds of a drawn triangle: its area (twice,
+/// signed) and its pixel box.
+type Drawn = (i64, [i32; 4]);
+
 /// The area (twice, signed) and pixel box of the triangle through three
 /// projected vertices when it is drawn; `None` when it is degenerate,
 /// culled as a back face (`cull`), not finite or outside the `w`×`h`
 /// frame: the tests of [`screen_triangle`], which counting asks alone.
 #[inline(always)]
-fn drawn_box(v: [&ScreenVert; 3], cull: bool, w: i32, h: i32) -> Option<(i64, [i32; 4])> {
+fn drawn_box(v: [&ScreenVert; 3], cull: bool, w: i32, h: i32) -> Option<Drawn> {
     if !v.iter().all(|v| v.finite) {
         return None;
     }
@@ -737,10 +749,9 @@ fn drawn_box(v: [&ScreenVert; 3], cull: bool, w: i32, h: i32) -> Option<(i64, [i
 
 /// The screen triangle through three projected vertices, oriented (see
 /// [`Tri`]), with its planes and, when `textured`, its gradients; `None`
-/// when [`drawn_box`] says it is not drawn. Inlined, so that set-up
-/// builds the 248 bytes in their slot rather than on the stack to be
-/// copied (twice) into it.
-#[inline(always)]
+/// when [`drawn_box`] says it is not drawn. Set-up writes its triangles
+/// in place instead (`write_triangle`).
+#[cfg(test)]
 fn screen_triangle(
     v: [&ScreenVert; 3],
     item: u32,
@@ -748,7 +759,27 @@ fn screen_triangle(
     w: i32,
     h: i32,
 ) -> Option<Tri> {
-    let (area, bbox) = drawn_box(v, cull, w, h)?;
+    let drawn = drawn_box(v, cull, w, h)?;
+    let mut t = std::mem::MaybeUninit::uninit();
+    write_triangle(v, drawn, (item, textured), &mut t);
+    // SAFETY: `write_triangle` wrote every field.
+    Some(unsafe { t.assume_init() })
+}
+
+/// Writes the drawn (`drawn_box`) triangle through three projected
+/// vertices into `out`, field by field, oriented (see [`Tri`]), with its
+/// planes and, when `textured`, its gradients; returns its box. Field by
+/// field and inlined, so set-up writes the 248 bytes straight into their
+/// slot: built on the stack, they were copied by 64-byte loads just after
+/// narrower stores wrote them, which stalls every load (see
+/// `in_place::Sink::push_with`).
+#[inline(always)]
+fn write_triangle(
+    v: [&ScreenVert; 3],
+    (area, bbox): Drawn,
+    (item, textured): (u32, bool),
+    out: &mut std::mem::MaybeUninit<Tri>,
+) -> [i32; 4] {
     let mut x = v.map(|v| v.x);
     let mut y = v.map(|v| v.y);
     let mut z = v.map(|v| v.z);
@@ -779,17 +810,21 @@ fn screen_triangle(
     } else {
         Gradients::default()
     };
-    Some(Tri {
-        x,
-        y,
-        z,
-        base,
-        d1,
-        d2,
-        item,
-        bbox,
-        grad,
-    })
+    let t = out.as_mut_ptr();
+    // SAFETY: `t` points to one (uninitialised) `Tri`; each field is
+    // written once through a raw pointer, never through a reference.
+    unsafe {
+        (&raw mut (*t).x).write(x);
+        (&raw mut (*t).y).write(y);
+        (&raw mut (*t).z).write(z);
+        (&raw mut (*t).base).write(base);
+        (&raw mut (*t).d1).write(d1);
+        (&raw mut (*t).d2).write(d2);
+        (&raw mut (*t).item).write(item);
+        (&raw mut (*t).bbox).write(bbox);
+        (&raw mut (*t).grad).write(grad);
+    }
+    bbox
 }
 
 /// `x.round() as i64` (half away from zero, saturating) without the call
@@ -1165,12 +1200,10 @@ mod count_tests {
                 screen: &screen,
                 cull: mesh % 2 == 0,
                 size: (opts.width as i32, opts.height as i32),
-                item: 0,
-                textured: mesh % 3 == 0,
             };
             for part in tris.chunks(37) {
                 let mut n = 0;
-                setup.make(part, |_| n += 1);
+                setup.make(part, |_, _| n += 1);
                 assert_eq!(setup.count(part), n, "mesh {mesh}");
                 made += n;
                 fans += part
