@@ -810,6 +810,22 @@ fn write_triangle(
     } else {
         Gradients::default()
     };
+    // Every field of `Tri` is written below, one by one: this pattern has
+    // no `..`, so a field added to `Tri` stops it compiling until the
+    // field is written here too (else it would be left uninitialised).
+    let _all_fields = |t: &Tri| {
+        let Tri {
+            x: _,
+            y: _,
+            z: _,
+            base: _,
+            d1: _,
+            d2: _,
+            item: _,
+            bbox: _,
+            grad: _,
+        } = t;
+    };
     let t = out.as_mut_ptr();
     // SAFETY: `t` points to one (uninitialised) `Tri`; each field is
     // written once through a raw pointer, never through a reference.
