@@ -252,15 +252,10 @@ mod imp {
     }
 
     /// Sub-texel fractions as 8-bit weights (`texel_filter::weight`:
-    /// f·256 + ½, truncated) in both 16-bit halves of each lane: the low
-    /// half kept, or-ed with itself shifted up (weights are 0..=256; a NaN
-    /// fraction truncates to 0x8000_0000, whose low half is 0, the
-    /// one-pixel weight of NaN, and whose shifted copy is 0 too).
-    ///
-    /// Why not one byte shuffle: on Intel every zmm shuffle runs on port 5
-    /// alone (LLVM makes this one two, `vpshuflw` + `vpshufhw`), which the
-    /// texel windows' permutes already keep busy; a shift and a
-    /// three-input logic op run on the other vector port too.
+    /// f·256 + ½, truncated) in both 16-bit halves of each lane.
+    /// Both halves come from one byte shuffle of the low one (weights
+    /// are 0..=256; a NaN fraction truncates to 0x8000_0000, whose low
+    /// half is 0, the one-pixel weight of NaN).
     #[target_feature(enable = "avx512f,avx512bw")]
     #[inline]
     fn weights(f: __m512) -> __m512i {
@@ -268,8 +263,9 @@ mod imp {
             _mm512_mul_ps(f, _mm512_set1_ps(256.0)),
             _mm512_set1_ps(0.5),
         ));
-        // (w & 0xFFFF) | (w << 16): truth table (A & B) | C = 0xEA.
-        _mm512_ternarylogic_epi32::<0xEA>(w, _mm512_set1_epi32(0xFFFF), _mm512_slli_epi32::<16>(w))
+        // Bytes 0, 1, 0, 1 of every 32-bit lane.
+        let low_twice = _mm512_set4_epi32(0x0D0C_0D0C, 0x0908_0908, 0x0504_0504, 0x0100_0100);
+        _mm512_shuffle_epi8(w, low_twice)
     }
 
     /// `texel_filter::bilerp` on sixteen lanes of RGBA8 corners (top left,
@@ -329,19 +325,6 @@ mod imp {
         std::array::from_fn(|k| [words[0][k], words[1][k]])
     }
 
-    /// [`weights`] of sixteen fractions, as words.
-    #[cfg(test)]
-    pub fn weights_for_tests(f: [f32; 16]) -> [u32; 16] {
-        let mut out = [0u32; 16];
-        // SAFETY: the test calls in only where `simd::avx512()` said yes;
-        // 64-byte load and store of sixteen f32 / u32.
-        unsafe {
-            let w = weights(_mm512_loadu_ps(f.as_ptr()));
-            _mm512_storeu_si512(out.as_mut_ptr().cast(), w);
-        }
-        out
-    }
-
     /// Both levels' texel pairs of one corner row (`i`: left texel indices,
     /// lanes 0..8 in the finer level, 8..16 in the coarser) when each
     /// level's eight pairs lie within sixteen texels of the smaller of its
@@ -395,18 +378,15 @@ mod imp {
     fn rows(levels: [&MipLevel; 2], top: __m512i) -> Option<[__m512i; 4]> {
         // Each half's start, the smaller of its first and last lane's,
         // in every lane of the half (on lanes: no trip through memory).
-        // Lanes 0 and 8 of `ends` are lanes 7 and 15 of `top` (a rotation
-        // by seven lanes), so the minimum's lanes 0 and 8 are the starts;
-        // one permute spreads them over their halves. Three port-5
-        // shuffles, where two permutes of `top` and two more element
-        // moves took six (Intel runs zmm shuffles on port 5 alone).
-        let ends = _mm512_alignr_epi32::<7>(top, top);
-        let ends = _mm512_min_epi32(top, ends);
-        let halves = _mm512_set_epi32(8, 8, 8, 8, 8, 8, 8, 8, 0, 0, 0, 0, 0, 0, 0, 0);
-        let start = _mm512_permutexvar_epi32(halves, ends);
+        let first_lanes = _mm512_set_epi32(8, 8, 8, 8, 8, 8, 8, 8, 0, 0, 0, 0, 0, 0, 0, 0);
+        let last_lanes = _mm512_set_epi32(15, 15, 15, 15, 15, 15, 15, 15, 7, 7, 7, 7, 7, 7, 7, 7);
+        let start = _mm512_min_epi32(
+            _mm512_permutexvar_epi32(first_lanes, top),
+            _mm512_permutexvar_epi32(last_lanes, top),
+        );
         let first = [
-            _mm_cvtsi128_si32(_mm512_castsi512_si128(ends)),
-            _mm_cvtsi128_si32(_mm512_extracti32x4_epi32::<2>(ends)),
+            _mm_cvtsi128_si32(_mm512_castsi512_si128(start)),
+            _mm_cvtsi128_si32(_mm512_extracti32x4_epi32::<2>(start)),
         ];
         let fits = |k: usize| {
             first[k] >= 0
@@ -488,34 +468,7 @@ mod imp {
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests {
     use super::imp::bilerp16_for_tests as bilerp16;
-    use super::imp::weights_for_tests;
-    use crate::render::texel_filter::{bilerp, weight};
-
-    /// The 16-lane weights are `texel_filter::weight` in both halves of
-    /// each lane for every fraction k/2²⁰ in 0..1, the last float below
-    /// 1, both zeros and NaN (whose truncation is 0x8000_0000 on lanes
-    /// but weight 0 for one pixel).
-    #[test]
-    fn weights_are_the_one_pixel_weight_in_both_halves() {
-        if !crate::render::simd::avx512() {
-            eprintln!("weights_are_the_one_pixel_weight_in_both_halves: no AVX-512 here, not run");
-            return;
-        }
-        let mut fractions: Vec<f32> = (0..1u32 << 20)
-            .map(|k| k as f32 / (1u32 << 20) as f32)
-            .collect();
-        fractions.extend([1.0f32.next_down(), -0.0, f32::NAN, 0.5f32.next_down(), 0.5]);
-        while !fractions.len().is_multiple_of(16) {
-            fractions.push(f32::NAN);
-        }
-        for f in fractions.chunks_exact(16) {
-            let got = weights_for_tests(f.try_into().unwrap());
-            for (&f, &g) in f.iter().zip(&got) {
-                let w = weight(f);
-                assert_eq!(g, w | w << 16, "fraction {f}");
-            }
-        }
-    }
+    use crate::render::texel_filter::bilerp;
 
     /// The 16-lane filter gives `bilerp`'s words for every pair of weights
     /// (0..=256 each) on corners with every channel difference sign and
