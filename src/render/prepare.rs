@@ -721,7 +721,8 @@ type Drawn = (i64, [i32; 4]);
 /// The area (twice, signed) and pixel box of the triangle through three
 /// projected vertices when it is drawn; `None` when it is degenerate,
 /// culled as a back face (`cull`), not finite or outside the `w`×`h`
-/// frame: the tests of [`screen_triangle`], which counting asks alone.
+/// frame: the tests set-up makes before [`write_triangle`] writes a
+/// triangle, and which counting asks alone.
 #[inline(always)]
 fn drawn_box(v: [&ScreenVert; 3], cull: bool, w: i32, h: i32) -> Option<Drawn> {
     if !v.iter().all(|v| v.finite) {
